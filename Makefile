@@ -1,0 +1,37 @@
+# Two commands do all the set-up: `make run` (offline demo / console) and `make test`.
+PY ?= python3.11
+VENV := .venv
+BIN := $(VENV)/bin
+STAMP := $(VENV)/.installed
+export MUJOCO_GL ?= egl
+export HF_HUB_OFFLINE := 1
+
+.PHONY: install run demo test test-all grammar-docs clean
+
+install: $(STAMP)
+
+# torch first and explicitly: 2.13.0 is the CPU wheel on local disk; a loose torch pulls a CUDA build.
+$(STAMP): pyproject.toml requirements.lock scripts/apt-deps.sh
+	@bash scripts/apt-deps.sh
+	@test -x $(BIN)/python || $(PY) -m venv $(VENV)
+	$(BIN)/pip install -q torch==2.13.0
+	$(BIN)/pip install -q -r requirements.lock
+	$(BIN)/pip install -q --no-deps -e .
+	@touch $@
+
+run: demo
+
+demo: install
+	$(BIN)/spark validate examples/plans/*.yaml
+
+test: install
+	$(BIN)/python -m pytest -q
+
+test-all: install
+	SPARK_SLOW=1 $(BIN)/python -m pytest -q
+
+grammar-docs: install
+	$(BIN)/spark grammar --format md > docs/grammar.md
+
+clean:
+	rm -rf $(VENV)

@@ -1,0 +1,96 @@
+"""Node life-cycle events and the thread-safe bus that fans them out (callbacks and async iterators)."""
+
+from __future__ import annotations
+
+import asyncio
+import itertools
+import threading
+import time
+from dataclasses import asdict, dataclass, field
+from typing import Any, AsyncIterator, Callable
+
+EVENT_KINDS = ("started", "succeeded", "failed", "retrying", "paused")
+
+
+@dataclass(frozen=True)
+class Event:
+    """`t` is monotonic seconds since the bus was created (trial start); `seq` orders events totally."""
+
+    trial_id: str
+    seq: int
+    t: float
+    node_path: str
+    kind: str
+    detail: dict[str, Any] = field(default_factory=dict)
+
+    def to_dict(self) -> dict[str, Any]:
+        return asdict(self)
+
+
+class EventBus:
+    """Publish from any thread; subscribe with a callback or `async for ev in bus.stream()`."""
+
+    def __init__(self, trial_id: str = ""):
+        self.trial_id = trial_id
+        self._t0 = time.monotonic()
+        self._seq = itertools.count()
+        self._lock = threading.RLock()
+        self._callbacks: list[Callable[[Event], None]] = []
+        self._queues: list[tuple[asyncio.AbstractEventLoop, asyncio.Queue]] = []
+        self._closed = False
+        self.history: list[Event] = []
+
+    def now(self) -> float:
+        return time.monotonic() - self._t0
+
+    def subscribe(self, callback: Callable[[Event], None]) -> Callable[[], None]:
+        with self._lock:
+            self._callbacks.append(callback)
+
+        def unsubscribe() -> None:
+            with self._lock:
+                if callback in self._callbacks:
+                    self._callbacks.remove(callback)
+
+        return unsubscribe
+
+    def publish(self, node_path: str, kind: str, **detail: Any) -> Event:
+        if kind not in EVENT_KINDS:
+            raise ValueError(f"unknown event kind {kind!r}; expected one of {EVENT_KINDS}")
+        with self._lock:
+            ev = Event(self.trial_id, next(self._seq), self.now(), node_path, kind, detail)
+            self.history.append(ev)
+            callbacks = list(self._callbacks)
+            for loop, q in self._queues:
+                loop.call_soon_threadsafe(q.put_nowait, ev)
+        for cb in callbacks:
+            cb(ev)
+        return ev
+
+    def close(self) -> None:
+        """End every async stream (after the events already published)."""
+        with self._lock:
+            self._closed = True
+            for loop, q in self._queues:
+                loop.call_soon_threadsafe(q.put_nowait, None)
+
+    async def stream(self, replay: bool = True) -> AsyncIterator[Event]:
+        """Events as they are published; with `replay`, the history first. Ends when the bus closes."""
+        loop = asyncio.get_running_loop()
+        q: asyncio.Queue = asyncio.Queue()
+        with self._lock:
+            backlog = list(self.history) if replay else []
+            closed = self._closed
+            if not closed:
+                self._queues.append((loop, q))
+        try:
+            for ev in backlog:
+                yield ev
+            if closed:
+                return
+            while (ev := await q.get()) is not None:
+                yield ev
+        finally:
+            with self._lock:
+                if (loop, q) in self._queues:
+                    self._queues.remove((loop, q))

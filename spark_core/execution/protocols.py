@@ -1,0 +1,66 @@
+"""The seams the executor runs against: how labels become keypoints and how primitives become motion."""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass, field
+from typing import Any, Mapping, Protocol, runtime_checkable
+
+from ..grammar import PrimitiveCall
+from ..perception import Keypoint
+
+
+class FailureKind(str, enum.Enum):
+    """Which module a failure is attributed to."""
+
+    PLANNER = "planner"
+    PERCEPTION = "perception"
+    CONTROL = "control"
+    KINEMATIC_LIMIT = "kinematic_limit"
+    TIMEOUT = "timeout"
+
+
+@dataclass
+class ActionOutcome:
+    """Result of performing one primitive: did its post-condition hold, and how long it took in sim time."""
+
+    ok: bool
+    sim_time_s: float = 0.0
+    reason: str = ""
+    failure: FailureKind | None = None
+    detail: dict[str, Any] = field(default_factory=dict)
+
+    @classmethod
+    def success(cls, sim_time_s: float, **detail: Any) -> "ActionOutcome":
+        return cls(True, sim_time_s, "", None, detail)
+
+    @classmethod
+    def fail(cls, reason: str, failure: FailureKind = FailureKind.CONTROL, sim_time_s: float = 0.0, **detail: Any) -> "ActionOutcome":
+        return cls(False, sim_time_s, reason, failure, detail)
+
+
+@runtime_checkable
+class Resolver(Protocol):
+    """label -> Keypoint from the latest perception, at the moment a node runs."""
+
+    def resolve(self, label: str) -> Keypoint:
+        """Raises perception.LabelNotFound when the label has no single confident detection."""
+        ...
+
+    def refresh(self) -> None:
+        """Re-detect (new images, new masks) so the next resolve sees the current scene."""
+        ...
+
+
+@runtime_checkable
+class Actuator(Protocol):
+    """Performs one primitive on an embodiment and checks its post-condition from sensed state.
+
+    Implementations: the physics world's primitive library (spark_core.execution.primitives) and, in tests,
+    a kinematic double. Must be safe to call from one thread per arm concurrently.
+    """
+
+    arms: tuple[str, ...]
+
+    def perform(self, call: PrimitiveCall, keypoints: Mapping[str, Keypoint], arm: str, timeout_s: float) -> ActionOutcome:
+        ...
