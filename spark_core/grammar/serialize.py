@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import unicodedata
 from typing import Any
 
 import yaml
@@ -29,6 +30,21 @@ def plan_to_dict(plan: Plan) -> dict[str, Any]:
     return {"task": plan.task, "tree": node_to_dict(plan.tree)}
 
 
+class _Dumper(yaml.SafeDumper):
+    pass
+
+
+def _represent_str(dumper: yaml.SafeDumper, value: str) -> yaml.ScalarNode:
+    # PyYAML emits some strings plain that it cannot read back (e.g. "0\xa0", ":\xa0"): double-quote any
+    # string with non-ASCII spaces/controls or surrounding whitespace, so every label round-trips exactly.
+    odd = value != value.strip() or any(unicodedata.category(c)[0] in "ZC" and c != " " for c in value)
+    return dumper.represent_scalar("tag:yaml.org,2002:str", value, style='"' if odd else None)
+
+
+_Dumper.add_representer(str, _represent_str)
+
+
 def to_yaml(plan: Plan) -> str:
     """Canonical YAML: keys in a fixed order, params in registry slot order, only explicit params."""
-    return yaml.safe_dump(plan_to_dict(plan), sort_keys=False, default_flow_style=False, allow_unicode=True, width=120)
+    return yaml.dump(plan_to_dict(plan), Dumper=_Dumper, sort_keys=False, default_flow_style=False,
+                     allow_unicode=True, width=120)

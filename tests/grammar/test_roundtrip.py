@@ -2,7 +2,7 @@
 
 import json
 
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from spark_core.grammar import REGISTRY, ArmUse, SlotType, parse_plan, plan_to_dict, to_yaml
@@ -65,6 +65,8 @@ def tree(arm_scope=None, depth=0):
 
 @settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(task=_label, root=tree())
+@example(task="0", root={"primitive": "pick", "params": {"keypoint_label": "0\xa0"}})  # found by hypothesis
+@example(task=" yes", root={"primitive": "pick", "params": {"keypoint_label": ":\xa0"}})
 def test_generated_tree_round_trips(task, root):
     first = parse_plan(json.dumps({"task": task, "tree": root}))
     again = parse_plan(to_yaml(first))
