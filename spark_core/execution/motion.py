@@ -1,0 +1,90 @@
+"""Arm motions on a World: IK (pinocchio) + jerk-limited joint trajectories (ruckig) + straight Cartesian lines."""
+
+from __future__ import annotations
+
+from typing import Callable
+
+import numpy as np
+
+from ..control.ik import Unreachable, solve_ik
+from ..control.pose import Pose, rotation_error
+from ..control.trajectory import Limits, chain_joint_waypoints, line_trajectory
+from .protocols import ActionOutcome, FailureKind
+from .world import World
+
+POSITION_TOL_M = 0.01
+
+
+class ArmMotion:
+    """Motion helper for one arm. `speed` scales the joint velocity/acceleration/jerk limits (0..1]."""
+
+    def __init__(self, world: World, arm: str, speed: float = 0.6, rng: np.random.Generator | None = None):
+        self.world = world
+        self.arm = arm
+        self.kin = world.kinematics[arm]
+        desc = self.kin.robot
+        self.limits = Limits(np.array(desc.max_velocity_rad_s), np.full(len(desc.arm_joints), desc.max_acceleration_rad_s2),
+                             np.full(len(desc.arm_joints), desc.max_jerk_rad_s3)).scaled(speed)
+        self.rng = rng or np.random.default_rng(0)
+
+    def ik(self, pose: Pose, seed: np.ndarray | None = None, what: str = "target") -> np.ndarray:
+        return solve_ik(self.kin, pose, self.world.q(self.arm) if seed is None else seed, rng=self.rng, what=what).q
+
+    def move_to(self, pose: Pose | list[Pose], what: str = "target", settle_s: float = 0.1) -> ActionOutcome:
+        """Joint-space move through one or more TCP poses (one smooth chained trajectory)."""
+        poses = pose if isinstance(pose, list) else [pose]
+        q = self.world.q(self.arm)
+        waypoints = [q]
+        try:
+            for p in poses:
+                waypoints.append(self.ik(p, waypoints[-1], what))
+        except Unreachable as e:
+            return ActionOutcome.fail(str(e), FailureKind.KINEMATIC_LIMIT)
+        res = self.world.execute(self.arm, chain_joint_waypoints(waypoints, self.limits), settle_s=settle_s)
+        return self._check(poses[-1], res.sim_time_s, what)
+
+    def move_joints(self, q_target: np.ndarray, what: str = "joint target") -> ActionOutcome:
+        res = self.world.execute(self.arm, chain_joint_waypoints([self.world.q(self.arm), q_target], self.limits))
+        err = float(np.max(np.abs(self.world.q(self.arm) - q_target)))
+        if err > 0.05:
+            return ActionOutcome.fail(f"joints {err:.3f} rad from the {what}", FailureKind.CONTROL, res.sim_time_s)
+        return ActionOutcome.success(res.sim_time_s)
+
+    def move_line(self, target: Pose, speed_m_s: float = 0.15, stop: Callable[[], bool] | None = None,
+                  what: str = "line target", check: bool = True) -> ActionOutcome:
+        """Straight-line TCP motion (dense IK, min-jerk timing). `stop()` ends it early (contact-aware moves)."""
+        start = self.world.tcp_pose(self.arm)
+        dist = float(np.linalg.norm(target.position_m - start.position_m))
+        ang = rotation_error(start.rotation, target.rotation)
+        n = max(int(np.ceil(max(dist / 0.01, ang / 0.05))), 1)
+        q = self.world.q(self.arm)
+        path = [q]
+        try:
+            for k in range(1, n + 1):
+                s = k / n
+                R = _slerp(start.rotation, target.rotation, s)
+                q = solve_ik(self.kin, Pose(start.position_m + s * (target.position_m - start.position_m), R), q,
+                             restarts=0, rng=self.rng, what=what).q
+                if np.max(np.abs(q - path[-1])) > 0.5:
+                    raise Unreachable(f"straight line to the {what} needs a joint flip (singularity or limit)")
+                path.append(q)
+        except Unreachable as e:
+            return ActionOutcome.fail(str(e), FailureKind.KINEMATIC_LIMIT)
+        duration = max(dist / speed_m_s, ang / 1.0, 0.2)
+        res = self.world.execute(self.arm, line_trajectory(np.array(path), duration), stop=stop)
+        if not res.completed or not check:
+            return ActionOutcome.success(res.sim_time_s, stopped_early=not res.completed)
+        return self._check(target, res.sim_time_s, what)
+
+    def _check(self, target: Pose, sim_s: float, what: str) -> ActionOutcome:
+        err = float(np.linalg.norm(self.world.tcp_pose(self.arm).position_m - target.position_m))
+        if err > POSITION_TOL_M:
+            return ActionOutcome.fail(f"TCP {err * 100:.1f} cm from the {what} (tolerance 1 cm): blocked or dragged",
+                                      FailureKind.CONTROL, sim_s)
+        return ActionOutcome.success(sim_s)
+
+
+def _slerp(R0: np.ndarray, R1: np.ndarray, s: float) -> np.ndarray:
+    import pinocchio as pin
+
+    return R0 @ pin.exp3(s * pin.log3(R0.T @ R1))

@@ -1,0 +1,103 @@
+"""Shared context and helpers for primitive implementations on a World."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Callable, Mapping
+
+import numpy as np
+
+from ...control.pose import Pose, rot_z, top_down_rotation, wrap_grasp_yaw, yaw_of
+from ...perception import Keypoint, LabelNotFound
+from ..motion import ArmMotion
+from ..protocols import ActionOutcome, FailureKind, Resolver
+from ..world import World
+
+IMPLEMENTATIONS: dict[str, Callable[["Ctx"], ActionOutcome]] = {}
+TABLE_CLEARANCE_M = 0.012  # lowest TCP height above the table for a top-down grasp
+CONTACT_FORCE_N = 3.0
+
+
+def primitive(name: str):
+    """Register the implementation of grammar primitive `name`."""
+
+    def deco(fn: Callable[["Ctx"], ActionOutcome]):
+        IMPLEMENTATIONS[name] = fn
+        return fn
+
+    return deco
+
+
+@dataclass
+class ArmMemory:
+    """What an arm knows about what it carries (from its own grasp, not from ground truth)."""
+
+    held_label: str | None = None
+    held_extent_m: np.ndarray | None = None
+    grasp_offset_z_m: float = 0.0  # TCP height above the held object's bottom
+
+
+@dataclass
+class Ctx:
+    world: World
+    arm: str
+    motion: ArmMotion
+    args: dict[str, Any]
+    keypoints: Mapping[str, Keypoint]
+    memory: ArmMemory
+    resolver: Resolver | None = None
+    rng: np.random.Generator = field(default_factory=lambda: np.random.default_rng(0))
+
+    # -- perception ---------------------------------------------------------------------------------------------
+    def kp(self, slot: str) -> Keypoint:
+        return self.keypoints[self.args[slot]]
+
+    def observe(self, label: str) -> Keypoint | None:
+        """Look again (post-conditions that need perception). None when the label is not seen."""
+        if self.resolver is None:
+            return None
+        try:
+            self.resolver.refresh()
+            return self.resolver.resolve(label)
+        except LabelNotFound:
+            return None
+
+    # -- geometry -----------------------------------------------------------------------------------------------
+    @property
+    def tcp(self) -> Pose:
+        return self.world.tcp_pose(self.arm)
+
+    def current_yaw(self) -> float:
+        return wrap_grasp_yaw(yaw_of(self.tcp.rotation))
+
+    def grasp_yaw(self, kp: Keypoint) -> float:
+        """Fingers close across the object's short side: yaw from its principal axis, else keep the current."""
+        if kp.yaw_rad is None:
+            return self.current_yaw()
+        ext = kp.extent_m
+        yaw = kp.yaw_rad if ext[0] >= ext[1] else kp.yaw_rad + np.pi / 2
+        return wrap_grasp_yaw(yaw)
+
+    def top_down(self, position, yaw: float | None = None) -> Pose:
+        return Pose(np.asarray(position, float), top_down_rotation(self.current_yaw() if yaw is None else yaw))
+
+    def grasp_height(self, kp: Keypoint) -> float:
+        """TCP z for a top-down grasp: the object's centre, a little below its top for tall objects."""
+        top = kp.top_z_m
+        return float(max(min(kp.position_m[2], top - 0.02), TABLE_CLEARANCE_M, top - 0.045))
+
+    # -- sensing ------------------------------------------------------------------------------------------------
+    def holding(self) -> bool:
+        g = self.world.kinematics[self.arm].robot.gripper
+        return self.world.gripper_width_m(self.arm) > g.closed_empty_width_m and bool(self.world.pinched_bodies(self.arm))
+
+    def contact(self, threshold_n: float = CONTACT_FORCE_N) -> Callable[[], bool]:
+        return lambda: self.world.wrist_force_n(self.arm) > threshold_n
+
+    def fail(self, reason: str, kind: FailureKind = FailureKind.CONTROL) -> ActionOutcome:
+        return ActionOutcome.fail(reason, kind)
+
+
+def yaw_rotation(R: np.ndarray, dyaw: float) -> np.ndarray:
+    """Rotate an orientation about world z."""
+    return rot_z(dyaw) @ R

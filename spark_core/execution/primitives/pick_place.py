@@ -1,0 +1,182 @@
+"""Grasping objects and putting them down: pick, place, place_in, stack, insert, drag, hang, grasp_se3."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...control.pose import Pose
+from ...perception import Keypoint
+from ..protocols import ActionOutcome, FailureKind
+from .base import CONTACT_FORCE_N, Ctx, primitive
+from .gripper import grasp, open_gripper
+
+APPROACH_M = 0.10
+SIDE_ROTATION = np.array([[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])  # TCP z = world +x, fingers close along z
+
+
+def _seq(*steps) -> ActionOutcome:
+    for step in steps:
+        out = step()
+        if not out.ok:
+            return out
+    return ActionOutcome.success(0.0)
+
+
+def grasp_object(ctx: Ctx, kp: Keypoint, force: float = 50.0, strategy: str = "top_down",
+                 target_width: float | None = None) -> ActionOutcome:
+    """Approach from above (or from the robot's side), descend straight, close, and remember what is held."""
+    open_gripper(ctx)
+    if strategy == "side":
+        z = float(max(kp.position_m[2], 0.03))
+        at = np.array([kp.position_m[0], kp.position_m[1], z])
+        pre, pose = Pose(at - [APPROACH_M, 0, 0], SIDE_ROTATION), Pose(at, SIDE_ROTATION)
+    else:
+        yaw = ctx.grasp_yaw(kp)
+        z = ctx.grasp_height(kp)
+        pre = ctx.top_down([kp.position_m[0], kp.position_m[1], kp.top_z_m + APPROACH_M], yaw)
+        pose = ctx.top_down([kp.position_m[0], kp.position_m[1], z], yaw)
+    out = _seq(lambda: ctx.motion.move_to(pre, what=f"approach above {kp.label!r}"),
+               lambda: ctx.motion.move_line(pose, speed_m_s=0.12, what=f"grasp pose of {kp.label!r}"))
+    if not out.ok:
+        return out
+    ctx.args = {**ctx.args, "force": force, "target_width": target_width}
+    out = grasp(ctx)
+    if out.ok:
+        ctx.memory.held_label = kp.label
+        ctx.memory.held_extent_m = np.asarray(kp.extent_m, float).copy()
+        ctx.memory.grasp_offset_z_m = float(pose.position_m[2] - (kp.position_m[2] - kp.extent_m[2] / 2))
+    return out
+
+
+def lift_held(ctx: Ctx, height: float) -> ActionOutcome:
+    out = ctx.motion.move_line(ctx.tcp.translated([0, 0, height]), speed_m_s=0.12, what="lift height", check=False)
+    if not ctx.holding():
+        ctx.memory.held_label = None
+        return ctx.fail("object slipped out of the gripper while lifting")
+    return out
+
+
+@primitive("grasp_se3")
+def grasp_se3(ctx: Ctx) -> ActionOutcome:
+    a = ctx.args
+    return grasp_object(ctx, ctx.kp("keypoint_label"), a["force"], a["strategy"], a.get("target_width"))
+
+
+@primitive("pick")
+@primitive("pick_with_arm")
+def pick(ctx: Ctx) -> ActionOutcome:
+    kp = ctx.kp("keypoint_label")
+    out = grasp_object(ctx, kp)
+    if not out.ok:
+        return out
+    return lift_held(ctx, ctx.args["lift_height"])
+
+
+def put_down(ctx: Ctx, target: Keypoint, offset_xy=(0.0, 0.0), floor_z: float | None = None,
+             what: str = "target") -> ActionOutcome:
+    """Carry the held object above `target`, descend until the wrist feels support, release, retract.
+
+    The expected support height is the target's top (or `floor_z` inside a container). Descending well past
+    it without feeling anything means the target is not where perception said: fail instead of dropping.
+    """
+    if not ctx.holding():
+        return ctx.fail(f"nothing in the gripper to put on the {what}")
+    ext = ctx.memory.held_extent_m if ctx.memory.held_extent_m is not None else np.full(3, 0.04)
+    support_z = target.top_z_m if floor_z is None else floor_z
+    tcp_at_contact = support_z + ctx.memory.grasp_offset_z_m
+    xy = target.position_m[:2] + np.asarray(offset_xy, float)
+    yaw = ctx.current_yaw()
+    above = ctx.top_down([xy[0], xy[1], max(tcp_at_contact, target.top_z_m + ctx.memory.grasp_offset_z_m) + 0.06 + 0.02], yaw)
+    out = ctx.motion.move_to(above, what=f"point above the {what} {target.label!r}")
+    if not out.ok:
+        return out
+    lowest = ctx.top_down([xy[0], xy[1], tcp_at_contact - 0.03], yaw)
+    out = ctx.motion.move_line(lowest, speed_m_s=0.06, stop=ctx.contact(CONTACT_FORCE_N), what="support", check=False)
+    if not out.detail.get("stopped_early"):
+        open_gripper(ctx)
+        ctx.memory.held_label = None
+        ctx.motion.move_line(ctx.tcp.translated([0, 0, 0.08]), check=False)
+        return ctx.fail(f"no support felt at the {what} {target.label!r} (expected near z={support_z:.3f} m): "
+                        "it moved or is not there", FailureKind.PERCEPTION)
+    open_gripper(ctx)
+    ctx.memory.held_label = None
+    ctx.motion.move_line(ctx.tcp.translated([0, 0, 0.08]), what="retreat", check=False)
+    if ctx.world.pinched_bodies(ctx.arm):
+        return ctx.fail("object stuck to the gripper after release")
+    return ActionOutcome.success(0.0, support_z_m=round(float(ctx.tcp.position_m[2]), 4), extent=ext.tolist())
+
+
+@primitive("place")
+@primitive("place_with_arm")
+def place(ctx: Ctx) -> ActionOutcome:
+    a = ctx.args
+    return put_down(ctx, ctx.kp("target_label"), (a.get("offset_x", 0.0), a.get("offset_y", 0.0)))
+
+
+@primitive("place_in")
+def place_in(ctx: Ctx) -> ActionOutcome:
+    c = ctx.kp("container_label")
+    floor = c.position_m[2] - c.extent_m[2] / 2 + 0.01
+    return put_down(ctx, c, floor_z=floor, what="container")
+
+
+@primitive("stack")
+def stack(ctx: Ctx) -> ActionOutcome:
+    kp = ctx.kp("keypoint_label")
+    out = grasp_object(ctx, kp)
+    if not out.ok:
+        return out
+    out = lift_held(ctx, 0.10)
+    if not out.ok:
+        return out
+    return put_down(ctx, ctx.kp("target_label"))
+
+
+@primitive("hang")
+def hang(ctx: Ctx) -> ActionOutcome:
+    if not ctx.holding():
+        out = grasp_object(ctx, ctx.kp("keypoint_label"))
+        if not out.ok:
+            return out
+        lift_held(ctx, 0.1)
+    return put_down(ctx, ctx.kp("target_label"), what="hook")
+
+
+@primitive("insert")
+def insert(ctx: Ctx) -> ActionOutcome:
+    """Lower the held object into the opening at the keypoint, compliant (stop on contact), then release."""
+    if not ctx.holding():
+        return ctx.fail("insert with nothing in the gripper")
+    hole = ctx.kp("keypoint_label")
+    off = ctx.memory.grasp_offset_z_m
+    yaw = ctx.current_yaw()
+    above = ctx.top_down([hole.position_m[0], hole.position_m[1], hole.top_z_m + off + 0.04], yaw)
+    out = ctx.motion.move_to(above, what=f"point above {hole.label!r}")
+    if not out.ok:
+        return out
+    goal_z = hole.top_z_m - ctx.args["depth"] + off
+    out = ctx.motion.move_line(ctx.top_down([hole.position_m[0], hole.position_m[1], goal_z], yaw), speed_m_s=0.04,
+                               stop=ctx.contact(8.0), what="insertion depth", check=False)
+    reached = ctx.tcp.position_m[2] <= goal_z + 0.01
+    open_gripper(ctx)
+    ctx.memory.held_label = None
+    ctx.motion.move_line(ctx.tcp.translated([0, 0, 0.08]), check=False)
+    if not reached:
+        return ctx.fail(f"jammed {100 * (ctx.tcp.position_m[2] - goal_z):.1f} cm above the insertion depth")
+    return ActionOutcome.success(0.0)
+
+
+@primitive("drag")
+def drag(ctx: Ctx) -> ActionOutcome:
+    kp, target = ctx.kp("keypoint_label"), ctx.kp("target_label")
+    out = grasp_object(ctx, kp)
+    if not out.ok:
+        return out
+    lift_held(ctx, 0.005)
+    goal = ctx.tcp.position_m.copy()
+    goal[:2] = target.position_m[:2]
+    out = ctx.motion.move_line(ctx.top_down(goal), speed_m_s=0.08, what=f"{target.label!r}")
+    open_gripper(ctx)
+    ctx.memory.held_label = None
+    ctx.motion.move_line(ctx.tcp.translated([0, 0, 0.08]), check=False)
+    return out

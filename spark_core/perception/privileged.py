@@ -1,0 +1,39 @@
+"""PRIVILEGED resolver: label -> keypoint from simulator ground truth. For testing control alone; every
+keypoint it returns is marked `privileged:sim-state`, and every figure produced with it must say so."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .keypoint import Keypoint, LabelNotFound
+
+SOURCE = "privileged:sim-state"
+
+
+class PrivilegedResolver:
+    """Reads object and part poses straight from the simulated world (no cameras, no noise)."""
+
+    privileged = True
+
+    def __init__(self, world):
+        self.world = world
+        scene = world.scene
+        self._bodies: dict[str, str] = {label.lower(): o.body for label, o in scene.objects.items()}
+        self._bodies.update({label.lower(): body for label, (body, _) in scene.parts.items()})
+        self.refreshes = 0
+
+    def labels(self) -> list[str]:
+        return sorted(self._bodies)
+
+    def refresh(self) -> None:
+        self.refreshes += 1  # ground truth is always current; counted so tests can see re-detection happen
+
+    def resolve(self, label: str) -> Keypoint:
+        body = self._bodies.get(label.strip().lower())
+        if body is None:
+            raise LabelNotFound(label, f"no object with that label in the scene (have: {', '.join(self.labels())})")
+        lo, hi = self.world.body_aabb(body)
+        R = self.world.body_rotation(body)
+        yaw = float(np.arctan2(R[1, 0], R[0, 0]))
+        # AABB extent in the object's own frame is more useful for grasp width: undo the yaw for boxes
+        return Keypoint(label, (lo + hi) / 2, hi - lo, yaw, SOURCE)

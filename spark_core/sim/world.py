@@ -1,0 +1,260 @@
+"""MuJoCo implementation of the World protocol: joint trajectories tracked by position actuators, a
+force-limited gripper, touch sensing, on-demand cameras, and (privileged) ground-truth state for oracles."""
+
+from __future__ import annotations
+
+import threading
+from dataclasses import dataclass, field
+from typing import Callable
+
+import mujoco
+import numpy as np
+
+from ..control.kinematics import ArmKinematics
+from ..control.pose import Pose
+from ..control.trajectory import JointTrajectory
+from .scene import Scene
+
+CONTROL_DT_S = 0.01  # control period; physics runs at the scene's timestep underneath
+
+
+@dataclass
+class TrajectoryRecorder:
+    """Joint states at the control rate (t_s, arm, q_rad, gripper_width_m, ctrl), for the trace store."""
+
+    rows: list[tuple[float, str, list[float], float]] = field(default_factory=list)
+
+
+@dataclass(frozen=True)
+class ExecResult:
+    completed: bool  # False when `stop` ended the motion early
+    sim_time_s: float
+    tracking_error_rad: float  # max |q - q_cmd| at the end
+
+
+class MujocoWorld:
+    """One simulated tabletop. Thread-safe: arms may be commanded from different threads; physics steps
+    are serialised under a lock (two arms interleave at control-period granularity)."""
+
+    def __init__(self, scene: Scene):
+        self.scene = scene
+        self.model = scene.model
+        self.data = mujoco.MjData(self.model)
+        self.arms: tuple[str, ...] = tuple(scene.robots)
+        self.kinematics = {a: ArmKinematics(scene.robot_descriptions[a], scene.T_world_base[a]) for a in self.arms}
+        m = self.model
+        self._qadr = {a: np.array([m.joint(j).qposadr[0] for j in n.arm_joints]) for a, n in scene.robots.items()}
+        self._dadr = {a: np.array([m.joint(j).dofadr[0] for j in n.arm_joints]) for a, n in scene.robots.items()}
+        self._act = {a: np.array([m.actuator(x).id for x in n.arm_actuators]) for a, n in scene.robots.items()}
+        self._grip = {a: m.actuator(n.gripper_actuator).id for a, n in scene.robots.items()}
+        self._fingers = {a: [m.joint(f).qposadr[0] for f in n.finger_joints] for a, n in scene.robots.items()}
+        self._finger_bodies = {a: {m.body(b).id for b in n.finger_bodies} for a, n in scene.robots.items()}
+        self._robot_bodies = {m.body(b).id for n in scene.robots.values() for b in n.bodies}
+        self._tcp = {a: m.site(n.tcp_site).id for a, n in scene.robots.items()}
+        hands = {a: m.site(n.tcp_site).bodyid for a, n in scene.robots.items()}  # the TCP body
+        self._hand_bodies = {a: {b for b in range(m.nbody) if b == m.body_parentid[h] or _is_descendant(m, b, m.body_parentid[h])}
+                             for a, h in hands.items()}
+        self._lock = threading.RLock()
+        self.recorder: TrajectoryRecorder | None = None
+        self.renderer = None
+        self.reset()
+
+    # -- state -------------------------------------------------------------------------------------------------
+    def reset(self) -> None:
+        with self._lock:
+            mujoco.mj_resetData(self.model, self.data)
+            for a in self.arms:
+                q = self.scene.robot_descriptions[a].home_q_rad
+                self.data.qpos[self._qadr[a]] = q
+                self.data.ctrl[self._act[a]] = q
+                self.data.ctrl[self._grip[a]] = self.scene.robot_descriptions[a].gripper.max_width_m / 2
+                self.data.qpos[self._fingers[a]] = self.scene.robot_descriptions[a].gripper.max_width_m / 2
+            mujoco.mj_forward(self.model, self.data)
+
+    @property
+    def sim_time_s(self) -> float:
+        return float(self.data.time)
+
+    def q(self, arm: str) -> np.ndarray:
+        return self.data.qpos[self._qadr[arm]].copy()
+
+    def tcp_pose(self, arm: str) -> Pose:
+        sid = self._tcp[arm]
+        return Pose(self.data.site_xpos[sid].copy(), self.data.site_xmat[sid].reshape(3, 3).copy())
+
+    def gripper_width_m(self, arm: str) -> float:
+        """Finger gap in metres (the width sensor)."""
+        return float(self.data.qpos[self._fingers[arm]].sum())
+
+    def finger_contacts(self, arm: str) -> dict[int, set[int]]:
+        """Touch sensing: for each finger body id, the non-robot body ids it touches."""
+        out: dict[int, set[int]] = {b: set() for b in self._finger_bodies[arm]}
+        m, d = self.model, self.data
+        for i in range(d.ncon):
+            c = d.contact[i]
+            b1, b2 = m.geom_bodyid[c.geom1], m.geom_bodyid[c.geom2]
+            for f, o in ((b1, b2), (b2, b1)):
+                if f in out and o not in self._robot_bodies:
+                    out[f].add(int(o))
+        return out
+
+    def pinched_bodies(self, arm: str) -> set[int]:
+        """Bodies touched by both fingers at once (what the gripper is holding)."""
+        sets = list(self.finger_contacts(arm).values())
+        return set.intersection(*sets) if sets else set()
+
+    def hand_contact_force_n(self, arm: str) -> float:
+        """Total normal force (N) between this arm's hand/fingers and anything that is not the robot."""
+        m, d = self.model, self.data
+        hand = self._hand_bodies[arm]
+        total = 0.0
+        f6 = np.zeros(6)
+        for i in range(d.ncon):
+            c = d.contact[i]
+            b1, b2 = m.geom_bodyid[c.geom1], m.geom_bodyid[c.geom2]
+            if (b1 in hand and b2 not in self._robot_bodies) or (b2 in hand and b1 not in self._robot_bodies):
+                mujoco.mj_contactForce(m, d, i, f6)
+                total += abs(f6[0])
+        return total
+
+    def wrist_force_n(self, arm: str) -> float:
+        """Simulated wrist force sensor (N): normal contact force on the hand and whatever it holds, from
+        anything that is neither the robot nor the held object itself."""
+        m, d = self.model, self.data
+        held = self.pinched_bodies(arm)
+        inside = self._hand_bodies[arm] | held
+        total = 0.0
+        f6 = np.zeros(6)
+        for i in range(d.ncon):
+            c = d.contact[i]
+            b1, b2 = m.geom_bodyid[c.geom1], m.geom_bodyid[c.geom2]
+            for a, b in ((b1, b2), (b2, b1)):
+                if a in inside and b not in inside and b not in self._robot_bodies:
+                    mujoco.mj_contactForce(m, d, i, f6)
+                    total += abs(f6[0])
+                    break
+        return total
+
+    # -- actuation ---------------------------------------------------------------------------------------------
+    def _tick(self, steps: int) -> None:
+        mujoco.mj_step(self.model, self.data, nstep=steps)
+
+    def _record(self, arm: str) -> None:
+        if self.recorder is not None:
+            self.recorder.rows.append((self.sim_time_s, arm, self.q(arm).round(5).tolist(), round(self.gripper_width_m(arm), 5)))
+
+    def execute(self, arm: str, traj: JointTrajectory, stop: Callable[[], bool] | None = None,
+                settle_s: float = 0.1) -> ExecResult:
+        """Track a joint trajectory at the control rate; `stop()` is checked every control period."""
+        n_sub = max(int(round(CONTROL_DT_S / self.model.opt.timestep)), 1)
+        t0 = self.sim_time_s
+        completed = True
+        for q_cmd in traj.q_rad:
+            with self._lock:
+                self.data.ctrl[self._act[arm]] = q_cmd
+                self._tick(n_sub)
+                self._record(arm)
+                if stop is not None and stop():
+                    self.data.ctrl[self._act[arm]] = self.q(arm)  # hold where contact stopped us
+                    completed = False
+                    break
+        if completed and settle_s > 0:
+            self.settle(settle_s)
+        err = float(np.max(np.abs(self.q(arm) - self.data.ctrl[self._act[arm]])))
+        return ExecResult(completed, self.sim_time_s - t0, err)
+
+    def set_gripper(self, arm: str, width_m: float, force_n: float, duration_s: float = 0.6) -> float:
+        """Drive the fingers toward `width_m` with at most `force_n` (N); returns the simulated seconds spent."""
+        g = self.scene.robot_descriptions[arm].gripper
+        width_m = float(np.clip(width_m, 0.0, g.max_width_m))
+        force_n = float(np.clip(force_n, 1.0, g.max_force_n))
+        with self._lock:
+            self.model.actuator_forcerange[self._grip[arm]] = [-force_n, force_n]
+            self.data.ctrl[self._grip[arm]] = width_m / 2
+        return self.settle(duration_s, arm)
+
+    def settle(self, seconds: float, arm: str | None = None) -> float:
+        n_sub = max(int(round(CONTROL_DT_S / self.model.opt.timestep)), 1)
+        t0 = self.sim_time_s
+        for _ in range(max(int(round(seconds / CONTROL_DT_S)), 1)):
+            with self._lock:
+                self._tick(n_sub)
+                for a in ([arm] if arm else self.arms):
+                    self._record(a)
+        return self.sim_time_s - t0
+
+    # -- privileged ground truth (only for oracles and success predicates; never for the planner) ----------------
+    def body_position(self, body: str) -> np.ndarray:
+        return self.data.body(body).xpos.copy()
+
+    def body_rotation(self, body: str) -> np.ndarray:
+        return self.data.body(body).xmat.reshape(3, 3).copy()
+
+    def joint_value(self, joint: str) -> float:
+        return float(self.data.joint(joint).qpos[0])
+
+    def set_joint_value(self, joint: str, value: float) -> None:
+        with self._lock:
+            self.data.joint(joint).qpos[0] = value
+            mujoco.mj_forward(self.model, self.data)
+
+    def set_body_position(self, body: str, xyz) -> None:
+        """Teleport a free object (tests: move an object mid-plan)."""
+        with self._lock:
+            adr = self.model.joint(body + "/free").qposadr[0]
+            self.data.qpos[adr:adr + 3] = xyz
+            self.data.qvel[self.model.joint(body + "/free").dofadr[0]:][:6] = 0
+            mujoco.mj_forward(self.model, self.data)
+
+    def body_aabb(self, body: str) -> tuple[np.ndarray, np.ndarray]:
+        """World-frame axis-aligned bounds (min, max) of a body and its sub-bodies' geoms."""
+        m, d = self.model, self.data
+        root = m.body(body).id
+        ids = [b for b in range(m.nbody) if b == root or _is_descendant(m, b, root)]
+        lo, hi = np.full(3, np.inf), np.full(3, -np.inf)
+        for g in range(m.ngeom):
+            if m.geom_bodyid[g] not in ids:
+                continue
+            R = d.geom_xmat[g].reshape(3, 3)
+            half = _geom_half_extent(m, g)
+            ext = np.abs(R) @ half
+            lo = np.minimum(lo, d.geom_xpos[g] - ext)
+            hi = np.maximum(hi, d.geom_xpos[g] + ext)
+        return lo, hi
+
+    def body_id(self, body: str) -> int:
+        return self.model.body(body).id
+
+    # -- cameras -----------------------------------------------------------------------------------------------
+    def render(self, camera: str, width: int = 640, height: int = 480):
+        from .cameras import render_frame
+
+        with self._lock:
+            return render_frame(self, camera, width, height)
+
+    def close(self) -> None:
+        if self.renderer is not None:
+            self.renderer.close()
+            self.renderer = None
+
+
+def _is_descendant(m: mujoco.MjModel, b: int, root: int) -> bool:
+    while b > 0:
+        b = m.body_parentid[b]
+        if b == root:
+            return True
+    return False
+
+
+def _geom_half_extent(m: mujoco.MjModel, g: int) -> np.ndarray:
+    s = m.geom_size[g]
+    t = m.geom_type[g]
+    if t == mujoco.mjtGeom.mjGEOM_BOX:
+        return s.copy()
+    if t == mujoco.mjtGeom.mjGEOM_CYLINDER:
+        return np.array([s[0], s[0], s[1]])
+    if t == mujoco.mjtGeom.mjGEOM_SPHERE:
+        return np.full(3, s[0])
+    if t == mujoco.mjtGeom.mjGEOM_CAPSULE:
+        return np.array([s[0], s[0], s[1] + s[0]])
+    return np.full(3, m.geom_rbound[g])
