@@ -39,8 +39,8 @@ class RobotDescription:
     gripper: GripperSpec
     kp: tuple[float, ...]  # position-actuator stiffness per arm joint (N m / rad)
     max_velocity_rad_s: tuple[float, ...]
-    max_acceleration_rad_s2: float = 4.0
-    max_jerk_rad_s3: float = 40.0
+    max_acceleration_rad_s2: float = 8.0
+    max_jerk_rad_s3: float = 80.0
     armature: float = 0.1
     reach_m: float = 0.85
     collision_links: tuple[str, ...] = field(default_factory=tuple)  # links that collide with the scene

@@ -30,7 +30,7 @@ class ArmMotion:
     def ik(self, pose: Pose, seed: np.ndarray | None = None, what: str = "target") -> np.ndarray:
         return solve_ik(self.kin, pose, self.world.q(self.arm) if seed is None else seed, rng=self.rng, what=what).q
 
-    def move_to(self, pose: Pose | list[Pose], what: str = "target", settle_s: float = 0.1) -> ActionOutcome:
+    def move_to(self, pose: Pose | list[Pose], what: str = "target", settle_s: float = 0.05) -> ActionOutcome:
         """Joint-space move through one or more TCP poses (one smooth chained trajectory)."""
         poses = pose if isinstance(pose, list) else [pose]
         q = self.world.q(self.arm)
@@ -50,7 +50,7 @@ class ArmMotion:
             return ActionOutcome.fail(f"joints {err:.3f} rad from the {what}", FailureKind.CONTROL, res.sim_time_s)
         return ActionOutcome.success(res.sim_time_s)
 
-    def move_line(self, target: Pose, speed_m_s: float = 0.15, stop: Callable[[], bool] | None = None,
+    def move_line(self, target: Pose, speed_m_s: float = 0.25, stop: Callable[[], bool] | None = None,
                   what: str = "line target", check: bool = True) -> ActionOutcome:
         """Straight-line TCP motion (dense IK, min-jerk timing). `stop()` ends it early (contact-aware moves)."""
         start = self.world.tcp_pose(self.arm)

@@ -87,7 +87,7 @@ def plate(color: str) -> ObjectSpec:
     # A flat cylinder sinks into the table (single-point cylinder/box contact): collide as a square slab instead.
     def build(body, rgba):
         _visual_only(_geom(body, CYL, [0.09, 0.008], (0, 0, 0.008), rgba, mass=0.0001))
-        _collision_only(_geom(body, BOX, [0.075, 0.075, 0.008], (0, 0, 0.008), None, mass=0.3))
+        _collision_only(_geom(body, BOX, [0.075, 0.075, 0.008], (0, 0, 0.008), None, mass=1.2))
     return ObjectSpec("plate", "tableware", f"flat round {color} ceramic plate", 0.095, 0.016, True, build)
 
 
@@ -113,12 +113,13 @@ def basket(color: str) -> ObjectSpec:
         _geom(body, BOX, [0.08, 0.08, 0.004], (0, 0, 0.004), rgba, mass=0.3)
         for sx, sy, hx, hy in ((1, 0, 0.005, 0.08), (-1, 0, 0.005, 0.08), (0, 1, 0.08, 0.005), (0, -1, 0.08, 0.005)):
             _geom(body, BOX, [hx, hy, 0.035], (sx * 0.078, sy * 0.078, 0.039), rgba, mass=0.08)
-    return ObjectSpec("basket", "container", f"{color} woven wicker basket, square and deep", 0.12, 0.074, False, build)
+    return ObjectSpec("basket", "container", f"{color} woven wicker basket, square and deep", 0.125, 0.074, False, build)
 
 
 def sponge(color: str) -> ObjectSpec:
     def build(body, rgba):
-        _geom(body, BOX, [0.035, 0.022, 0.015], (0, 0, 0.015), rgba, mass=0.03)
+        g = _geom(body, BOX, [0.035, 0.022, 0.015], (0, 0, 0.015), rgba, mass=0.03)
+        g.friction = [0.4, 0.005, 0.0001]  # slides over what it scrubs instead of dragging it along
     return ObjectSpec("sponge", "tool", f"soft rectangular {color} kitchen sponge", 0.045, 0.03, True, build,
                       grasp_width_m=0.044)
 
@@ -179,10 +180,12 @@ def cabinet(color: str) -> ObjectSpec:
         for pos, size in (((0, -(w - 0.02), 0.04), (d - 0.01, 0.005, 0.035)), ((0, w - 0.02, 0.04), (d - 0.01, 0.005, 0.035)),
                           ((d - 0.02, 0, 0.04), (0.005, w - 0.02, 0.035)), ((-(d - 0.005), 0, 0.05), (0.008, w - 0.01, 0.045))):
             _geom(drawer, BOX, size, pos, inner, mass=0.1)
-        handle = drawer.add_body(name=body.name + "/handle", pos=[-(d + 0.025), 0, 0.06])
-        _geom(handle, BOX, [0.008, 0.05, 0.008], (0, 0, 0), COLORS["grey"], mass=0.02)
-        for sy in (-1, 1):
-            _geom(handle, BOX, [0.012, 0.006, 0.006], (0.012, sy * 0.045, 0), COLORS["grey"], mass=0.005)
+        handle = drawer.add_body(name=body.name + "/handle", pos=[-(d + 0.03), 0, 0.07])
+        # A vertical pull: a horizontal-approach grasp closes the fingers sideways around it, keeping the wide
+        # hand clear of the table.
+        _geom(handle, BOX, [0.008, 0.008, 0.035], (0, 0, 0), COLORS["grey"], mass=0.02)
+        for sz in (-1, 1):
+            _geom(handle, BOX, [0.016, 0.006, 0.005], (0.018, 0, sz * 0.03), COLORS["grey"], mass=0.005)
     return ObjectSpec("cabinet", "fixture", f"{color} wooden cabinet with one drawer", 0.2, 0.17, False, build,
                       parts={"drawer": "the cabinet's sliding drawer", "drawer handle": "metal handle on the cabinet drawer"})
 
@@ -196,7 +199,7 @@ def stove(color: str) -> ObjectSpec:
         burner.contype = 1
         knob = body.add_body(name=body.name + "/knob", pos=[-0.085, 0.0, 0.055])
         knob.add_joint(name=body.name + "/knob_hinge", type=mujoco.mjtJoint.mjJNT_HINGE, axis=[0, 0, 1],
-                       range=[-3.2, 3.2], damping=0.02, frictionloss=0.01)
+                       range=[-3.2, 3.2], damping=0.3, frictionloss=0.15)  # a detent-like friction: it stays where turned
         _geom(knob, CYL, [0.02, 0.013], (0, 0, 0), COLORS["white"], mass=0.02)
         _geom(knob, BOX, [0.018, 0.005, 0.012], (0, 0, 0.02), COLORS["white"], mass=0.005)
     return ObjectSpec("stove", "fixture", f"{color} electric stove with a black burner", 0.16, 0.043, False, build,

@@ -17,6 +17,7 @@ from .robot_mjcf import RobotNames, add_robot
 TABLE_X = (0.15, 1.0)
 TABLE_Y = (-0.6, 0.6)
 TIMESTEP_S = 0.002
+GRIPPER_CLEARANCE_M = 0.035  # free space between footprints so open fingers fit beside an object
 
 
 @dataclass(frozen=True)
@@ -30,6 +31,7 @@ class ObjectRequest:
     y: tuple[float, float]
     yaw: tuple[float, float] = (0.0, 0.0)
     z: float = 0.0
+    near: str | None = None  # when set, x/y are offsets from that (already placed) object's position
 
 
 @dataclass(frozen=True)
@@ -75,13 +77,16 @@ def sample_placements(requests: list[ObjectRequest], specs: dict[str, ObjectSpec
                       max_tries: int = 2000) -> dict[str, tuple[np.ndarray, float]]:
     """Rejection-sample x, y, yaw per object so footprints (discs) do not overlap. Raises if impossible."""
     placed: dict[str, tuple[np.ndarray, float]] = {}
-    # Most constrained first (fixtures with a fixed spot), so free objects fill in around them.
-    for req in sorted(requests, key=lambda r: (r.x[1] - r.x[0]) * (r.y[1] - r.y[0])):
+    # Most constrained first (fixtures with a fixed spot), so free objects fill in around them; objects placed
+    # relative to another come after it.
+    order = sorted(requests, key=lambda r: (r.near is not None, (r.x[1] - r.x[0]) * (r.y[1] - r.y[0])))
+    for req in order:
         spec = specs[req.label]
+        anchor = placed[req.near][0] if req.near else np.zeros(3)
         for _ in range(max_tries):
-            p = np.array([rng.uniform(*req.x), rng.uniform(*req.y), req.z])
-            ok = all(np.linalg.norm(p[:2] - q[:2]) > spec.footprint_m + specs[o].footprint_m + 0.01
-                     for o, (q, _) in placed.items() if req.z == 0.0 and q[2] == 0.0)
+            p = anchor + np.array([rng.uniform(*req.x), rng.uniform(*req.y), req.z])
+            ok = all(np.linalg.norm(p[:2] - q[:2]) > spec.footprint_m + specs[o].footprint_m + GRIPPER_CLEARANCE_M
+                     for o, (q, _) in placed.items() if req.z == 0.0 and q[2] == 0.0 and o != req.near)
             if ok:
                 placed[req.label] = (p, float(rng.uniform(*req.yaw)))
                 break

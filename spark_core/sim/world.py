@@ -56,6 +56,7 @@ class MujocoWorld:
                              for a, h in hands.items()}
         self._lock = threading.RLock()
         self.recorder: TrajectoryRecorder | None = None
+        self.monitors: list[Callable[["MujocoWorld"], None]] = []  # called every control period (task metrics)
         self.renderer = None
         self.reset()
 
@@ -138,13 +139,15 @@ class MujocoWorld:
     # -- actuation ---------------------------------------------------------------------------------------------
     def _tick(self, steps: int) -> None:
         mujoco.mj_step(self.model, self.data, nstep=steps)
+        for monitor in self.monitors:
+            monitor(self)
 
     def _record(self, arm: str) -> None:
         if self.recorder is not None:
             self.recorder.rows.append((self.sim_time_s, arm, self.q(arm).round(5).tolist(), round(self.gripper_width_m(arm), 5)))
 
     def execute(self, arm: str, traj: JointTrajectory, stop: Callable[[], bool] | None = None,
-                settle_s: float = 0.1) -> ExecResult:
+                settle_s: float = 0.05) -> ExecResult:
         """Track a joint trajectory at the control rate; `stop()` is checked every control period."""
         n_sub = max(int(round(CONTROL_DT_S / self.model.opt.timestep)), 1)
         t0 = self.sim_time_s
@@ -224,6 +227,16 @@ class MujocoWorld:
 
     def body_id(self, body: str) -> int:
         return self.model.body(body).id
+
+    def bodies_in_contact(self, body_a: str, body_b: str) -> bool:
+        m, d = self.model, self.data
+        a, b = m.body(body_a).id, m.body(body_b).id
+        for i in range(d.ncon):
+            c = d.contact[i]
+            pair = (m.geom_bodyid[c.geom1], m.geom_bodyid[c.geom2])
+            if pair == (a, b) or pair == (b, a):
+                return True
+        return False
 
     # -- cameras -----------------------------------------------------------------------------------------------
     def render(self, camera: str, width: int = 640, height: int = 480):

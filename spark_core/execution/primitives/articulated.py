@@ -16,10 +16,10 @@ def _grasp_handle(ctx: Ctx, label_slot: str = "keypoint_label") -> ActionOutcome
     kp = ctx.kp(label_slot)
     at = kp.position_m.copy()
     open_gripper(ctx)
-    out = ctx.motion.move_to(Pose(at - [0.10, 0, 0], SIDE_ROTATION), what=f"approach to {kp.label!r}")
+    out = ctx.motion.move_to(Pose(at - [0.06, 0, 0], SIDE_ROTATION), what=f"approach to {kp.label!r}")
     if not out.ok:
         return out
-    out = ctx.motion.move_line(Pose(at + [0.005, 0, 0], SIDE_ROTATION), speed_m_s=0.08, what=f"{kp.label!r}",
+    out = ctx.motion.move_line(Pose(at + [0.005, 0, 0], SIDE_ROTATION), speed_m_s=0.15, what=f"{kp.label!r}",
                                stop=ctx.contact(15.0), check=False)
     ctx.args = {**ctx.args, "force": 60.0, "target_width": None}
     return grasp(ctx)
@@ -28,7 +28,7 @@ def _grasp_handle(ctx: Ctx, label_slot: str = "keypoint_label") -> ActionOutcome
 def _pull_held(ctx: Ctx, distance: float, what: str) -> ActionOutcome:
     """Pull toward the robot (-x) while holding; success = the hand travelled with the handle still pinched."""
     start = ctx.tcp.position_m.copy()
-    ctx.motion.move_line(Pose(start - [distance, 0, 0], SIDE_ROTATION), speed_m_s=0.08, check=False)
+    ctx.motion.move_line(Pose(start - [distance, 0, 0], SIDE_ROTATION), speed_m_s=0.2, check=False)
     travelled = float(start[0] - ctx.tcp.position_m[0])
     held = ctx.holding()
     open_gripper(ctx)
@@ -58,16 +58,17 @@ def pull(ctx: Ctx) -> ActionOutcome:
 
 @primitive("close_drawer")
 def close_drawer(ctx: Ctx) -> ActionOutcome:
-    """Push the handle with the closed gripper until the drawer hits its end stop (a force spike)."""
+    """Push the drawer front with open fingers (the handle passes between them, so nothing hooks it on the way
+    back) until the drawer sits on its end stop (sustained force)."""
     kp = ctx.kp("keypoint_label")
-    ctx.world.set_gripper(ctx.arm, 0.0, 40.0, duration_s=0.3)
+    open_gripper(ctx)
     at = kp.position_m.copy()
     out = ctx.motion.move_to(Pose(at - [0.08, 0, 0], SIDE_ROTATION), what=f"approach to {kp.label!r}")
     if not out.ok:
         return out
-    out = ctx.motion.move_line(Pose(at + [0.30, 0, 0], SIDE_ROTATION), speed_m_s=0.1, stop=ctx.contact(40.0), check=False)
+    out = ctx.motion.move_line(Pose(at + [0.30, 0, 0], SIDE_ROTATION), speed_m_s=0.15,
+                               stop=ctx.sustained_contact(25.0, ticks=5), check=False)
     ctx.motion.move_line(Pose(ctx.tcp.position_m - [0.08, 0, 0], SIDE_ROTATION), check=False)
-    open_gripper(ctx)
     if not out.detail.get("stopped_early"):
         return ctx.fail("pushed 30 cm without reaching the drawer's end stop: the drawer is not where expected",
                         FailureKind.PERCEPTION)
@@ -90,7 +91,7 @@ def _rotate_held(ctx: Ctx, angle_rad: float) -> ActionOutcome:
 @primitive("turn_knob")
 def turn_knob(ctx: Ctx) -> ActionOutcome:
     kp = ctx.kp("keypoint_label")
-    out = grasp_object(ctx, kp, force=30.0)
+    out = grasp_object(ctx, kp, force=30.0, z=kp.top_z_m - 0.012)  # knobs are gripped by the fin on top
     if not out.ok:
         return out
     out = _rotate_held(ctx, np.radians(ctx.args["angle"]))

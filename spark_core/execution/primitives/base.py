@@ -94,6 +94,16 @@ class Ctx:
     def contact(self, threshold_n: float = CONTACT_FORCE_N) -> Callable[[], bool]:
         return lambda: self.world.wrist_force_n(self.arm) > threshold_n
 
+    def sustained_contact(self, threshold_n: float, ticks: int) -> Callable[[], bool]:
+        """Force above the threshold for `ticks` consecutive control periods (ignores impact spikes)."""
+        count = [0]
+
+        def check() -> bool:
+            count[0] = count[0] + 1 if self.world.wrist_force_n(self.arm) > threshold_n else 0
+            return count[0] >= ticks
+
+        return check
+
     def fail(self, reason: str, kind: FailureKind = FailureKind.CONTROL) -> ActionOutcome:
         return ActionOutcome.fail(reason, kind)
 

@@ -11,7 +11,7 @@ from .base import Ctx, primitive
 @primitive("grasp")
 def grasp(ctx: Ctx) -> ActionOutcome:
     g = ctx.world.kinematics[ctx.arm].robot.gripper
-    ctx.world.set_gripper(ctx.arm, 0.0, ctx.args["force"], duration_s=0.5)
+    ctx.world.set_gripper(ctx.arm, 0.0, ctx.args["force"], duration_s=0.4)
     width = ctx.world.gripper_width_m(ctx.arm)
     if width <= g.closed_empty_width_m or not ctx.world.pinched_bodies(ctx.arm):
         ctx.memory.held_label = None
@@ -24,7 +24,7 @@ def grasp(ctx: Ctx) -> ActionOutcome:
 
 def open_gripper(ctx: Ctx) -> float:
     g = ctx.world.kinematics[ctx.arm].robot.gripper
-    return ctx.world.set_gripper(ctx.arm, g.max_width_m, g.max_force_n / 2, duration_s=0.4)
+    return ctx.world.set_gripper(ctx.arm, g.max_width_m, g.max_force_n / 2, duration_s=0.3)
 
 
 @primitive("release")

@@ -21,7 +21,7 @@ class PrimitiveLibrary:
     `resolver` (optional) lets post-conditions look again (e.g. did the pushed object move?).
     """
 
-    def __init__(self, world: World, resolver: Resolver | None = None, seed: int = 0, speed: float = 0.6):
+    def __init__(self, world: World, resolver: Resolver | None = None, seed: int = 0, speed: float = 0.8):
         self.world = world
         self.arms = tuple(world.arms)
         self.resolver = resolver

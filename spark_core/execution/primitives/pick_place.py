@@ -11,7 +11,9 @@ from .base import CONTACT_FORCE_N, Ctx, primitive
 from .gripper import grasp, open_gripper
 
 APPROACH_M = 0.10
-SIDE_ROTATION = np.array([[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])  # TCP z = world +x, fingers close along z
+# Horizontal approach: TCP z = world +x, fingers close along world y (the hand's wide side stays horizontal,
+# clear of the table).
+SIDE_ROTATION = np.array([[0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [-1.0, 0.0, 0.0]])
 
 
 def _seq(*steps) -> ActionOutcome:
@@ -23,7 +25,7 @@ def _seq(*steps) -> ActionOutcome:
 
 
 def grasp_object(ctx: Ctx, kp: Keypoint, force: float = 50.0, strategy: str = "top_down",
-                 target_width: float | None = None) -> ActionOutcome:
+                 target_width: float | None = None, z: float | None = None) -> ActionOutcome:
     """Approach from above (or from the robot's side), descend straight, close, and remember what is held."""
     open_gripper(ctx)
     if strategy == "side":
@@ -32,11 +34,11 @@ def grasp_object(ctx: Ctx, kp: Keypoint, force: float = 50.0, strategy: str = "t
         pre, pose = Pose(at - [APPROACH_M, 0, 0], SIDE_ROTATION), Pose(at, SIDE_ROTATION)
     else:
         yaw = ctx.grasp_yaw(kp)
-        z = ctx.grasp_height(kp)
+        z = ctx.grasp_height(kp) if z is None else z
         pre = ctx.top_down([kp.position_m[0], kp.position_m[1], kp.top_z_m + APPROACH_M], yaw)
         pose = ctx.top_down([kp.position_m[0], kp.position_m[1], z], yaw)
     out = _seq(lambda: ctx.motion.move_to(pre, what=f"approach above {kp.label!r}"),
-               lambda: ctx.motion.move_line(pose, speed_m_s=0.12, what=f"grasp pose of {kp.label!r}"))
+               lambda: ctx.motion.move_line(pose, speed_m_s=0.2, what=f"grasp pose of {kp.label!r}"))
     if not out.ok:
         return out
     ctx.args = {**ctx.args, "force": force, "target_width": target_width}

@@ -1,0 +1,1 @@
+"""Benchmarks: suites, batch runners and reports."""

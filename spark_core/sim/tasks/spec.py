@@ -1,0 +1,42 @@
+"""A task: the scene it needs, the instruction, a success predicate over simulator state, a reference plan."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from importlib import resources
+from typing import Callable
+
+import numpy as np
+
+from ...control.panda import panda
+from ..scene import ObjectRequest, build_scene
+from ..world import MujocoWorld
+
+
+@dataclass(frozen=True)
+class TaskSpec:
+    """`success(world)` reads privileged state: it is the evaluation, never an input to planning or control.
+
+    `setup(world, rng)` prepares the start state (a drawer left open, beads in a mug) and may register monitors;
+    `max_sim_s` bounds a trial in simulated seconds.
+    """
+
+    name: str
+    instruction: str
+    objects: tuple[ObjectRequest, ...]
+    success: Callable[[MujocoWorld], bool]
+    predicate: str  # the success predicate in words, for reports
+    setup: Callable[[MujocoWorld, np.random.Generator], None] | None = None
+    max_sim_s: float = 60.0
+    tags: tuple[str, ...] = field(default_factory=tuple)
+
+    def reference_plan_text(self) -> str:
+        return resources.files(__package__).joinpath("reference", f"{self.name}.yaml").read_text(encoding="utf-8")
+
+    def make_world(self, seed: int) -> MujocoWorld:
+        scene = build_scene({"right": (panda(), np.eye(4))}, list(self.objects), seed)
+        world = MujocoWorld(scene)
+        if self.setup is not None:
+            self.setup(world, np.random.default_rng(seed + 10_000))
+        world.settle(0.3)
+        return world
