@@ -50,28 +50,40 @@ class ArmMotion:
             return ActionOutcome.fail(f"joints {err:.3f} rad from the {what}", FailureKind.CONTROL, res.sim_time_s)
         return ActionOutcome.success(res.sim_time_s)
 
+    def plan_line(self, target: Pose, q_start: np.ndarray | None = None, start: Pose | None = None,
+                  what: str = "line target") -> np.ndarray:
+        """Joint path (dense IK, 1 cm / 3 deg steps) for a straight TCP line; raises Unreachable."""
+        q = self.world.q(self.arm) if q_start is None else np.asarray(q_start, float)
+        start = start or self.kin.fk(q)
+        dist = float(np.linalg.norm(target.position_m - start.position_m))
+        ang = rotation_error(start.rotation, target.rotation)
+        n = max(int(np.ceil(max(dist / 0.01, ang / 0.05))), 1)
+        path = [q]
+        for k in range(1, n + 1):
+            s = k / n
+            pose = Pose(start.position_m + s * (target.position_m - start.position_m), _slerp(start.rotation, target.rotation, s))
+            try:
+                q = solve_ik(self.kin, pose, q, restarts=0, tol_m=5e-4, tol_rad=5e-3, rng=self.rng, what=what).q
+            except Unreachable:
+                raise Unreachable(f"the straight line to the {what} leaves the workspace or joint limits "
+                                  f"{100 * s:.0f} % of the way") from None
+            if np.max(np.abs(q - path[-1])) > 0.5:
+                raise Unreachable(f"the straight line to the {what} needs a joint flip (singularity or limit)")
+            path.append(q)
+        return np.array(path)
+
     def move_line(self, target: Pose, speed_m_s: float = 0.25, stop: Callable[[], bool] | None = None,
                   what: str = "line target", check: bool = True) -> ActionOutcome:
         """Straight-line TCP motion (dense IK, min-jerk timing). `stop()` ends it early (contact-aware moves)."""
         start = self.world.tcp_pose(self.arm)
         dist = float(np.linalg.norm(target.position_m - start.position_m))
         ang = rotation_error(start.rotation, target.rotation)
-        n = max(int(np.ceil(max(dist / 0.01, ang / 0.05))), 1)
-        q = self.world.q(self.arm)
-        path = [q]
         try:
-            for k in range(1, n + 1):
-                s = k / n
-                R = _slerp(start.rotation, target.rotation, s)
-                q = solve_ik(self.kin, Pose(start.position_m + s * (target.position_m - start.position_m), R), q,
-                             restarts=0, rng=self.rng, what=what).q
-                if np.max(np.abs(q - path[-1])) > 0.5:
-                    raise Unreachable(f"straight line to the {what} needs a joint flip (singularity or limit)")
-                path.append(q)
+            path = self.plan_line(target, start=start, what=what)
         except Unreachable as e:
             return ActionOutcome.fail(str(e), FailureKind.KINEMATIC_LIMIT)
         duration = max(dist / speed_m_s, ang / 1.0, 0.2)
-        res = self.world.execute(self.arm, line_trajectory(np.array(path), duration), stop=stop)
+        res = self.world.execute(self.arm, line_trajectory(path, duration), stop=stop)
         if not res.completed or not check:
             return ActionOutcome.success(res.sim_time_s, stopped_early=not res.completed)
         return self._check(target, res.sim_time_s, what)

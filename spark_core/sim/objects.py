@@ -95,7 +95,7 @@ def mug(color: str) -> ObjectSpec:
     def build(body, rgba):
         _geom(body, CYL, [0.03, 0.004], (0, 0, 0.004), rgba, mass=0.06)
         _ring(body, 0.032, 0.09, 10, 0.006, rgba, 0.0, 0.12)
-        _geom(body, BOX, [0.006, 0.008, 0.03], (0.0, -0.05, 0.05), rgba, mass=0.01)  # the handle, facing -y
+        _geom(body, BOX, [0.008, 0.006, 0.03], (0.05, 0.0, 0.05), rgba, mass=0.01)  # the handle, facing +x
     return ObjectSpec("mug", "container", f"{color} ceramic mug with a handle, cylindrical cup", 0.06, 0.09, True, build,
                       grasp_width_m=0.07)
 

@@ -15,11 +15,12 @@ def _grasp_handle(ctx: Ctx, label_slot: str = "keypoint_label") -> ActionOutcome
     """Horizontal approach toward +x (handles face the robot), fingers closing vertically around the bar."""
     kp = ctx.kp(label_slot)
     at = kp.position_m.copy()
+    at[0] -= kp.extent_m[0] / 2 - 0.01  # finger pads 1 cm behind the handle's front face, around the grip
     open_gripper(ctx)
     out = ctx.motion.move_to(Pose(at - [0.06, 0, 0], SIDE_ROTATION), what=f"approach to {kp.label!r}")
     if not out.ok:
         return out
-    out = ctx.motion.move_line(Pose(at + [0.005, 0, 0], SIDE_ROTATION), speed_m_s=0.15, what=f"{kp.label!r}",
+    out = ctx.motion.move_line(Pose(at, SIDE_ROTATION), speed_m_s=0.15, what=f"{kp.label!r}",
                                stop=ctx.contact(15.0), check=False)
     ctx.args = {**ctx.args, "force": 60.0, "target_width": None}
     return grasp(ctx)

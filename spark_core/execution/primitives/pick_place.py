@@ -29,7 +29,7 @@ def grasp_object(ctx: Ctx, kp: Keypoint, force: float = 50.0, strategy: str = "t
     """Approach from above (or from the robot's side), descend straight, close, and remember what is held."""
     open_gripper(ctx)
     if strategy == "side":
-        z = float(max(kp.position_m[2], 0.03))
+        z = float(max(kp.position_m[2] + 0.01, 0.04))  # keep the hand's lower edge off the table
         at = np.array([kp.position_m[0], kp.position_m[1], z])
         pre, pose = Pose(at - [APPROACH_M, 0, 0], SIDE_ROTATION), Pose(at, SIDE_ROTATION)
     else:
