@@ -49,6 +49,51 @@ def _cmd_validate(args: argparse.Namespace) -> int:
     return status
 
 
+def _cmd_bench(args: argparse.Namespace) -> int:
+    from .bench import control_bench, reference_suite
+    from .bench.report import write_section
+
+    command = "spark bench " + " ".join(sys.argv[2:]) if sys.argv[1:2] == ["bench"] else "spark bench " + args.suite
+    if args.suite == "ik":
+        r = control_bench.ik_benchmark(args.targets)
+        print(json.dumps(r, indent=2))
+        title, body = "IK (Panda, pinocchio)", control_bench.ik_section(r, command)
+    elif args.suite == "speed":
+        r = control_bench.speed_benchmark()
+        print(json.dumps(r, indent=2))
+        title, body = "simulation speed", control_bench.speed_section(r, command)
+    else:
+        from .sim.tasks import BUILTIN
+
+        if args.planner != "reference" or args.resolver != "privileged":
+            print("only --planner reference --resolver privileged is available until the planning and perception "
+                  "backends land", file=sys.stderr)
+            return 2
+        tasks = args.tasks or list(BUILTIN)
+        unknown = [t for t in tasks if t not in BUILTIN]
+        if unknown:
+            print(f"unknown task(s): {', '.join(unknown)}; builtin tasks: {', '.join(BUILTIN)}", file=sys.stderr)
+            return 2
+        total = len(tasks) * args.trials
+        done = [0]
+
+        def progress(row: dict) -> None:
+            done[0] += 1
+            mark = "ok " if row["success"] else "FAIL"
+            print(f"[{done[0]:>4}/{total}] {mark} {row['task']} seed {row['seed']} "
+                  f"({row['sim_time_s']:.1f} s sim, {row['wall_time_s']:.2f} s wall) {row['reason'][:100]}", flush=True)
+
+        rows = reference_suite.run(tasks, args.trials, args.seed, args.workers, progress)
+        print(reference_suite.table(rows))
+        title, body = "builtin reference plans (privileged resolver)", reference_suite.section(rows, command)
+        if args.json:
+            Path(args.json).write_text(json.dumps(rows, indent=1))
+    if args.write:
+        write_section(Path(args.write), title, body)
+        print(f"wrote section {title!r} of {args.write}")
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="spark", description="SPARK: typed behavior trees over anchored keypoints.")
     p.add_argument("--version", action="version", version=f"spark {__version__}")
@@ -62,6 +107,19 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("plans", nargs="+", metavar="PLAN", help="plan file, or - for stdin")
     v.add_argument("--canonical", action="store_true", help="print the canonical YAML of valid plans")
     v.set_defaults(func=_cmd_validate)
+
+    b = sub.add_parser("bench", help="run a benchmark and optionally write its section of BENCHMARKS.md")
+    b.add_argument("suite", choices=["builtin", "ik", "speed"])
+    b.add_argument("--trials", type=int, default=20, help="trials (seeds) per task")
+    b.add_argument("--tasks", nargs="*", help="subset of task names")
+    b.add_argument("--seed", type=int, default=0, help="first seed")
+    b.add_argument("--planner", default="reference", help="reference (hand-written plans)")
+    b.add_argument("--resolver", default="privileged", help="privileged (simulator ground truth)")
+    b.add_argument("--workers", type=int, default=1, help="local worker processes")
+    b.add_argument("--targets", type=int, default=200, help="IK targets (ik suite)")
+    b.add_argument("--write", metavar="BENCHMARKS.md", help="replace this benchmark's section in the file")
+    b.add_argument("--json", metavar="FILE", help="also write per-trial rows as JSON")
+    b.set_defaults(func=_cmd_bench)
     return p
 
 

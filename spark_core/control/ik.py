@@ -52,7 +52,7 @@ def solve_ik(
     for attempt in range(restarts + 1):
         if attempt == 0:
             q = np.clip(np.asarray(q_seed, float), lo, hi)
-        elif attempt <= restarts // 2:
+        elif attempt <= 2:
             q = np.clip(q_seed + rng.normal(0.0, 0.3 * attempt, kin.nq), lo, hi)
         else:
             q = rng.uniform(lo, hi)
@@ -73,7 +73,14 @@ def solve_ik(
                 return IKResult(q, pe, re, total_iter, attempt)
             if pe + 0.1 * re < best[0]:
                 best = (pe + 0.1 * re, (pe, re))
-            dq = J.T @ np.linalg.solve(J @ J.T + damping**2 * np.eye(J.shape[0]), err)
+            # Damping shrinks near the solution (fast Gauss-Newton convergence) and is full far from it (stable).
+            lam2 = damping**2 * min(1.0, 10.0 * (pe + 0.1 * re)) + 1e-8
+            dq = J.T @ np.linalg.solve(J @ J.T + lam2 * np.eye(J.shape[0]), err)
+            # Active set: joints pinned at a limit and pushed further drop out, the others take up the motion.
+            pinned = ((q <= lo + 1e-9) & (dq < 0)) | ((q >= hi - 1e-9) & (dq > 0))
+            if pinned.any():
+                J = J * ~pinned
+                dq = J.T @ np.linalg.solve(J @ J.T + lam2 * np.eye(J.shape[0]), err)
             step = np.linalg.norm(dq)
             if step > 0.5:
                 dq *= 0.5 / step

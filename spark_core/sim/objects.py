@@ -178,7 +178,7 @@ def cabinet(color: str) -> ObjectSpec:
         inner = COLORS["wood"]
         _geom(drawer, BOX, [d - 0.01, w - 0.015, 0.005], (0, 0, 0.005), inner, mass=0.2)
         for pos, size in (((0, -(w - 0.02), 0.04), (d - 0.01, 0.005, 0.035)), ((0, w - 0.02, 0.04), (d - 0.01, 0.005, 0.035)),
-                          ((d - 0.02, 0, 0.04), (0.005, w - 0.02, 0.035)), ((-(d - 0.005), 0, 0.05), (0.008, w - 0.01, 0.045))):
+                          ((d - 0.02, 0, 0.04), (0.005, w - 0.02, 0.035)), ((-(d - 0.005), 0, 0.05), (0.008, w - 0.016, 0.045))):
             _geom(drawer, BOX, size, pos, inner, mass=0.1)
         handle = drawer.add_body(name=body.name + "/handle", pos=[-(d + 0.03), 0, 0.07])
         # A vertical pull: a horizontal-approach grasp closes the fingers sideways around it, keeping the wide

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ...control.pose import wrap_grasp_yaw
 from ..protocols import ActionOutcome, FailureKind
 from .base import Ctx, primitive
 
@@ -17,7 +18,7 @@ def _shove(ctx: Ctx, low: bool) -> ActionOutcome:
     half = float(np.max(np.abs(kp.extent_m[:2])) / 2)
     z = 0.015 if low else float(np.clip(kp.position_m[2], 0.015, 0.05))
     ctx.world.set_gripper(ctx.arm, 0.0, 40.0, duration_s=0.3)
-    yaw = np.arctan2(d[1], d[0]) + np.pi / 2  # fingers side by side across the push direction: a wider paddle
+    yaw = wrap_grasp_yaw(np.arctan2(d[1], d[0]))  # closing axis across the push: both fingers side by side
     start = np.array([*(kp.position_m[:2] - d * (half + 0.035)), z])
     before = kp.position_m.copy()
     out = ctx.motion.move_to([ctx.top_down(start + [0, 0, 0.1], yaw), ctx.top_down(start, yaw)],
@@ -33,6 +34,9 @@ def _shove(ctx: Ctx, low: bool) -> ActionOutcome:
     after = ctx.observe(kp.label)
     if after is not None:
         moved = float(np.dot(after.position_m[:2] - before[:2], d))
+        if after.position_m[2] > before[2] + 0.02:
+            return ctx.fail(f"{kp.label!r} was lifted or tipped ({100 * (after.position_m[2] - before[2]):.1f} cm up) "
+                            "instead of sliding")
         if moved < 0.5 * dist:
             return ctx.fail(f"{kp.label!r} moved {moved * 100:.1f} cm of {dist * 100:.0f} cm", FailureKind.CONTROL)
     return ActionOutcome.success(0.0)

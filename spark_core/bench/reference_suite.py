@@ -1,0 +1,65 @@
+"""Reference plans on the builtin tasks with the privileged resolver: measures control and primitives alone."""
+
+from __future__ import annotations
+
+import statistics
+from concurrent.futures import ProcessPoolExecutor
+from typing import Callable, Iterable
+
+from ..sim.tasks import BUILTIN
+from .report import footer, pct, wilson
+from .trial import TrialOutcome, run_reference_trial
+
+PROTOCOL = ("planner: hand-written reference plan per task (no LLM); resolver: PRIVILEGED (simulator ground truth, "
+            "no cameras); recovery tiers 1-2 on, replan off; success: the task's predicate over simulator state")
+
+
+def _one(args: tuple[str, int]) -> dict:
+    task, seed = args
+    return run_reference_trial(BUILTIN[task], seed).row()
+
+
+def run(tasks: Iterable[str], trials: int, seed: int = 0, workers: int = 1,
+        progress: Callable[[dict], None] | None = None) -> list[dict]:
+    jobs = [(t, seed + k) for t in tasks for k in range(trials)]
+    rows: list[dict] = []
+    if workers <= 1:
+        for job in jobs:
+            rows.append(_one(job))
+            if progress:
+                progress(rows[-1])
+    else:
+        with ProcessPoolExecutor(workers) as pool:
+            for row in pool.map(_one, jobs):
+                rows.append(row)
+                if progress:
+                    progress(row)
+    return rows
+
+
+def table(rows: list[dict]) -> str:
+    lines = ["| task | success | 95 % CI | trials | median sim time | median wall time | failures |",
+             "|---|---|---|---|---|---|---|"]
+    for task in dict.fromkeys(r["task"] for r in rows):
+        rs = [r for r in rows if r["task"] == task]
+        k = sum(r["success"] for r in rs)
+        lo, hi = wilson(k, len(rs))
+        fails = {}
+        for r in rs:
+            if not r["success"]:
+                key = r["failure"] or "predicate false"
+                fails[key] = fails.get(key, 0) + 1
+        lines.append(
+            f"| {task} | {pct(k / len(rs))} | {pct(lo)} – {pct(hi)} | {len(rs)} | "
+            f"{statistics.median(r['sim_time_s'] for r in rs):.1f} s | {statistics.median(r['wall_time_s'] for r in rs):.2f} s | "
+            f"{', '.join(f'{v}× {k}' for k, v in sorted(fails.items())) or '-'} |")
+    total = sum(r["success"] for r in rows)
+    lines.append(f"| **all** | {pct(total / len(rows))} | | {len(rows)} | | | |")
+    return "\n".join(lines)
+
+
+def section(rows: list[dict], command: str) -> str:
+    return table(rows) + "\n\n" + footer(command, PROTOCOL + f"; seeds {min(r['seed'] for r in rows)}–{max(r['seed'] for r in rows)}")
+
+
+__all__ = ["run", "section", "table", "TrialOutcome"]
