@@ -86,7 +86,7 @@ def solve_ik(
                 dq *= 0.5 / step
             q = np.clip(q + dq, lo, hi)
     pe, re = best[1] if best[1] else (np.inf, np.inf)
-    where = np.array2string(p_target, precision=3)
+    where = "(" + ", ".join(f"{x:.3f}" for x in p_target) + ")"
     raise Unreachable(
         f"IK found no joint configuration within limits for {what} at {where} m (world) after {restarts} restarts; "
         f"closest: {pe * 100:.1f} cm, {np.degrees(re):.1f} deg off"

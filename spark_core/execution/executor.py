@@ -294,9 +294,13 @@ class Executor:
             return self.actuator.perform(perturb, keypoints, arm, perturb.spec.timeout_s).sim_time_s
         if tier == REDETECT:
             sim_s = 0.0
+            if arm != BOTH_ARMS and call.spec.perturbation == "grasp_perturb":
+                # a failed grasp leaves the fingers closed: reopen so the re-approach does not land on the object
+                release = PrimitiveCall("release")
+                sim_s += self.actuator.perform(release, {}, arm, release.spec.timeout_s).sim_time_s
             if arm != BOTH_ARMS:
                 retract = PrimitiveCall("move_relative", {"dz": self.recovery.retract_m})
-                sim_s = self.actuator.perform(retract, {}, arm, retract.spec.timeout_s).sim_time_s
+                sim_s += self.actuator.perform(retract, {}, arm, retract.spec.timeout_s).sim_time_s
             self.resolver.refresh()
             if reanchor is not None:
                 try:

@@ -66,9 +66,10 @@ def test_recovery_tiers_fire_in_order_then_fail_closed_after_two_retries():
     grasp = result.nodes["tree.children[1]"]
     assert grasp.attempts == 3 and grasp.retries == 2 and grasp.status == "failed"
     assert grasp.recoveries == ["tier1:grasp_perturb", "tier2:retract+redetect+reapproach:move_to_keypoint"]
-    # what the robot did, in order: grasp, perturb, grasp, retract 10 cm, re-approach the re-detected cube, grasp
-    assert [p for _, p, _ in world.log[1:]] == ["grasp", "grasp_perturb", "grasp", "move_relative", "move_to_keypoint", "grasp"]
-    assert world.log[4][2]["dz"] == pytest.approx(0.10)
+    # what the robot did, in order: grasp, perturb, grasp, open + retract 10 cm, re-approach the re-detected cube, grasp
+    assert [p for _, p, _ in world.log[1:]] == ["grasp", "grasp_perturb", "grasp", "release", "move_relative",
+                                                "move_to_keypoint", "grasp"]
+    assert world.log[5][2]["dz"] == pytest.approx(0.10)
     assert resolver.refreshes == 1
     assert trail(result)[-2:] == [("tree.children[1]", "failed"), ("tree", "failed")]
     assert "tree.children[2]" not in {p for p, _ in trail(result)}

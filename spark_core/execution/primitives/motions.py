@@ -18,9 +18,14 @@ def move_to_keypoint(ctx: Ctx) -> ActionOutcome:
     target[2] = max(target[2], 0.005)
     pose = ctx.top_down(target, ctx.grasp_yaw(kp))
     tcp = ctx.tcp.position_m
+    what = f"point {a['offset_z']:+.2f} m above {kp.label!r}"
     if np.linalg.norm(target[:2] - tcp[:2]) < 0.03 and abs(target[2] - tcp[2]) > 0.005:
-        return ctx.motion.move_line(pose, what=f"point {a['offset_z']:+.2f} m above {kp.label!r}")  # descend/ascend straight
-    return ctx.motion.move_to(pose, what=f"point near {kp.label!r}")
+        return ctx.motion.move_line(pose, what=what)  # straight down/up over the object
+    if target[2] < kp.top_z_m + 0.03:  # going down to the object from elsewhere: come in from above, never sideways
+        above = ctx.top_down([target[0], target[1], max(tcp[2], kp.top_z_m + 0.08)], ctx.grasp_yaw(kp))
+        out = ctx.motion.move_to(above, what=f"point above {kp.label!r}")
+        return ctx.motion.move_line(pose, what=what) if out.ok else out
+    return ctx.motion.move_to(pose, what=what)
 
 
 @primitive("move_above")

@@ -11,6 +11,7 @@ from .base import CONTACT_FORCE_N, Ctx, primitive
 from .gripper import grasp, open_gripper
 
 APPROACH_M = 0.10
+SUPPORT_TOL_M = 0.012  # how far below the expected support height contact may come before the target is "gone"
 # Horizontal approach: TCP z = world +x, fingers close along world y (the hand's wide side stays horizontal,
 # clear of the table).
 SIDE_ROTATION = np.array([[0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [-1.0, 0.0, 0.0]])
@@ -100,6 +101,11 @@ def put_down(ctx: Ctx, target: Keypoint, offset_xy=(0.0, 0.0), floor_z: float | 
         ctx.motion.move_line(ctx.tcp.translated([0, 0, 0.08]), check=False)
         return ctx.fail(f"no support felt at the {what} {target.label!r} (expected near z={support_z:.3f} m): "
                         "it moved or is not there", FailureKind.PERCEPTION)
+    felt_z = float(ctx.tcp.position_m[2])
+    if felt_z < tcp_at_contact - SUPPORT_TOL_M:  # support much lower than the target's top: the target is gone
+        ctx.motion.move_line(ctx.tcp.translated([0, 0, 0.08]), check=False)  # keep holding: a retry re-detects
+        return ctx.fail(f"support felt {100 * (tcp_at_contact - felt_z):.1f} cm below the top of the {what} "
+                        f"{target.label!r}: it moved or is not there", FailureKind.PERCEPTION)
     open_gripper(ctx)
     ctx.memory.held_label = None
     ctx.motion.move_line(ctx.tcp.translated([0, 0, 0.08]), what="retreat", check=False)
