@@ -23,6 +23,7 @@ run: demo
 
 demo: install
 	$(BIN)/spark validate examples/plans/*.yaml
+	$(BIN)/spark run stack_three --seed 0
 
 test: install
 	$(BIN)/python -m pytest -q

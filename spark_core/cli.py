@@ -94,6 +94,32 @@ def _cmd_bench(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_run(args: argparse.Namespace) -> int:
+    """One trial in simulation, printing the live event trail."""
+    from .bench.trial import run_reference_trial
+    from .grammar import validate
+    from .sim.tasks import BUILTIN
+
+    task = BUILTIN.get(args.task)
+    if task is None:
+        print(f"unknown task {args.task!r}; builtin tasks: {', '.join(BUILTIN)}", file=sys.stderr)
+        return 2
+    plan = None
+    if args.plan:
+        plan, issues = validate(Path(args.plan).read_bytes())
+        if plan is None:
+            print(f"{args.plan}: INVALID", *(f"  {i}" for i in issues), sep="\n", file=sys.stderr)
+            return 1
+    print(f"task {task.name!r}: {task.instruction!r} (seed {args.seed}); resolver: PRIVILEGED (simulator ground truth)")
+    out = run_reference_trial(task, args.seed, plan)
+    for ev in out.result.events:
+        detail = " ".join(f"{k}={v}" for k, v in ev.detail.items() if k not in ("arm",))
+        print(f"  {ev.t:7.3f}s  {ev.kind:<9} {ev.node_path:<22} {detail}")
+    verdict = "SUCCESS" if out.success else f"FAILURE ({out.failure or 'task predicate false'}) {out.reason}"
+    print(f"{verdict}: {out.sim_time_s:.1f} s simulated in {out.wall_time_s:.2f} s wall; predicate: {task.predicate}")
+    return 0 if out.success else 1
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="spark", description="SPARK: typed behavior trees over anchored keypoints.")
     p.add_argument("--version", action="version", version=f"spark {__version__}")
@@ -107,6 +133,12 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("plans", nargs="+", metavar="PLAN", help="plan file, or - for stdin")
     v.add_argument("--canonical", action="store_true", help="print the canonical YAML of valid plans")
     v.set_defaults(func=_cmd_validate)
+
+    r = sub.add_parser("run", help="run one builtin task in simulation (reference plan or --plan) and print its events")
+    r.add_argument("task", help="builtin task name")
+    r.add_argument("--seed", type=int, default=0)
+    r.add_argument("--plan", help="plan file to run instead of the task's reference plan")
+    r.set_defaults(func=_cmd_run)
 
     b = sub.add_parser("bench", help="run a benchmark and optionally write its section of BENCHMARKS.md")
     b.add_argument("suite", choices=["builtin", "ik", "speed"])

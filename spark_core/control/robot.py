@@ -17,7 +17,7 @@ class GripperSpec:
     max_width_m: float
     closed_empty_width_m: float  # gap reading when closed on nothing (sensor noise floor + margin)
     max_force_n: float = 140.0
-    finger_speed_m_s: float = 0.1
+    finger_speed_m_s: float = 0.15  # per finger
 
 
 @dataclass(frozen=True)

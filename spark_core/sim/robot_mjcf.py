@@ -10,7 +10,7 @@ import numpy as np
 
 from ..control.robot import RobotDescription
 
-GRIPPER_KP = 400.0  # N/m; the closing force is capped by the actuator's force range, set per grasp
+GRIPPER_KP = 6000.0  # N/m: stiff enough that closing on an object saturates at the force limit set per grasp
 
 
 @dataclass(frozen=True)
@@ -79,7 +79,7 @@ def add_robot(scene: mujoco.MjSpec, robot: RobotDescription, prefix: str, T_worl
         scene.joint(f).armature = 0.01
         scene.joint(f).damping = 5.0
     grip = scene.add_actuator(name=prefix + "gripper", target=f1, trntype=mujoco.mjtTrn.mjTRN_JOINT)
-    grip.set_to_position(kp=GRIPPER_KP, kv=20.0)
+    grip.set_to_position(kp=GRIPPER_KP, kv=60.0)
     grip.ctrlrange = [0.0, robot.gripper.max_width_m / 2]
     grip.ctrllimited = True
     grip.forcelimited = True
@@ -93,6 +93,8 @@ def add_robot(scene: mujoco.MjSpec, robot: RobotDescription, prefix: str, T_worl
     hand.add_camera(name=prefix + "wrist", pos=[0.05, 0.0, 0.04], quat=[0.0, 1.0, 0.0, 0.0],
                     fovy=75.0)  # looks along the TCP approach axis
     finger_bodies = tuple(scene.joint(f).parent.name for f in (f1, f2))
+    # Closed fingers rest on their joint limits, not on each other (sibling bodies would otherwise collide).
+    scene.add_exclude(bodyname1=finger_bodies[0], bodyname2=finger_bodies[1])
     return RobotNames(
         prefix=prefix,
         arm_joints=arm_joints,

@@ -171,10 +171,24 @@ class MujocoWorld:
         g = self.scene.robot_descriptions[arm].gripper
         width_m = float(np.clip(width_m, 0.0, g.max_width_m))
         force_n = float(np.clip(force_n, 1.0, g.max_force_n))
+        gid = self._grip[arm]
+        n_sub = max(int(round(CONTROL_DT_S / self.model.opt.timestep)), 1)
+        t0 = self.sim_time_s
         with self._lock:
-            self.model.actuator_forcerange[self._grip[arm]] = [-force_n, force_n]
-            self.data.ctrl[self._grip[arm]] = width_m / 2
-        return self.settle(duration_s, arm)
+            self.model.actuator_forcerange[gid] = [-force_n, force_n]
+        # The finger set-point moves at the finger speed (a stiff servo tracking a ramp): fingers never slam
+        # through thin parts, and on contact the servo error grows until the force limit caps the squeeze.
+        step = g.finger_speed_m_s * CONTROL_DT_S
+        while abs(self.data.ctrl[gid] - width_m / 2) > 1e-9:
+            with self._lock:
+                c = self.data.ctrl[gid]
+                self.data.ctrl[gid] = c + float(np.clip(width_m / 2 - c, -step, step))
+                self._tick(n_sub)
+                self._record(arm)
+        remaining = duration_s - (self.sim_time_s - t0)
+        if remaining > 0:
+            self.settle(remaining, arm)
+        return self.sim_time_s - t0
 
     def settle(self, seconds: float, arm: str | None = None) -> float:
         n_sub = max(int(round(CONTROL_DT_S / self.model.opt.timestep)), 1)

@@ -84,7 +84,6 @@ def put_down(ctx: Ctx, target: Keypoint, offset_xy=(0.0, 0.0), floor_z: float | 
     """
     if not ctx.holding():
         return ctx.fail(f"nothing in the gripper to put on the {what}")
-    ext = ctx.memory.held_extent_m if ctx.memory.held_extent_m is not None else np.full(3, 0.04)
     support_z = target.top_z_m if floor_z is None else floor_z
     tcp_at_contact = support_z + ctx.memory.grasp_offset_z_m
     xy = target.position_m[:2] + np.asarray(offset_xy, float)
@@ -111,7 +110,7 @@ def put_down(ctx: Ctx, target: Keypoint, offset_xy=(0.0, 0.0), floor_z: float | 
     ctx.motion.move_line(ctx.tcp.translated([0, 0, 0.08]), what="retreat", check=False)
     if ctx.world.pinched_bodies(ctx.arm):
         return ctx.fail("object stuck to the gripper after release")
-    return ActionOutcome.success(0.0, support_z_m=round(float(ctx.tcp.position_m[2]), 4), extent=ext.tolist())
+    return ActionOutcome.success(0.0, contact_tcp_z_m=round(felt_z, 4))
 
 
 @primitive("place")
