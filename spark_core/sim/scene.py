@@ -141,8 +141,8 @@ def build_scene(robots: dict[str, tuple[RobotDescription, np.ndarray]], requests
         ospec.build(body, COLORS[req.color])
         objects[req.label] = PlacedObject(req.label, ospec, req.color, req.label, pos, yaw)
         for part, desc in ospec.parts.items():
-            parts[f"{req.label} {part}" if part not in ("knob",) else f"{req.label} knob"] = (
-                req.label + "/" + part.split()[-1], desc)
+            # "drawer handle" of "cabinet" -> label "cabinet drawer handle", body "cabinet/handle"
+            parts[f"{req.label} {part}"] = (req.label + "/" + part.split()[-1], desc)
     model = spec.compile()
     return Scene(model, robot_names, {a: d for a, (d, _) in robots.items()}, {a: T for a, (_, T) in robots.items()},
                  objects, parts, tuple(list(cams) + [n.wrist_camera for n in robot_names.values()]), seed)

@@ -104,20 +104,6 @@ class MujocoWorld:
         sets = list(self.finger_contacts(arm).values())
         return set.intersection(*sets) if sets else set()
 
-    def hand_contact_force_n(self, arm: str) -> float:
-        """Total normal force (N) between this arm's hand/fingers and anything that is not the robot."""
-        m, d = self.model, self.data
-        hand = self._hand_bodies[arm]
-        total = 0.0
-        f6 = np.zeros(6)
-        for i in range(d.ncon):
-            c = d.contact[i]
-            b1, b2 = m.geom_bodyid[c.geom1], m.geom_bodyid[c.geom2]
-            if (b1 in hand and b2 not in self._robot_bodies) or (b2 in hand and b1 not in self._robot_bodies):
-                mujoco.mj_contactForce(m, d, i, f6)
-                total += abs(f6[0])
-        return total
-
     def wrist_force_n(self, arm: str) -> float:
         """Simulated wrist force sensor (N): normal contact force on the hand and whatever it holds, from
         anything that is neither the robot nor the held object itself."""

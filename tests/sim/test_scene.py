@@ -69,3 +69,15 @@ def test_rendering_is_on_demand(world):
     t = world.sim_time_s
     world.render("side")
     assert world.sim_time_s == t  # rendering never steps physics
+
+
+def test_trajectory_recorder_samples_at_the_control_rate():
+    from spark_core.sim.world import CONTROL_DT_S, TrajectoryRecorder
+
+    w = BUILTIN["lift_block"].make_world(1)
+    w.recorder = TrajectoryRecorder()
+    w.settle(0.5)
+    ts = [r[0] for r in w.recorder.rows]
+    assert len(ts) == 50 and np.allclose(np.diff(ts), CONTROL_DT_S)
+    assert len(w.recorder.rows[0][2]) == 7  # seven arm joints per row
+    w.close()

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..objects import CABINET_DEPTH
 from ..scene import ObjectRequest as O
 from ..world import MujocoWorld
 from .spec import TaskSpec
@@ -131,5 +130,3 @@ SUITE: dict[str, TaskSpec] = {t.name: t for t in [
              lambda w: inside(w, "red block", "green tray") and inside(w, "blue block", "yellow tray"),
              "red block in the green tray and blue block in the yellow tray, released"),
 ]}
-
-_ = CABINET_DEPTH
