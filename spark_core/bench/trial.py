@@ -9,8 +9,33 @@ from typing import Any
 from ..execution import Executor, RecoveryPolicy, TrialResult
 from ..execution.primitives import PrimitiveLibrary
 from ..grammar import Plan, parse_plan
+from ..perception.noisy_segmenter import NoiseModel, SimNoisySegmenter
 from ..perception.privileged import PrivilegedResolver
+from ..perception.resolver import PerceptionResolver
+from ..perception.sim_segmenter import SimSegmenter
 from ..sim.tasks import TaskSpec
+
+RESOLVERS = ("privileged", "sim", "sim-noisy")
+
+
+@dataclass(frozen=True)
+class PerceptionConfig:
+    """Which resolver a trial uses. `privileged` reads simulator state; `sim`/`sim-noisy` go through cameras,
+    the segmenter (privileged masks), adaptive prompts and depth lifting."""
+
+    resolver: str = "privileged"
+    adaptive: bool = True
+    noise: NoiseModel = NoiseModel()
+
+    def __post_init__(self):
+        if self.resolver not in RESOLVERS:
+            raise ValueError(f"unknown resolver {self.resolver!r}; expected one of {', '.join(RESOLVERS)}")
+
+    def describe(self) -> str:
+        if self.resolver == "privileged":
+            return "PrivilegedResolver (privileged:sim-state, no cameras)"
+        base = f"{self.resolver} segmenter (privileged masks), agentview+side 640x480, adaptive prompts {'on' if self.adaptive else 'off'}"
+        return base + (f", noise: {self.noise.describe()}" if self.resolver == "sim-noisy" else "")
 
 
 @dataclass
@@ -25,19 +50,30 @@ class TrialOutcome:
     sim_time_s: float
     wall_time_s: float
     protocol: dict[str, str]
+    retries: int = 0
     result: TrialResult | None = field(default=None, repr=False)
 
     def row(self) -> dict[str, Any]:
         return {k: v for k, v in self.__dict__.items() if k != "result"}
 
 
+def make_resolver(world, config: PerceptionConfig, seed: int):
+    if config.resolver == "privileged":
+        return PrivilegedResolver(world)
+    segmenter = SimSegmenter(world.scene.catalog())
+    if config.resolver == "sim-noisy":
+        segmenter = SimNoisySegmenter(segmenter, config.noise, seed)
+    return PerceptionResolver(world, segmenter, adaptive=config.adaptive)
+
+
 def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
-                        recovery: RecoveryPolicy = RecoveryPolicy()) -> TrialOutcome:
-    """The task's hand-written reference plan (or `plan`) with the PRIVILEGED resolver: tests control alone."""
+                        recovery: RecoveryPolicy = RecoveryPolicy(),
+                        perception: PerceptionConfig = PerceptionConfig()) -> TrialOutcome:
+    """The task's hand-written reference plan (or `plan`) with the configured resolver."""
     t0 = time.perf_counter()
     world = task.make_world(seed)
     try:
-        resolver = PrivilegedResolver(world)
+        resolver = make_resolver(world, perception, seed)
         library = PrimitiveLibrary(world, resolver, seed=seed)
         plan = plan or parse_plan(task.reference_plan_text())
         result = Executor(library, resolver, recovery=recovery, trial_id=f"{task.name}-{seed}").run(plan)
@@ -49,6 +85,8 @@ def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
         task=task.name, seed=seed, success=success, outcome=result.outcome,
         failure=result.failure.value if result.failure else None, failed_node=result.failed_node, reason=result.reason,
         sim_time_s=round(world.sim_time_s, 3), wall_time_s=round(time.perf_counter() - t0, 3),
-        protocol={"planner": "reference plan (hand-written)", "resolver": PrivilegedResolver.__name__ + " (privileged:sim-state)"},
+        protocol={"planner": "reference plan (hand-written)", "resolver": perception.describe(),
+                  "recovery": "off" if recovery.max_retries == 0 else f"tiers 1-2, {recovery.max_retries} retries"},
+        retries=sum(r.retries for r in result.nodes.values()),
         result=result,
     )

@@ -5,22 +5,10 @@ Rendering is the expensive part of simulation; nothing renders unless perception
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import mujoco
 import numpy as np
 
-
-@dataclass(frozen=True)
-class CameraFrame:
-    camera: str
-    rgb: np.ndarray  # (H, W, 3) uint8
-    depth_m: np.ndarray  # (H, W) float32, metres along the optical axis
-    object_ids: np.ndarray  # (H, W) int32: 0 = background/robot/table, else a key of `labels`
-    labels: dict[int, str]
-    K: np.ndarray  # 3x3 intrinsics (pixels)
-    T_world_camera: np.ndarray  # 4x4; camera frame: x right, y down, z forward (OpenCV)
-    sim_time_s: float
+from ..perception.frame import CameraFrame
 
 
 def _renderer(world, width: int, height: int) -> mujoco.Renderer:
@@ -93,4 +81,4 @@ def render_frame(world, camera: str, width: int, height: int) -> CameraFrame:
     T = np.eye(4)
     T[:3, :3] = d.cam_xmat[cid].reshape(3, 3) @ np.diag([1.0, -1.0, -1.0])
     T[:3, 3] = d.cam_xpos[cid]
-    return CameraFrame(camera, rgb, depth, obj, labels, intrinsics(m, camera, width, height), T, world.sim_time_s)
+    return CameraFrame(camera, rgb, depth, intrinsics(m, camera, width, height), T, world.sim_time_s, obj, labels)

@@ -60,6 +60,12 @@ class Scene:
     seed: int
     extra: dict = field(default_factory=dict)
 
+    def catalog(self) -> dict[str, str]:
+        """label -> description for every object and labelled part: what a text prompt is grounded against."""
+        out = {label: o.description for label, o in self.objects.items()}
+        out.update({label: desc for label, (_, desc) in self.parts.items()})
+        return out
+
 
 def _look_at_quat(eye, target) -> list[float]:
     f = np.asarray(target, float) - np.asarray(eye, float)

@@ -1,0 +1,65 @@
+"""Adaptive prompt self-consistency: try K prompts for one object, keep the one that yields exactly one
+confident detection, discard ambiguous ones, and record every candidate and the choice."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from .detection import Detection
+from .frame import CameraFrame
+from .segmenter import Segmenter
+
+CONFIDENT = 0.5
+
+
+@dataclass(frozen=True)
+class PromptCandidate:
+    prompt: str
+    n_detections: int
+    best_score: float
+    verdict: str  # chosen | single | ambiguous | none | weak
+
+
+@dataclass(frozen=True)
+class PromptSelection:
+    label: str
+    detection: Detection | None  # relabelled with `label`
+    candidates: tuple[PromptCandidate, ...] = field(default_factory=tuple)
+
+    @property
+    def chosen_prompt(self) -> str | None:
+        return self.detection.prompt if self.detection else None
+
+    def to_dict(self) -> dict:
+        return {"label": self.label, "chosen": self.chosen_prompt,
+                "candidates": [c.__dict__ for c in self.candidates]}
+
+
+def select_prompt(segmenter: Segmenter, frame: CameraFrame, label: str, variants: list[str],
+                  confident: float = CONFIDENT) -> PromptSelection:
+    """Segment with the label and its variants in one call; keep the best single confident detection."""
+    prompts = list(dict.fromkeys([label, *variants]))
+    dets = segmenter.segment(frame, prompts)
+    by_prompt: dict[str, list[Detection]] = {p: [] for p in prompts}
+    for d in dets:
+        by_prompt.setdefault(d.prompt, []).append(d)
+    candidates, singles = [], []
+    for p in prompts:
+        ds = by_prompt[p]
+        best = max((d.score for d in ds), default=0.0)
+        if not ds:
+            verdict = "none"
+        elif len(ds) > 1:
+            verdict = "ambiguous"
+        elif best < confident:
+            verdict = "weak"
+        else:
+            verdict = "single"
+            singles.append(ds[0])
+        candidates.append(PromptCandidate(p, len(ds), round(best, 4), verdict))
+    if not singles:
+        return PromptSelection(label, None, tuple(candidates))
+    chosen = max(singles, key=lambda d: d.score)
+    candidates = [PromptCandidate(c.prompt, c.n_detections, c.best_score, "chosen" if c.prompt == chosen.prompt else c.verdict)
+                  for c in candidates]
+    return PromptSelection(label, chosen.with_label(label), tuple(candidates))

@@ -1,0 +1,92 @@
+"""PerceptionResolver: label -> keypoint through cameras, a segmenter, adaptive prompts and depth lifting.
+
+Late binding: frames are re-captured whenever simulated time has moved since the last capture, so every node
+resolves its labels from what the cameras see at the moment it runs. `refresh()` forces a new capture (the
+executor's tier-2 recovery calls it after retracting).
+"""
+
+from __future__ import annotations
+
+from typing import Callable, Sequence
+
+import numpy as np
+
+from .adaptive import select_prompt
+from .frame import CameraFrame
+from .keypoint import Keypoint, LabelNotFound
+from .lifting import PointEvidence, keypoint_from_points, masked_points, wrist_self_occlusion
+from .segmenter import Segmenter
+from .variants import prompt_variants
+
+FUSE_AGREEMENT_M = 0.05
+
+
+class PerceptionResolver:
+    def __init__(self, world, segmenter: Segmenter, cameras: Sequence[str] = ("agentview", "side"),
+                 adaptive: bool = True, k_variants: int = 3, variants: Callable[[str], list[str]] | None = None,
+                 size: tuple[int, int] = (640, 480)):
+        self.world = world
+        self.segmenter = segmenter
+        self.cameras = tuple(cameras)
+        self.adaptive = adaptive
+        self.k_variants = k_variants
+        self.variants = variants or (lambda label: prompt_variants(label, k_variants))
+        self.size = size
+        self.privileged = bool(segmenter.privileged)
+        self.source = segmenter.name + (" (privileged masks)" if self.privileged else "")
+        self.frames: dict[str, CameraFrame] = {}
+        self._captured_at: float | None = None
+        self.refreshes = 0
+        self.groundings: list[dict] = []  # every resolution: label, prompt candidates, choice, keypoint
+
+    def refresh(self) -> None:
+        self.refreshes += 1
+        self._capture()
+
+    def _capture(self) -> None:
+        w, h = self.size
+        frames = {}
+        for cam in self.cameras:
+            frame = self.world.render(cam, w, h)
+            perturb = getattr(self.segmenter, "perturb_frame", None)
+            frames[cam] = perturb(frame) if perturb else frame
+        self.frames = frames
+        self._captured_at = self.world.sim_time_s
+
+    def _ensure_fresh(self) -> None:
+        if self._captured_at is None or self.world.sim_time_s != self._captured_at:
+            self._capture()
+
+    def resolve(self, label: str) -> Keypoint:
+        self._ensure_fresh()
+        variants = self.variants(label) if self.adaptive else []
+        evidence: list[PointEvidence] = []
+        record = {"label": label, "t_sim_s": self._captured_at, "cameras": {}}
+        for cam, frame in self.frames.items():
+            sel = select_prompt(self.segmenter, frame, label, variants)
+            record["cameras"][cam] = sel.to_dict()
+            if sel.detection is None:
+                continue
+            exclude = wrist_self_occlusion(frame.shape) if "wrist" in cam else None
+            ev = masked_points(sel.detection, frame, exclude)
+            if ev is not None:
+                evidence.append(ev)
+        evidence = _agreeing(evidence)
+        if not evidence:
+            tried = ", ".join([label, *variants])
+            record["keypoint"] = None
+            self.groundings.append(record)
+            raise LabelNotFound(label, f"no single confident detection in {', '.join(self.cameras)} (prompts: {tried})")
+        kp = keypoint_from_points(label, evidence, self.source)
+        record["keypoint"] = kp.to_dict()
+        self.groundings.append(record)
+        return kp
+
+
+def _agreeing(evidence: list[PointEvidence]) -> list[PointEvidence]:
+    """Fuse views only when they saw the same thing; otherwise trust the most confident view."""
+    if len(evidence) < 2:
+        return evidence
+    best = max(evidence, key=lambda e: e.detection.score)
+    centre = np.median(best.points_world, axis=0)
+    return [e for e in evidence if np.linalg.norm(np.median(e.points_world, axis=0)[:2] - centre[:2]) < FUSE_AGREEMENT_M]
