@@ -65,10 +65,15 @@ def _cmd_bench(args: argparse.Namespace) -> int:
     else:
         from .sim.tasks import BUILTIN
 
-        if args.planner != "reference" or args.resolver != "privileged":
-            print("only --planner reference --resolver privileged is available until the planning and perception "
-                  "backends land", file=sys.stderr)
+        from .bench.trial import PerceptionConfig
+        from .execution import RecoveryPolicy
+        from .perception.noisy_segmenter import NoiseModel
+
+        if args.planner != "reference":
+            print("only --planner reference is available until the planning backends land", file=sys.stderr)
             return 2
+        perception = PerceptionConfig(args.resolver, not args.no_adaptive, NoiseModel(miss_rate=args.miss_rate))
+        recovery = RecoveryPolicy(max_retries=0) if args.no_recovery else RecoveryPolicy()
         tasks = args.tasks or list(BUILTIN)
         unknown = [t for t in tasks if t not in BUILTIN]
         if unknown:
@@ -83,9 +88,10 @@ def _cmd_bench(args: argparse.Namespace) -> int:
             print(f"[{done[0]:>4}/{total}] {mark} {row['task']} seed {row['seed']} "
                   f"({row['sim_time_s']:.1f} s sim, {row['wall_time_s']:.2f} s wall) {row['reason'][:100]}", flush=True)
 
-        rows = reference_suite.run(tasks, args.trials, args.seed, args.workers, progress)
+        rows = reference_suite.run(tasks, args.trials, args.seed, args.workers, progress, perception, recovery)
         print(reference_suite.table(rows))
-        title, body = "builtin reference plans (privileged resolver)", reference_suite.section(rows, command)
+        title = args.title or f"builtin reference plans ({args.resolver} resolver)"
+        body = reference_suite.section(rows, command, perception, recovery)
         if args.json:
             Path(args.json).write_text(json.dumps(rows, indent=1))
     if args.write:
@@ -110,8 +116,11 @@ def _cmd_run(args: argparse.Namespace) -> int:
         if plan is None:
             print(f"{args.plan}: INVALID", *(f"  {i}" for i in issues), sep="\n", file=sys.stderr)
             return 1
-    print(f"task {task.name!r}: {task.instruction!r} (seed {args.seed}); resolver: PRIVILEGED (simulator ground truth)")
-    out = run_reference_trial(task, args.seed, plan)
+    from .bench.trial import PerceptionConfig
+
+    perception = PerceptionConfig(args.resolver)
+    print(f"task {task.name!r}: {task.instruction!r} (seed {args.seed}); resolver: {perception.describe()}")
+    out = run_reference_trial(task, args.seed, plan, perception=perception)
     for ev in out.result.events:
         detail = " ".join(f"{k}={v}" for k, v in ev.detail.items() if k not in ("arm",))
         print(f"  {ev.t:7.3f}s  {ev.kind:<9} {ev.node_path:<22} {detail}")
@@ -138,6 +147,7 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("task", help="builtin task name")
     r.add_argument("--seed", type=int, default=0)
     r.add_argument("--plan", help="plan file to run instead of the task's reference plan")
+    r.add_argument("--resolver", default="sim", choices=["privileged", "sim", "sim-noisy"])
     r.set_defaults(func=_cmd_run)
 
     b = sub.add_parser("bench", help="run a benchmark and optionally write its section of BENCHMARKS.md")
@@ -146,7 +156,12 @@ def build_parser() -> argparse.ArgumentParser:
     b.add_argument("--tasks", nargs="*", help="subset of task names")
     b.add_argument("--seed", type=int, default=0, help="first seed")
     b.add_argument("--planner", default="reference", help="reference (hand-written plans)")
-    b.add_argument("--resolver", default="privileged", help="privileged (simulator ground truth)")
+    b.add_argument("--resolver", default="privileged", choices=["privileged", "sim", "sim-noisy"],
+                   help="privileged (simulator state) or a segmenter pipeline (cameras + masks + depth)")
+    b.add_argument("--no-adaptive", action="store_true", help="one prompt per label (no adaptive self-consistency)")
+    b.add_argument("--no-recovery", action="store_true", help="no retries (recovery tiers off)")
+    b.add_argument("--miss-rate", type=float, default=0.2, help="sim-noisy detector miss rate")
+    b.add_argument("--title", help="BENCHMARKS.md section title (default derived from the resolver)")
     b.add_argument("--workers", type=int, default=1, help="local worker processes")
     b.add_argument("--targets", type=int, default=200, help="IK targets (ik suite)")
     b.add_argument("--write", metavar="BENCHMARKS.md", help="replace this benchmark's section in the file")

@@ -7,21 +7,26 @@ from concurrent.futures import ProcessPoolExecutor
 from typing import Callable, Iterable
 
 from ..sim.tasks import BUILTIN
+from ..execution import RecoveryPolicy
 from .report import footer, pct, wilson
-from .trial import TrialOutcome, run_reference_trial
-
-PROTOCOL = ("planner: hand-written reference plan per task (no LLM); resolver: PRIVILEGED (simulator ground truth, "
-            "no cameras); recovery tiers 1-2 on, replan off; success: the task's predicate over simulator state")
+from .trial import PerceptionConfig, TrialOutcome, run_reference_trial
 
 
-def _one(args: tuple[str, int]) -> dict:
-    task, seed = args
-    return run_reference_trial(BUILTIN[task], seed).row()
+def protocol(perception: PerceptionConfig, recovery: RecoveryPolicy) -> str:
+    rec = "recovery off" if recovery.max_retries == 0 else f"recovery tiers 1-2 on ({recovery.max_retries} retries per node), replan off"
+    return (f"planner: hand-written reference plan per task (no LLM; the planner saw nothing); resolver: "
+            f"{perception.describe()}; {rec}; success: the task's predicate over simulator state")
+
+
+def _one(args: tuple[str, int, PerceptionConfig, RecoveryPolicy]) -> dict:
+    task, seed, perception, recovery = args
+    return run_reference_trial(BUILTIN[task], seed, recovery=recovery, perception=perception).row()
 
 
 def run(tasks: Iterable[str], trials: int, seed: int = 0, workers: int = 1,
-        progress: Callable[[dict], None] | None = None) -> list[dict]:
-    jobs = [(t, seed + k) for t in tasks for k in range(trials)]
+        progress: Callable[[dict], None] | None = None, perception: PerceptionConfig = PerceptionConfig(),
+        recovery: RecoveryPolicy = RecoveryPolicy()) -> list[dict]:
+    jobs = [(t, seed + k, perception, recovery) for t in tasks for k in range(trials)]
     rows: list[dict] = []
     if workers <= 1:
         for job in jobs:
@@ -58,8 +63,9 @@ def table(rows: list[dict]) -> str:
     return "\n".join(lines)
 
 
-def section(rows: list[dict], command: str) -> str:
-    return table(rows) + "\n\n" + footer(command, PROTOCOL + f"; seeds {min(r['seed'] for r in rows)}–{max(r['seed'] for r in rows)}")
+def section(rows: list[dict], command: str, perception: PerceptionConfig, recovery: RecoveryPolicy) -> str:
+    seeds = f"; seeds {min(r['seed'] for r in rows)}–{max(r['seed'] for r in rows)}"
+    return table(rows) + "\n\n" + footer(command, protocol(perception, recovery) + seeds)
 
 
 __all__ = ["run", "section", "table", "TrialOutcome"]
