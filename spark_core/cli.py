@@ -54,7 +54,16 @@ def _cmd_bench(args: argparse.Namespace) -> int:
     from .bench.report import write_section
 
     command = "spark bench " + " ".join(sys.argv[2:]) if sys.argv[1:2] == ["bench"] else "spark bench " + args.suite
-    if args.suite == "ik":
+    if args.suite == "grounding":
+        from .bench import grounding
+
+        rows = grounding.run()
+        for r in rows:
+            err = f"{100 * r['keypoint_error_m']:.2f} cm" if r["keypoint_error_m"] is not None else "-"
+            print(f"{'ok ' if r['correct'] else 'MISS'} {r['scene']:<22} {r['prompt']!r:<36} -> {r['got']} ({err})")
+        title, body = "perception grounding (sim segmenter)", grounding.section(rows, command)
+        print(body)
+    elif args.suite == "ik":
         r = control_bench.ik_benchmark(args.targets)
         print(json.dumps(r, indent=2))
         title, body = "IK (Panda, pinocchio)", control_bench.ik_section(r, command)
@@ -151,7 +160,7 @@ def build_parser() -> argparse.ArgumentParser:
     r.set_defaults(func=_cmd_run)
 
     b = sub.add_parser("bench", help="run a benchmark and optionally write its section of BENCHMARKS.md")
-    b.add_argument("suite", choices=["builtin", "ik", "speed"])
+    b.add_argument("suite", choices=["builtin", "grounding", "ik", "speed"])
     b.add_argument("--trials", type=int, default=20, help="trials (seeds) per task")
     b.add_argument("--tasks", nargs="*", help="subset of task names")
     b.add_argument("--seed", type=int, default=0, help="first seed")

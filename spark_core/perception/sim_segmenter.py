@@ -7,10 +7,15 @@ from typing import Mapping, Sequence
 
 import numpy as np
 
+from .colors import colours_in, normalise_colours
 from .detection import Detection
 from .frame import CameraFrame
 from .qualifiers import QUALIFIERS, split_qualifier
 from .text_encoder import SHARED_ENCODER, TextEncoder
+
+
+HEAD_NOUN_BONUS = 0.08
+COLOUR_MISMATCH_PENALTY = 0.15
 
 
 def calibrated_score(cosine: float, threshold: float) -> float:
@@ -19,9 +24,9 @@ def calibrated_score(cosine: float, threshold: float) -> float:
 
 
 class SimSegmenter:
-    """Grounding: cosine(prompt, "label: description") for every object in view. Objects scoring above
-    `threshold` and within `margin` of the best all become detections (two black bowls give two); a spatial
-    qualifier ("left", "nearest") then keeps the one instance it points at.
+    """Grounding: a score per scene object from cosine(prompt, "label: description"). Objects scoring above
+    `threshold` and within `margin` of the best all become detections where they are in view (two black bowls
+    give two); a spatial qualifier ("left", "nearest") then keeps the one instance it points at.
 
     Everything it returns is marked privileged (masks from simulator ground truth).
     """
@@ -40,10 +45,26 @@ class SimSegmenter:
         self._labels = list(self.catalog)
 
     def similarities(self, text: str) -> dict[str, float]:
+        """Grounding score per object: cosine of the colour-normalised prompt with "label: description", plus
+        a bonus when the prompt's head noun is the object's own noun (so "the stove" prefers the stove over
+        its knob) and a penalty when the prompt names a colour the object does not have."""
         if not self._labels:
             return {}
-        q = self.encoder.encode([text])[0]
-        return dict(zip(self._labels, (self._doc_vecs @ q).tolist()))
+        norm = normalise_colours(text)
+        q = self.encoder.encode([norm])[0]
+        cos = self._doc_vecs @ q
+        words = norm.split()
+        head = words[-1] if words else ""
+        wanted = colours_in(norm)
+        out = {}
+        for label, c in zip(self._labels, cos.tolist()):
+            if head and head == label.split()[-1]:
+                c += HEAD_NOUN_BONUS
+            have = colours_in(f"{label} {self.catalog[label]}")
+            if wanted and have and not wanted & have:
+                c -= COLOUR_MISMATCH_PENALTY
+            out[label] = c
+        return out
 
     def segment(self, frame: CameraFrame, prompts: Sequence[str]) -> list[Detection]:
         if frame.object_ids is None:
@@ -52,11 +73,13 @@ class SimSegmenter:
         out: list[Detection] = []
         for prompt in prompts:
             qualifier, core = split_qualifier(prompt)
-            sims = {k: v for k, v in self.similarities(core).items() if k in visible}
+            sims = self.similarities(core)
             if not sims:
                 continue
+            # The match is decided over every object in the scene, then cut to what this view shows: a hidden
+            # drawer does not turn a "drawer" prompt into a detection of the cabinet that hides it.
             best = max(sims.values())
-            chosen = [k for k, v in sims.items() if v >= self.threshold and v >= best - self.margin]
+            chosen = [k for k, v in sims.items() if v >= self.threshold and v >= best - self.margin and k in visible]
             dets = [Detection(prompt, prompt, frame.object_ids == visible[k], calibrated_score(sims[k], self.threshold),
                               frame.camera, True, {"object": k, "cosine": round(sims[k], 4)}) for k in chosen]
             if qualifier and len(dets) > 1:

@@ -202,7 +202,7 @@ def stove(color: str) -> ObjectSpec:
                        range=[-3.2, 3.2], damping=0.3, frictionloss=0.15)  # a detent-like friction: it stays where turned
         _geom(knob, CYL, [0.02, 0.013], (0, 0, 0), COLORS["white"], mass=0.02)
         _geom(knob, BOX, [0.018, 0.005, 0.012], (0, 0, 0.02), COLORS["white"], mass=0.005)
-    return ObjectSpec("stove", "fixture", f"{color} electric stove with a black burner", 0.16, 0.043, False, build,
+    return ObjectSpec("stove", "fixture", f"{color} electric stove (cooktop) with a black burner", 0.16, 0.043, False, build,
                       parts={"knob": "white round control knob on the stove"})
 
 
