@@ -1,0 +1,94 @@
+"""The `sam3` backend on its real loading path: a tiny randomly initialised SAM3 is built, saved with
+`save_pretrained` (model + tokenizer), reloaded with `from_pretrained`, and run on a rendered scene image."""
+
+import numpy as np
+import pytest
+
+from spark_core.perception.sam3_segmenter import Sam3Segmenter, Sam3WeightsMissing, locate_checkpoint
+
+VOCAB = ["<pad>", "<s>", "</s>", "<unk>", "red", "block", "blue", "plate", "the", "bowl", "white", "cube"]
+
+
+@pytest.fixture(scope="module")
+def tiny_checkpoint(tmp_path_factory):
+    import torch
+    from tokenizers import Tokenizer, models, pre_tokenizers
+    from transformers import PreTrainedTokenizerFast, Sam3Config, Sam3Model
+
+    torch.manual_seed(0)
+    cfg = Sam3Config(
+        vision_config=dict(backbone_config=dict(model_type="sam3_vit_model", hidden_size=32, intermediate_size=64,
+                                                num_hidden_layers=2, num_attention_heads=2, image_size=224, patch_size=14,
+                                                window_size=8, global_attn_indexes=[1], pretrain_image_size=224),
+                           fpn_hidden_size=32, backbone_feature_sizes=[[64, 64], [32, 32], [16, 16]]),
+        text_config=dict(vocab_size=len(VOCAB), hidden_size=32, intermediate_size=64, projection_dim=32, num_hidden_layers=2,
+                         num_attention_heads=2, max_position_embeddings=32, bos_token_id=1, eos_token_id=2, pad_token_id=0),
+        geometry_encoder_config=dict(hidden_size=32, num_layers=1, num_attention_heads=2, intermediate_size=64),
+        detr_encoder_config=dict(hidden_size=32, num_layers=1, num_attention_heads=2, intermediate_size=64),
+        detr_decoder_config=dict(hidden_size=32, num_layers=1, num_queries=20, num_attention_heads=2, intermediate_size=64),
+        mask_decoder_config=dict(hidden_size=32, num_attention_heads=2),
+    )
+    path = tmp_path_factory.mktemp("sam3-tiny")
+    Sam3Model(cfg).save_pretrained(path)
+    tok = Tokenizer(models.WordLevel({w: i for i, w in enumerate(VOCAB)}, unk_token="<unk>"))
+    tok.pre_tokenizer = pre_tokenizers.Whitespace()
+    PreTrainedTokenizerFast(tokenizer_object=tok, pad_token="<pad>", unk_token="<unk>", bos_token="<s>",
+                            eos_token="</s>").save_pretrained(path)
+    return path
+
+
+@pytest.fixture(scope="module")
+def frame():
+    from spark_core.sim.tasks import BUILTIN
+
+    w = BUILTIN["block_on_plate"].make_world(0)
+    f = w.render("agentview")
+    w.close()
+    return f
+
+
+def test_tiny_model_runs_on_a_rendered_scene(tiny_checkpoint, frame):
+    seg = Sam3Segmenter(tiny_checkpoint, device="cpu", score_threshold=0.0, max_detections=3)
+    assert seg.image_size == 224 and not seg.privileged
+    dets = seg.segment(frame, ["red block", "the plate"])
+    assert {d.prompt for d in dets} == {"red block", "the plate"}
+    for d in dets:
+        assert d.mask.shape == frame.shape and d.mask.dtype == bool  # masks at image resolution
+        assert 0.0 <= d.score <= 1.0 and not d.privileged
+        assert len(d.detail["box_xyxy_px"]) == 4
+    # per prompt, detections come best-first and at most max_detections
+    reds = [d.score for d in dets if d.prompt == "red block"]
+    assert reds == sorted(reds, reverse=True) and len(reds) <= 3
+
+
+def test_image_is_encoded_once_per_call(tiny_checkpoint, frame, monkeypatch):
+    seg = Sam3Segmenter(tiny_checkpoint, device="cpu", score_threshold=0.0, max_detections=1)
+    calls = []
+    original = seg.model.get_vision_features
+    monkeypatch.setattr(seg.model, "get_vision_features", lambda **kw: calls.append(1) or original(**kw))
+    seg.segment(frame, ["red block", "blue block", "the plate"])
+    assert len(calls) == 1
+
+
+def test_preprocessing_matches_sam3_normalisation(tiny_checkpoint):
+    seg = Sam3Segmenter(tiny_checkpoint, device="cpu")
+    px = seg.preprocess(np.full((480, 640, 3), 255, np.uint8))
+    assert tuple(px.shape) == (1, 3, 224, 224) and float(px.min()) == pytest.approx(1.0)
+    px = seg.preprocess(np.zeros((480, 640, 3), np.uint8))
+    assert float(px.max()) == pytest.approx(-1.0)
+
+
+def test_high_threshold_gives_no_detections(tiny_checkpoint, frame):
+    assert Sam3Segmenter(tiny_checkpoint, device="cpu", score_threshold=1.01).segment(frame, ["red block"]) == []
+
+
+def test_missing_weights_say_what_and_how(tmp_path, monkeypatch):
+    monkeypatch.setenv("HF_HUB_OFFLINE", "1")
+    monkeypatch.setenv("HF_HOME", str(tmp_path / "hf"))
+    with pytest.raises(Sam3WeightsMissing) as info:
+        locate_checkpoint("facebook/sam3")
+    msg = str(info.value)
+    assert "not found" in msg and "huggingface-cli download facebook/sam3" in msg and "SPARK_SAM3_MODEL" in msg
+    (tmp_path / "empty").mkdir()
+    with pytest.raises(Sam3WeightsMissing, match="has no config.json"):
+        locate_checkpoint(tmp_path / "empty")
