@@ -81,7 +81,8 @@ def _cmd_bench(args: argparse.Namespace) -> int:
         if args.planner != "reference":
             print("only --planner reference is available until the planning backends land", file=sys.stderr)
             return 2
-        perception = PerceptionConfig(args.resolver, not args.no_adaptive, NoiseModel(miss_rate=args.miss_rate))
+        perception = PerceptionConfig(args.resolver, not args.no_adaptive, NoiseModel(miss_rate=args.miss_rate),
+                                      tuple(args.cameras))
         recovery = RecoveryPolicy(max_retries=0) if args.no_recovery else RecoveryPolicy()
         tasks = args.tasks or list(BUILTIN)
         unknown = [t for t in tasks if t not in BUILTIN]
@@ -170,6 +171,7 @@ def build_parser() -> argparse.ArgumentParser:
     b.add_argument("--no-adaptive", action="store_true", help="one prompt per label (no adaptive self-consistency)")
     b.add_argument("--no-recovery", action="store_true", help="no retries (recovery tiers off)")
     b.add_argument("--miss-rate", type=float, default=0.2, help="sim-noisy detector miss rate")
+    b.add_argument("--cameras", nargs="+", default=["agentview", "side"], help="cameras the resolver fuses")
     b.add_argument("--title", help="BENCHMARKS.md section title (default derived from the resolver)")
     b.add_argument("--workers", type=int, default=1, help="local worker processes")
     b.add_argument("--targets", type=int, default=200, help="IK targets (ik suite)")

@@ -26,6 +26,7 @@ class PerceptionConfig:
     resolver: str = "privileged"
     adaptive: bool = True
     noise: NoiseModel = NoiseModel()
+    cameras: tuple[str, ...] = ("agentview", "side")
 
     def __post_init__(self):
         if self.resolver not in RESOLVERS:
@@ -34,8 +35,10 @@ class PerceptionConfig:
     def describe(self) -> str:
         if self.resolver == "privileged":
             return "PrivilegedResolver (privileged:sim-state, no cameras)"
-        base = f"{self.resolver} segmenter (privileged masks), agentview+side 640x480, adaptive prompts {'on' if self.adaptive else 'off'}"
-        return base + (f", noise: {self.noise.describe()}" if self.resolver == "sim-noisy" else "")
+        base = (f"{self.resolver} segmenter (privileged masks), cameras {'+'.join(self.cameras)} 640x480, "
+                f"adaptive prompts {'on (label + 3 variants)' if self.adaptive else 'off'}")
+        noise = f", noise: {self.noise.describe()}, misses independent per prompt and per view"
+        return base + (noise if self.resolver == "sim-noisy" else "")
 
 
 @dataclass
@@ -63,7 +66,7 @@ def make_resolver(world, config: PerceptionConfig, seed: int):
     segmenter = SimSegmenter(world.scene.catalog())
     if config.resolver == "sim-noisy":
         segmenter = SimNoisySegmenter(segmenter, config.noise, seed)
-    return PerceptionResolver(world, segmenter, adaptive=config.adaptive)
+    return PerceptionResolver(world, segmenter, cameras=config.cameras, adaptive=config.adaptive)
 
 
 def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,

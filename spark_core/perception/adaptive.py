@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 
 from .detection import Detection
 from .frame import CameraFrame
+from .lifting import merge_duplicates
 from .segmenter import Segmenter
 
 CONFIDENT = 0.5
@@ -36,10 +37,11 @@ class PromptSelection:
 
 
 def select_prompt(segmenter: Segmenter, frame: CameraFrame, label: str, variants: list[str],
-                  confident: float = CONFIDENT) -> PromptSelection:
-    """Segment with the label and its variants in one call; keep the best single confident detection."""
+                  confident: float = CONFIDENT, keep_apart: frozenset[str] = frozenset()) -> PromptSelection:
+    """Segment with the label and its variants in one call (split masks of one object merged first, except for
+    prompts in `keep_apart`); keep the best single confident detection."""
     prompts = list(dict.fromkeys([label, *variants]))
-    dets = segmenter.segment(frame, prompts)
+    dets = merge_duplicates(segmenter.segment(frame, prompts), keep_apart=keep_apart)
     by_prompt: dict[str, list[Detection]] = {p: [] for p in prompts}
     for d in dets:
         by_prompt.setdefault(d.prompt, []).append(d)

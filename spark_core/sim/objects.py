@@ -63,13 +63,6 @@ def _ring(body, radius, wall_h, n, thick, rgba, z0, mass):
         g.quat = [np.cos(a / 2), 0, 0, np.sin(a / 2)]
 
 
-def bowl(color: str) -> ObjectSpec:
-    def build(body, rgba):
-        _geom(body, CYL, [0.06, 0.005], (0, 0, 0.005), rgba, mass=0.15)
-        _ring(body, 0.07, 0.05, 12, 0.008, rgba, 0.0, 0.2)
-    return ObjectSpec("bowl", "container", f"{color} ceramic bowl, round and open", 0.085, 0.05, True, build)
-
-
 def _visual_only(g):
     g.contype = 0
     g.conaffinity = 0
@@ -83,6 +76,14 @@ def _collision_only(g):
     return g
 
 
+def bowl(color: str) -> ObjectSpec:
+    def build(body, rgba):
+        _visual_only(_geom(body, CYL, [0.066, 0.005], (0, 0, 0.005), rgba, mass=0.001))
+        _collision_only(_geom(body, BOX, [0.05, 0.05, 0.005], (0, 0, 0.005), None, mass=0.15))  # see plate()
+        _ring(body, 0.07, 0.05, 12, 0.008, rgba, 0.0, 0.2)
+    return ObjectSpec("bowl", "container", f"{color} ceramic bowl, round and open", 0.085, 0.05, True, build)
+
+
 def plate(color: str) -> ObjectSpec:
     # A flat cylinder sinks into the table (single-point cylinder/box contact): collide as a square slab instead.
     def build(body, rgba):
@@ -93,7 +94,8 @@ def plate(color: str) -> ObjectSpec:
 
 def mug(color: str) -> ObjectSpec:
     def build(body, rgba):
-        _geom(body, CYL, [0.03, 0.004], (0, 0, 0.004), rgba, mass=0.06)
+        _visual_only(_geom(body, CYL, [0.03, 0.004], (0, 0, 0.004), rgba, mass=0.001))
+        _collision_only(_geom(body, BOX, [0.024, 0.024, 0.004], (0, 0, 0.004), None, mass=0.06))  # see plate()
         _ring(body, 0.032, 0.09, 10, 0.006, rgba, 0.0, 0.12)
         _geom(body, BOX, [0.008, 0.006, 0.03], (0.05, 0.0, 0.05), rgba, mass=0.01)  # the handle, facing +x
     return ObjectSpec("mug", "container", f"{color} ceramic mug with a handle, cylindrical cup", 0.06, 0.09, True, build,

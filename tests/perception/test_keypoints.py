@@ -123,3 +123,18 @@ def test_annotated_image(world):
     assert img.shape == frame.rgb.shape and img.dtype == np.uint8
     assert (img[dets[0].mask] != frame.rgb[dets[0].mask]).any()
     assert (img[~(dets[0].mask | dets[1].mask)] != frame.rgb[~(dets[0].mask | dets[1].mask)]).sum() < 0.05 * img.size
+
+
+def test_agentview_and_wrist_fuse_and_the_wrist_finger_zone_is_excluded(world):
+    from spark_core.perception.lifting import masked_points
+
+    res = PerceptionResolver(world, SimSegmenter(world.scene.catalog()), cameras=("agentview", "robot/wrist"))
+    kp = res.resolve("green block")
+    truth = PrivilegedResolver(world).resolve("green block")
+    assert np.linalg.norm(kp.position_m - truth.position_m) < 0.015
+    assert set(res.groundings[-1]["cameras"]) == {"agentview", "robot/wrist"}
+    wrist = res.frames["robot/wrist"]
+    full = np.ones(wrist.shape, bool)
+    det = Detection("everything", "everything", full, 1.0, "robot/wrist")
+    kept = masked_points(det, wrist, wrist_self_occlusion(wrist.shape))
+    assert len(kept.points_world) < 0.7 * full.sum()  # the finger bands never become object points

@@ -9,6 +9,8 @@ from ...control.pose import Pose, rot_y, rot_z, rotation_error
 from ..protocols import ActionOutcome, FailureKind
 from .base import Ctx, primitive
 
+POUR_HEIGHT_M = 0.10  # TCP above the target's rim: low enough that beads land inside, high enough to clear it
+
 
 @primitive("pour")
 def pour(ctx: Ctx) -> ActionOutcome:
@@ -32,7 +34,7 @@ def pour(ctx: Ctx) -> ActionOutcome:
         R_tilted = R @ tilt_axis(sign * angle)
         opening = R_tilted @ up_in_tcp
         flat = opening[:2] / max(np.linalg.norm(opening[:2]), 1e-6)
-        pos = np.array([*(target.position_m[:2] - flat * lip), target.top_z_m + 0.12])
+        pos = np.array([*(target.position_m[:2] - flat * lip), target.top_z_m + POUR_HEIGHT_M])
         upright, tilted = Pose(pos, R), Pose(pos, R_tilted)
         try:
             q_up = ctx.motion.ik(upright, what="pouring pose")
