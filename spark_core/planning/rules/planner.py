@@ -1,0 +1,143 @@
+"""The `rules` planner: parse the instruction, ground each phrase in what perception saw, compose a tree."""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+
+from ...grammar import PlanError, check_plan, to_yaml
+from ..protocol import PlanRequest, PlanResult
+from .parse import Clause, ParseError, is_pronoun, parse_instruction
+
+POUR_ANGLE_RAD = 2.2
+DIR_VECTORS = {"forward": (1.0, 0.0), "backward": (-1.0, 0.0), "left": (0.0, 1.0), "right": (0.0, -1.0)}
+
+
+class CannotPlan(ValueError):
+    pass
+
+
+def _prim(name: str, **params) -> dict:
+    return {"primitive": name, "params": {k: v for k, v in params.items() if v is not None}}
+
+
+class RulesPlanner:
+    """Deterministic and offline. Says what it understood and what it did not when it cannot plan."""
+
+    name = "rules"
+
+    def plan(self, request: PlanRequest) -> PlanResult:
+        t0 = time.perf_counter()
+        try:
+            clauses = parse_instruction(request.instruction)
+            understood = [_describe(c) for c in clauses]
+            children = self._compose(clauses, request)
+            data = {"task": request.instruction.strip(), "tree": {"type": "sequence", "children": children}}
+            plan = check_plan(data)
+            return PlanResult(self.name, to_yaml(plan), plan, latency_s=time.perf_counter() - t0,
+                              detail={"understood": understood})
+        except ParseError as e:
+            return PlanResult(self.name, "", None, error=f"did not understand the instruction: {e}",
+                              latency_s=time.perf_counter() - t0)
+        except CannotPlan as e:
+            return PlanResult(self.name, "", None, error=str(e), latency_s=time.perf_counter() - t0,
+                              detail={"understood": understood})
+        except PlanError as e:  # a composition bug: report it rather than crash
+            return PlanResult(self.name, "", None, issues=e.issues, error="the composed plan did not type-check",
+                              latency_s=time.perf_counter() - t0)
+
+    # -- composition -------------------------------------------------------------------------------------------
+    def _compose(self, clauses: list[Clause], request: PlanRequest) -> list[dict]:
+        scene = request.scene.keypoints
+        seen = ", ".join(scene) or "nothing"
+
+        def need(phrase: str | None, role: str, clause: Clause) -> str:
+            if not phrase:
+                raise CannotPlan(f"{clause.text!r}: which {role}? (understood: {_describe(clause)})")
+            if phrase not in scene:
+                raise CannotPlan(f"could not find {phrase!r} in the scene (perception found: {seen})")
+            return phrase
+
+        out: list[dict] = []
+        last_object: str | None = None
+        last_container: str | None = None
+        for i, c in enumerate(clauses):
+            later_puts_in = any(k.action in ("put", "sort") and k.relation == "in" and is_pronoun(k.target) for k in clauses[i + 1:])
+            obj = last_object if is_pronoun(c.obj) else c.obj
+            target = (last_container or last_object) if is_pronoun(c.target) else c.target
+            if c.action == "pick":
+                out.append(_prim("pick", keypoint_label=need(obj, "object", c)))
+            elif c.action in ("put", "sort", "stack"):
+                o, t = need(obj, "object", c), need(target, "destination", c)
+                if c.relation == "near":
+                    raise CannotPlan(f"{c.text!r}: I can put things on or in something, not next to it")
+                if c.action == "stack":
+                    out.append(_prim("stack", keypoint_label=o, target_label=t))
+                elif c.relation == "in":
+                    out += [_prim("pick", keypoint_label=o), _prim("place_in", container_label=t)]
+                else:
+                    out += [_prim("pick", keypoint_label=o), _prim("place", target_label=t)]
+            elif c.action == "push":
+                o = need(obj, "object", c)
+                direction, distance = self._push_geometry(c, o, target, scene)
+                out.append(_prim("push_object", keypoint_label=o, direction=direction, distance=distance))
+            elif c.action in ("open", "close"):
+                o = need(obj, "thing to " + c.action, c)
+                handle = next((h for h in (f"{o} handle", "drawer handle") if h in scene), None)
+                if handle is None:
+                    raise CannotPlan(f"cannot {c.action} {o!r}: perception found no handle on it (looked for {o + ' handle'!r})")
+                if c.action == "open":
+                    out.append(_prim("open_drawer", keypoint_label=handle, distance=0.18 if later_puts_in else 0.15))
+                    last_container = o
+                else:
+                    out.append(_prim("close_drawer", keypoint_label=handle))
+            elif c.action in ("turn_on", "turn_off"):
+                o = need(obj, "appliance", c)
+                knob = o if o.endswith("knob") else f"{o} knob"
+                if knob not in scene:
+                    raise CannotPlan(f"cannot turn {o!r} {c.action[5:]}: perception found no knob on it (looked for {knob!r})")
+                out.append(_prim("turn_knob", keypoint_label=knob, angle=90.0 if c.action == "turn_on" else -90.0))
+            elif c.action == "pour":
+                src = need(c.source or obj, "container to pour from", c)
+                dst = need(target, "container to pour into", c)
+                out += [_prim("grasp_se3", keypoint_label=src, strategy="side", force=40.0), _prim("lift", height=0.12),
+                        _prim("pour", target_label=dst, pour_angle=POUR_ANGLE_RAD)]
+            elif c.action == "scrub":
+                t = need(target or obj, "surface to scrub", c)
+                if not c.tool:
+                    raise CannotPlan(f"{c.text!r}: scrub with what? say e.g. 'with the sponge'")
+                tool = need(c.tool, "tool", c)
+                out += [_prim("pick", keypoint_label=tool), _prim("constrained_scrub", target_label=t),
+                        _prim("move_relative", dz=0.10), _prim("release")]
+            last_object = obj or last_object
+        if clauses and clauses[-1].action in ("open", "close", "turn_on", "turn_off"):
+            out.append(_prim("go_home"))  # leave the fixture's neighbourhood
+        return out
+
+    @staticmethod
+    def _push_geometry(c: Clause, obj: str, target: str | None, scene) -> tuple[str, float]:
+        """Direction and distance: as said, or from where the target region is relative to the object."""
+        if target and target in scene:
+            delta = scene[target].position_m[:2] - scene[obj].position_m[:2]
+            direction = c.direction or max(DIR_VECTORS, key=lambda d: float(np.dot(delta, DIR_VECTORS[d])))
+            distance = float(np.dot(delta, DIR_VECTORS[direction]))
+            if distance <= 0.01:
+                raise CannotPlan(f"{target!r} is not {direction} of {obj!r}")
+            return direction, round(min(distance, 0.5), 3)
+        if target:
+            raise CannotPlan(f"could not find {target!r} in the scene")
+        if not c.direction:
+            raise CannotPlan(f"{c.text!r}: push which way? (forward, backward, left, right, or into something)")
+        return c.direction, round(min(c.distance_m or 0.10, 0.5), 3)
+
+
+def _describe(c: Clause) -> str:
+    parts = [c.action.replace("_", " ")]
+    for name in ("obj", "relation", "target", "source", "tool", "direction"):
+        v = getattr(c, name)
+        if v:
+            parts.append(f"{name}={v}")
+    if c.distance_m:
+        parts.append(f"distance={c.distance_m:.2f} m")
+    return " ".join(parts)
