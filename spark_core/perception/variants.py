@@ -8,7 +8,8 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "plate": ("dish", "round plate"), "bowl": ("round bowl", "dish"), "tray": ("plastic tray", "flat tray"),
     "basket": ("wicker basket", "bin"), "sponge": ("kitchen sponge", "scrubbing pad"), "bottle": ("plastic bottle", "flask"),
     "knob": ("dial", "control knob"), "handle": ("pull handle", "grip"), "drawer": ("cabinet drawer", "sliding drawer"),
-    "stove": ("cooktop", "burner"), "peg": ("rod", "stick"), "nut": ("square nut", "metal nut"), "brush": ("scrub brush", "bristle brush"),
+    "stove": ("cooktop", "burner"), "cooktop": ("stove", "electric stove"), "hob": ("stove", "cooktop"),
+    "cupboard": ("cabinet", "wooden cabinet"), "dish": ("plate", "round dish"), "zone": ("area", "target area"), "peg": ("rod", "stick"), "nut": ("square nut", "metal nut"), "brush": ("scrub brush", "bristle brush"),
     "area": ("zone", "target area"), "bead": ("small ball", "marble"), "cabinet": ("cupboard", "wooden cabinet"),
 }
 

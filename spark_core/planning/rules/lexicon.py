@@ -30,5 +30,6 @@ DIRECTIONS: dict[str, tuple[str, ...]] = {
 }
 DETERMINERS = ("the", "a", "an", "this", "that", "these", "those", "some", "all")
 PRONOUNS = ("it", "them", "there")
-FILLERS = ("please", "carefully", "gently", "slowly", "now", "then", "and then", "also", "first", "finally", "next",
+# Words that carry no action. ("then" is not one: it separates clauses.)
+FILLERS = ("please", "carefully", "gently", "slowly", "now", "also", "first", "finally", "next",
            "can you", "could you", "would you", "i want you to", "go ahead and", "robot,")

@@ -85,7 +85,7 @@ def _match_verb(clause: str) -> tuple[str, str] | None:
 
 
 def split_clauses(text: str) -> list[str]:
-    parts = re.split(r"\s*,\s*|\s+then\s+|\s+and\s+(?=(?:" + "|".join(
+    parts = re.split(r"\s*,\s*(?:and\s+)?(?:then\s+)?|\s+(?:and\s+)?then\s+|\s+and\s+(?=(?:" + "|".join(
         re.escape(f) for forms in VERBS.values() for f in forms) + r")\b)|\s+after that\s+|\s+before\s+", text)
     return [p.strip() for p in parts if p and p.strip()]
 

@@ -83,20 +83,22 @@ class RulesPlanner:
                 direction, distance = self._push_geometry(c, o, target, scene)
                 out.append(_prim("push_object", keypoint_label=o, direction=direction, distance=distance))
             elif c.action in ("open", "close"):
-                o = need(obj, "thing to " + c.action, c)
-                handle = next((h for h in (f"{o} handle", "drawer handle") if h in scene), None)
+                o = need(obj, f"thing to {c.action}", c)  # the object itself must be seen, not only a handle-like part
+                handle = next((h for h in (f"{o} handle", "drawer handle" if "drawer" in o else "") if h in scene), None)
                 if handle is None:
-                    raise CannotPlan(f"cannot {c.action} {o!r}: perception found no handle on it (looked for {o + ' handle'!r})")
+                    raise CannotPlan(f"cannot {c.action} {o!r}: perception found no handle on it (looked for {o + ' handle'!r}; "
+                                     f"found: {seen})")
                 if c.action == "open":
                     out.append(_prim("open_drawer", keypoint_label=handle, distance=0.18 if later_puts_in else 0.15))
                     last_container = o
                 else:
                     out.append(_prim("close_drawer", keypoint_label=handle))
             elif c.action in ("turn_on", "turn_off"):
-                o = need(obj, "appliance", c)
-                knob = o if o.endswith("knob") else f"{o} knob"
+                obj = need(obj, "appliance", c)
+                knob = obj if obj.endswith("knob") else f"{obj} knob"
                 if knob not in scene:
-                    raise CannotPlan(f"cannot turn {o!r} {c.action[5:]}: perception found no knob on it (looked for {knob!r})")
+                    raise CannotPlan(f"cannot turn {obj!r} {c.action[5:]}: perception did not find it with a knob "
+                                     f"(looked for {obj!r} and {knob!r}; found: {seen})")
                 out.append(_prim("turn_knob", keypoint_label=knob, angle=90.0 if c.action == "turn_on" else -90.0))
             elif c.action == "pour":
                 src = need(c.source or obj, "container to pour from", c)
