@@ -1,0 +1,103 @@
+"""What every LLM backend shares: one call, a bounded retry on transient errors, one repair round trip for
+plans that do not type-check, usage and cost, and a clean failure that keeps the raw text."""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from typing import Callable
+
+import cv2
+import numpy as np
+
+from ..grammar import validate
+from .pricing import cost_usd
+from .prompt import repair_prompt, system_prompt, user_prompt
+from .protocol import PlanRequest, PlanResult, Usage
+
+
+class TransientError(Exception):
+    """Rate limit (429), server error (5xx) or timeout: worth retrying."""
+
+
+class PlannerUnavailable(Exception):
+    """A permanent error (auth, bad request, unknown model): reported, not retried."""
+
+
+@dataclass(frozen=True)
+class LLMSettings:
+    model: str
+    temperature: float = 0.3
+    max_output_tokens: int = 2048
+    timeout_s: float = 60.0
+    max_retries: int = 2  # per call, for 429 / 5xx / timeouts
+    backoff_s: float = 1.0  # doubled each retry
+    repair_rounds: int = 1  # type-checker errors sent back to the model, then fail cleanly
+    prices: dict[str, tuple[float, float]] | None = None
+
+
+@dataclass
+class Turn:
+    """One exchange in the conversation: ('user', text) or ('model', text)."""
+
+    role: str
+    text: str
+
+
+@dataclass
+class CallOutcome:
+    text: str
+    usage: Usage
+    raw: dict = field(default_factory=dict)
+
+
+def png_bytes(image: np.ndarray) -> bytes:
+    ok, buf = cv2.imencode(".png", cv2.cvtColor(image, cv2.COLOR_RGB2BGR))
+    if not ok:
+        raise ValueError("could not encode the annotated image as PNG")
+    return buf.tobytes()
+
+
+def plan_with_llm(backend: str, settings: LLMSettings, request: PlanRequest,
+                  call: Callable[[str, list[Turn], bytes | None], CallOutcome]) -> PlanResult:
+    """Drive `call(system, turns, image_png)` through retries and repair; `call` raises TransientError or
+    PlannerUnavailable for failures."""
+    t0 = time.perf_counter()
+    system = system_prompt()
+    turns = [Turn("user", user_prompt(request))]
+    image = png_bytes(request.scene.image) if request.scene.image is not None else None
+    total = Usage()
+    texts: list[str] = []
+    for round_ in range(settings.repair_rounds + 1):
+        try:
+            out = _with_retries(settings, lambda: call(system, turns, image))
+        except (TransientError, PlannerUnavailable) as e:
+            return PlanResult(backend, texts[-1] if texts else "", None, error=f"{backend} planner failed: {e}",
+                              usage=total, cost_usd=cost_usd(settings.model, total, settings.prices),
+                              latency_s=time.perf_counter() - t0, detail={"model": settings.model, "rounds": round_})
+        total = Usage(total.input_tokens + out.usage.input_tokens, total.output_tokens + out.usage.output_tokens,
+                      total.reasoning_tokens + out.usage.reasoning_tokens)
+        texts.append(out.text)
+        plan, issues = validate(out.text)
+        if plan is not None:
+            return PlanResult(backend, out.text, plan, usage=total, cost_usd=cost_usd(settings.model, total, settings.prices),
+                              latency_s=time.perf_counter() - t0,
+                              detail={"model": settings.model, "rounds": round_ + 1, "attempts": texts})
+        turns += [Turn("model", out.text), Turn("user", repair_prompt([str(i) for i in issues]))]
+    return PlanResult(backend, texts[-1], None, issues=issues,
+                      error=f"the {backend} plan did not type-check after {settings.repair_rounds} repair round(s)",
+                      usage=total, cost_usd=cost_usd(settings.model, total, settings.prices),
+                      latency_s=time.perf_counter() - t0, detail={"model": settings.model, "attempts": texts})
+
+
+def _with_retries(settings: LLMSettings, fn: Callable[[], CallOutcome]) -> CallOutcome:
+    delay = settings.backoff_s
+    for attempt in range(settings.max_retries + 1):
+        try:
+            return fn()
+        except TransientError as e:
+            if attempt == settings.max_retries:
+                raise TransientError(f"{e} (gave up after {settings.max_retries + 1} attempts)") from None
+            time.sleep(delay)
+            delay *= 2
+    raise AssertionError("unreachable")

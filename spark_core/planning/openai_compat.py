@@ -1,0 +1,65 @@
+"""`openai` planner: OpenAI-compatible chat completions (OpenAI, Ollama, vLLM, llama.cpp server) with a JSON
+schema response format and the annotated image as a data URL."""
+
+from __future__ import annotations
+
+import base64
+import os
+
+from .llm import CallOutcome, LLMSettings, PlannerUnavailable, TransientError, Turn, plan_with_llm
+from .prompt import response_schema
+from .protocol import PlanRequest, PlanResult, Usage
+
+
+class OpenAIPlanner:
+    name = "openai"
+
+    def __init__(self, model: str, base_url: str | None = None, api_key: str | None = None,
+                 settings: LLMSettings | None = None):
+        import openai
+
+        key = api_key or os.environ.get("OPENAI_API_KEY") or ("not-needed" if base_url else None)
+        if key is None:
+            raise PlannerUnavailable("the openai planner needs OPENAI_API_KEY, or --base-url of a local "
+                                     "OpenAI-compatible server (Ollama, vLLM, llama.cpp)")
+        self.settings = settings or LLMSettings(model)
+        self.openai = openai
+        self.client = openai.OpenAI(api_key=key, base_url=base_url, timeout=self.settings.timeout_s, max_retries=0)
+
+    def plan(self, request: PlanRequest) -> PlanResult:
+        return plan_with_llm(self.name, self.settings, request, self._call)
+
+    def _call(self, system: str, turns: list[Turn], image: bytes | None) -> CallOutcome:
+        messages: list[dict] = [{"role": "system", "content": system}]
+        for i, turn in enumerate(turns):
+            content: object = turn.text
+            if i == 0 and image is not None:
+                url = "data:image/png;base64," + base64.b64encode(image).decode()
+                content = [{"type": "text", "text": turn.text}, {"type": "image_url", "image_url": {"url": url}}]
+            messages.append({"role": "user" if turn.role == "user" else "assistant", "content": content})
+        o = self.openai
+        try:
+            resp = self.client.chat.completions.create(
+                model=self.settings.model, messages=messages, temperature=self.settings.temperature,
+                max_tokens=self.settings.max_output_tokens,
+                response_format={"type": "json_schema", "json_schema": {"name": "spark_plan", "schema": response_schema()}})
+        except (o.RateLimitError, o.InternalServerError) as e:
+            raise TransientError(f"HTTP {e.status_code} from {self.client.base_url}: {_message(e)}") from None
+        except o.APITimeoutError:
+            raise TransientError(f"{self.client.base_url} did not answer within {self.settings.timeout_s:g} s") from None
+        except o.APIConnectionError as e:
+            raise TransientError(f"cannot reach {self.client.base_url}: {e}") from None
+        except o.APIStatusError as e:
+            raise PlannerUnavailable(f"HTTP {e.status_code} from {self.client.base_url}: {_message(e)}") from None
+        u = resp.usage
+        reasoning = getattr(getattr(u, "completion_tokens_details", None), "reasoning_tokens", 0) or 0 if u else 0
+        usage = Usage(u.prompt_tokens if u else 0, (u.completion_tokens - reasoning) if u else 0, reasoning)
+        return CallOutcome(resp.choices[0].message.content or "", usage)
+
+
+def _message(e) -> str:
+    body = getattr(e, "body", None)
+    if isinstance(body, dict):
+        err = body.get("error", body)
+        return str(err.get("message", err)) if isinstance(err, dict) else str(err)
+    return str(e)
