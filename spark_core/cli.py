@@ -120,7 +120,8 @@ def _cmd_bench(args: argparse.Namespace) -> int:
     return 0
 
 
-def _plan_in_scene(task_name: str, instruction: str, seed: int, resolver_kind: str, planner_name: str):
+def _plan_in_scene(task_name: str, instruction: str, seed: int, resolver_kind: str, planner_name: str,
+                   model: str | None = None, base_url: str | None = None):
     """Build the task's world, let perception look for the instruction's phrases, and call the planner once."""
     from .bench.trial import PerceptionConfig, make_resolver
     from .planning import PlanRequest
@@ -128,12 +129,24 @@ def _plan_in_scene(task_name: str, instruction: str, seed: int, resolver_kind: s
     from .planning.observe import observe
     from .sim.tasks import BUILTIN
 
+    planner = make_planner(planner_name, model, base_url)  # fails fast (missing key, server) before any simulation
     task = BUILTIN[task_name]
     world = task.make_world(seed)
     resolver = make_resolver(world, PerceptionConfig(resolver_kind), seed)
     view = observe(instruction, resolver)
-    result = make_planner(planner_name).plan(PlanRequest(instruction, view))
+    if planner_name != "rules" and getattr(resolver, "frames", None):
+        view = _with_annotated_image(view, resolver)
+    result = planner.plan(PlanRequest(instruction, view))
     return task, world, resolver, view, result
+
+
+def _with_annotated_image(view, resolver):
+    """Multimodal planners also get the agentview image with the detections drawn on it."""
+    from .perception.annotate import annotate
+    from .planning import SceneView
+
+    frame = next(iter(resolver.frames.values()))
+    return SceneView(view.keypoints, view.summary, annotate(frame, [], view.keypoints))
 
 
 def _print_plan_result(view, result) -> None:
@@ -141,7 +154,9 @@ def _print_plan_result(view, result) -> None:
     if result.detail.get("understood"):
         print("understood: " + "; ".join(result.detail["understood"]))
     if result.ok:
-        print(result.text.rstrip())
+        from .grammar import to_yaml
+
+        print(to_yaml(result.plan).rstrip())
     else:
         print(f"no plan: {result.error}", file=sys.stderr)
         for issue in result.issues:
@@ -155,9 +170,20 @@ def _cmd_plan(args: argparse.Namespace) -> int:
     if args.task not in BUILTIN:
         print(f"unknown task {args.task!r}; builtin tasks: {', '.join(BUILTIN)}", file=sys.stderr)
         return 2
-    task, world, _, view, result = _plan_in_scene(args.task, args.instruction, args.seed, args.resolver, args.planner)
+    from .planning.llm import PlannerUnavailable
+
+    try:
+        task, world, _, view, result = _plan_in_scene(args.task, args.instruction, args.seed, args.resolver, args.planner,
+                                                      args.model, args.base_url)
+    except (PlannerUnavailable, ValueError) as e:
+        print(f"planner {args.planner!r} unavailable: {e}", file=sys.stderr)
+        return 2
     world.close()
     _print_plan_result(view, result)
+    if result.usage.input_tokens:
+        u = result.usage
+        print(f"usage: {u.input_tokens} in, {u.output_tokens} out, {u.reasoning_tokens} reasoning tokens; "
+              f"${result.cost_usd:.4f}; {result.latency_s:.1f} s")
     return 0 if result.ok else 1
 
 
@@ -199,9 +225,16 @@ def _run_planned(args: argparse.Namespace) -> int:
     from .execution import Executor
     from .execution.primitives import PrimitiveLibrary
 
+    from .planning.llm import PlannerUnavailable
+
     instruction = args.instruction or BUILTIN_INSTRUCTION(args.task)
     t0 = time.perf_counter()
-    task, world, resolver, view, result = _plan_in_scene(args.task, instruction, args.seed, args.resolver, args.planner)
+    try:
+        task, world, resolver, view, result = _plan_in_scene(args.task, instruction, args.seed, args.resolver, args.planner,
+                                                             args.model, args.base_url)
+    except (PlannerUnavailable, ValueError) as e:
+        print(f"planner {args.planner!r} unavailable: {e}", file=sys.stderr)
+        return 2
     print(f"task {task.name!r}, instruction {instruction!r} (seed {args.seed}); planner {args.planner}; resolver {args.resolver}")
     _print_plan_result(view, result)
     if not result.ok:
@@ -244,16 +277,20 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--seed", type=int, default=0)
     r.add_argument("--plan", help="plan file to run instead of the task's reference plan")
     r.add_argument("--resolver", default="sim", choices=["privileged", "sim", "sim-noisy"])
-    r.add_argument("--planner", default="reference", choices=["reference", "rules"],
-                   help="reference: the task's hand-written plan; rules: plan the instruction from what perception saw")
+    r.add_argument("--planner", default="reference", choices=["reference", "rules", "gemini", "openai"],
+                   help="reference: the task's hand-written plan; otherwise plan the instruction from what perception saw")
     r.add_argument("--instruction", help="instruction for --planner (default: the task's own)")
+    r.add_argument("--model", help="LLM model name (gemini default: gemini-3.1-pro-preview)")
+    r.add_argument("--base-url", help="LLM endpoint (OpenAI-compatible server, or a Gemini proxy)")
     r.set_defaults(func=_cmd_run)
 
     pl = sub.add_parser("plan", help="plan an instruction in a task's scene (perception + one planner call) and print the tree")
     pl.add_argument("instruction")
     pl.add_argument("--task", required=True, help="builtin task whose scene to plan in")
     pl.add_argument("--seed", type=int, default=0)
-    pl.add_argument("--planner", default="rules", choices=["rules"])
+    pl.add_argument("--planner", default="rules", choices=["rules", "gemini", "openai"])
+    pl.add_argument("--model", help="LLM model name (gemini default: gemini-3.1-pro-preview)")
+    pl.add_argument("--base-url", help="LLM endpoint (OpenAI-compatible server, or a Gemini proxy)")
     pl.add_argument("--resolver", default="sim", choices=["privileged", "sim", "sim-noisy"])
     pl.set_defaults(func=_cmd_plan)
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import os
 
-from .llm import CallOutcome, LLMSettings, PlannerUnavailable, TransientError, Turn, plan_with_llm
+from .llm import CallOutcome, LLMSettings, PlannerUnavailable, TransientError, Turn, plan_with_llm, variants_with_llm
 from .prompt import response_schema
 from .protocol import PlanRequest, PlanResult, Usage
 
@@ -32,7 +32,11 @@ class GeminiPlanner:
     def plan(self, request: PlanRequest) -> PlanResult:
         return plan_with_llm(self.name, self.settings, request, self._call)
 
-    def _call(self, system: str, turns: list[Turn], image: bytes | None) -> CallOutcome:
+    def prompt_variants(self, labels: list[str], k: int = 3) -> dict[str, list[str]]:
+        """The variant call: k alternative text prompts per object label (colour, shape, material)."""
+        return variants_with_llm(self.settings, labels, k, self._call)
+
+    def _call(self, system: str, turns: list[Turn], image: bytes | None, schema: dict | None = None) -> CallOutcome:
         t = self.types
         contents = []
         for i, turn in enumerate(turns):
@@ -43,7 +47,7 @@ class GeminiPlanner:
         config = t.GenerateContentConfig(
             system_instruction=system, temperature=self.settings.temperature,
             max_output_tokens=self.settings.max_output_tokens, response_mime_type="application/json",
-            response_json_schema=response_schema())
+            response_json_schema=schema or response_schema())
         try:
             resp = self.client.models.generate_content(model=self.settings.model, contents=contents, config=config)
         except self.errors.APIError as e:

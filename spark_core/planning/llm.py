@@ -3,6 +3,7 @@ plans that do not type-check, usage and cost, and a clean failure that keeps the
 
 from __future__ import annotations
 
+import json
 import time
 from dataclasses import dataclass, field
 from typing import Callable
@@ -11,6 +12,7 @@ import cv2
 import numpy as np
 
 from ..grammar import validate
+from ..grammar.loading import unfence
 from .pricing import cost_usd
 from .prompt import repair_prompt, system_prompt, user_prompt
 from .protocol import PlanRequest, PlanResult, Usage
@@ -101,3 +103,25 @@ def _with_retries(settings: LLMSettings, fn: Callable[[], CallOutcome]) -> CallO
             time.sleep(delay)
             delay *= 2
     raise AssertionError("unreachable")
+
+
+VARIANTS_SYSTEM = ("You help an open-vocabulary object detector. For each object label, give {k} alternative short "
+                   "text prompts that describe the same object by colour, shape or material. Answer with a JSON object "
+                   "mapping each label to a list of {k} strings, and nothing else.")
+
+
+def variants_with_llm(settings: LLMSettings, labels: list[str], k: int,
+                      call: Callable[..., CallOutcome]) -> dict[str, list[str]]:
+    """One call; labels the model skipped or mangled get no variants (perception then uses the label alone)."""
+    schema = {"type": "object", "properties": {label: {"type": "array", "items": {"type": "string"}} for label in labels},
+              "required": list(labels)}
+    out = _with_retries(settings, lambda: call(VARIANTS_SYSTEM.format(k=k), [Turn("user", json.dumps(labels))], None, schema))
+    try:
+        data = json.loads(unfence(out.text))
+    except json.JSONDecodeError:
+        return {label: [] for label in labels}
+    result = {}
+    for label in labels:
+        raw = data.get(label, []) if isinstance(data, dict) else []
+        result[label] = [v.strip() for v in raw if isinstance(v, str) and v.strip() and v.strip() != label][:k]
+    return result

@@ -6,7 +6,7 @@ from __future__ import annotations
 import base64
 import os
 
-from .llm import CallOutcome, LLMSettings, PlannerUnavailable, TransientError, Turn, plan_with_llm
+from .llm import CallOutcome, LLMSettings, PlannerUnavailable, TransientError, Turn, plan_with_llm, variants_with_llm
 from .prompt import response_schema
 from .protocol import PlanRequest, PlanResult, Usage
 
@@ -29,7 +29,11 @@ class OpenAIPlanner:
     def plan(self, request: PlanRequest) -> PlanResult:
         return plan_with_llm(self.name, self.settings, request, self._call)
 
-    def _call(self, system: str, turns: list[Turn], image: bytes | None) -> CallOutcome:
+    def prompt_variants(self, labels: list[str], k: int = 3) -> dict[str, list[str]]:
+        """The variant call: k alternative text prompts per object label (colour, shape, material)."""
+        return variants_with_llm(self.settings, labels, k, self._call)
+
+    def _call(self, system: str, turns: list[Turn], image: bytes | None, schema: dict | None = None) -> CallOutcome:
         messages: list[dict] = [{"role": "system", "content": system}]
         for i, turn in enumerate(turns):
             content: object = turn.text
@@ -42,7 +46,8 @@ class OpenAIPlanner:
             resp = self.client.chat.completions.create(
                 model=self.settings.model, messages=messages, temperature=self.settings.temperature,
                 max_tokens=self.settings.max_output_tokens,
-                response_format={"type": "json_schema", "json_schema": {"name": "spark_plan", "schema": response_schema()}})
+                response_format={"type": "json_schema",
+                                 "json_schema": {"name": "spark_output", "schema": schema or response_schema()}})
         except (o.RateLimitError, o.InternalServerError) as e:
             raise TransientError(f"HTTP {e.status_code} from {self.client.base_url}: {_message(e)}") from None
         except o.APITimeoutError:

@@ -168,3 +168,36 @@ def test_openai_needs_a_key_or_a_local_server(monkeypatch):
     monkeypatch.delenv("OPENAI_API_KEY", raising=False)
     with pytest.raises(PlannerUnavailable, match="OPENAI_API_KEY, or --base-url"):
         OpenAIPlanner("gpt-4.1")
+
+
+def test_variant_call_over_the_wire():
+    with FakeLLM("openai") as fake:
+        fake.script = [("ok", json.dumps({"red block": ["crimson cube", "red wooden block", "red block", "scarlet box"],
+                                          "plate": ["white dish"]}))]
+        out = openai_planner(fake).prompt_variants(["red block", "plate", "mug"], k=3)
+    assert out == {"red block": ["crimson cube", "red wooden block", "scarlet box"], "plate": ["white dish"], "mug": []}
+    schema = fake.requests[0]["body"]["response_format"]["json_schema"]["schema"]
+    assert schema["required"] == ["red block", "plate", "mug"]
+    with FakeLLM("gemini") as fake:
+        fake.script = [("ok", "not json")]
+        assert gemini(fake).prompt_variants(["cup"]) == {"cup": []}
+
+
+def test_rules_variants_are_deterministic():
+    from spark_core.planning.rules import RulesPlanner
+
+    assert RulesPlanner().prompt_variants(["red block"]) == {"red block": ["red cube", "red wooden block", "the block"]}
+
+
+def test_cli_plans_through_an_openai_compatible_server(capsys):
+    from spark_core.cli import main
+
+    with FakeLLM("openai") as fake:
+        fake.script = [("ok", GOOD)]
+        code = main(["plan", "put the red block on the plate", "--task", "block_on_plate", "--planner", "openai",
+                     "--model", "local-model", "--base-url", fake.url + "/v1"])
+    out = capsys.readouterr().out
+    assert code == 0 and "primitive: place" in out and "usage: 120 in" in out
+    content = fake.requests[0]["body"]["messages"][1]["content"]
+    assert "red block: (" in content[0]["text"]  # what perception saw, from the scene's cameras
+    assert content[1]["image_url"]["url"].startswith("data:image/png;base64,")  # the annotated agentview image

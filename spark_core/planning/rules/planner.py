@@ -27,6 +27,12 @@ class RulesPlanner:
 
     name = "rules"
 
+    def prompt_variants(self, labels: list[str], k: int = 3) -> dict[str, list[str]]:
+        """Deterministic variants from the label's words and a synonym table (no model call)."""
+        from ...perception.variants import prompt_variants
+
+        return {label: prompt_variants(label, k) for label in labels}
+
     def plan(self, request: PlanRequest) -> PlanResult:
         t0 = time.perf_counter()
         try:
