@@ -121,7 +121,7 @@ def _cmd_bench(args: argparse.Namespace) -> int:
 
 
 def _plan_in_scene(task_name: str, instruction: str, seed: int, resolver_kind: str, planner_name: str,
-                   model: str | None = None, base_url: str | None = None):
+                   model: str | None = None, base_url: str | None = None, library=None):
     """Build the task's world, let perception look for the instruction's phrases, and call the planner once."""
     from .bench.trial import PerceptionConfig, make_resolver
     from .planning import PlanRequest
@@ -136,8 +136,15 @@ def _plan_in_scene(task_name: str, instruction: str, seed: int, resolver_kind: s
     view = observe(instruction, resolver)
     if planner_name != "rules" and getattr(resolver, "frames", None):
         view = _with_annotated_image(view, resolver)
-    result = planner.plan(PlanRequest(instruction, view))
+    examples = library.examples(instruction) if library is not None and planner_name != "rules" else ()
+    result = planner.plan(PlanRequest(instruction, view, examples))
     return task, world, resolver, view, result
+
+
+def _library(args: argparse.Namespace):
+    from .planning.library import PlanLibrary
+
+    return PlanLibrary(args.plan_library, enabled=not args.no_plan_library)
 
 
 def _with_annotated_image(view, resolver):
@@ -230,8 +237,9 @@ def _run_planned(args: argparse.Namespace) -> int:
     instruction = args.instruction or BUILTIN_INSTRUCTION(args.task)
     t0 = time.perf_counter()
     try:
+        library = _library(args)
         task, world, resolver, view, result = _plan_in_scene(args.task, instruction, args.seed, args.resolver, args.planner,
-                                                             args.model, args.base_url)
+                                                             args.model, args.base_url, library)
     except (PlannerUnavailable, ValueError) as e:
         print(f"planner {args.planner!r} unavailable: {e}", file=sys.stderr)
         return 2
@@ -247,6 +255,10 @@ def _run_planned(args: argparse.Namespace) -> int:
         print(f"  {ev.t:7.3f}s  {ev.kind:<9} {ev.node_path:<22} {detail}")
     success = bool(task.success(world))
     world.close()
+    if success:
+        from .grammar import to_yaml
+
+        library.add(instruction, to_yaml(result.plan), view.summary)
     verdict = "SUCCESS" if success else f"FAILURE ({trial.failure.value if trial.failure else 'task predicate false'}) {trial.reason}"
     print(f"{verdict}: {trial.sim_time_s:.1f} s simulated, {time.perf_counter() - t0:.1f} s wall; predicate: {task.predicate}")
     return 0 if success else 1
@@ -282,6 +294,9 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--instruction", help="instruction for --planner (default: the task's own)")
     r.add_argument("--model", help="LLM model name (gemini default: gemini-3.1-pro-preview)")
     r.add_argument("--base-url", help="LLM endpoint (OpenAI-compatible server, or a Gemini proxy)")
+    r.add_argument("--plan-library", default="var/plan_library.jsonl",
+                   help="successful plans are added here and offered to LLM planners as few-shot examples")
+    r.add_argument("--no-plan-library", action="store_true", help="neither use nor grow the plan library")
     r.set_defaults(func=_cmd_run)
 
     pl = sub.add_parser("plan", help="plan an instruction in a task's scene (perception + one planner call) and print the tree")

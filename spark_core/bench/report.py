@@ -33,7 +33,8 @@ def machine() -> str:
         mem = f", {kb / 1024 / 1024:.0f} GB RAM"
     except (OSError, StopIteration, ValueError):
         pass
-    return f"{platform.machine()}, {os.cpu_count()} CPU cores{mem}, no GPU, Python {platform.python_version()}"
+    gpu = "NVIDIA GPU present" if os.path.exists("/proc/driver/nvidia/version") else "no GPU"
+    return f"{platform.machine()}, {os.cpu_count()} CPU cores{mem}, {gpu}, Python {platform.python_version()}"
 
 
 def write_section(path: Path, title: str, body: str) -> None:
