@@ -288,13 +288,13 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("task", help="builtin task name")
     r.add_argument("--seed", type=int, default=0)
     r.add_argument("--plan", help="plan file to run instead of the task's reference plan")
-    r.add_argument("--resolver", default="sim", choices=["privileged", "sim", "sim-noisy"])
-    r.add_argument("--planner", default="reference", choices=["reference", "rules", "gemini", "openai"],
+    r.add_argument("--resolver", choices=["privileged", "sim", "sim-noisy"], help="default: sim")
+    r.add_argument("--planner", choices=["reference", "rules", "gemini", "openai"],
                    help="reference: the task's hand-written plan; otherwise plan the instruction from what perception saw")
     r.add_argument("--instruction", help="instruction for --planner (default: the task's own)")
     r.add_argument("--model", help="LLM model name (gemini default: gemini-3.1-pro-preview)")
     r.add_argument("--base-url", help="LLM endpoint (OpenAI-compatible server, or a Gemini proxy)")
-    r.add_argument("--plan-library", default="var/plan_library.jsonl",
+    r.add_argument("--plan-library",
                    help="successful plans are added here and offered to LLM planners as few-shot examples")
     r.add_argument("--no-plan-library", action="store_true", help="neither use nor grow the plan library")
     r.set_defaults(func=_cmd_run)
@@ -303,10 +303,10 @@ def build_parser() -> argparse.ArgumentParser:
     pl.add_argument("instruction")
     pl.add_argument("--task", required=True, help="builtin task whose scene to plan in")
     pl.add_argument("--seed", type=int, default=0)
-    pl.add_argument("--planner", default="rules", choices=["rules", "gemini", "openai"])
+    pl.add_argument("--planner", choices=["rules", "gemini", "openai"], help="default: rules")
     pl.add_argument("--model", help="LLM model name (gemini default: gemini-3.1-pro-preview)")
     pl.add_argument("--base-url", help="LLM endpoint (OpenAI-compatible server, or a Gemini proxy)")
-    pl.add_argument("--resolver", default="sim", choices=["privileged", "sim", "sim-noisy"])
+    pl.add_argument("--resolver", choices=["privileged", "sim", "sim-noisy"], help="default: sim")
     pl.set_defaults(func=_cmd_plan)
 
     b = sub.add_parser("bench", help="run a benchmark and optionally write its section of BENCHMARKS.md")
@@ -330,9 +330,33 @@ def build_parser() -> argparse.ArgumentParser:
     return p
 
 
+def _apply_config(args: argparse.Namespace) -> None:
+    """Settings from spark.yaml / SPARK_CONFIG fill in whatever the command line left unset."""
+    from .config import load_config
+
+    cfg = load_config()
+    for key in ("planner", "model", "base_url", "resolver", "plan_library"):
+        if hasattr(args, key) and getattr(args, key) is None and getattr(cfg, key) is not None:
+            setattr(args, key, getattr(cfg, key))
+    defaults = {"planner": "rules" if args.command == "plan" else "reference", "resolver": "sim",
+                "plan_library": "var/plan_library.jsonl"}
+    for key, value in defaults.items():
+        if hasattr(args, key) and getattr(args, key) is None:
+            setattr(args, key, value)
+    if cfg.prices:
+        from .planning import pricing
+
+        pricing.PRICES_USD_PER_MTOK.update(cfg.prices)
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
+    try:
+        _apply_config(args)
+    except (OSError, ValueError) as e:
+        print(f"configuration error: {e}", file=sys.stderr)
+        return 2
     if not getattr(args, "func", None):
         parser.print_help()
         return 2

@@ -22,3 +22,30 @@ def test_disabled_library_stores_nothing(tmp_path):
     lib = PlanLibrary(tmp_path / "plans.jsonl", enabled=False)
     lib.add("x", "task: x\ntree: {primitive: wait}\n")
     assert lib.examples("x") == () and not (tmp_path / "plans.jsonl").exists()
+
+
+def test_config_file_selects_backends_and_prices(tmp_path, monkeypatch):
+    import pytest
+
+    from spark_core.config import load_config
+
+    (tmp_path / "spark.yaml").write_text("planner: openai\nmodel: qwen\nbase_url: http://127.0.0.1:9/v1\n"
+                                         "prices: {qwen: [0.1, 0.4]}\n")
+    monkeypatch.chdir(tmp_path)
+    cfg = load_config()
+    assert (cfg.planner, cfg.model, cfg.prices["qwen"]) == ("openai", "qwen", (0.1, 0.4))
+    (tmp_path / "bad.yaml").write_text("planer: rules\n")
+    with pytest.raises(ValueError, match="unknown setting\\(s\\) planer"):
+        load_config(tmp_path / "bad.yaml")
+    (tmp_path / "bad2.yaml").write_text("prices: {m: cheap}\n")
+    with pytest.raises(ValueError, match="prices.m: expected"):
+        load_config(tmp_path / "bad2.yaml")
+
+
+def test_cli_takes_the_planner_from_the_config(tmp_path, monkeypatch, capsys):
+    from spark_core.cli import main
+
+    (tmp_path / "spark.yaml").write_text("planner: openai\n")
+    monkeypatch.chdir(tmp_path)
+    code = main(["plan", "put the red block on the plate", "--task", "block_on_plate"])
+    assert code == 2 and "planner 'openai' unavailable: the openai planner needs --model" in capsys.readouterr().err
