@@ -1,5 +1,12 @@
-"""Perception: segmenters, 3D keypoints, label resolution."""
+"""Perception: segmenters, 3D keypoints, adaptive prompts, label resolution, scene summaries."""
 
+from .detection import Detection
+from .frame import CameraFrame
 from .keypoint import Keypoint, LabelNotFound
+from .noisy_segmenter import NoiseModel, SimNoisySegmenter
+from .resolver import PerceptionResolver
+from .segmenter import Segmenter
+from .sim_segmenter import SimSegmenter
 
-__all__ = ["Keypoint", "LabelNotFound"]
+__all__ = ["CameraFrame", "Detection", "Keypoint", "LabelNotFound", "NoiseModel", "PerceptionResolver", "Segmenter",
+           "SimNoisySegmenter", "SimSegmenter"]
