@@ -71,10 +71,15 @@ def make_resolver(world, config: PerceptionConfig, seed: int):
 
 def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
                         recovery: RecoveryPolicy = RecoveryPolicy(),
-                        perception: PerceptionConfig = PerceptionConfig()) -> TrialOutcome:
-    """The task's hand-written reference plan (or `plan`) with the configured resolver."""
+                        perception: PerceptionConfig = PerceptionConfig(), store=None) -> TrialOutcome:
+    """The task's hand-written reference plan (or `plan`) with the configured resolver. With a TraceStore,
+    the trial (events, groundings, trajectory at the control rate) is recorded under its trial id."""
     t0 = time.perf_counter()
     world = task.make_world(seed)
+    if store is not None:
+        from ..sim.world import TrajectoryRecorder
+
+        world.recorder = TrajectoryRecorder()
     try:
         resolver = make_resolver(world, perception, seed)
         library = PrimitiveLibrary(world, resolver, seed=seed)
@@ -84,12 +89,20 @@ def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
         success = bool(task.success(world))
     finally:
         world.close()
+    protocol = {"planner": "reference plan (hand-written)", "resolver": perception.describe(),
+                "recovery": "off" if recovery.max_retries == 0 else f"tiers 1-2, {recovery.max_retries} retries"}
+    if store is not None:
+        from ..trace.record import record_trial
+
+        record_trial(store, result.trial_id + f"-{int(time.time() * 1000)}", task=task.name, instruction=task.instruction,
+                     seed=seed, planner="reference", resolver=perception.resolver, protocol=protocol, plan=plan,
+                     result=result, success=success, groundings=getattr(resolver, "groundings", []),
+                     trajectory=world.recorder.rows, wall_time_s=round(time.perf_counter() - t0, 3))
     return TrialOutcome(
         task=task.name, seed=seed, success=success, outcome=result.outcome,
         failure=result.failure.value if result.failure else None, failed_node=result.failed_node, reason=result.reason,
         sim_time_s=round(world.sim_time_s, 3), wall_time_s=round(time.perf_counter() - t0, 3),
-        protocol={"planner": "reference plan (hand-written)", "resolver": perception.describe(),
-                  "recovery": "off" if recovery.max_retries == 0 else f"tiers 1-2, {recovery.max_retries} retries"},
+        protocol=protocol,
         retries=sum(r.retries for r in result.nodes.values()),
         result=result,
     )

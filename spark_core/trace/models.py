@@ -1,0 +1,77 @@
+"""SQLAlchemy models of the trace store. Schema changes go through Alembic (migrations/versions)."""
+
+from __future__ import annotations
+
+from datetime import datetime, timezone
+
+from sqlalchemy import JSON, Boolean, DateTime, Float, ForeignKey, Integer, String, Text
+from sqlalchemy.orm import DeclarativeBase, Mapped, mapped_column, relationship
+
+
+def utcnow() -> datetime:
+    return datetime.now(timezone.utc)
+
+
+class Base(DeclarativeBase):
+    pass
+
+
+class TrialRow(Base):
+    """One trial: what was asked, with which backends, the plan, and how it ended."""
+
+    __tablename__ = "trials"
+
+    id: Mapped[str] = mapped_column(String(64), primary_key=True)
+    created_at: Mapped[datetime] = mapped_column(DateTime(timezone=True), default=utcnow, index=True)
+    status: Mapped[str] = mapped_column(String(16), default="queued", index=True)  # queued|running|done|interrupted
+    instruction: Mapped[str] = mapped_column(Text, default="")
+    task: Mapped[str] = mapped_column(String(128), default="", index=True)
+    seed: Mapped[int] = mapped_column(Integer, default=0)
+    planner: Mapped[str] = mapped_column(String(64), default="")
+    resolver: Mapped[str] = mapped_column(String(128), default="")
+    protocol: Mapped[dict] = mapped_column(JSON, default=dict)  # planner, segmenter (privileged or not), versions
+    plan_text: Mapped[str] = mapped_column(Text, default="")
+    plan_tree: Mapped[dict | None] = mapped_column(JSON, nullable=True)
+    outcome: Mapped[str] = mapped_column(String(16), default="", index=True)  # success|failure|aborted
+    success: Mapped[bool | None] = mapped_column(Boolean, nullable=True, index=True)
+    failure: Mapped[str | None] = mapped_column(String(32), nullable=True)
+    failed_node: Mapped[str | None] = mapped_column(String(256), nullable=True)
+    reason: Mapped[str] = mapped_column(Text, default="")
+    wall_time_s: Mapped[float | None] = mapped_column(Float, nullable=True)
+    sim_time_s: Mapped[float | None] = mapped_column(Float, nullable=True)
+    cost_usd: Mapped[float] = mapped_column(Float, default=0.0)
+    usage: Mapped[dict] = mapped_column(JSON, default=dict)
+    nodes: Mapped[dict] = mapped_column(JSON, default=dict)  # per-node durations, retries, recoveries
+    trajectory: Mapped[list] = mapped_column(JSON, default=list)  # joint states at the control rate
+
+    events: Mapped[list["EventRow"]] = relationship(back_populates="trial", cascade="all, delete-orphan",
+                                                    order_by="EventRow.seq")
+    groundings: Mapped[list["GroundingRow"]] = relationship(back_populates="trial", cascade="all, delete-orphan",
+                                                            order_by="GroundingRow.id")
+
+
+class EventRow(Base):
+    __tablename__ = "events"
+
+    id: Mapped[int] = mapped_column(Integer, primary_key=True, autoincrement=True)
+    trial_id: Mapped[str] = mapped_column(ForeignKey("trials.id", ondelete="CASCADE"), index=True)
+    seq: Mapped[int] = mapped_column(Integer)
+    t: Mapped[float] = mapped_column(Float)
+    node_path: Mapped[str] = mapped_column(String(256))
+    kind: Mapped[str] = mapped_column(String(16))
+    detail: Mapped[dict] = mapped_column(JSON, default=dict)
+
+    trial: Mapped[TrialRow] = relationship(back_populates="events")
+
+
+class GroundingRow(Base):
+    """One label resolution: the prompt candidates per camera, the choice, the keypoint."""
+
+    __tablename__ = "groundings"
+
+    id: Mapped[int] = mapped_column(Integer, primary_key=True, autoincrement=True)
+    trial_id: Mapped[str] = mapped_column(ForeignKey("trials.id", ondelete="CASCADE"), index=True)
+    label: Mapped[str] = mapped_column(String(256))
+    record: Mapped[dict] = mapped_column(JSON, default=dict)
+
+    trial: Mapped[TrialRow] = relationship(back_populates="groundings")

@@ -1,0 +1,156 @@
+"""TraceStore: create, update, list and read trial records. Migrations are applied when it opens."""
+
+from __future__ import annotations
+
+import threading
+from pathlib import Path
+from typing import Any, Iterable
+
+from sqlalchemy import create_engine, delete, event, func, or_, select
+from sqlalchemy.orm import Session, selectinload, sessionmaker
+
+from .models import EventRow, GroundingRow, TrialRow
+
+MIGRATIONS_DIR = Path(__file__).resolve().parents[2] / "migrations"
+SORTABLE = {"created_at", "task", "outcome", "wall_time_s", "sim_time_s", "cost_usd", "status"}
+
+
+def alembic_config(url: str, connection=None):
+    from alembic.config import Config
+
+    cfg = Config()
+    cfg.set_main_option("script_location", str(MIGRATIONS_DIR))
+    cfg.set_main_option("sqlalchemy.url", url)
+    if connection is not None:
+        cfg.attributes["connection"] = connection
+    return cfg
+
+
+class TraceStore:
+    """One store per process; thread-safe through SQLAlchemy sessions. SQLite files use WAL."""
+
+    def __init__(self, url: str = "sqlite:///var/spark.db", migrate: bool = True):
+        if url.startswith("sqlite:///") and not url.startswith("sqlite:///:memory:"):
+            Path(url[len("sqlite:///"):]).parent.mkdir(parents=True, exist_ok=True)
+        self.url = url
+        self.engine = create_engine(url, connect_args={"check_same_thread": False} if url.startswith("sqlite") else {})
+        if url.startswith("sqlite"):
+            event.listen(self.engine, "connect", _sqlite_pragmas)
+        self.Session = sessionmaker(self.engine, expire_on_commit=False)
+        self._lock = threading.Lock()
+        if migrate:
+            self.upgrade()
+
+    # -- schema -------------------------------------------------------------------------------------------------
+    def upgrade(self, revision: str = "head") -> None:
+        from alembic import command
+
+        with self.engine.begin() as conn:
+            command.upgrade(alembic_config(self.url, conn), revision)
+
+    def downgrade(self, revision: str = "base") -> None:
+        from alembic import command
+
+        with self.engine.begin() as conn:
+            command.downgrade(alembic_config(self.url, conn), revision)
+
+    # -- writes -------------------------------------------------------------------------------------------------
+    def create_trial(self, trial_id: str, **fields: Any) -> None:
+        with self.Session.begin() as s:
+            s.add(TrialRow(id=trial_id, **fields))
+
+    def update_trial(self, trial_id: str, **fields: Any) -> None:
+        with self.Session.begin() as s:
+            row = s.get(TrialRow, trial_id)
+            if row is None:
+                raise KeyError(f"no trial {trial_id!r}")
+            for k, v in fields.items():
+                setattr(row, k, v)
+
+    def add_events(self, trial_id: str, events: Iterable[dict]) -> None:
+        with self.Session.begin() as s:
+            s.add_all(EventRow(trial_id=trial_id, seq=e["seq"], t=e["t"], node_path=e["node_path"], kind=e["kind"],
+                               detail=_jsonable(e.get("detail", {}))) for e in events)
+
+    def add_groundings(self, trial_id: str, groundings: Iterable[dict]) -> None:
+        with self.Session.begin() as s:
+            s.add_all(GroundingRow(trial_id=trial_id, label=g["label"], record=_jsonable(g)) for g in groundings)
+
+    def delete_trial(self, trial_id: str) -> bool:
+        with self.Session.begin() as s:
+            s.execute(delete(EventRow).where(EventRow.trial_id == trial_id))
+            s.execute(delete(GroundingRow).where(GroundingRow.trial_id == trial_id))
+            return s.execute(delete(TrialRow).where(TrialRow.id == trial_id)).rowcount > 0
+
+    def interrupt_unfinished(self, reason: str = "the server stopped while the trial was running") -> int:
+        """At start-up: trials left queued/running by a previous process are marked interrupted, not lost."""
+        with self.Session.begin() as s:
+            rows = s.scalars(select(TrialRow).where(TrialRow.status.in_(("queued", "running")))).all()
+            for row in rows:
+                row.status, row.outcome, row.reason = "interrupted", "aborted", reason
+            return len(rows)
+
+    # -- reads --------------------------------------------------------------------------------------------------
+    def get_trial(self, trial_id: str) -> dict | None:
+        with self.Session() as s:
+            row = s.scalars(select(TrialRow).where(TrialRow.id == trial_id)
+                            .options(selectinload(TrialRow.events), selectinload(TrialRow.groundings))).first()
+            if row is None:
+                return None
+            out = _row_dict(row)
+            out["events"] = [{"seq": e.seq, "t": e.t, "node_path": e.node_path, "kind": e.kind, "detail": e.detail}
+                             for e in row.events]
+            out["groundings"] = [g.record for g in row.groundings]
+            return out
+
+    def list_trials(self, *, status: str | None = None, task: str | None = None, success: bool | None = None,
+                    search: str | None = None, sort: str = "-created_at", limit: int = 50, offset: int = 0) -> tuple[int, list[dict]]:
+        """(total matching, one page). `sort` is a column name, '-' for descending."""
+        key = sort.lstrip("-")
+        if key not in SORTABLE:
+            raise ValueError(f"cannot sort by {key!r}; sortable: {', '.join(sorted(SORTABLE))}")
+        q = select(TrialRow)
+        if status:
+            q = q.where(TrialRow.status == status)
+        if task:
+            q = q.where(TrialRow.task == task)
+        if success is not None:
+            q = q.where(TrialRow.success == success)
+        if search:
+            like = f"%{search}%"
+            q = q.where(or_(TrialRow.instruction.ilike(like), TrialRow.task.ilike(like), TrialRow.reason.ilike(like)))
+        col = getattr(TrialRow, key)
+        with self.Session() as s:
+            total = s.scalar(select(func.count()).select_from(q.subquery()))
+            rows = s.scalars(q.order_by(col.desc() if sort.startswith("-") else col.asc()).limit(limit).offset(offset)).all()
+            return int(total or 0), [_row_dict(r, summary=True) for r in rows]
+
+
+def _sqlite_pragmas(dbapi_conn, _record) -> None:
+    cur = dbapi_conn.cursor()
+    cur.execute("PRAGMA journal_mode=WAL")
+    cur.execute("PRAGMA foreign_keys=ON")
+    cur.close()
+
+
+def _row_dict(row: TrialRow, summary: bool = False) -> dict:
+    heavy = {"plan_tree", "nodes", "trajectory", "plan_text"} if summary else set()
+    out = {c.name: getattr(row, c.name) for c in TrialRow.__table__.columns if c.name not in heavy}
+    out["created_at"] = row.created_at.isoformat() if row.created_at else None
+    return out
+
+
+def _jsonable(value: Any) -> Any:
+    """numpy scalars/arrays and other odd values -> plain JSON types."""
+    import json
+
+    import numpy as np
+
+    def default(o):
+        if isinstance(o, np.generic):
+            return o.item()
+        if isinstance(o, np.ndarray):
+            return o.tolist()
+        return str(o)
+
+    return json.loads(json.dumps(value, default=default))
