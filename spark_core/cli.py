@@ -216,7 +216,7 @@ def _cmd_run(args: argparse.Namespace) -> int:
 
     perception = PerceptionConfig(args.resolver)
     print(f"task {task.name!r}: {task.instruction!r} (seed {args.seed}); resolver: {perception.describe()}")
-    out = run_reference_trial(task, args.seed, plan, perception=perception)
+    out = run_reference_trial(task, args.seed, plan, perception=perception, store=_store(args))
     for ev in out.result.events:
         detail = " ".join(f"{k}={v}" for k, v in ev.detail.items() if k not in ("arm",))
         print(f"  {ev.t:7.3f}s  {ev.kind:<9} {ev.node_path:<22} {detail}")
@@ -255,6 +255,18 @@ def _run_planned(args: argparse.Namespace) -> int:
         print(f"  {ev.t:7.3f}s  {ev.kind:<9} {ev.node_path:<22} {detail}")
     success = bool(task.success(world))
     world.close()
+    store = _store(args)
+    if store is not None:
+        from dataclasses import asdict
+
+        from .trace.record import record_trial
+
+        record_trial(store, f"{task.name}-{args.seed}-{int(time.time() * 1000)}", task=task.name, instruction=instruction,
+                     seed=args.seed, planner=args.planner, resolver=args.resolver,
+                     protocol={"planner": args.planner, "model": result.detail.get("model"), "resolver": args.resolver,
+                               "planner_saw": "instruction + perception of its phrases (no object dictionary)"},
+                     plan=result.plan, result=trial, success=success, groundings=getattr(resolver, "groundings", []),
+                     wall_time_s=round(time.perf_counter() - t0, 3), cost_usd=result.cost_usd, usage=asdict(result.usage))
     if success:
         from .grammar import to_yaml
 
@@ -262,6 +274,34 @@ def _run_planned(args: argparse.Namespace) -> int:
     verdict = "SUCCESS" if success else f"FAILURE ({trial.failure.value if trial.failure else 'task predicate false'}) {trial.reason}"
     print(f"{verdict}: {trial.sim_time_s:.1f} s simulated, {time.perf_counter() - t0:.1f} s wall; predicate: {task.predicate}")
     return 0 if success else 1
+
+
+def _store(args: argparse.Namespace):
+    if getattr(args, "no_store", False):
+        return None
+    from .trace import TraceStore
+
+    return TraceStore(args.store)
+
+
+def _cmd_trials(args: argparse.Namespace) -> int:
+    """List recorded trials, or show one as JSON."""
+    from .trace import TraceStore
+
+    store = TraceStore(args.store)
+    if args.id:
+        trial = store.get_trial(args.id)
+        if trial is None:
+            print(f"no trial {args.id!r} in {args.store}", file=sys.stderr)
+            return 1
+        print(json.dumps(trial, indent=1, default=str))
+        return 0
+    total, rows = store.list_trials(task=args.task, limit=args.limit)
+    print(f"{total} trial(s) in {args.store}; newest {len(rows)}:")
+    for r in rows:
+        ok = {True: "ok  ", False: "FAIL", None: "-   "}[r["success"]]
+        print(f"  {r['created_at'][:19]}  {ok} {r['id']:<34} {r['task']:<16} {r['planner']:<9} {r['instruction'][:50]!r}")
+    return 0
 
 
 def BUILTIN_INSTRUCTION(task: str) -> str:  # noqa: N802 - reads like a constant lookup
@@ -297,6 +337,15 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--plan-library",
                    help="successful plans are added here and offered to LLM planners as few-shot examples")
     r.add_argument("--no-plan-library", action="store_true", help="neither use nor grow the plan library")
+    r.add_argument("--store", default="sqlite:///var/spark.db", help="trace store (SQLAlchemy URL)")
+    r.add_argument("--no-store", action="store_true", help="do not record the trial")
+
+    tr = sub.add_parser("trials", help="list recorded trials (or print one with --id)")
+    tr.add_argument("--store", default="sqlite:///var/spark.db")
+    tr.add_argument("--task")
+    tr.add_argument("--limit", type=int, default=20)
+    tr.add_argument("--id", help="print this trial's full record as JSON")
+    tr.set_defaults(func=_cmd_trials)
     r.set_defaults(func=_cmd_run)
 
     pl = sub.add_parser("plan", help="plan an instruction in a task's scene (perception + one planner call) and print the tree")

@@ -78,3 +78,17 @@ def test_unfinished_trials_are_interrupted_not_lost(tmp_path):
     assert again.interrupt_unfinished() == 2
     assert again.get_trial("a")["status"] == "interrupted" and "server stopped" in again.get_trial("a")["reason"]
     assert again.get_trial("c")["status"] == "done"
+
+
+def test_spark_run_records_and_spark_trials_lists(tmp_path, capsys):
+    from spark_core.cli import main
+
+    url = f"sqlite:///{tmp_path / 'cli.db'}"
+    assert main(["run", "lift_block", "--resolver", "privileged", "--store", url]) == 0
+    assert main(["trials", "--store", url]) == 0
+    out = capsys.readouterr().out
+    assert "1 trial(s)" in out and "lift_block" in out and "reference" in out
+    trial_id = out.strip().splitlines()[-1].split()[2]
+    assert main(["trials", "--store", url, "--id", trial_id]) == 0
+    assert '"outcome": "success"' in capsys.readouterr().out
+    assert main(["trials", "--store", url, "--id", "nope"]) == 1
