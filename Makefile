@@ -6,7 +6,7 @@ STAMP := $(VENV)/.installed
 export MUJOCO_GL ?= egl
 export HF_HUB_OFFLINE := 1
 
-.PHONY: install run demo test test-all grammar-docs clean
+.PHONY: install run serve demo test test-all grammar-docs clean
 
 install: $(STAMP)
 
@@ -20,6 +20,9 @@ $(STAMP): pyproject.toml requirements.lock scripts/apt-deps.sh
 	@touch $@
 
 run: demo
+
+serve: install
+	$(BIN)/spark serve
 
 demo: install
 	$(BIN)/spark validate examples/plans/*.yaml

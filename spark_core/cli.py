@@ -276,6 +276,27 @@ def _run_planned(args: argparse.Namespace) -> int:
     return 0 if success else 1
 
 
+def _cmd_serve(args: argparse.Namespace) -> int:
+    """The console's API server (uvicorn) on the offline defaults."""
+    import os
+
+    import uvicorn
+
+    from server.app import create_app
+    from server.settings import Settings
+
+    base = Settings.from_env()
+    settings = Settings(host=args.host or base.host, port=args.port or base.port, store_url=args.store or base.store_url,
+                        workers=args.workers or base.workers, api_token=base.api_token, cors_origins=base.cors_origins)
+    if not settings.loopback and not settings.api_token:
+        print(f"refusing to serve on {settings.host} without SPARK_API_TOKEN (mutating calls would be open)", file=sys.stderr)
+        return 2
+    os.environ.setdefault("MUJOCO_GL", "egl")
+    print(f"SPARK console API on http://{settings.host}:{settings.port} (docs at /docs); store {settings.store_url}")
+    uvicorn.run(create_app(settings), host=settings.host, port=settings.port, log_level="info")
+    return 0
+
+
 def _store(args: argparse.Namespace):
     if getattr(args, "no_store", False):
         return None
@@ -339,6 +360,13 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--no-plan-library", action="store_true", help="neither use nor grow the plan library")
     r.add_argument("--store", default="sqlite:///var/spark.db", help="trace store (SQLAlchemy URL)")
     r.add_argument("--no-store", action="store_true", help="do not record the trial")
+
+    sv = sub.add_parser("serve", help="start the console server (REST API + live events) on 127.0.0.1:8000")
+    sv.add_argument("--host")
+    sv.add_argument("--port", type=int)
+    sv.add_argument("--store", help="trace store URL (default sqlite:///var/spark.db)")
+    sv.add_argument("--workers", type=int, help="trials run concurrently (default 2)")
+    sv.set_defaults(func=_cmd_serve)
 
     tr = sub.add_parser("trials", help="list recorded trials (or print one with --id)")
     tr.add_argument("--store", default="sqlite:///var/spark.db")

@@ -1,0 +1,53 @@
+"""Health, version, grammar, tasks and plan validation."""
+
+from __future__ import annotations
+
+from fastapi import APIRouter
+
+from .models import PlanText, PlanValidation
+
+router = APIRouter(prefix="/api", tags=["meta"])
+
+
+@router.get("/health")
+def health() -> dict:
+    return {"status": "ok"}
+
+
+@router.get("/version")
+def version() -> dict:
+    import mujoco
+
+    import spark_core
+
+    return {"spark": spark_core.__version__, "mujoco": mujoco.__version__}
+
+
+@router.get("/grammar")
+def grammar() -> dict:
+    from spark_core.grammar import REGISTRY, plan_json_schema
+
+    prims = [{"name": s.name, "tier": s.tier.value, "description": s.description, "arm": s.arm.value,
+              "timeout_s": s.timeout_s, "postcondition": s.postcondition,
+              "slots": [{"name": x.name, "type": x.type.value, "required": x.required, "default": x.default,
+                         "unit": x.unit, "min": x.minimum, "max": x.maximum, "values": list(x.values)} for x in s.slots]}
+             for s in REGISTRY]
+    return {"primitives": prims, "json_schema": plan_json_schema()}
+
+
+@router.get("/tasks")
+def tasks() -> list[dict]:
+    from spark_core.sim.tasks import BUILTIN
+
+    return [{"name": t.name, "instruction": t.instruction, "predicate": t.predicate,
+             "objects": [o.label for o in t.objects]} for t in BUILTIN.values()]
+
+
+@router.post("/plans/validate", response_model=PlanValidation)
+def validate_plan(body: PlanText) -> PlanValidation:
+    from spark_core.grammar import plan_to_dict, to_yaml, validate
+
+    plan, issues = validate(body.text)
+    if plan is None:
+        return PlanValidation(ok=False, errors=[{"path": i.path, "message": i.message} for i in issues])
+    return PlanValidation(ok=True, plan=plan_to_dict(plan), canonical_yaml=to_yaml(plan))

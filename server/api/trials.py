@@ -1,0 +1,100 @@
+"""Trials: create (queued for a worker), list, get, delete, step-through control, live events."""
+
+from __future__ import annotations
+
+import asyncio
+import uuid
+
+from fastapi import APIRouter, HTTPException, Query, Request, WebSocket, WebSocketDisconnect
+
+from .models import Control, TrialCreate, TrialCreated, TrialPage
+
+router = APIRouter(prefix="/api/trials", tags=["trials"])
+
+
+@router.post("", status_code=202, response_model=TrialCreated)
+def create_trial(body: TrialCreate, request: Request) -> TrialCreated:
+    from spark_core.sim.tasks import BUILTIN
+
+    from ..runner import TrialSpec
+
+    task = BUILTIN.get(body.task)
+    if task is None:
+        raise HTTPException(422, f"unknown task {body.task!r}; builtin tasks: {', '.join(BUILTIN)}")
+    trial_id = f"{body.task}-{uuid.uuid4().hex[:10]}"
+    spec = TrialSpec(body.task, body.instruction or task.instruction, body.planner, body.resolver, body.seed,
+                     tuple(body.breakpoints), body.model, body.base_url)
+    request.app.state.runner.submit(trial_id, spec)
+    return TrialCreated(id=trial_id, status="queued")
+
+
+@router.get("", response_model=TrialPage)
+def list_trials(request: Request, status: str | None = None, task: str | None = None, success: bool | None = None,
+                q: str | None = Query(None, max_length=200), sort: str = "-created_at",
+                limit: int = Query(50, ge=1, le=500), offset: int = Query(0, ge=0)) -> TrialPage:
+    try:
+        total, items = request.app.state.store.list_trials(status=status, task=task, success=success, search=q,
+                                                           sort=sort, limit=limit, offset=offset)
+    except ValueError as e:
+        raise HTTPException(422, str(e)) from None
+    return TrialPage(total=total, limit=limit, offset=offset, items=items)
+
+
+@router.get("/{trial_id}")
+def get_trial(trial_id: str, request: Request) -> dict:
+    trial = request.app.state.store.get_trial(trial_id)
+    if trial is None:
+        raise HTTPException(404, f"no trial {trial_id!r}")
+    live = request.app.state.runner.live.get(trial_id)
+    if live is not None:  # still running: the stored events lag, serve the live ones
+        trial["events"] = [e.to_dict() for e in live.bus.history]
+        trial["control_state"] = live.control.state
+    return trial
+
+
+@router.delete("/{trial_id}", status_code=204)
+def delete_trial(trial_id: str, request: Request) -> None:
+    if trial_id in request.app.state.runner.live:
+        raise HTTPException(409, f"trial {trial_id!r} is still running: abort it first")
+    if not request.app.state.store.delete_trial(trial_id):
+        raise HTTPException(404, f"no trial {trial_id!r}")
+
+
+@router.post("/{trial_id}/control")
+def control(trial_id: str, body: Control, request: Request) -> dict:
+    live = request.app.state.runner.live.get(trial_id)
+    if live is None:
+        raise HTTPException(409, f"trial {trial_id!r} is not queued or running")
+    c = live.control
+    if body.action == "breakpoints":
+        c.set_breakpoints(body.breakpoints or [])
+    else:
+        getattr(c, body.action)()
+    return {"id": trial_id, "state": c.state, "breakpoints": sorted(c.breakpoints)}
+
+
+@router.websocket("/{trial_id}/events")
+async def events(websocket: WebSocket, trial_id: str) -> None:
+    """Every event of the trial (history first), then live ones; closes when the trial ends."""
+    await websocket.accept()
+    runner = websocket.app.state.runner
+    loop = asyncio.get_running_loop()
+    q: asyncio.Queue = asyncio.Queue()
+    unsubscribe = runner.subscribe(trial_id, lambda ev: loop.call_soon_threadsafe(q.put_nowait, ev))
+    try:
+        if trial_id not in runner.live:  # finished (or unknown): replay what the store has
+            trial = websocket.app.state.store.get_trial(trial_id)
+            for ev in (trial or {}).get("events", []):
+                await websocket.send_json(ev)
+            await websocket.send_json({"kind": "closed"})
+            return
+        while True:
+            ev = await q.get()
+            await websocket.send_json(ev)
+            if ev.get("kind") == "closed":
+                return
+    except WebSocketDisconnect:
+        pass
+    finally:
+        unsubscribe()
+        await websocket.close()

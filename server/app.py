@@ -1,0 +1,53 @@
+"""The FastAPI application: trace store (migrated at start), trial workers, routers, access rules."""
+
+from __future__ import annotations
+
+from contextlib import asynccontextmanager
+
+from fastapi import FastAPI, Request
+from fastapi.middleware.cors import CORSMiddleware
+from fastapi.responses import JSONResponse
+
+from .settings import Settings
+
+MUTATING = {"POST", "PUT", "PATCH", "DELETE"}
+
+
+def create_app(settings: Settings | None = None) -> FastAPI:
+    settings = settings or Settings.from_env()
+
+    @asynccontextmanager
+    async def lifespan(app: FastAPI):
+        from spark_core.trace import TraceStore
+
+        from .runner import TrialRunner
+
+        store = TraceStore(settings.store_url)
+        interrupted = store.interrupt_unfinished()
+        app.state.store, app.state.settings = store, settings
+        app.state.runner = TrialRunner(store, settings.workers)
+        app.state.interrupted_at_start = interrupted
+        yield
+        app.state.runner.shutdown()
+
+    app = FastAPI(title="SPARK console", version="0.1.0", lifespan=lifespan,
+                  description="Typed behavior trees over anchored keypoints: trials, plans, grammar, live events.")
+    if settings.cors_origins:
+        app.add_middleware(CORSMiddleware, allow_origins=list(settings.cors_origins), allow_methods=["*"], allow_headers=["*"])
+
+    @app.middleware("http")
+    async def guard(request: Request, call_next):
+        # Beyond loopback every mutating call needs the token; on loopback the token is optional.
+        if request.method in MUTATING and (settings.api_token or not settings.loopback):
+            if request.headers.get("authorization") != f"Bearer {settings.api_token}" or not settings.api_token:
+                return JSONResponse({"detail": "authentication required: send Authorization: Bearer <SPARK_API_TOKEN>"},
+                                    status_code=401)
+        if int(request.headers.get("content-length") or 0) > 1024 * 1024:
+            return JSONResponse({"detail": "request body larger than 1 MiB"}, status_code=413)
+        return await call_next(request)
+
+    from .api import meta, trials
+
+    app.include_router(meta.router)
+    app.include_router(trials.router)
+    return app

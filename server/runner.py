@@ -1,0 +1,148 @@
+"""Trial workers: queued trial specs run in worker threads; each running trial exposes its event bus and
+step-through control, and every event is stored and fanned out to live subscribers."""
+
+from __future__ import annotations
+
+import queue
+import threading
+import time
+import traceback
+from dataclasses import asdict, dataclass, field
+from typing import Callable
+
+from spark_core.execution import EventBus, Executor, StepControl
+from spark_core.execution.primitives import PrimitiveLibrary
+from spark_core.trace import TraceStore
+from spark_core.trace.record import record_trial
+
+
+@dataclass(frozen=True)
+class TrialSpec:
+    task: str
+    instruction: str
+    planner: str = "reference"  # reference | rules | gemini | openai
+    resolver: str = "sim"
+    seed: int = 0
+    breakpoints: tuple[str, ...] = ()
+    model: str | None = None
+    base_url: str | None = None
+
+
+@dataclass
+class Live:
+    """A queued or running trial's handles."""
+
+    spec: TrialSpec
+    bus: EventBus
+    control: StepControl
+    subscribers: list[Callable[[dict], None]] = field(default_factory=list)
+
+
+class TrialRunner:
+    def __init__(self, store: TraceStore, workers: int = 2):
+        self.store = store
+        self.queue: queue.Queue[str | None] = queue.Queue()
+        self.live: dict[str, Live] = {}
+        self._lock = threading.Lock()
+        self.threads = [threading.Thread(target=self._work, name=f"trial-worker-{i}", daemon=True) for i in range(workers)]
+        for t in self.threads:
+            t.start()
+
+    def submit(self, trial_id: str, spec: TrialSpec) -> None:
+        bus = EventBus(trial_id)
+        live = Live(spec, bus, StepControl(spec.breakpoints))
+        bus.subscribe(lambda ev: self._fan_out(trial_id, ev.to_dict()))
+        with self._lock:
+            self.live[trial_id] = live
+        self.store.create_trial(trial_id, status="queued", task=spec.task, instruction=spec.instruction, seed=spec.seed,
+                                planner=spec.planner, resolver=spec.resolver, protocol=asdict(spec))
+        self.queue.put(trial_id)
+
+    def subscribe(self, trial_id: str, callback: Callable[[dict], None]) -> Callable[[], None]:
+        with self._lock:
+            live = self.live.get(trial_id)
+            if live is None:
+                return lambda: None
+            live.subscribers.append(callback)
+            history = [e.to_dict() for e in live.bus.history]
+        for ev in history:
+            callback(ev)
+
+        def unsubscribe() -> None:
+            with self._lock:
+                if callback in live.subscribers:
+                    live.subscribers.remove(callback)
+
+        return unsubscribe
+
+    def _fan_out(self, trial_id: str, ev: dict) -> None:
+        with self._lock:
+            subs = list(self.live[trial_id].subscribers) if trial_id in self.live else []
+        for cb in subs:
+            cb(ev)
+
+    def shutdown(self) -> None:
+        for _ in self.threads:
+            self.queue.put(None)
+
+    def _work(self) -> None:
+        while (trial_id := self.queue.get()) is not None:
+            try:
+                self._run(trial_id)
+            except Exception as e:  # noqa: BLE001 - a crashing trial must not take the worker down
+                self.store.update_trial(trial_id, status="done", outcome="failure", success=False,
+                                        reason=f"internal error: {type(e).__name__}: {e}",
+                                        protocol={"traceback": traceback.format_exc()[-4000:]})
+            finally:
+                with self._lock:
+                    live = self.live.pop(trial_id, None)
+                if live is not None:
+                    self._fan_out_closed(live)
+
+    def _fan_out_closed(self, live: Live) -> None:
+        for cb in list(live.subscribers):
+            cb({"kind": "closed"})
+
+    def _run(self, trial_id: str) -> None:
+        from spark_core.bench.trial import PerceptionConfig, make_resolver
+        from spark_core.grammar import parse_plan, to_yaml
+        from spark_core.planning import PlanRequest
+        from spark_core.planning.backends import make_planner
+        from spark_core.planning.observe import observe
+        from spark_core.sim.tasks import BUILTIN
+        from spark_core.sim.world import TrajectoryRecorder
+
+        live = self.live[trial_id]
+        spec = live.spec
+        t0 = time.perf_counter()
+        self.store.update_trial(trial_id, status="running")
+        task = BUILTIN[spec.task]
+        world = task.make_world(spec.seed)
+        world.recorder = TrajectoryRecorder()
+        try:
+            resolver = make_resolver(world, PerceptionConfig(spec.resolver), spec.seed)
+            cost, usage, plan = 0.0, {}, None
+            if spec.planner == "reference":
+                plan = parse_plan(task.reference_plan_text())
+            else:
+                result = make_planner(spec.planner, spec.model, spec.base_url).plan(
+                    PlanRequest(spec.instruction, observe(spec.instruction, resolver)))
+                cost, usage, plan = result.cost_usd, asdict(result.usage), result.plan
+                if plan is None:
+                    record_trial(self.store, trial_id, task=task.name, instruction=spec.instruction, seed=spec.seed,
+                                 planner=spec.planner, resolver=spec.resolver, protocol=asdict(spec), plan=None,
+                                 result=None, success=False, reason=f"no plan: {result.error}", cost_usd=cost,
+                                 usage=usage, wall_time_s=round(time.perf_counter() - t0, 3))
+                    return
+            self.store.update_trial(trial_id, plan_text=to_yaml(plan))
+            ex = Executor(PrimitiveLibrary(world, resolver, seed=spec.seed), resolver, bus=live.bus,
+                          control=live.control, trial_id=trial_id)
+            trial = ex.run(plan)
+            world.settle(0.5)
+            success = bool(task.success(world)) and trial.outcome == "success"
+            record_trial(self.store, trial_id, task=task.name, instruction=spec.instruction, seed=spec.seed,
+                         planner=spec.planner, resolver=spec.resolver, protocol=asdict(spec), plan=plan, result=trial,
+                         success=success, groundings=getattr(resolver, "groundings", []), trajectory=world.recorder.rows,
+                         wall_time_s=round(time.perf_counter() - t0, 3), cost_usd=cost, usage=usage)
+        finally:
+            world.close()

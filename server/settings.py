@@ -1,0 +1,30 @@
+"""Server settings from the environment (SPARK_*), with safe defaults: loopback only, SQLite under var/."""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+
+
+@dataclass(frozen=True)
+class Settings:
+    host: str = "127.0.0.1"
+    port: int = 8000
+    store_url: str = "sqlite:///var/spark.db"
+    workers: int = 2  # trials run concurrently
+    api_token: str | None = None  # required for mutating calls when bound beyond loopback
+    cors_origins: tuple[str, ...] = field(default_factory=tuple)
+
+    @classmethod
+    def from_env(cls) -> "Settings":
+        e = os.environ
+        return cls(
+            host=e.get("SPARK_HOST", cls.host), port=int(e.get("SPARK_PORT", cls.port)),
+            store_url=e.get("SPARK_STORE_URL", cls.store_url), workers=int(e.get("SPARK_WORKERS", cls.workers)),
+            api_token=e.get("SPARK_API_TOKEN") or None,
+            cors_origins=tuple(o for o in e.get("SPARK_CORS_ORIGINS", "").split(",") if o),
+        )
+
+    @property
+    def loopback(self) -> bool:
+        return self.host in ("127.0.0.1", "localhost", "::1")

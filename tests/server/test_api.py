@@ -1,0 +1,112 @@
+"""The REST API against a real SQLite file, with real trials running in the server's worker threads."""
+
+import time
+
+import pytest
+from fastapi.testclient import TestClient
+
+from server.app import create_app
+from server.settings import Settings
+
+
+@pytest.fixture()
+def client(tmp_path):
+    app = create_app(Settings(store_url=f"sqlite:///{tmp_path / 'api.db'}", workers=2))
+    with TestClient(app) as c:
+        yield c
+
+
+def wait_done(client, trial_id, timeout=120.0):
+    t0 = time.monotonic()
+    while time.monotonic() - t0 < timeout:
+        trial = client.get(f"/api/trials/{trial_id}").json()
+        if trial["status"] in ("done", "interrupted"):
+            return trial
+        time.sleep(0.1)
+    raise AssertionError(f"trial {trial_id} did not finish: {trial['status']}")
+
+
+def test_health_grammar_tasks_validate(client):
+    assert client.get("/api/health").json() == {"status": "ok"}
+    g = client.get("/api/grammar").json()
+    assert len(g["primitives"]) >= 35 and "$defs" in g["json_schema"]
+    assert any(t["name"] == "stack_two" for t in client.get("/api/tasks").json())
+    bad = client.post("/api/plans/validate", json={"text": "task: t\ntree: {primitive: grasp, params: {force: high}}"}).json()
+    assert not bad["ok"] and bad["errors"] == [{"path": "tree.params.force", "message": 'expected number in [0, 140], got "high"'}]
+    good = client.post("/api/plans/validate", json={"text": "task: t\ntree: {primitive: wait}"}).json()
+    assert good["ok"] and good["canonical_yaml"].startswith("task: t")
+    assert "/api/trials" in client.get("/openapi.json").json()["paths"]
+
+
+def test_create_run_get_list_delete(client):
+    r = client.post("/api/trials", json={"task": "lift_block", "resolver": "privileged", "seed": 2})
+    assert r.status_code == 202 and r.json()["status"] == "queued"
+    trial_id = r.json()["id"]
+    trial = wait_done(client, trial_id)
+    assert trial["success"] is True and trial["outcome"] == "success" and trial["plan_text"].startswith("task:")
+    assert trial["events"][0]["kind"] == "started" and trial["events"][-1] == {**trial["events"][-1], "kind": "succeeded"}
+    assert len(trial["trajectory"]) > 100
+    page = client.get("/api/trials", params={"task": "lift_block"}).json()
+    assert page["total"] == 1 and page["items"][0]["id"] == trial_id and "trajectory" not in page["items"][0]
+    assert client.get("/api/trials", params={"sort": "bogus"}).status_code == 422
+    assert client.delete(f"/api/trials/{trial_id}").status_code == 204
+    assert client.get(f"/api/trials/{trial_id}").status_code == 404
+
+
+def test_rules_planner_trial_and_planner_refusal(client):
+    ok = client.post("/api/trials", json={"task": "stack_two", "planner": "rules", "resolver": "sim",
+                                          "instruction": "put the crimson cube on top of the navy cube"}).json()
+    refused = client.post("/api/trials", json={"task": "stack_two", "planner": "rules", "instruction": "sing a song"}).json()
+    assert wait_done(client, ok["id"])["success"] is True
+    bad = wait_done(client, refused["id"])
+    assert bad["success"] is False and bad["failure"] == "planner" and "did not understand" in bad["reason"]
+
+
+def test_breakpoint_step_resume_and_live_events(client):
+    r = client.post("/api/trials", json={"task": "stack_two", "resolver": "privileged",
+                                         "breakpoints": ["tree.children[1]"]}).json()
+    trial_id = r["id"]
+    with client.websocket_connect(f"/api/trials/{trial_id}/events") as ws:
+        seen = []
+        while True:
+            ev = ws.receive_json()
+            seen.append((ev.get("node_path"), ev["kind"]))
+            if ev["kind"] == "paused" and ev["node_path"] == "tree.children[1]":
+                assert client.get(f"/api/trials/{trial_id}").json()["control_state"] == "paused"
+                state = client.post(f"/api/trials/{trial_id}/control", json={"action": "step"}).json()
+                assert state["id"] == trial_id and state["breakpoints"] == ["tree.children[1]"]
+            if ev["kind"] == "paused" and ev["node_path"] == "tree.children[2]":
+                client.post(f"/api/trials/{trial_id}/control", json={"action": "resume"})
+            if ev["kind"] == "closed":
+                break
+    assert ("tree.children[1]", "paused") in seen and ("tree.children[2]", "paused") in seen
+    assert ("tree", "succeeded") in seen
+    assert wait_done(client, trial_id)["success"] is True
+    assert client.post(f"/api/trials/{trial_id}/control", json={"action": "pause"}).status_code == 409
+
+
+def test_bad_requests_are_clear(client):
+    r = client.post("/api/trials", json={"task": "juggle"})
+    assert r.status_code == 422 and "unknown task 'juggle'" in r.json()["detail"]
+    assert client.post("/api/trials", json={"task": "lift_block", "planner": "magic"}).status_code == 422
+    assert client.get("/api/trials/nope").status_code == 404
+
+
+def test_mutations_need_a_token_beyond_loopback(tmp_path):
+    app = create_app(Settings(host="0.0.0.0", store_url=f"sqlite:///{tmp_path / 'x.db'}", workers=1, api_token="s3cret"))
+    with TestClient(app) as c:
+        assert c.post("/api/plans/validate", json={"text": "x"}).status_code == 401
+        assert c.get("/api/health").status_code == 200
+        ok = c.post("/api/plans/validate", json={"text": "task: t\ntree: {primitive: wait}"},
+                    headers={"Authorization": "Bearer s3cret"})
+        assert ok.status_code == 200 and ok.json()["ok"]
+
+
+def test_restart_interrupts_unfinished_trials(tmp_path):
+    from spark_core.trace import TraceStore
+
+    url = f"sqlite:///{tmp_path / 'r.db'}"
+    TraceStore(url).create_trial("stuck-1", status="running", task="lift_block")
+    with TestClient(create_app(Settings(store_url=url, workers=1))) as c:
+        t = c.get("/api/trials/stuck-1").json()
+        assert t["status"] == "interrupted" and "server stopped" in t["reason"]
