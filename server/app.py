@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from contextlib import asynccontextmanager
+from pathlib import Path
 
 from fastapi import FastAPI, Request
 from fastapi.middleware.cors import CORSMiddleware
@@ -50,4 +51,9 @@ def create_app(settings: Settings | None = None) -> FastAPI:
 
     app.include_router(meta.router)
     app.include_router(trials.router)
+    web = Path(__file__).resolve().parents[1] / "web"
+    if web.is_dir():
+        from fastapi.staticfiles import StaticFiles
+
+        app.mount("/", StaticFiles(directory=web, html=True), name="web")  # after the API: /api wins
     return app

@@ -26,6 +26,7 @@ class TrialSpec:
     breakpoints: tuple[str, ...] = ()
     model: str | None = None
     base_url: str | None = None
+    start_paused: bool = False
 
 
 @dataclass
@@ -51,6 +52,8 @@ class TrialRunner:
     def submit(self, trial_id: str, spec: TrialSpec) -> None:
         bus = EventBus(trial_id)
         live = Live(spec, bus, StepControl(spec.breakpoints))
+        if spec.start_paused:
+            live.control.pause()  # stops before the first primitive: set breakpoints on the tree, then resume
         bus.subscribe(lambda ev: self._fan_out(trial_id, ev.to_dict()))
         with self._lock:
             self.live[trial_id] = live
@@ -105,7 +108,7 @@ class TrialRunner:
 
     def _run(self, trial_id: str) -> None:
         from spark_core.bench.trial import PerceptionConfig, make_resolver
-        from spark_core.grammar import parse_plan, to_yaml
+        from spark_core.grammar import parse_plan, plan_to_dict, to_yaml
         from spark_core.planning import PlanRequest
         from spark_core.planning.backends import make_planner
         from spark_core.planning.observe import observe
@@ -134,7 +137,7 @@ class TrialRunner:
                                  result=None, success=False, reason=f"no plan: {result.error}", cost_usd=cost,
                                  usage=usage, wall_time_s=round(time.perf_counter() - t0, 3))
                     return
-            self.store.update_trial(trial_id, plan_text=to_yaml(plan))
+            self.store.update_trial(trial_id, plan_text=to_yaml(plan), plan_tree=plan_to_dict(plan))
             ex = Executor(PrimitiveLibrary(world, resolver, seed=spec.seed), resolver, bus=live.bus,
                           control=live.control, trial_id=trial_id)
             trial = ex.run(plan)

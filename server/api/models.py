@@ -16,6 +16,7 @@ class TrialCreate(BaseModel):
     breakpoints: list[str] = Field(default_factory=list, max_length=200, description="node paths to pause before")
     model: str | None = None
     base_url: str | None = None
+    start_paused: bool = Field(False, description="pause before the first primitive")
 
 
 class TrialCreated(BaseModel):

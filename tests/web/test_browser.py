@@ -1,0 +1,101 @@
+"""The console in a real browser: Playwright driving Debian's headless chromium against a real server."""
+
+import shutil
+import socket
+import threading
+import time
+from pathlib import Path
+
+import pytest
+
+ARTIFACTS = Path(__file__).resolve().parents[2] / "test-artifacts"
+CHROMIUM = shutil.which("chromium-headless-shell") or shutil.which("chromium")
+
+
+@pytest.fixture(scope="module")
+def server(tmp_path_factory):
+    import uvicorn
+
+    from server.app import create_app
+    from server.settings import Settings
+
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    app = create_app(Settings(port=port, store_url=f"sqlite:///{tmp_path_factory.mktemp('web') / 'ui.db'}", workers=2))
+    srv = uvicorn.Server(uvicorn.Config(app, host="127.0.0.1", port=port, log_level="warning"))
+    thread = threading.Thread(target=srv.run, daemon=True)
+    thread.start()
+    for _ in range(200):
+        if srv.started:
+            break
+        time.sleep(0.05)
+    yield f"http://127.0.0.1:{port}"
+    srv.should_exit = True
+    thread.join(10)
+
+
+@pytest.fixture(scope="module")
+def page(server):
+    from playwright.sync_api import sync_playwright
+
+    assert CHROMIUM, "Debian's chromium-headless-shell is missing: make test installs it (scripts/apt-deps.sh)"
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=[
+            "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--disable-background-networking"])
+        pg = browser.new_page(viewport={"width": 1280, "height": 1000})
+        yield pg
+        browser.close()
+
+
+def shot(page, name):
+    ARTIFACTS.mkdir(exist_ok=True)
+    page.screenshot(path=str(ARTIFACTS / f"{name}.png"), full_page=True)
+
+
+def test_submit_step_breakpoint_resume_and_history(server, page):
+    page.goto(server + "/")
+    page.select_option("select[name=task]", "stack_two")
+    page.select_option("select[name=resolver]", "privileged")
+    page.check("input[name=start_paused]")
+    page.click("button[type=submit]")
+    page.wait_for_url("**/#/trial/stack_two-*")
+    first = page.locator(".node[data-path='tree.children[0]']")
+    first.wait_for()
+    page.wait_for_selector(".node.paused[data-path='tree.children[0]']", timeout=60_000)
+    # set a breakpoint by clicking a node of the tree
+    page.click(".node[data-path='tree.children[3]']")
+    page.wait_for_selector(".node.breakpoint[data-path='tree.children[3]']")
+    shot(page, "1-paused-with-breakpoint")
+    # step: exactly one primitive runs, then it pauses again
+    page.click("#step")
+    page.wait_for_selector(".node.succeeded[data-path='tree.children[0]']", timeout=60_000)
+    page.wait_for_selector(".node.paused[data-path='tree.children[1]']", timeout=60_000)
+    assert page.locator(".node.succeeded").count() == 1
+    # resume: runs until the breakpoint
+    page.click("#resume")
+    page.wait_for_selector(".node.paused[data-path='tree.children[3]']", timeout=60_000)
+    assert page.locator(".node.succeeded[data-path='tree.children[2]']").count() == 1
+    shot(page, "2-at-breakpoint")
+    page.click("#resume")
+    page.wait_for_selector("#verdict.ok", timeout=60_000)
+    page.wait_for_selector("#timeline rect")
+    shot(page, "3-finished")
+    trial_url = page.url
+    # history: the finished trial is listed and opens with its tree and timeline
+    page.goto(server + "/#/history")
+    page.wait_for_selector("#rows table")
+    page.click(f"#rows a[href='#/trial/{trial_url.split('/trial/')[1]}']")
+    page.wait_for_selector(".node.succeeded[data-path='tree.children[4]']")
+    assert page.locator("#timeline rect").count() >= 5
+    assert "move_to_keypoint" in page.locator("#timeline").text_content()
+    shot(page, "4-history-detail")
+
+
+def test_form_reports_server_errors(server, page):
+    page.goto(server + "/")
+    page.wait_for_selector("select[name=task]")
+    page.evaluate("document.querySelector('select[name=task]').add(new Option('juggle', 'juggle'))")
+    page.select_option("select[name=task]", "juggle")
+    page.click("button[type=submit]")
+    page.wait_for_selector("#form-error:has-text(\"unknown task 'juggle'\")")

@@ -1,0 +1,145 @@
+// SPARK console UI: hash-routed pages over the REST API and the per-trial event WebSocket.
+const $ = (sel, el = document) => el.querySelector(sel);
+const esc = (s) => String(s ?? "").replace(/[&<>"]/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;" }[c]));
+const api = async (path, opts = {}) => {
+  const r = await fetch(path, { headers: { "content-type": "application/json" }, ...opts });
+  if (!r.ok) throw new Error((await r.json().catch(() => ({}))).detail || r.statusText);
+  return r.status === 204 ? null : r.json();
+};
+
+async function dashboard(view) {
+  const tasks = await api("/api/tasks");
+  view.innerHTML = `
+    <section><h3>New trial</h3>
+      <form id="new-trial">
+        <label>Task <select name="task">${tasks.map((t) => `<option value="${t.name}">${t.name}</option>`).join("")}</select></label>
+        <label>Instruction <input type="text" name="instruction" placeholder="default: the task's own"></label><br>
+        <label>Planner <select name="planner"><option>reference</option><option>rules</option><option>gemini</option><option>openai</option></select></label>
+        <label>Segmenter <select name="resolver"><option>sim</option><option>privileged</option><option>sim-noisy</option></select></label>
+        <label>Seed <input type="number" name="seed" value="0" min="0" style="width:5em"></label>
+        <label><input type="checkbox" name="start_paused"> start paused</label>
+        <button type="submit">Run</button> <span id="form-error" class="fail"></span>
+      </form></section>
+    <section><h3>Recent trials</h3><div id="recent">loading…</div></section>`;
+  $("#new-trial").onsubmit = async (e) => {
+    e.preventDefault();
+    const f = new FormData(e.target);
+    const body = { task: f.get("task"), planner: f.get("planner"), resolver: f.get("resolver"),
+                   seed: Number(f.get("seed")), start_paused: f.get("start_paused") === "on" };
+    if (f.get("instruction")) body.instruction = f.get("instruction");
+    try { const r = await api("/api/trials", { method: "POST", body: JSON.stringify(body) }); location.hash = `#/trial/${r.id}`; }
+    catch (err) { $("#form-error").textContent = err.message; }
+  };
+  const page = await api("/api/trials?limit=10");
+  $("#recent").innerHTML = trialTable(page.items);
+}
+
+function trialTable(items) {
+  return `<table><tr><th>trial</th><th>task</th><th>status</th><th>success</th><th>planner</th><th>wall s</th><th>cost $</th><th>instruction</th></tr>
+    ${items.map((t) => `<tr><td><a href="#/trial/${t.id}">${esc(t.id)}</a></td><td>${esc(t.task)}</td><td>${esc(t.status)}</td>
+      <td class="${t.success ? "ok" : "fail"}">${t.success === null ? "" : t.success ? "yes" : "no"}</td><td>${esc(t.planner)}</td>
+      <td>${t.wall_time_s ?? ""}</td><td>${(t.cost_usd ?? 0).toFixed(4)}</td><td>${esc(t.instruction)}</td></tr>`).join("")}</table>`;
+}
+
+async function history(view) {
+  view.innerHTML = `<section><h3>History</h3>
+    <form id="filters"><label>Search <input type="text" name="q"></label>
+      <label>Status <select name="status"><option value="">any</option><option>done</option><option>running</option><option>queued</option><option>interrupted</option></select></label>
+      <label>Success <select name="success"><option value="">any</option><option value="true">yes</option><option value="false">no</option></select></label>
+      <label>Sort <select name="sort"><option>-created_at</option><option>created_at</option><option>-wall_time_s</option><option>-cost_usd</option><option>task</option></select></label>
+      <button>Filter</button></form><div id="rows"></div></section>`;
+  const load = async () => {
+    const f = new FormData($("#filters"));
+    const params = new URLSearchParams([...f.entries()].filter(([, v]) => v));
+    const page = await api(`/api/trials?limit=100&${params}`);
+    $("#rows").innerHTML = `<p>${page.total} trial(s)</p>` + trialTable(page.items);
+  };
+  $("#filters").onsubmit = (e) => { e.preventDefault(); load(); };
+  load();
+}
+
+function renderTree(node, path, state) {
+  if (node.primitive) {
+    const params = Object.entries(node.params || {}).map(([k, v]) => `${k}=${v}`).join(", ");
+    const st = state.status[path] || "pending";
+    const bp = state.breakpoints.has(path) ? " breakpoint" : "";
+    const retries = state.retries[path] ? `<span class="retries">retries ${state.retries[path]}</span>` : "";
+    return `<li><span class="node ${st}${bp}" data-path="${path}" title="${path} (click: breakpoint)">${node.primitive}(${esc(params)})</span>${retries}</li>`;
+  }
+  const st = state.status[path] || "pending";
+  return `<li><span class="node ${st}" data-path="${path}">${node.type}${node.arm ? " [" + node.arm + "]" : ""}</span>
+    <ul>${node.children.map((c, i) => renderTree(c, `${path}.children[${i}]`, state)).join("")}</ul></li>`;
+}
+
+function timeline(trial) {
+  // one row per primitive type, one bar per node run, coloured by outcome (the "score" view)
+  const nodes = Object.values(trial.nodes || {}).filter((n) => n.started_t !== null && n.finished_t !== null && !["sequence", "parallel", "fallback"].includes(n.kind));
+  if (!nodes.length) return "";
+  const kinds = [...new Set(nodes.map((n) => n.kind))];
+  const t1 = Math.max(...nodes.map((n) => n.finished_t)) || 1;
+  const W = 700, H = 22 * kinds.length + 20;
+  const bars = nodes.map((n) => `<rect x="${130 + (n.started_t / t1) * (W - 140)}" y="${kinds.indexOf(n.kind) * 22 + 4}"
+      width="${Math.max(2, ((n.finished_t - n.started_t) / t1) * (W - 140))}" height="16" fill="${n.status === "succeeded" ? "#4caf50" : "#e53935"}"><title>${n.path} ${(n.finished_t - n.started_t).toFixed(3)} s</title></rect>`).join("");
+  const labels = kinds.map((k, i) => `<text x="4" y="${i * 22 + 16}" font-size="12">${k}</text>`).join("");
+  return `<svg id="timeline" width="${W}" height="${H}">${labels}${bars}</svg>`;
+}
+
+async function trialPage(view, id) {
+  let trial = await api(`/api/trials/${id}`);
+  const state = { status: {}, retries: {}, breakpoints: new Set(), events: [] };
+  view.innerHTML = `<section><h3>Trial ${esc(id)}</h3><div id="summary"></div>
+      <div id="controls"><button id="pause">Pause</button><button id="step">Step</button><button id="resume">Resume</button><button id="abort">Abort</button>
+      <a id="download" href="/api/trials/${id}" download="${id}.json">Download trace (JSON)</a></div></section>
+    <section><h3>Behavior tree</h3><div class="tree" id="tree">waiting for the plan…</div></section>
+    <section><h3>Timeline</h3><div id="score"></div></section>
+    <section><h3>Groundings</h3><div id="groundings"></div></section>
+    <section><h3>Events</h3><div id="log"></div></section>`;
+  const control = (action, extra = {}) => api(`/api/trials/${id}/control`, { method: "POST", body: JSON.stringify({ action, ...extra }) }).catch((e) => alert(e.message));
+  for (const a of ["pause", "step", "resume", "abort"]) $("#" + a).onclick = () => control(a);
+  const draw = () => {
+    $("#summary").innerHTML = `<p>${esc(trial.task)} · “${esc(trial.instruction)}” · planner ${esc(trial.planner)} · segmenter ${esc(trial.resolver)}
+      · status <b id="status">${esc(trial.status)}</b>${trial.success === null || trial.success === undefined ? "" : ` · <b class="${trial.success ? "ok" : "fail"}" id="verdict">${trial.success ? "success" : "failure"}</b>`}
+      ${trial.reason ? " · " + esc(trial.reason) : ""}</p>`;
+    if (trial.plan_tree) $("#tree").innerHTML = `<ul>${renderTree(trial.plan_tree.tree, "tree", state)}</ul>`;
+    $("#log").textContent = state.events.map((e) => `${(e.t ?? 0).toFixed(3)}  ${e.kind.padEnd(9)} ${e.node_path ?? ""} ${JSON.stringify(e.detail ?? {})}`).join("\n");
+    $("#score").innerHTML = timeline(trial);
+    $("#groundings").innerHTML = (trial.groundings || []).map((g) => `<div>${esc(g.label)}: ${Object.entries(g.cameras || {}).map(([c, s]) => `${c} → ${esc(s.chosen ?? "none")}`).join(", ")}</div>`).join("");
+  };
+  $("#tree").onclick = (e) => {
+    const path = e.target.dataset.path;
+    if (!path) return;
+    state.breakpoints.has(path) ? state.breakpoints.delete(path) : state.breakpoints.add(path);
+    control("breakpoints", { breakpoints: [...state.breakpoints] });
+    draw();
+  };
+  const apply = (ev) => {
+    if (ev.kind === "closed") return;
+    state.events.push(ev);
+    const p = ev.node_path;
+    if (ev.kind === "started") state.status[p] = "running";
+    else if (ev.kind === "succeeded" || ev.kind === "failed") state.status[p] = ev.kind;
+    else if (ev.kind === "paused") state.status[p] = "paused";
+    else if (ev.kind === "retrying") state.retries[p] = (state.retries[p] || 0) + 1;
+  };
+  draw();
+  const ws = new WebSocket(`${location.protocol === "https:" ? "wss" : "ws"}://${location.host}/api/trials/${id}/events`);
+  ws.onmessage = async (msg) => {
+    const ev = JSON.parse(msg.data);
+    apply(ev);
+    if (!trial.plan_tree || ev.kind === "closed" || ev.kind === "paused") trial = await api(`/api/trials/${id}`);
+    draw();
+  };
+  ws.onclose = async () => { await new Promise((r) => setTimeout(r, 300)); trial = await api(`/api/trials/${id}`); draw(); };
+}
+
+async function route() {
+  const view = $("#view");
+  const hash = location.hash || "#/";
+  try {
+    if (hash.startsWith("#/trial/")) await trialPage(view, decodeURIComponent(hash.slice(8)));
+    else if (hash === "#/history") await history(view);
+    else await dashboard(view);
+  } catch (err) { view.innerHTML = `<section class="fail">${esc(err.message)}</section>`; }
+}
+window.addEventListener("hashchange", route);
+route();
