@@ -54,7 +54,13 @@ def _cmd_bench(args: argparse.Namespace) -> int:
     from .bench.report import write_section
 
     command = "spark bench " + " ".join(sys.argv[2:]) if sys.argv[1:2] == ["bench"] else "spark bench " + args.suite
-    if args.suite == "paraphrases":
+    if args.suite == "api":
+        from .bench import api_bench
+
+        r = api_bench.run(args.store_size)
+        print(json.dumps(r, indent=2))
+        title, body = "console API latency", api_bench.section(r, command)
+    elif args.suite == "paraphrases":
         from .bench import paraphrases
 
         rows, errors = paraphrases.run(args.seed)
@@ -387,7 +393,7 @@ def build_parser() -> argparse.ArgumentParser:
     pl.set_defaults(func=_cmd_plan)
 
     b = sub.add_parser("bench", help="run a benchmark and optionally write its section of BENCHMARKS.md")
-    b.add_argument("suite", choices=["builtin", "grounding", "paraphrases", "ik", "speed"])
+    b.add_argument("suite", choices=["builtin", "grounding", "paraphrases", "ik", "speed", "api"])
     b.add_argument("--trials", type=int, default=20, help="trials (seeds) per task")
     b.add_argument("--tasks", nargs="*", help="subset of task names")
     b.add_argument("--seed", type=int, default=0, help="first seed")
@@ -401,6 +407,7 @@ def build_parser() -> argparse.ArgumentParser:
     b.add_argument("--title", help="BENCHMARKS.md section title (default derived from the resolver)")
     b.add_argument("--workers", type=int, default=1, help="local worker processes")
     b.add_argument("--targets", type=int, default=200, help="IK targets (ik suite)")
+    b.add_argument("--store-size", type=int, default=10_000, help="trials in the trace store (api suite)")
     b.add_argument("--write", metavar="BENCHMARKS.md", help="replace this benchmark's section in the file")
     b.add_argument("--json", metavar="FILE", help="also write per-trial rows as JSON")
     b.set_defaults(func=_cmd_bench)

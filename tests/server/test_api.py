@@ -110,3 +110,11 @@ def test_restart_interrupts_unfinished_trials(tmp_path):
     with TestClient(create_app(Settings(store_url=url, workers=1))) as c:
         t = c.get("/api/trials/stuck-1").json()
         assert t["status"] == "interrupted" and "server stopped" in t["reason"]
+
+
+def test_api_benchmark_runs_on_a_bulk_store():
+    from spark_core.bench.api_bench import run, section
+
+    r = run(n_trials=300, n_requests=5)
+    assert r["trials"] == 300 and all(0 < p50 <= p99 for p50, p99 in (r["list"], r["list_filtered"], r["get"]))
+    assert "| get one trial with its events |" in section(r, "spark bench api")
