@@ -118,3 +118,13 @@ def test_api_benchmark_runs_on_a_bulk_store():
     r = run(n_trials=300, n_requests=5)
     assert r["trials"] == 300 and all(0 < p50 <= p99 for p50, p99 in (r["list"], r["list_filtered"], r["get"]))
     assert "| get one trial with its events |" in section(r, "spark bench api")
+
+
+def test_twenty_submissions_with_two_workers_all_complete(client):
+    ids = [client.post("/api/trials", json={"task": "lift_block", "resolver": "privileged", "seed": i}).json()["id"]
+           for i in range(20)]
+    queued = client.get("/api/trials", params={"limit": 500}).json()
+    assert queued["total"] == 20  # every submission is recorded at once, before any runs
+    done = [wait_done(client, i, timeout=300) for i in ids]
+    assert all(t["status"] == "done" and t["success"] for t in done)
+    assert client.get("/api/trials", params={"status": "done", "limit": 500}).json()["total"] == 20
