@@ -102,20 +102,25 @@ def mug(color: str) -> ObjectSpec:
                       grasp_width_m=0.07)
 
 
-def tray(color: str) -> ObjectSpec:
+def _open_box(half: float, wall_half_t: float, wall_half_h: float, wall_mass: float):
+    """Builder of a square open container: a 4 mm floor and four walls (half sizes in metres)."""
+
     def build(body, rgba):
-        _geom(body, BOX, [0.09, 0.09, 0.004], (0, 0, 0.004), rgba, mass=0.3)
-        for sx, sy, hx, hy in ((1, 0, 0.004, 0.09), (-1, 0, 0.004, 0.09), (0, 1, 0.09, 0.004), (0, -1, 0.09, 0.004)):
-            _geom(body, BOX, [hx, hy, 0.012], (sx * 0.088, sy * 0.088, 0.016), rgba, mass=0.05)
-    return ObjectSpec("tray", "container", f"shallow square {color} plastic tray", 0.13, 0.028, False, build)
+        _geom(body, BOX, [half, half, 0.004], (0, 0, 0.004), rgba, mass=0.3)
+        c = half - 0.002  # wall centre line, 2 mm inside the floor edge
+        for sx, sy, hx, hy in ((1, 0, wall_half_t, half), (-1, 0, wall_half_t, half), (0, 1, half, wall_half_t), (0, -1, half, wall_half_t)):
+            _geom(body, BOX, [hx, hy, wall_half_h], (sx * c, sy * c, 0.004 + wall_half_h), rgba, mass=wall_mass)
+    return build
+
+
+def tray(color: str) -> ObjectSpec:
+    return ObjectSpec("tray", "container", f"shallow square {color} plastic tray", 0.13, 0.028, False,
+                      _open_box(0.09, 0.004, 0.012, 0.05))
 
 
 def basket(color: str) -> ObjectSpec:
-    def build(body, rgba):
-        _geom(body, BOX, [0.08, 0.08, 0.004], (0, 0, 0.004), rgba, mass=0.3)
-        for sx, sy, hx, hy in ((1, 0, 0.005, 0.08), (-1, 0, 0.005, 0.08), (0, 1, 0.08, 0.005), (0, -1, 0.08, 0.005)):
-            _geom(body, BOX, [hx, hy, 0.035], (sx * 0.078, sy * 0.078, 0.039), rgba, mass=0.08)
-    return ObjectSpec("basket", "container", f"{color} woven wicker basket, square and deep", 0.125, 0.074, False, build)
+    return ObjectSpec("basket", "container", f"{color} woven wicker basket, square and deep", 0.125, 0.074, False,
+                      _open_box(0.08, 0.005, 0.035, 0.08))
 
 
 def sponge(color: str) -> ObjectSpec:

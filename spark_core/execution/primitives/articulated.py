@@ -42,19 +42,13 @@ def _pull_held(ctx: Ctx, distance: float, what: str) -> ActionOutcome:
 
 
 @primitive("open_drawer")
-def open_drawer(ctx: Ctx) -> ActionOutcome:
-    out = _grasp_handle(ctx)
-    if not out.ok:
-        return out
-    return _pull_held(ctx, ctx.args["distance"], "drawer")
-
-
 @primitive("pull")
 def pull(ctx: Ctx) -> ActionOutcome:
+    """Grasp the handle at the keypoint and pull it toward the robot (a drawer is opened the same way)."""
     out = _grasp_handle(ctx)
     if not out.ok:
         return out
-    return _pull_held(ctx, ctx.args["distance"], "handle")
+    return _pull_held(ctx, ctx.args["distance"], "drawer" if "drawer" in ctx.args["keypoint_label"] else "handle")
 
 
 @primitive("close_drawer")

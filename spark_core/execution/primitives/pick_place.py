@@ -65,14 +65,15 @@ def grasp_se3(ctx: Ctx) -> ActionOutcome:
     return grasp_object(ctx, ctx.kp("keypoint_label"), a["force"], a["strategy"], a.get("target_width"))
 
 
+def pick_and_lift(ctx: Ctx, kp: Keypoint, height: float) -> ActionOutcome:
+    out = grasp_object(ctx, kp)
+    return lift_held(ctx, height) if out.ok else out
+
+
 @primitive("pick")
 @primitive("pick_with_arm")
 def pick(ctx: Ctx) -> ActionOutcome:
-    kp = ctx.kp("keypoint_label")
-    out = grasp_object(ctx, kp)
-    if not out.ok:
-        return out
-    return lift_held(ctx, ctx.args["lift_height"])
+    return pick_and_lift(ctx, ctx.kp("keypoint_label"), ctx.args["lift_height"])
 
 
 def put_down(ctx: Ctx, target: Keypoint, offset_xy=(0.0, 0.0), floor_z: float | None = None,
@@ -129,14 +130,8 @@ def place_in(ctx: Ctx) -> ActionOutcome:
 
 @primitive("stack")
 def stack(ctx: Ctx) -> ActionOutcome:
-    kp = ctx.kp("keypoint_label")
-    out = grasp_object(ctx, kp)
-    if not out.ok:
-        return out
-    out = lift_held(ctx, 0.10)
-    if not out.ok:
-        return out
-    return put_down(ctx, ctx.kp("target_label"))
+    out = pick_and_lift(ctx, ctx.kp("keypoint_label"), 0.10)
+    return put_down(ctx, ctx.kp("target_label")) if out.ok else out
 
 
 @primitive("hang")
