@@ -36,6 +36,19 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     if settings.cors_origins:
         app.add_middleware(CORSMiddleware, allow_origins=list(settings.cors_origins), allow_methods=["*"], allow_headers=["*"])
 
+    buckets: dict[str, list[float]] = {}  # client -> [tokens, last refill time]
+
+    def allowed(client: str) -> bool:
+        """Token bucket per client for mutating calls: `rate_per_s` sustained, `burst` at once."""
+        import time
+
+        now = time.monotonic()
+        tokens, last = buckets.get(client, [settings.rate_burst, now])
+        tokens = min(settings.rate_burst, tokens + (now - last) * settings.rate_per_s)
+        ok = tokens >= 1.0
+        buckets[client] = [tokens - 1.0 if ok else tokens, now]
+        return ok
+
     @app.middleware("http")
     async def guard(request: Request, call_next):
         # Beyond loopback every mutating call needs the token; on loopback the token is optional.
@@ -45,6 +58,9 @@ def create_app(settings: Settings | None = None) -> FastAPI:
                                     status_code=401)
         if int(request.headers.get("content-length") or 0) > 1024 * 1024:
             return JSONResponse({"detail": "request body larger than 1 MiB"}, status_code=413)
+        if request.method in MUTATING and not allowed(request.client.host if request.client else "?"):
+            return JSONResponse({"detail": f"too many requests: at most {settings.rate_per_s:g}/s "
+                                           f"(bursts of {settings.rate_burst:g}) mutating calls per client"}, status_code=429)
         return await call_next(request)
 
     from .api import meta, trials

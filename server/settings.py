@@ -14,6 +14,8 @@ class Settings:
     workers: int = 2  # trials run concurrently
     api_token: str | None = None  # required for mutating calls when bound beyond loopback
     cors_origins: tuple[str, ...] = field(default_factory=tuple)
+    rate_per_s: float = 20.0  # mutating calls per second per client, sustained
+    rate_burst: float = 40.0
 
     @classmethod
     def from_env(cls) -> "Settings":

@@ -14,7 +14,8 @@ EVENT_KINDS = ("started", "succeeded", "failed", "retrying", "paused")
 
 @dataclass(frozen=True)
 class Event:
-    """`t` is monotonic seconds since the bus was created (trial start); `seq` orders events totally."""
+    """`t` is monotonic seconds since the bus was created (trial start); `seq` orders events totally;
+    `wall_s` is the Unix time of publication (for latency measurements across processes)."""
 
     trial_id: str
     seq: int
@@ -22,6 +23,7 @@ class Event:
     node_path: str
     kind: str
     detail: dict[str, Any] = field(default_factory=dict)
+    wall_s: float = 0.0
 
     def to_dict(self) -> dict[str, Any]:
         return asdict(self)
@@ -58,7 +60,7 @@ class EventBus:
         if kind not in EVENT_KINDS:
             raise ValueError(f"unknown event kind {kind!r}; expected one of {EVENT_KINDS}")
         with self._lock:
-            ev = Event(self.trial_id, next(self._seq), self.now(), node_path, kind, detail)
+            ev = Event(self.trial_id, next(self._seq), self.now(), node_path, kind, detail, time.time())
             self.history.append(ev)
             callbacks = list(self._callbacks)
             for loop, q in self._queues:

@@ -113,7 +113,7 @@ def test_restart_interrupts_unfinished_trials(tmp_path):
 
 
 def test_api_benchmark_runs_on_a_bulk_store():
-    from spark_core.bench.api_bench import run, section
+    from server.bench_api import run, section
 
     r = run(n_trials=300, n_requests=5)
     assert r["trials"] == 300 and all(0 < p50 <= p99 for p50, p99 in (r["list"], r["list_filtered"], r["get"]))
@@ -128,3 +128,13 @@ def test_twenty_submissions_with_two_workers_all_complete(client):
     done = [wait_done(client, i, timeout=300) for i in ids]
     assert all(t["status"] == "done" and t["success"] for t in done)
     assert client.get("/api/trials", params={"status": "done", "limit": 500}).json()["total"] == 20
+
+
+def test_mutating_calls_are_rate_limited(tmp_path):
+    app = create_app(Settings(store_url=f"sqlite:///{tmp_path / 'rl.db'}", workers=1, rate_per_s=0.5, rate_burst=3))
+    with TestClient(app) as c:
+        codes = [c.post("/api/plans/validate", json={"text": "task: t\ntree: {primitive: wait}"}).status_code for _ in range(5)]
+        assert codes[:3] == [200, 200, 200] and codes[3:] == [429, 429]
+        assert c.get("/api/health").status_code == 200  # reads are not limited
+        r = c.post("/api/plans/validate", json={"text": "x"})
+        assert r.status_code == 429 and "too many requests" in r.json()["detail"]

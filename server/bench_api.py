@@ -8,17 +8,17 @@ from datetime import datetime, timedelta, timezone
 
 import numpy as np
 
-from .report import footer
+from spark_core.bench.report import footer
 
 
 def run(n_trials: int = 10_000, n_requests: int = 200) -> dict:
     from fastapi.testclient import TestClient
 
-    from server.app import create_app
-    from server.settings import Settings
+    from .app import create_app
+    from .settings import Settings
 
-    from ..trace.models import EventRow, TrialRow
-    from ..trace.store import TraceStore
+    from spark_core.trace.models import EventRow, TrialRow
+    from spark_core.trace.store import TraceStore
 
     tmp = tempfile.mkdtemp(prefix="spark-api-bench-")
     url = f"sqlite:///{tmp}/bench.db"
