@@ -25,11 +25,18 @@ def create_app(settings: Settings | None = None) -> FastAPI:
 
         store = TraceStore(settings.store_url)
         interrupted = store.interrupt_unfinished()
-        app.state.store, app.state.settings = store, settings
-        app.state.runner = TrialRunner(store, settings.workers)
+        scene = None
+        if settings.viser:
+            from .viser_scene import ViserScene
+
+            scene = ViserScene(settings.host, settings.viser_port)
+        app.state.store, app.state.settings, app.state.scene = store, settings, scene
+        app.state.runner = TrialRunner(store, settings.workers, scene)
         app.state.interrupted_at_start = interrupted
         yield
         app.state.runner.shutdown()
+        if scene is not None:
+            scene.stop()
 
     app = FastAPI(title="SPARK console", version="0.1.0", lifespan=lifespan,
                   description="Typed behavior trees over anchored keypoints: trials, plans, grammar, live events.")

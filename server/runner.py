@@ -17,6 +17,11 @@ from spark_core.trace.record import record_trial
 
 
 @dataclass(frozen=True)
+class _Kp:
+    position_m: list
+
+
+@dataclass(frozen=True)
 class TrialSpec:
     task: str
     instruction: str
@@ -40,8 +45,9 @@ class Live:
 
 
 class TrialRunner:
-    def __init__(self, store: TraceStore, workers: int = 2):
+    def __init__(self, store: TraceStore, workers: int = 2, scene=None):
         self.store = store
+        self.scene = scene  # ViserScene mirroring the most recently started trial, or None
         self.queue: queue.Queue[str | None] = queue.Queue()
         self.live: dict[str, Live] = {}
         self._lock = threading.Lock()
@@ -122,6 +128,9 @@ class TrialRunner:
         task = BUILTIN[spec.task]
         world = task.make_world(spec.seed)
         world.recorder = TrajectoryRecorder()
+        if self.scene is not None:
+            self.scene.show(world)
+        resolver = None
         try:
             resolver = make_resolver(world, PerceptionConfig(spec.resolver), spec.seed)
             cost, usage, plan = 0.0, {}, None
@@ -148,4 +157,9 @@ class TrialRunner:
                          success=success, groundings=getattr(resolver, "groundings", []), trajectory=world.recorder.rows,
                          wall_time_s=round(time.perf_counter() - t0, 3), cost_usd=cost, usage=usage)
         finally:
+            if self.scene is not None:
+                keypoints = {g["label"]: _Kp(g["keypoint"]["position_m"]) for g in getattr(resolver, "groundings", [])
+                             if g.get("keypoint")}
+                self.scene.markers(keypoints)
+                self.scene.detach(world)
             world.close()

@@ -54,7 +54,13 @@ def _cmd_bench(args: argparse.Namespace) -> int:
     from .bench.report import write_section
 
     command = "spark bench " + " ".join(sys.argv[2:]) if sys.argv[1:2] == ["bench"] else "spark bench " + args.suite
-    if args.suite == "latency":
+    if args.suite == "viser":
+        from server import bench_viser
+
+        r = bench_viser.run()
+        print(json.dumps(r, indent=2))
+        title, body = "live 3D view frame rate", bench_viser.section(r, command)
+    elif args.suite == "latency":
         from server import bench_latency
 
         r = bench_latency.run()
@@ -399,7 +405,7 @@ def build_parser() -> argparse.ArgumentParser:
     pl.set_defaults(func=_cmd_plan)
 
     b = sub.add_parser("bench", help="run a benchmark and optionally write its section of BENCHMARKS.md")
-    b.add_argument("suite", choices=["builtin", "grounding", "paraphrases", "ik", "speed", "api", "latency"])
+    b.add_argument("suite", choices=["builtin", "grounding", "paraphrases", "ik", "speed", "api", "latency", "viser"])
     b.add_argument("--trials", type=int, default=20, help="trials (seeds) per task")
     b.add_argument("--tasks", nargs="*", help="subset of task names")
     b.add_argument("--seed", type=int, default=0, help="first seed")

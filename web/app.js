@@ -91,6 +91,7 @@ async function trialPage(view, id) {
       <div id="controls"><button id="pause">Pause</button><button id="step">Step</button><button id="resume">Resume</button><button id="abort">Abort</button>
       <a id="download" href="/api/trials/${id}" download="${id}.json">Download trace (JSON)</a></div></section>
     <section><h3>Behavior tree</h3><div class="tree" id="tree">waiting for the plan…</div></section>
+    <section><h3>3D view</h3><div id="viser"></div></section>
     <section><h3>Timeline</h3><div id="score"></div></section>
     <section><h3>Groundings</h3><div id="groundings"></div></section>
     <section><h3>Events</h3><div id="log"></div></section>`;
@@ -122,6 +123,10 @@ async function trialPage(view, id) {
     else if (ev.kind === "retrying") state.retries[p] = (state.retries[p] || 0) + 1;
   };
   draw();
+  api("/api/viser").then((v) => {
+    $("#viser").innerHTML = v.enabled ? `<iframe id="viser-frame" src="${location.protocol}//${location.hostname}:${v.port}/" width="100%" height="420" style="border:0"></iframe>`
+      : "3D view disabled (SPARK_VISER=0)";
+  }).catch(() => {});
   const ws = new WebSocket(`${location.protocol === "https:" ? "wss" : "ws"}://${location.host}/api/trials/${id}/events`);
   ws.onmessage = async (msg) => {
     const ev = JSON.parse(msg.data);

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from fastapi import APIRouter
+from fastapi import APIRouter, Request
 
 from .models import PlanText, PlanValidation
 
@@ -33,6 +33,15 @@ def grammar() -> dict:
                          "unit": x.unit, "min": x.minimum, "max": x.maximum, "values": list(x.values)} for x in s.slots]}
              for s in REGISTRY]
     return {"primitives": prims, "json_schema": plan_json_schema()}
+
+
+@router.get("/viser")
+def viser_view(request: Request) -> dict:
+    """Where the live 3D view is served (its own port; the UI embeds it)."""
+    scene = request.app.state.scene
+    if scene is None:
+        return {"enabled": False}
+    return {"enabled": True, "port": scene.port, "rate_hz": scene.rate_hz, "frames_published": scene.ticks}
 
 
 @router.get("/tasks")
