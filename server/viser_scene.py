@@ -3,6 +3,8 @@ with the keypoints perception resolved drawn as labelled markers."""
 
 from __future__ import annotations
 
+import contextlib
+import io
 import threading
 import time
 
@@ -17,7 +19,8 @@ class ViserScene:
     def __init__(self, host: str = "127.0.0.1", port: int = 0, rate_hz: float = 30.0):
         import viser
 
-        self.server = viser.ViserServer(host=host, port=port, verbose=False)
+        with contextlib.redirect_stdout(io.StringIO()):  # viser prints a banner; the server logs its own line
+            self.server = viser.ViserServer(host=host, port=port, verbose=False)
         self.host = host
         self.rate_hz = rate_hz
         self._world = None
@@ -101,4 +104,5 @@ class ViserScene:
     def stop(self) -> None:
         self._stop.set()
         self._thread.join(2.0)
-        self.server.stop()
+        with contextlib.redirect_stdout(io.StringIO()):
+            self.server.stop()
