@@ -31,7 +31,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
 
             scene = ViserScene(settings.host, settings.viser_port)
         app.state.store, app.state.settings, app.state.scene = store, settings, scene
-        app.state.runner = TrialRunner(store, settings.workers, scene)
+        app.state.runner = TrialRunner(store, settings.workers, scene, settings.artifacts_dir)
         app.state.interrupted_at_start = interrupted
         yield
         app.state.runner.shutdown()

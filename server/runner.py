@@ -4,6 +4,7 @@ step-through control, and every event is stored and fanned out to live subscribe
 from __future__ import annotations
 
 import queue
+from pathlib import Path
 import threading
 import time
 import traceback
@@ -45,8 +46,9 @@ class Live:
 
 
 class TrialRunner:
-    def __init__(self, store: TraceStore, workers: int = 2, scene=None):
+    def __init__(self, store: TraceStore, workers: int = 2, scene=None, artifacts_dir: str = "var/artifacts"):
         self.store = store
+        self.artifacts_dir = Path(artifacts_dir)
         self.scene = scene  # ViserScene mirroring the most recently started trial, or None
         self.queue: queue.Queue[str | None] = queue.Queue()
         self.live: dict[str, Live] = {}
@@ -152,10 +154,13 @@ class TrialRunner:
             trial = ex.run(plan)
             world.settle(0.5)
             success = bool(task.success(world)) and trial.outcome == "success"
+            from spark_core.trace.artifacts import detection_images
+
+            artifacts = detection_images(resolver, self.artifacts_dir / trial_id)
             record_trial(self.store, trial_id, task=task.name, instruction=spec.instruction, seed=spec.seed,
                          planner=spec.planner, resolver=spec.resolver, protocol=asdict(spec), plan=plan, result=trial,
                          success=success, groundings=getattr(resolver, "groundings", []), trajectory=world.recorder.rows,
-                         wall_time_s=round(time.perf_counter() - t0, 3), cost_usd=cost, usage=usage)
+                         wall_time_s=round(time.perf_counter() - t0, 3), cost_usd=cost, usage=usage, artifacts=artifacts)
         finally:
             if self.scene is not None:
                 keypoints = {g["label"]: _Kp(g["keypoint"]["position_m"]) for g in getattr(resolver, "groundings", [])

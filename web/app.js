@@ -93,6 +93,7 @@ async function trialPage(view, id) {
     <section><h3>Behavior tree</h3><div class="tree" id="tree">waiting for the plan…</div></section>
     <section><h3>3D view</h3><div id="viser"></div></section>
     <section><h3>Timeline</h3><div id="score"></div></section>
+    <section><h3>Detections</h3><div id="detections"></div></section>
     <section><h3>Groundings</h3><div id="groundings"></div></section>
     <section><h3>Events</h3><div id="log"></div></section>`;
   const control = (action, extra = {}) => api(`/api/trials/${id}/control`, { method: "POST", body: JSON.stringify({ action, ...extra }) }).catch((e) => alert(e.message));
@@ -104,6 +105,8 @@ async function trialPage(view, id) {
     if (trial.plan_tree) $("#tree").innerHTML = `<ul>${renderTree(trial.plan_tree.tree, "tree", state)}</ul>`;
     $("#log").textContent = state.events.map((e) => `${(e.t ?? 0).toFixed(3)}  ${e.kind.padEnd(9)} ${e.node_path ?? ""} ${JSON.stringify(e.detail ?? {})}`).join("\n");
     $("#score").innerHTML = timeline(trial);
+    $("#detections").innerHTML = (trial.artifacts || []).filter((a) => a.kind === "detections").map((a) =>
+      `<figure style="display:inline-block;margin:0 1em 0 0"><img src="/api/trials/${id}/artifacts/${a.name}" width="400" alt="${esc(a.camera)}"><figcaption>${esc(a.camera)}</figcaption></figure>`).join("");
     $("#groundings").innerHTML = (trial.groundings || []).map((g) => `<div>${esc(g.label)}: ${Object.entries(g.cameras || {}).map(([c, s]) => `${c} → ${esc(s.chosen ?? "none")}`).join(", ")}</div>`).join("");
   };
   $("#tree").onclick = (e) => {

@@ -52,6 +52,18 @@ def get_trial(trial_id: str, request: Request) -> dict:
     return trial
 
 
+@router.get("/{trial_id}/artifacts/{name}")
+def artifact(trial_id: str, name: str, request: Request):
+    """A file the trial record references (served only if the record names it; its hash is in the record)."""
+    from fastapi.responses import FileResponse
+
+    trial = request.app.state.store.get_trial(trial_id)
+    entry = next((a for a in (trial or {}).get("artifacts", []) if a["name"] == name), None)
+    if entry is None:
+        raise HTTPException(404, f"trial {trial_id!r} has no artifact {name!r}")
+    return FileResponse(entry["path"], media_type="image/png")
+
+
 @router.delete("/{trial_id}", status_code=204)
 def delete_trial(trial_id: str, request: Request) -> None:
     if trial_id in request.app.state.runner.live:

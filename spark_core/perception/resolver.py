@@ -12,6 +12,7 @@ from typing import Callable, Sequence
 import numpy as np
 
 from .adaptive import select_prompt
+from .detection import Detection
 from .frame import CameraFrame
 from .keypoint import Keypoint, LabelNotFound
 from .lifting import PointEvidence, keypoint_from_points, masked_points, wrist_self_occlusion
@@ -38,6 +39,7 @@ class PerceptionResolver:
         self._captured_at: float | None = None
         self.refreshes = 0
         self.groundings: list[dict] = []  # every resolution: label, prompt candidates, choice, keypoint
+        self.detections: dict[str, dict[str, Detection]] = {}  # camera -> label -> latest chosen detection
 
     def refresh(self) -> None:
         self.refreshes += 1
@@ -67,6 +69,7 @@ class PerceptionResolver:
             record["cameras"][cam] = sel.to_dict()
             if sel.detection is None:
                 continue
+            self.detections.setdefault(cam, {})[label] = sel.detection
             exclude = wrist_self_occlusion(frame.shape) if "wrist" in cam else None
             ev = masked_points(sel.detection, frame, exclude)
             if ev is not None:

@@ -43,6 +43,7 @@ class TrialRow(Base):
     usage: Mapped[dict] = mapped_column(JSON, default=dict)
     nodes: Mapped[dict] = mapped_column(JSON, default=dict)  # per-node durations, retries, recoveries
     trajectory: Mapped[list] = mapped_column(JSON, default=list)  # joint states at the control rate
+    artifacts: Mapped[list] = mapped_column(JSON, default=list)  # [{name, kind, camera, path, sha256}] files on disk
 
     events: Mapped[list["EventRow"]] = relationship(back_populates="trial", cascade="all, delete-orphan",
                                                     order_by="EventRow.seq")

@@ -134,7 +134,7 @@ def _sqlite_pragmas(dbapi_conn, _record) -> None:
 
 
 def _row_dict(row: TrialRow, summary: bool = False) -> dict:
-    heavy = {"plan_tree", "nodes", "trajectory", "plan_text"} if summary else set()
+    heavy = {"plan_tree", "nodes", "trajectory", "plan_text", "artifacts"} if summary else set()
     out = {c.name: getattr(row, c.name) for c in TrialRow.__table__.columns if c.name not in heavy}
     out["created_at"] = row.created_at.isoformat() if row.created_at else None
     return out

@@ -11,7 +11,7 @@ from server.settings import Settings
 
 @pytest.fixture()
 def client(tmp_path):
-    app = create_app(Settings(store_url=f"sqlite:///{tmp_path / 'api.db'}", workers=2))
+    app = create_app(Settings(store_url=f"sqlite:///{tmp_path / 'api.db'}", workers=2, artifacts_dir=str(tmp_path / "art")))
     with TestClient(app) as c:
         yield c
 
@@ -138,3 +138,16 @@ def test_mutating_calls_are_rate_limited(tmp_path):
         assert c.get("/api/health").status_code == 200  # reads are not limited
         r = c.post("/api/plans/validate", json={"text": "x"})
         assert r.status_code == 429 and "too many requests" in r.json()["detail"]
+
+
+def test_detection_images_are_stored_with_their_hash(client):
+    import hashlib
+
+    tid = client.post("/api/trials", json={"task": "stack_two", "resolver": "sim"}).json()["id"]
+    trial = wait_done(client, tid)
+    arts = {a["camera"]: a for a in trial["artifacts"]}
+    assert set(arts) == {"agentview", "side"}
+    r = client.get(f"/api/trials/{tid}/artifacts/{arts['agentview']['name']}")
+    assert r.status_code == 200 and r.content[:4] == b"\x89PNG"
+    assert hashlib.sha256(r.content).hexdigest() == arts["agentview"]["sha256"]
+    assert client.get(f"/api/trials/{tid}/artifacts/..%2F..%2Fetc%2Fpasswd").status_code == 404

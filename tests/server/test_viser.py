@@ -34,7 +34,7 @@ def test_scene_mirrors_the_world_at_its_rate():
 
 
 def test_server_reports_the_view_and_mirrors_trials(tmp_path):
-    with TestClient(create_app(Settings(store_url=f"sqlite:///{tmp_path / 'v.db'}", workers=1))) as c:
+    with TestClient(create_app(Settings(store_url=f"sqlite:///{tmp_path / 'v.db'}", workers=1, artifacts_dir=str(tmp_path)))) as c:
         v = c.get("/api/viser").json()
         assert v["enabled"] and v["port"] > 0
         tid = c.post("/api/trials", json={"task": "lift_block", "resolver": "sim"}).json()["id"]

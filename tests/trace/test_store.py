@@ -18,6 +18,11 @@ def test_migrations_empty_to_head_down_and_up_again(tmp_path):
     assert {"trials", "events", "groundings", "alembic_version"} <= tables(db)
     with sqlite3.connect(db) as c:
         assert c.execute("pragma journal_mode").fetchone()[0] == "wal"
+    with sqlite3.connect(db) as c:
+        assert "artifacts" in {r[1] for r in c.execute("pragma table_info(trials)")}
+    store.downgrade("0001")  # one step back: the artifacts column goes, the data model of 0001 stays
+    with sqlite3.connect(db) as c:
+        assert "artifacts" not in {r[1] for r in c.execute("pragma table_info(trials)")}
     store.downgrade("base")
     assert tables(db) & {"trials", "events", "groundings"} == set()
     store.upgrade("head")
