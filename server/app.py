@@ -70,10 +70,11 @@ def create_app(settings: Settings | None = None) -> FastAPI:
                                            f"(bursts of {settings.rate_burst:g}) mutating calls per client"}, status_code=429)
         return await call_next(request)
 
-    from .api import meta, trials
+    from .api import batches, meta, trials
 
     app.include_router(meta.router)
     app.include_router(trials.router)
+    app.include_router(batches.router)
     web = Path(__file__).resolve().parents[1] / "web"
     if web.is_dir():
         from fastapi.staticfiles import StaticFiles

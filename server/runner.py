@@ -57,7 +57,16 @@ class TrialRunner:
         for t in self.threads:
             t.start()
 
-    def submit(self, trial_id: str, spec: TrialSpec) -> None:
+    def cancel(self, trial_id: str) -> bool:
+        """A queued trial is dropped before it runs (recorded as cancelled); a running one is aborted."""
+        with self._lock:
+            live = self.live.get(trial_id)
+        if live is None:
+            return False
+        live.control.abort()
+        return True
+
+    def submit(self, trial_id: str, spec: TrialSpec, batch_id: str | None = None) -> None:
         bus = EventBus(trial_id)
         live = Live(spec, bus, StepControl(spec.breakpoints))
         if spec.start_paused:
@@ -66,7 +75,7 @@ class TrialRunner:
         with self._lock:
             self.live[trial_id] = live
         self.store.create_trial(trial_id, status="queued", task=spec.task, instruction=spec.instruction, seed=spec.seed,
-                                planner=spec.planner, resolver=spec.resolver, protocol=asdict(spec))
+                                planner=spec.planner, resolver=spec.resolver, protocol=asdict(spec), batch_id=batch_id)
         self.queue.put(trial_id)
 
     def subscribe(self, trial_id: str, callback: Callable[[dict], None]) -> Callable[[], None]:
@@ -125,6 +134,9 @@ class TrialRunner:
 
         live = self.live[trial_id]
         spec = live.spec
+        if live.control.aborted:  # cancelled while queued: never starts
+            self.store.update_trial(trial_id, status="done", outcome="aborted", reason="cancelled before it started")
+            return
         t0 = time.perf_counter()
         self.store.update_trial(trial_id, status="running")
         task = BUILTIN[spec.task]

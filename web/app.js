@@ -20,6 +20,13 @@ async function dashboard(view) {
         <label><input type="checkbox" name="start_paused"> start paused</label>
         <button type="submit">Run</button> <span id="form-error" class="fail"></span>
       </form></section>
+    <section><h3>New batch</h3>
+      <form id="new-batch">
+        <label>Tasks <select name="tasks" multiple size="4">${tasks.map((t) => `<option value="${t.name}">${t.name}</option>`).join("")}</select></label>
+        <label>Trials per task <input type="number" name="trials" value="2" min="1" max="100" style="width:5em"></label>
+        <label>Segmenter <select name="resolver"><option>sim</option><option>privileged</option><option>sim-noisy</option></select></label>
+        <button type="submit">Run batch</button> <span id="batch-error" class="fail"></span>
+      </form></section>
     <section><h3>Recent trials</h3><div id="recent">loading…</div></section>`;
   $("#new-trial").onsubmit = async (e) => {
     e.preventDefault();
@@ -29,6 +36,15 @@ async function dashboard(view) {
     if (f.get("instruction")) body.instruction = f.get("instruction");
     try { const r = await api("/api/trials", { method: "POST", body: JSON.stringify(body) }); location.hash = `#/trial/${r.id}`; }
     catch (err) { $("#form-error").textContent = err.message; }
+  };
+  $("#new-batch").onsubmit = async (e) => {
+    e.preventDefault();
+    const f = new FormData(e.target);
+    const body = { trials: Number(f.get("trials")), resolver: f.get("resolver") };
+    const chosen = f.getAll("tasks");
+    if (chosen.length) body.tasks = chosen;
+    try { const r = await api("/api/batches", { method: "POST", body: JSON.stringify(body) }); location.hash = `#/batch/${r.id}`; }
+    catch (err) { $("#batch-error").textContent = err.message; }
   };
   const page = await api("/api/trials?limit=10");
   $("#recent").innerHTML = trialTable(page.items);
@@ -140,11 +156,29 @@ async function trialPage(view, id) {
   ws.onclose = async () => { await new Promise((r) => setTimeout(r, 300)); trial = await api(`/api/trials/${id}`); draw(); };
 }
 
+async function batchPage(view, id) {
+  view.innerHTML = `<section><h3>Batch ${esc(id)}</h3><progress id="batch-progress" max="1" value="0" style="width:30em"></progress>
+    <span id="batch-count"></span> <button id="batch-cancel">Cancel</button><div id="batch-table"></div></section>`;
+  $("#batch-cancel").onclick = () => api(`/api/batches/${id}/cancel`, { method: "POST" });
+  const pct = (x) => (x === null ? "" : (100 * x).toFixed(1) + " %");
+  for (;;) {
+    const b = await api(`/api/batches/${id}`);
+    $("#batch-progress").max = b.progress.total;
+    $("#batch-progress").value = b.progress.done;
+    $("#batch-count").textContent = `${b.progress.done} / ${b.progress.total} · ${b.status}`;
+    $("#batch-table").innerHTML = `<table><tr><th>task</th><th>done</th><th>success</th><th>95 % CI</th></tr>${b.results.map((r) =>
+      `<tr><td>${esc(r.task)}</td><td>${r.done}/${r.total}</td><td>${pct(r.success_rate)}</td><td>${pct(r.ci95[0])} – ${pct(r.ci95[1])}</td></tr>`).join("")}</table>`;
+    if (b.status !== "running" || location.hash !== `#/batch/${id}`) break;
+    await new Promise((r) => setTimeout(r, 500));
+  }
+}
+
 async function route() {
   const view = $("#view");
   const hash = location.hash || "#/";
   try {
     if (hash.startsWith("#/trial/")) await trialPage(view, decodeURIComponent(hash.slice(8)));
+    else if (hash.startsWith("#/batch/")) await batchPage(view, decodeURIComponent(hash.slice(8)));
     else if (hash === "#/history") await history(view);
     else await dashboard(view);
   } catch (err) { view.innerHTML = `<section class="fail">${esc(err.message)}</section>`; }

@@ -44,6 +44,7 @@ class TrialRow(Base):
     nodes: Mapped[dict] = mapped_column(JSON, default=dict)  # per-node durations, retries, recoveries
     trajectory: Mapped[list] = mapped_column(JSON, default=list)  # joint states at the control rate
     artifacts: Mapped[list] = mapped_column(JSON, default=list)  # [{name, kind, camera, path, sha256}] files on disk
+    batch_id: Mapped[str | None] = mapped_column(String(64), nullable=True, index=True)
 
     events: Mapped[list["EventRow"]] = relationship(back_populates="trial", cascade="all, delete-orphan",
                                                     order_by="EventRow.seq")
@@ -76,3 +77,14 @@ class GroundingRow(Base):
     record: Mapped[dict] = mapped_column(JSON, default=dict)
 
     trial: Mapped[TrialRow] = relationship(back_populates="groundings")
+
+
+class BatchRow(Base):
+    """Many trials launched together (a suite or a list of specs)."""
+
+    __tablename__ = "batches"
+
+    id: Mapped[str] = mapped_column(String(64), primary_key=True)
+    created_at: Mapped[datetime] = mapped_column(DateTime(timezone=True), default=utcnow)
+    status: Mapped[str] = mapped_column(String(16), default="running")  # running|cancelled|done
+    spec: Mapped[dict] = mapped_column(JSON, default=dict)

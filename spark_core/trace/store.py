@@ -9,7 +9,7 @@ from typing import Any, Iterable
 from sqlalchemy import create_engine, delete, event, func, or_, select
 from sqlalchemy.orm import Session, selectinload, sessionmaker
 
-from .models import EventRow, GroundingRow, TrialRow
+from .models import BatchRow, EventRow, GroundingRow, TrialRow
 
 MIGRATIONS_DIR = Path(__file__).resolve().parents[2] / "migrations"
 SORTABLE = {"created_at", "task", "outcome", "wall_time_s", "sim_time_s", "cost_usd", "status"}
@@ -90,6 +90,28 @@ class TraceStore:
                 row.status, row.outcome, row.reason = "interrupted", "aborted", reason
             return len(rows)
 
+    def create_batch(self, batch_id: str, spec: dict) -> None:
+        with self.Session.begin() as s:
+            s.add(BatchRow(id=batch_id, spec=_jsonable(spec)))
+
+    def set_batch_status(self, batch_id: str, status: str) -> None:
+        with self.Session.begin() as s:
+            row = s.get(BatchRow, batch_id)
+            if row is None:
+                raise KeyError(f"no batch {batch_id!r}")
+            row.status = status
+
+    def get_batch(self, batch_id: str) -> dict | None:
+        """The batch, its trials' summaries and per-task success."""
+        with self.Session() as s:
+            row = s.get(BatchRow, batch_id)
+            if row is None:
+                return None
+            trials = s.scalars(select(TrialRow).where(TrialRow.batch_id == batch_id).order_by(TrialRow.task, TrialRow.seed)).all()
+            items = [_row_dict(t, summary=True) for t in trials]
+        return {"id": row.id, "status": row.status, "spec": row.spec,
+                "created_at": row.created_at.isoformat() if row.created_at else None, "trials": items}
+
     # -- reads --------------------------------------------------------------------------------------------------
     def get_trial(self, trial_id: str) -> dict | None:
         with self.Session() as s:
@@ -104,6 +126,7 @@ class TraceStore:
             return out
 
     def list_trials(self, *, status: str | None = None, task: str | None = None, success: bool | None = None,
+                    batch: str | None = None,
                     search: str | None = None, sort: str = "-created_at", limit: int = 50, offset: int = 0) -> tuple[int, list[dict]]:
         """(total matching, one page). `sort` is a column name, '-' for descending."""
         key = sort.lstrip("-")
@@ -114,6 +137,8 @@ class TraceStore:
             q = q.where(TrialRow.status == status)
         if task:
             q = q.where(TrialRow.task == task)
+        if batch:
+            q = q.where(TrialRow.batch_id == batch)
         if success is not None:
             q = q.where(TrialRow.success == success)
         if search:

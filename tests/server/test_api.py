@@ -151,3 +151,30 @@ def test_detection_images_are_stored_with_their_hash(client):
     assert r.status_code == 200 and r.content[:4] == b"\x89PNG"
     assert hashlib.sha256(r.content).hexdigest() == arts["agentview"]["sha256"]
     assert client.get(f"/api/trials/{tid}/artifacts/..%2F..%2Fetc%2Fpasswd").status_code == 404
+
+
+def test_batch_progress_results_and_cancel(client):
+    r = client.post("/api/batches", json={"tasks": ["lift_block", "push_to_zone"], "trials": 2, "resolver": "privileged"})
+    assert r.status_code == 202 and r.json()["trials"] == 4
+    bid = r.json()["id"]
+    for _ in range(600):
+        b = client.get(f"/api/batches/{bid}").json()
+        if b["status"] == "done":
+            break
+        time.sleep(0.1)
+    assert b["progress"] == {"done": 4, "total": 4}
+    assert {row["task"]: (row["successes"], row["total"]) for row in b["results"]} == {"lift_block": (2, 2), "push_to_zone": (2, 2)}
+    assert client.get("/api/trials", params={"batch": bid}).json()["total"] == 4
+
+    big = client.post("/api/batches", json={"tasks": ["stack_three"], "trials": 8, "resolver": "privileged"}).json()["id"]
+    cancel = client.post(f"/api/batches/{big}/cancel").json()
+    assert cancel["cancelled"] >= 6  # with 2 workers most of the 8 were still queued
+    for _ in range(600):
+        b = client.get(f"/api/batches/{big}").json()
+        if b["progress"]["done"] == 8:
+            break
+        time.sleep(0.1)
+    assert b["status"] == "cancelled" and b["progress"]["done"] == 8  # every trial accounted for, none lost
+    assert sum(t["outcome"] == "aborted" for t in b["trials"]) >= 6
+    assert client.post("/api/batches", json={"tasks": ["juggle"]}).status_code == 422
+    assert client.get("/api/batches/nope").status_code == 404

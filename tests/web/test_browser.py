@@ -100,3 +100,18 @@ def test_form_reports_server_errors(server, page):
     page.click("button[type=submit]")
     page.wait_for_selector("#form-error:has-text(\"unknown task 'juggle'\")")
 
+
+
+def test_batch_from_the_form_shows_progress_and_results(server, page):
+    page.goto(server + "/")
+    page.wait_for_selector("#new-batch select[name=tasks]")
+    page.select_option("#new-batch select[name=tasks]", ["lift_block", "push_to_zone"])
+    page.fill("#new-batch input[name=trials]", "2")
+    page.select_option("#new-batch select[name=resolver]", "privileged")
+    page.click("#new-batch button[type=submit]")
+    page.wait_for_url("**/#/batch/batch-*")
+    page.wait_for_selector("#batch-count:has-text('4 / 4 · done')", timeout=120_000)
+    assert page.eval_on_selector("#batch-progress", "p => p.value / p.max") == 1
+    rows = page.locator("#batch-table tr")
+    assert rows.count() == 3 and "100.0 %" in rows.nth(1).inner_text()
+    shot(page, "5-batch")
