@@ -75,6 +75,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.include_router(meta.router)
     app.include_router(trials.router)
     app.include_router(batches.router)
+    app.include_router(trials.dashboard)
     web = Path(__file__).resolve().parents[1] / "web"
     if web.is_dir():
         from fastapi.staticfiles import StaticFiles

@@ -52,10 +52,28 @@ class TrialRunner:
         self.scene = scene  # ViserScene mirroring the most recently started trial, or None
         self.queue: queue.Queue[str | None] = queue.Queue()
         self.live: dict[str, Live] = {}
+        self.watchers: list[Callable[[dict], None]] = []  # dashboard: every trial's status changes
         self._lock = threading.Lock()
         self.threads = [threading.Thread(target=self._work, name=f"trial-worker-{i}", daemon=True) for i in range(workers)]
         for t in self.threads:
             t.start()
+
+    def watch(self, callback: Callable[[dict], None]) -> Callable[[], None]:
+        with self._lock:
+            self.watchers.append(callback)
+
+        def unwatch() -> None:
+            with self._lock:
+                if callback in self.watchers:
+                    self.watchers.remove(callback)
+
+        return unwatch
+
+    def _announce(self, trial_id: str, status: str, **extra) -> None:
+        with self._lock:
+            watchers = list(self.watchers)
+        for cb in watchers:
+            cb({"kind": "trial", "id": trial_id, "status": status, **extra})
 
     def cancel(self, trial_id: str) -> bool:
         """A queued trial is dropped before it runs (recorded as cancelled); a running one is aborted."""
@@ -76,6 +94,7 @@ class TrialRunner:
             self.live[trial_id] = live
         self.store.create_trial(trial_id, status="queued", task=spec.task, instruction=spec.instruction, seed=spec.seed,
                                 planner=spec.planner, resolver=spec.resolver, protocol=asdict(spec), batch_id=batch_id)
+        self._announce(trial_id, "queued", task=spec.task)
         self.queue.put(trial_id)
 
     def subscribe(self, trial_id: str, callback: Callable[[dict], None]) -> Callable[[], None]:
@@ -118,6 +137,8 @@ class TrialRunner:
                     live = self.live.pop(trial_id, None)
                 if live is not None:
                     self._fan_out_closed(live)
+                final = self.store.get_trial(trial_id) or {}
+                self._announce(trial_id, final.get("status", "done"), success=final.get("success"))
 
     def _fan_out_closed(self, live: Live) -> None:
         for cb in list(live.subscribers):
@@ -139,6 +160,7 @@ class TrialRunner:
             return
         t0 = time.perf_counter()
         self.store.update_trial(trial_id, status="running")
+        self._announce(trial_id, "running", task=spec.task)
         task = BUILTIN[spec.task]
         world = task.make_world(spec.seed)
         world.recorder = TrajectoryRecorder()

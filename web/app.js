@@ -46,8 +46,10 @@ async function dashboard(view) {
     try { const r = await api("/api/batches", { method: "POST", body: JSON.stringify(body) }); location.hash = `#/batch/${r.id}`; }
     catch (err) { $("#batch-error").textContent = err.message; }
   };
-  const page = await api("/api/trials?limit=10");
-  $("#recent").innerHTML = trialTable(page.items);
+  const refresh = async () => { $("#recent").innerHTML = trialTable((await api("/api/trials?limit=10")).items); };
+  await refresh();
+  const ws = new WebSocket(`${location.protocol === "https:" ? "wss" : "ws"}://${location.host}/api/events`);
+  ws.onmessage = () => { if (location.hash === "" || location.hash === "#/") refresh(); else ws.close(); };
 }
 
 function trialTable(items) {

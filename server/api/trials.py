@@ -110,3 +110,22 @@ async def events(websocket: WebSocket, trial_id: str) -> None:
     finally:
         unsubscribe()
         await websocket.close()
+
+
+dashboard = APIRouter(tags=["trials"])
+
+
+@dashboard.websocket("/api/events")
+async def all_events(websocket: WebSocket) -> None:
+    """Dashboard stream: {kind: trial, id, status, ...} whenever any trial is queued, starts or ends."""
+    await websocket.accept()
+    loop = asyncio.get_running_loop()
+    q: asyncio.Queue = asyncio.Queue()
+    unwatch = websocket.app.state.runner.watch(lambda ev: loop.call_soon_threadsafe(q.put_nowait, ev))
+    try:
+        while True:
+            await websocket.send_json(await q.get())
+    except WebSocketDisconnect:
+        pass
+    finally:
+        unwatch()

@@ -178,3 +178,14 @@ def test_batch_progress_results_and_cancel(client):
     assert sum(t["outcome"] == "aborted" for t in b["trials"]) >= 6
     assert client.post("/api/batches", json={"tasks": ["juggle"]}).status_code == 422
     assert client.get("/api/batches/nope").status_code == 404
+
+
+def test_dashboard_stream_announces_every_status_change(client):
+    with client.websocket_connect("/api/events") as ws:
+        tid = client.post("/api/trials", json={"task": "lift_block", "resolver": "privileged"}).json()["id"]
+        seen = []
+        while not seen or seen[-1][1] != "done":
+            ev = ws.receive_json()
+            if ev["id"] == tid:
+                seen.append((ev["kind"], ev["status"]))
+    assert seen == [("trial", "queued"), ("trial", "running"), ("trial", "done")]
