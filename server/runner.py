@@ -173,8 +173,15 @@ class TrialRunner:
             if spec.planner == "reference":
                 plan = parse_plan(task.reference_plan_text())
             else:
-                result = make_planner(spec.planner, spec.model, spec.base_url).plan(
-                    PlanRequest(spec.instruction, observe(spec.instruction, resolver)))
+                from spark_core.planning.llm import PlannerUnavailable
+
+                try:
+                    planner = make_planner(spec.planner, spec.model, spec.base_url)
+                except (PlannerUnavailable, ValueError) as e:
+                    self.store.update_trial(trial_id, status="done", outcome="failure", success=False, failure="planner",
+                                            reason=f"planner {spec.planner!r} unavailable: {e}")
+                    return
+                result = planner.plan(PlanRequest(spec.instruction, observe(spec.instruction, resolver)))
                 cost, usage, plan = result.cost_usd, asdict(result.usage), result.plan
                 if plan is None:
                     record_trial(self.store, trial_id, task=task.name, instruction=spec.instruction, seed=spec.seed,

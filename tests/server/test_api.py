@@ -189,3 +189,29 @@ def test_dashboard_stream_announces_every_status_change(client):
             if ev["id"] == tid:
                 seen.append((ev["kind"], ev["status"]))
     assert seen == [("trial", "queued"), ("trial", "running"), ("trial", "done")]
+
+
+def test_a_crashing_trial_fails_with_its_reason_and_the_worker_lives_on(client):
+    bad = client.post("/api/trials", json={"task": "lift_block", "planner": "openai"}).json()["id"]  # no --model
+    trial = wait_done(client, bad)
+    assert trial["success"] is False and trial["failure"] == "planner"
+    assert trial["reason"] == "planner 'openai' unavailable: the openai planner needs --model (e.g. gpt-4.1, or the name your local server serves)"
+    assert client.get("/api/health").json() == {"status": "ok"}
+    again = client.post("/api/trials", json={"task": "lift_block", "resolver": "privileged"}).json()["id"]
+    assert wait_done(client, again)["success"] is True  # the same worker threads keep serving
+
+
+def test_an_unexpected_exception_in_a_trial_is_recorded_and_the_worker_survives(client, monkeypatch):
+    from dataclasses import replace
+
+    from spark_core.sim.tasks import BUILTIN
+
+    def crash(world, rng):
+        raise RuntimeError("simulated crash inside the trial")
+
+    monkeypatch.setitem(BUILTIN, "close_drawer", replace(BUILTIN["close_drawer"], setup=crash))
+    tid = client.post("/api/trials", json={"task": "close_drawer", "resolver": "privileged"}).json()["id"]
+    trial = wait_done(client, tid)
+    assert trial["success"] is False and "internal error: RuntimeError: simulated crash inside the trial" in trial["reason"]
+    ok = client.post("/api/trials", json={"task": "lift_block", "resolver": "privileged"}).json()["id"]
+    assert wait_done(client, ok)["success"] is True
