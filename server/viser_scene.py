@@ -106,3 +106,4 @@ class ViserScene:
         self._thread.join(2.0)
         with contextlib.redirect_stdout(io.StringIO()):
             self.server.stop()
+            time.sleep(0.3)  # viser's own thread prints "Server stopped" as it exits: keep it out of our stdout
