@@ -106,4 +106,8 @@ class ViserScene:
         self._thread.join(2.0)
         with contextlib.redirect_stdout(io.StringIO()):
             self.server.stop()
-            time.sleep(0.3)  # viser's own thread prints "Server stopped" as it exits: keep it out of our stdout
+            # viser's server thread prints "Server stopped" as it exits, possibly after stop() returns under
+            # load: wait for it (longer than viser's own 1 s) so the message never lands after our output.
+            thread = getattr(getattr(self.server, "_websock_server", None), "_server_thread", None)
+            if thread is not None:
+                thread.join(10.0)
