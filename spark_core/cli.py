@@ -49,29 +49,38 @@ def _cmd_validate(args: argparse.Namespace) -> int:
     return status
 
 
+def _simple_benches(args: argparse.Namespace) -> dict:
+    """suite -> (BENCHMARKS.md title, run(), section(result, command)); imports stay lazy."""
+    from .bench import control_bench
+
+    def server_bench(module: str):
+        import importlib
+
+        return importlib.import_module(f"server.{module}")
+
+    return {
+        "ik": ("IK (Panda, pinocchio)", lambda: control_bench.ik_benchmark(args.targets), control_bench.ik_section),
+        "speed": ("simulation speed", control_bench.speed_benchmark, control_bench.speed_section),
+        "api": ("console API latency", lambda: server_bench("bench_api").run(args.store_size),
+                lambda r, c: server_bench("bench_api").section(r, c)),
+        "latency": ("console event latency (executor to browser)", lambda: server_bench("bench_latency").run(),
+                    lambda r, c: server_bench("bench_latency").section(r, c)),
+        "viser": ("live 3D view frame rate", lambda: server_bench("bench_viser").run(),
+                  lambda r, c: server_bench("bench_viser").section(r, c)),
+    }
+
+
 def _cmd_bench(args: argparse.Namespace) -> int:
-    from .bench import control_bench, reference_suite
+    from .bench import reference_suite
     from .bench.report import write_section
 
     command = "spark bench " + " ".join(sys.argv[2:]) if sys.argv[1:2] == ["bench"] else "spark bench " + args.suite
-    if args.suite == "viser":
-        from server import bench_viser
-
-        r = bench_viser.run()
+    simple = _simple_benches(args)  # suites whose result is one dict: print it, then its section
+    if args.suite in simple:
+        title, run, section = simple[args.suite]
+        r = run()
         print(json.dumps(r, indent=2))
-        title, body = "live 3D view frame rate", bench_viser.section(r, command)
-    elif args.suite == "latency":
-        from server import bench_latency
-
-        r = bench_latency.run()
-        print(json.dumps(r, indent=2))
-        title, body = "console event latency (executor to browser)", bench_latency.section(r, command)
-    elif args.suite == "api":
-        from server import bench_api as api_bench
-
-        r = api_bench.run(args.store_size)
-        print(json.dumps(r, indent=2))
-        title, body = "console API latency", api_bench.section(r, command)
+        body = section(r, command)
     elif args.suite == "paraphrases":
         from .bench import paraphrases
 
@@ -91,14 +100,6 @@ def _cmd_bench(args: argparse.Namespace) -> int:
             print(f"{'ok ' if r['correct'] else 'MISS'} {r['scene']:<22} {r['prompt']!r:<36} -> {r['got']} ({err})")
         title, body = "perception grounding (sim segmenter)", grounding.section(rows, command)
         print(body)
-    elif args.suite == "ik":
-        r = control_bench.ik_benchmark(args.targets)
-        print(json.dumps(r, indent=2))
-        title, body = "IK (Panda, pinocchio)", control_bench.ik_section(r, command)
-    elif args.suite == "speed":
-        r = control_bench.speed_benchmark()
-        print(json.dumps(r, indent=2))
-        title, body = "simulation speed", control_bench.speed_section(r, command)
     else:
         from .sim.tasks import BUILTIN
 
