@@ -29,9 +29,10 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         if settings.viser:
             from .viser_scene import ViserScene
 
-            scene = ViserScene(settings.host, settings.viser_port)
+            scene = ViserScene("127.0.0.1", settings.viser_port)  # loopback only: browsers come through /viser
         app.state.store, app.state.settings, app.state.scene = store, settings, scene
-        app.state.runner = TrialRunner(store, settings.workers, scene, settings.artifacts_dir)
+        app.state.runner = TrialRunner(store, settings.workers, scene, settings.artifacts_dir,
+                                       settings.hang_timeout_s, settings.spawn_workers_at_start)
         app.state.interrupted_at_start = interrupted
         yield
         app.state.runner.shutdown()
@@ -70,9 +71,10 @@ def create_app(settings: Settings | None = None) -> FastAPI:
                                            f"(bursts of {settings.rate_burst:g}) mutating calls per client"}, status_code=429)
         return await call_next(request)
 
-    from .api import batches, meta, trials
+    from .api import batches, meta, trials, viser
 
     app.include_router(meta.router)
+    app.include_router(viser.router)
     app.include_router(trials.router)
     app.include_router(batches.router)
     app.include_router(trials.dashboard)

@@ -1,38 +1,68 @@
-"""Trial workers: queued trial specs run in worker threads; each running trial exposes its event bus and
-step-through control, and every event is stored and fanned out to live subscribers."""
+"""Trial runner: queued trials go to a pool of worker processes (one slot thread per process). Each live trial
+keeps its event history and a step-through control that forwards to its worker; every event is fanned out to
+live subscribers, and the 3D view follows the most recently started trial.
+
+A worker that dies (crash, kill, out of memory) or stops responding (no message for `hang_timeout_s`; a running
+trial streams 3D poses at ~30 Hz, so silence means it is stuck) fails its trial with the reason; the slot
+starts a fresh process for the next trial and the console carries on."""
 
 from __future__ import annotations
 
 import queue
-from pathlib import Path
 import threading
 import time
-import traceback
 from dataclasses import asdict, dataclass, field
 from typing import Callable
 
-from spark_core.execution import EventBus, Executor, StepControl
-from spark_core.execution.primitives import PrimitiveLibrary
+from spark_core.execution import StepControl
 from spark_core.trace import TraceStore
-from spark_core.trace.record import record_trial
+
+from .worker import EOF_MSG, TrialSpec, WorkerProcess
+
+__all__ = ["TrialRunner", "TrialSpec", "RemoteControl", "Live"]
 
 
-@dataclass(frozen=True)
-class _Kp:
-    position_m: list
+class RemoteControl(StepControl):
+    """The console's side of a trial's step-through control: remembers the operator's choices (so a queued
+    trial starts with them) and forwards each one to the worker running the trial. `paused_at` follows the
+    trial's own paused/started events."""
 
+    def __init__(self, breakpoints=()):
+        super().__init__(breakpoints)
+        self._forward: Callable[[str, object], None] | None = None
 
-@dataclass(frozen=True)
-class TrialSpec:
-    task: str
-    instruction: str
-    planner: str = "reference"  # reference | rules | gemini | openai
-    resolver: str = "sim"
-    seed: int = 0
-    breakpoints: tuple[str, ...] = ()
-    model: str | None = None
-    base_url: str | None = None
-    start_paused: bool = False
+    def attach(self, forward: Callable[[str, object], None]) -> dict:
+        """Start forwarding; returns the state the worker starts from."""
+        with self._cond:
+            self._forward = forward
+            return {"paused": self._paused, "aborted": self._aborted, "breakpoints": sorted(self._breakpoints)}
+
+    def _send(self, action: str, arg=None) -> None:
+        if self._forward is not None:
+            self._forward(action, arg)
+
+    def pause(self) -> None:
+        super().pause()
+        self._send("pause")
+
+    def resume(self) -> None:
+        super().resume()
+        self._send("resume")
+
+    def step(self) -> None:
+        super().step()
+        self._send("step")
+
+    def abort(self) -> None:
+        super().abort()
+        self._send("abort")
+
+    def set_breakpoints(self, paths) -> None:
+        super().set_breakpoints(paths)
+        self._send("breakpoints", sorted(self.breakpoints))
+
+    def observe(self, ev: dict) -> None:
+        self.paused_at = ev["node_path"] if ev.get("kind") == "paused" else None
 
 
 @dataclass
@@ -40,24 +70,31 @@ class Live:
     """A queued or running trial's handles."""
 
     spec: TrialSpec
-    bus: EventBus
-    control: StepControl
+    control: RemoteControl
+    history: list[dict] = field(default_factory=list)  # every event so far
     subscribers: list[Callable[[dict], None]] = field(default_factory=list)
+    worker_pid: int | None = None
 
 
 class TrialRunner:
-    def __init__(self, store: TraceStore, workers: int = 2, scene=None, artifacts_dir: str = "var/artifacts"):
+    def __init__(self, store: TraceStore, workers: int = 2, scene=None, artifacts_dir: str = "var/artifacts",
+                 hang_timeout_s: float = 120.0, spawn_at_start: bool = False):
         self.store = store
-        self.artifacts_dir = Path(artifacts_dir)
-        self.scene = scene  # ViserScene mirroring the most recently started trial, or None
+        self.artifacts_dir = artifacts_dir
+        self.scene = scene  # ViserScene showing the most recently started trial, or None
+        self.hang_timeout_s = hang_timeout_s
         self.queue: queue.Queue[str | None] = queue.Queue()
         self.live: dict[str, Live] = {}
         self.watchers: list[Callable[[dict], None]] = []  # dashboard: every trial's status changes
+        self.processes: list[WorkerProcess | None] = [None] * workers
         self._lock = threading.Lock()
-        self.threads = [threading.Thread(target=self._work, name=f"trial-worker-{i}", daemon=True) for i in range(workers)]
+        self._closing = False
+        self.threads = [threading.Thread(target=self._slot, args=(i, spawn_at_start), name=f"trial-slot-{i}", daemon=True)
+                        for i in range(workers)]
         for t in self.threads:
             t.start()
 
+    # -- dashboard ----------------------------------------------------------------------------------------------
     def watch(self, callback: Callable[[dict], None]) -> Callable[[], None]:
         with self._lock:
             self.watchers.append(callback)
@@ -75,6 +112,18 @@ class TrialRunner:
         for cb in watchers:
             cb({"kind": "trial", "id": trial_id, "status": status, **extra})
 
+    # -- operator -----------------------------------------------------------------------------------------------
+    def submit(self, trial_id: str, spec: TrialSpec, batch_id: str | None = None) -> None:
+        live = Live(spec, RemoteControl(spec.breakpoints))
+        if spec.start_paused:
+            live.control.pause()  # stops before the first primitive: set breakpoints on the tree, then resume
+        with self._lock:
+            self.live[trial_id] = live
+        self.store.create_trial(trial_id, status="queued", task=spec.task, instruction=spec.instruction, seed=spec.seed,
+                                planner=spec.planner, resolver=spec.resolver, protocol=asdict(spec), batch_id=batch_id)
+        self._announce(trial_id, "queued", task=spec.task)
+        self.queue.put(trial_id)
+
     def cancel(self, trial_id: str) -> bool:
         """A queued trial is dropped before it runs (recorded as cancelled); a running one is aborted."""
         with self._lock:
@@ -84,26 +133,13 @@ class TrialRunner:
         live.control.abort()
         return True
 
-    def submit(self, trial_id: str, spec: TrialSpec, batch_id: str | None = None) -> None:
-        bus = EventBus(trial_id)
-        live = Live(spec, bus, StepControl(spec.breakpoints))
-        if spec.start_paused:
-            live.control.pause()  # stops before the first primitive: set breakpoints on the tree, then resume
-        bus.subscribe(lambda ev: self._fan_out(trial_id, ev.to_dict()))
-        with self._lock:
-            self.live[trial_id] = live
-        self.store.create_trial(trial_id, status="queued", task=spec.task, instruction=spec.instruction, seed=spec.seed,
-                                planner=spec.planner, resolver=spec.resolver, protocol=asdict(spec), batch_id=batch_id)
-        self._announce(trial_id, "queued", task=spec.task)
-        self.queue.put(trial_id)
-
     def subscribe(self, trial_id: str, callback: Callable[[dict], None]) -> Callable[[], None]:
         with self._lock:
             live = self.live.get(trial_id)
             if live is None:
                 return lambda: None
             live.subscribers.append(callback)
-            history = [e.to_dict() for e in live.bus.history]
+            history = list(live.history)
         for ev in history:
             callback(ev)
 
@@ -114,98 +150,110 @@ class TrialRunner:
 
         return unsubscribe
 
-    def _fan_out(self, trial_id: str, ev: dict) -> None:
+    def _fan_out(self, live: Live, ev: dict) -> None:
         with self._lock:
-            subs = list(self.live[trial_id].subscribers) if trial_id in self.live else []
+            if ev.get("kind") != "closed":
+                live.history.append(ev)
+            subs = list(live.subscribers)
         for cb in subs:
             cb(ev)
 
     def shutdown(self) -> None:
+        self._closing = True
+        with self._lock:
+            running = list(self.live.values())
+        for live in running:
+            live.control.abort()
         for _ in self.threads:
             self.queue.put(None)
+        for t in self.threads:
+            t.join(10.0)
+        workers = [p for p in self.processes if p is not None]
+        for p in workers:  # all at once: each exits in parallel
+            p.send("stop")
+        for p in workers:
+            p.stop()
 
-    def _work(self) -> None:
-        while (trial_id := self.queue.get()) is not None:
+    # -- slots --------------------------------------------------------------------------------------------------
+    def _slot(self, i: int, spawn_at_start: bool) -> None:
+        if spawn_at_start:
             try:
-                self._run(trial_id)
-            except Exception as e:  # noqa: BLE001 - a crashing trial must not take the worker down
-                self.store.update_trial(trial_id, status="done", outcome="failure", success=False,
-                                        reason=f"internal error: {type(e).__name__}: {e}",
-                                        protocol={"traceback": traceback.format_exc()[-4000:]})
+                self._worker(i)
+            except RuntimeError:
+                pass  # retried when the first trial arrives, which then fails with the reason if it still cannot start
+        while (trial_id := self.queue.get()) is not None:
+            live = self.live[trial_id]
+            t0 = time.perf_counter()
+            try:
+                if live.control.aborted:  # cancelled while queued: never starts
+                    self.store.update_trial(trial_id, status="done", outcome="aborted", reason="cancelled before it started")
+                    continue
+                worker = self._worker(i)
+                live.worker_pid = worker.pid
+                state = live.control.attach(lambda action, arg, w=worker, t=trial_id: w.send("control", t, action, arg))
+                worker.send("run", trial_id, live.spec, state)
+                failure = self._pump(trial_id, live, worker)
+                if failure:
+                    worker.kill()
+                    self.processes[i] = None
+                    self._record_failure(trial_id, live, failure, time.perf_counter() - t0)
+            except Exception as e:  # noqa: BLE001 - e.g. a worker that cannot start: the trial fails, the slot lives
+                self._record_failure(trial_id, live, f"internal error: {type(e).__name__}: {e}", time.perf_counter() - t0)
             finally:
                 with self._lock:
-                    live = self.live.pop(trial_id, None)
-                if live is not None:
-                    self._fan_out_closed(live)
+                    self.live.pop(trial_id, None)
+                self._fan_out(live, {"kind": "closed"})
                 final = self.store.get_trial(trial_id) or {}
                 self._announce(trial_id, final.get("status", "done"), success=final.get("success"))
 
-    def _fan_out_closed(self, live: Live) -> None:
-        for cb in list(live.subscribers):
-            cb({"kind": "closed"})
+    def _worker(self, i: int) -> WorkerProcess:
+        p = self.processes[i]
+        if p is None or not p.alive:
+            p = self.processes[i] = WorkerProcess(self.store.url, self.artifacts_dir,
+                                                  self.scene.rate_hz if self.scene else 30.0)
+        return p
 
-    def _run(self, trial_id: str) -> None:
-        from spark_core.bench.trial import PerceptionConfig, make_resolver
-        from spark_core.grammar import parse_plan, plan_to_dict, to_yaml
-        from spark_core.planning import PlanRequest
-        from spark_core.planning.backends import make_planner
-        from spark_core.planning.observe import observe
-        from spark_core.sim.tasks import BUILTIN
-        from spark_core.sim.world import TrajectoryRecorder
+    def _pump(self, trial_id: str, live: Live, worker: WorkerProcess) -> str | None:
+        """Relay the worker's messages until the trial is done. Returns why the worker failed, or None."""
+        last = time.monotonic()
+        key, scene = trial_id, self.scene
+        draw = scene.sink(key, f"{trial_id} ({live.spec.task})") if scene is not None else None
+        while True:
+            msg = worker.recv(0.5)
+            if msg is None:
+                if not worker.alive:
+                    return f"worker process {worker.pid} died ({worker.death()}) while running the trial"
+                if time.monotonic() - last > self.hang_timeout_s:
+                    return (f"worker process {worker.pid} stopped responding for {self.hang_timeout_s:.0f} s "
+                            f"and was killed")
+                continue
+            last = time.monotonic()
+            kind = msg[0]
+            if kind == "eof":
+                return f"worker process {worker.pid} died ({worker.death()}) while running the trial"
+            if msg[1] != trial_id:
+                continue  # a late message of an earlier trial
+            payload = msg[2] if len(msg) > 2 else None
+            if kind == "done":
+                return None
+            if kind == "event":
+                live.control.observe(payload)
+                self._fan_out(live, payload)
+                if scene is not None and payload.get("kind") in ("started", "paused"):
+                    d = payload.get("detail", {})
+                    what = d.get("primitive") or d.get("kind") or ""
+                    scene.active(key, f"**Trial:** {trial_id}  \n**{payload['kind'].capitalize()}:** `{payload['node_path']}` {what}")
+            elif kind == "status":
+                self._announce(trial_id, payload, task=live.spec.task)
+            elif draw is not None:
+                draw(kind, payload)
 
-        live = self.live[trial_id]
-        spec = live.spec
-        if live.control.aborted:  # cancelled while queued: never starts
-            self.store.update_trial(trial_id, status="done", outcome="aborted", reason="cancelled before it started")
-            return
-        t0 = time.perf_counter()
-        self.store.update_trial(trial_id, status="running")
-        self._announce(trial_id, "running", task=spec.task)
-        task = BUILTIN[spec.task]
-        world = task.make_world(spec.seed)
-        world.recorder = TrajectoryRecorder()
-        if self.scene is not None:
-            self.scene.show(world)
-        resolver = None
-        try:
-            resolver = make_resolver(world, PerceptionConfig(spec.resolver), spec.seed)
-            cost, usage, plan = 0.0, {}, None
-            if spec.planner == "reference":
-                plan = parse_plan(task.reference_plan_text())
-            else:
-                from spark_core.planning.llm import PlannerUnavailable
-
-                try:
-                    planner = make_planner(spec.planner, spec.model, spec.base_url)
-                except (PlannerUnavailable, ValueError) as e:
-                    self.store.update_trial(trial_id, status="done", outcome="failure", success=False, failure="planner",
-                                            reason=f"planner {spec.planner!r} unavailable: {e}")
-                    return
-                result = planner.plan(PlanRequest(spec.instruction, observe(spec.instruction, resolver)))
-                cost, usage, plan = result.cost_usd, asdict(result.usage), result.plan
-                if plan is None:
-                    record_trial(self.store, trial_id, task=task.name, instruction=spec.instruction, seed=spec.seed,
-                                 planner=spec.planner, resolver=spec.resolver, protocol=asdict(spec), plan=None,
-                                 result=None, success=False, reason=f"no plan: {result.error}", cost_usd=cost,
-                                 usage=usage, wall_time_s=round(time.perf_counter() - t0, 3))
-                    return
-            self.store.update_trial(trial_id, plan_text=to_yaml(plan), plan_tree=plan_to_dict(plan))
-            ex = Executor(PrimitiveLibrary(world, resolver, seed=spec.seed), resolver, bus=live.bus,
-                          control=live.control, trial_id=trial_id)
-            trial = ex.run(plan)
-            world.settle(0.5)
-            success = bool(task.success(world)) and trial.outcome == "success"
-            from spark_core.trace.artifacts import detection_images
-
-            artifacts = detection_images(resolver, self.artifacts_dir / trial_id)
-            record_trial(self.store, trial_id, task=task.name, instruction=spec.instruction, seed=spec.seed,
-                         planner=spec.planner, resolver=spec.resolver, protocol=asdict(spec), plan=plan, result=trial,
-                         success=success, groundings=getattr(resolver, "groundings", []), trajectory=world.recorder.rows,
-                         wall_time_s=round(time.perf_counter() - t0, 3), cost_usd=cost, usage=usage, artifacts=artifacts)
-        finally:
-            if self.scene is not None:
-                keypoints = {g["label"]: _Kp(g["keypoint"]["position_m"]) for g in getattr(resolver, "groundings", [])
-                             if g.get("keypoint")}
-                self.scene.markers(keypoints)
-                self.scene.detach(world)
-            world.close()
+    def _record_failure(self, trial_id: str, live: Live, reason: str, wall_s: float) -> None:
+        """The worker could not finish the trial: keep every event it streamed, and say why it failed."""
+        trial = self.store.get_trial(trial_id) or {}
+        if trial.get("status") == "done":
+            return  # the worker recorded its outcome before it went away
+        if not trial.get("events") and live.history:
+            self.store.add_events(trial_id, live.history)
+        self.store.update_trial(trial_id, status="done", outcome="failure", success=False, failure="worker",
+                                reason=reason, wall_time_s=round(wall_s, 3))

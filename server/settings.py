@@ -11,7 +11,9 @@ class Settings:
     host: str = "127.0.0.1"
     port: int = 8000
     store_url: str = "sqlite:///var/spark.db"
-    workers: int = 2  # trials run concurrently
+    workers: int = 2  # worker processes: trials run concurrently, each in its own process
+    hang_timeout_s: float = 120.0  # a worker silent this long (no events, no 3D frames) is killed
+    spawn_workers_at_start: bool = False  # True for `spark serve`: the first trial does not wait for a process
     api_token: str | None = None  # required for mutating calls when bound beyond loopback
     cors_origins: tuple[str, ...] = field(default_factory=tuple)
     artifacts_dir: str = "var/artifacts"  # annotated detection images, one directory per trial
@@ -25,7 +27,9 @@ class Settings:
         e = os.environ
         return cls(
             host=e.get("SPARK_HOST", cls.host), port=int(e.get("SPARK_PORT", cls.port)),
-            store_url=e.get("SPARK_STORE_URL", cls.store_url), workers=int(e.get("SPARK_WORKERS", cls.workers)),
+            store_url=e.get("SPARK_STORE_URL", cls.store_url),
+            workers=int(e.get("SPARK_WORKERS", os.cpu_count() or cls.workers)),
+            hang_timeout_s=float(e.get("SPARK_HANG_TIMEOUT_S", cls.hang_timeout_s)),
             api_token=e.get("SPARK_API_TOKEN") or None,
             cors_origins=tuple(o for o in e.get("SPARK_CORS_ORIGINS", "").split(",") if o),
             viser=e.get("SPARK_VISER", "1") != "0", artifacts_dir=e.get("SPARK_ARTIFACTS_DIR", cls.artifacts_dir), viser_port=int(e.get("SPARK_VISER_PORT", 0)),

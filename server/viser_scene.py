@@ -1,20 +1,23 @@
-"""The live 3D view (viser): the running trial's robot links, objects and table, republished at a fixed rate,
-with the keypoints perception resolved drawn as labelled markers."""
+"""The live 3D view (viser): whichever trial the console shows (the most recently started one, or a replay).
+
+The view never touches a simulation: it is fed plain arrays (`VisualGeom`s once, then body poses) by a
+`SceneFeed` running next to the world, in a worker process or in a replay thread. Drawn: robot links, objects
+and table; the resolved keypoints as labelled markers; the TCP pose each arm is moving to; the latest annotated
+detection image (masks, boxes, keypoints); the active node of the tree."""
 
 from __future__ import annotations
 
 import contextlib
 import io
 import threading
-import time
 
-import mujoco
 import numpy as np
+
+from spark_core.sim.geometry import VisualGeom
 
 
 class ViserScene:
-    """One viser server per console. `show(world)` mirrors a world until `detach`; updates are coalesced by
-    viser, so a slow browser never slows the simulation."""
+    """One viser server per console. Updates are coalesced by viser, so a slow browser never slows a trial."""
 
     def __init__(self, host: str = "127.0.0.1", port: int = 0, rate_hz: float = 30.0):
         import viser
@@ -22,88 +25,87 @@ class ViserScene:
         with contextlib.redirect_stdout(io.StringIO()):  # viser prints a banner; the server logs its own line
             self.server = viser.ViserServer(host=host, port=port, verbose=False)
         self.host = host
-        self.rate_hz = rate_hz
-        self._world = None
-        self._frames: dict[int, object] = {}
+        self.rate_hz = rate_hz  # what feeds are asked to publish at
+        self.current: str | None = None  # key (trial id, or "replay:<id>") of what is on screen
+        self._frames: dict[int, object] = {}  # body id -> viser frame
+        self._targets: dict[str, object] = {}
         self._lock = threading.Lock()
-        self._stop = threading.Event()
-        self.ticks = 0
-        self._thread = threading.Thread(target=self._publish, name="viser-publisher", daemon=True)
-        self._thread.start()
+        self.ticks = 0  # pose updates drawn
+        cam = self.server.initial_camera  # in front of and above the table, looking at the workspace
+        cam.position, cam.look_at = (1.7, -1.1, 1.2), (0.5, 0.0, 0.25)
+        gui = self.server.gui
+        self._active = gui.add_markdown("**Trial:** none")
+        self._image = gui.add_image(np.zeros((240, 320, 3), np.uint8), label="detections (masks, boxes, keypoints)")
 
     @property
     def port(self) -> int:
         return self.server.get_port()
 
-    def show(self, world) -> None:
-        """Build the scene of `world` (bodies as frames, geoms as their children) and start mirroring it."""
-        m = world.model
+    def show(self, key: str, geoms: list[VisualGeom], title: str = "") -> None:
+        """Replace the scene with `geoms` (bodies as frames, geoms as their children); `key` now owns the view."""
         scene = self.server.scene
         with self._lock:
-            self._world = None
+            self.current = key
             scene.reset()
             frames: dict[int, object] = {}
-            for g in range(m.ngeom):
-                if m.geom_group[g] > 2 or m.geom_type[g] == mujoco.mjtGeom.mjGEOM_PLANE:
-                    continue  # hidden collision-only geoms and the floor
-                b = int(m.geom_bodyid[g])
-                if b not in frames:
-                    frames[b] = scene.add_frame(f"/world/b{b}", show_axes=False)
-                self._add_geom(m, g, f"/world/b{b}/g{g}")
-            self._frames = frames
-            self._world = world
+            for i, g in enumerate(geoms):
+                if g.body not in frames:
+                    frames[g.body] = scene.add_frame(f"/world/b{g.body}", show_axes=False)
+                _add_geom(scene, g, f"/world/b{g.body}/g{i}")
+            self._frames, self._targets = frames, {}
+            self._active.content = f"**Trial:** {title or key}"
 
-    def _add_geom(self, m: mujoco.MjModel, g: int, name: str) -> None:
-        scene = self.server.scene
-        rgba = m.geom_rgba[g]
-        color = tuple(int(255 * c) for c in rgba[:3])
-        pose = dict(position=m.geom_pos[g].copy(), wxyz=m.geom_quat[g].copy())
-        t, size = m.geom_type[g], m.geom_size[g]
-        if t == mujoco.mjtGeom.mjGEOM_BOX:
-            scene.add_box(name, color=color, dimensions=2 * size, **pose)
-        elif t == mujoco.mjtGeom.mjGEOM_SPHERE:
-            scene.add_icosphere(name, radius=float(size[0]), color=color, **pose)
-        elif t in (mujoco.mjtGeom.mjGEOM_CYLINDER, mujoco.mjtGeom.mjGEOM_CAPSULE):
-            scene.add_cylinder(name, radius=float(size[0]), height=float(2 * size[1]), color=color, **pose)
-        elif t == mujoco.mjtGeom.mjGEOM_MESH:
-            mid = m.geom_dataid[g]
-            v0, nv = m.mesh_vertadr[mid], m.mesh_vertnum[mid]
-            f0, nf = m.mesh_faceadr[mid], m.mesh_facenum[mid]
-            scene.add_mesh_simple(name, vertices=m.mesh_vert[v0:v0 + nv].copy(), faces=m.mesh_face[f0:f0 + nf].copy(),
-                                  color=color, **pose)
-
-    def markers(self, keypoints: dict) -> None:
-        """Keypoints as small spheres with their labels (world frame)."""
-        for i, (label, kp) in enumerate(keypoints.items()):
-            p = np.asarray(kp.position_m, float)
-            self.server.scene.add_icosphere(f"/keypoints/k{i}", radius=0.008, color=(255, 40, 200), position=p)
-            self.server.scene.add_label(f"/keypoints/k{i}/label", text=label, position=p + [0, 0, 0.03])
-
-    def detach(self, world) -> None:
-        """Stop mirroring `world` (its last pose stays on screen)."""
+    def update(self, key: str, xpos: np.ndarray, xquat: np.ndarray, targets: dict | None = None) -> None:
+        """Body poses (world frame, wxyz) and, per arm, the (position_m, wxyz) its TCP is moving to."""
         with self._lock:
-            if self._world is world:
-                self._world = None
+            if key != self.current:
+                return
+            with self.server.atomic():
+                for b, frame in self._frames.items():
+                    frame.position, frame.wxyz = xpos[b], xquat[b]
+                for arm, (p, q) in (targets or {}).items():
+                    if arm not in self._targets:
+                        self._targets[arm] = self.server.scene.add_frame(f"/targets/{arm}", axes_length=0.08,
+                                                                         axes_radius=0.004)
+                    self._targets[arm].position, self._targets[arm].wxyz = p, q
+            self.ticks += 1
 
-    def _publish(self) -> None:
-        period = 1.0 / self.rate_hz
-        while not self._stop.is_set():
-            t0 = time.monotonic()
-            with self._lock:
-                world = self._world
-                if world is not None:
-                    # No world lock: rendering for perception holds it for ~75 ms per frame and the view must not
-                    # stall. A copy taken mid-step can mix two physics steps (2 ms apart): invisible on screen.
-                    xpos, xquat = world.data.xpos.copy(), world.data.xquat.copy()
-                    with self.server.atomic():
-                        for b, frame in self._frames.items():
-                            frame.position, frame.wxyz = xpos[b], xquat[b]
-                    self.ticks += 1
-            self._stop.wait(max(0.0, period - (time.monotonic() - t0)))
+    def markers(self, key: str, keypoints: dict[str, list[float]]) -> None:
+        """Resolved keypoints (world frame, m) as small spheres with their labels."""
+        with self._lock:
+            if key != self.current:
+                return
+            for i, (label, p) in enumerate(keypoints.items()):
+                p = np.asarray(p, float)
+                self.server.scene.add_icosphere(f"/keypoints/k{i}", radius=0.008, color=(255, 40, 200), position=p)
+                self.server.scene.add_label(f"/keypoints/k{i}/label", text=label, position=p + [0, 0, 0.03])
+
+    def image(self, key: str, rgb: np.ndarray) -> None:
+        with self._lock:
+            if key == self.current:
+                self._image.image = rgb
+
+    def active(self, key: str, text: str) -> None:
+        with self._lock:
+            if key == self.current:
+                self._active.content = text
+
+    def sink(self, key: str, title: str = ""):
+        """A SceneFeed sink drawing into this view under `key` (the feed's first message takes the view)."""
+
+        def draw(kind: str, payload) -> None:
+            if kind == "scene":
+                self.show(key, payload, title)
+            elif kind == "poses":
+                self.update(key, *payload)
+            elif kind == "markers":
+                self.markers(key, payload)
+            elif kind == "image":
+                self.image(key, payload)
+
+        return draw
 
     def stop(self) -> None:
-        self._stop.set()
-        self._thread.join(2.0)
         with contextlib.redirect_stdout(io.StringIO()):
             self.server.stop()
             # viser's server thread prints "Server stopped" as it exits, possibly after stop() returns under
@@ -111,3 +113,15 @@ class ViserScene:
             thread = getattr(getattr(self.server, "_websock_server", None), "_server_thread", None)
             if thread is not None:
                 thread.join(10.0)
+
+
+def _add_geom(scene, g: VisualGeom, name: str) -> None:
+    pose = dict(position=g.position_m, wxyz=g.wxyz)
+    if g.kind == "box":
+        scene.add_box(name, color=g.rgb, dimensions=g.size_m, **pose)
+    elif g.kind == "sphere":
+        scene.add_icosphere(name, radius=float(g.size_m[0]), color=g.rgb, **pose)
+    elif g.kind == "cylinder":
+        scene.add_cylinder(name, radius=float(g.size_m[0]), height=float(g.size_m[1]), color=g.rgb, **pose)
+    else:
+        scene.add_mesh_simple(name, vertices=g.vertices_m, faces=g.faces, color=g.rgb, **pose)

@@ -161,9 +161,22 @@ def _plan_in_scene(task_name: str, instruction: str, seed: int, resolver_kind: s
 
 
 def _library(args: argparse.Namespace):
+    """The plan library: the trace store's table by default ("store"), or a JSON-lines file given by path."""
     from .planning.library import PlanLibrary
 
-    return PlanLibrary(args.plan_library, enabled=not args.no_plan_library)
+    if args.plan_library not in (None, "store"):
+        return PlanLibrary(args.plan_library, enabled=not args.no_plan_library)
+    from pathlib import Path
+
+    from .trace import TraceStore
+    from .trace.plan_library import StorePlanLibrary
+
+    library = StorePlanLibrary(TraceStore(getattr(args, "store", None) or "sqlite:///var/spark.db"),
+                               enabled=not args.no_plan_library)
+    legacy = Path("var/plan_library.jsonl")  # where the library lived before the store held it
+    if library.enabled and legacy.exists():
+        library.import_jsonl(legacy)  # idempotent: rows already in the store are skipped
+    return library
 
 
 def _with_annotated_image(view, resolver):
@@ -275,12 +288,13 @@ def _run_planned(args: argparse.Namespace) -> int:
     success = bool(task.success(world))
     world.close()
     store = _store(args)
+    trial_id = f"{task.name}-{args.seed}-{int(time.time() * 1000)}"
     if store is not None:
         from dataclasses import asdict
 
         from .trace.record import record_trial
 
-        record_trial(store, f"{task.name}-{args.seed}-{int(time.time() * 1000)}", task=task.name, instruction=instruction,
+        record_trial(store, trial_id, task=task.name, instruction=instruction,
                      seed=args.seed, planner=args.planner, resolver=args.resolver,
                      protocol={"planner": args.planner, "model": result.detail.get("model"), "resolver": args.resolver,
                                "planner_saw": "instruction + perception of its phrases (no object dictionary)"},
@@ -289,7 +303,7 @@ def _run_planned(args: argparse.Namespace) -> int:
     if success:
         from .grammar import to_yaml
 
-        library.add(instruction, to_yaml(result.plan), view.summary)
+        library.add(instruction, to_yaml(result.plan), view.summary, trial_id=trial_id if store is not None else None)
     verdict = "SUCCESS" if success else f"FAILURE ({trial.failure.value if trial.failure else 'task predicate false'}) {trial.reason}"
     print(f"{verdict}: {trial.sim_time_s:.1f} s simulated, {time.perf_counter() - t0:.1f} s wall; predicate: {task.predicate}")
     return 0 if success else 1
@@ -304,9 +318,11 @@ def _cmd_serve(args: argparse.Namespace) -> int:
     from server.app import create_app
     from server.settings import Settings
 
+    from dataclasses import replace
+
     base = Settings.from_env()
-    settings = Settings(host=args.host or base.host, port=args.port or base.port, store_url=args.store or base.store_url,
-                        workers=args.workers or base.workers, api_token=base.api_token, cors_origins=base.cors_origins)
+    settings = replace(base, host=args.host or base.host, port=args.port or base.port, store_url=args.store or base.store_url,
+                       workers=args.workers or base.workers, spawn_workers_at_start=True)
     if not settings.loopback and not settings.api_token:
         print(f"refusing to serve on {settings.host} without SPARK_API_TOKEN (mutating calls would be open)", file=sys.stderr)
         return 2
@@ -375,7 +391,8 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--model", help="LLM model name (gemini default: gemini-3.1-pro-preview)")
     r.add_argument("--base-url", help="LLM endpoint (OpenAI-compatible server, or a Gemini proxy)")
     r.add_argument("--plan-library",
-                   help="successful plans are added here and offered to LLM planners as few-shot examples")
+                   help="where successful plans are kept and offered to LLM planners as few-shot examples: "
+                        "'store' (default: the trace store's plan_library table) or a .jsonl file")
     r.add_argument("--no-plan-library", action="store_true", help="neither use nor grow the plan library")
     r.add_argument("--store", default="sqlite:///var/spark.db", help="trace store (SQLAlchemy URL)")
     r.add_argument("--no-store", action="store_true", help="do not record the trial")
@@ -436,7 +453,7 @@ def _apply_config(args: argparse.Namespace) -> None:
         if hasattr(args, key) and getattr(args, key) is None and getattr(cfg, key) is not None:
             setattr(args, key, getattr(cfg, key))
     defaults = {"planner": "rules" if args.command == "plan" else "reference", "resolver": "sim",
-                "plan_library": "var/plan_library.jsonl"}
+                "plan_library": "store"}
     for key, value in defaults.items():
         if hasattr(args, key) and getattr(args, key) is None:
             setattr(args, key, value)

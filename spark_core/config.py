@@ -1,7 +1,7 @@
 """User configuration: `spark.yaml` in the working directory, or the file named by SPARK_CONFIG.
 
 Keys (all optional): planner (rules|gemini|openai), model, base_url, resolver (privileged|sim|sim-noisy),
-plan_library (path), prices ({model: [input_usd_per_mtok, output_usd_per_mtok]}). Command-line flags win.
+plan_library ('store' or a .jsonl path), prices ({model: [input_usd_per_mtok, output_usd_per_mtok]}). Command-line flags win.
 """
 
 from __future__ import annotations

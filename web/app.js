@@ -1,8 +1,14 @@
 // SPARK console UI: hash-routed pages over the REST API and the per-trial event WebSocket.
 const $ = (sel, el = document) => el.querySelector(sel);
 const esc = (s) => String(s ?? "").replace(/[&<>"]/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;" }[c]));
+// Beyond loopback the server wants SPARK_API_TOKEN: open the console once with ?token=… and it is kept here.
+const urlToken = new URLSearchParams(location.search).get("token");
+if (urlToken) localStorage.setItem("spark_token", urlToken);
+const token = localStorage.getItem("spark_token");
+const wsUrl = (path) => `${location.protocol === "https:" ? "wss" : "ws"}://${location.host}${path}${token ? `${path.includes("?") ? "&" : "?"}token=${encodeURIComponent(token)}` : ""}`;
 const api = async (path, opts = {}) => {
-  const r = await fetch(path, { headers: { "content-type": "application/json" }, ...opts });
+  const headers = { "content-type": "application/json", ...(token ? { authorization: `Bearer ${token}` } : {}) };
+  const r = await fetch(path, { headers, ...opts });
   if (!r.ok) throw new Error((await r.json().catch(() => ({}))).detail || r.statusText);
   return r.status === 204 ? null : r.json();
 };
@@ -48,7 +54,7 @@ async function dashboard(view) {
   };
   const refresh = async () => { $("#recent").innerHTML = trialTable((await api("/api/trials?limit=10")).items); };
   await refresh();
-  const ws = new WebSocket(`${location.protocol === "https:" ? "wss" : "ws"}://${location.host}/api/events`);
+  const ws = new WebSocket(wsUrl("/api/events"));
   ws.onmessage = () => { if (location.hash === "" || location.hash === "#/") refresh(); else ws.close(); };
 }
 
@@ -107,7 +113,8 @@ async function trialPage(view, id) {
   const state = { status: {}, retries: {}, breakpoints: new Set(), events: [] };
   view.innerHTML = `<section><h3>Trial ${esc(id)}</h3><div id="summary"></div>
       <div id="controls"><button id="pause">Pause</button><button id="step">Step</button><button id="resume">Resume</button><button id="abort">Abort</button>
-      <a id="download" href="/api/trials/${id}" download="${id}.json">Download trace (JSON)</a></div></section>
+      <a id="download" href="/api/trials/${id}" download="${id}.json">Download trace (JSON)</a>
+      <button id="replay" title="replay the recorded trial in the 3D view">Replay in 3D</button></div></section>
     <section><h3>Behavior tree</h3><div class="tree" id="tree">waiting for the plan…</div></section>
     <section><h3>3D view</h3><div id="viser"></div></section>
     <section><h3>Timeline</h3><div id="score"></div></section>
@@ -116,6 +123,7 @@ async function trialPage(view, id) {
     <section><h3>Events</h3><div id="log"></div></section>`;
   const control = (action, extra = {}) => api(`/api/trials/${id}/control`, { method: "POST", body: JSON.stringify({ action, ...extra }) }).catch((e) => alert(e.message));
   for (const a of ["pause", "step", "resume", "abort"]) $("#" + a).onclick = () => control(a);
+  $("#replay").onclick = () => api(`/api/trials/${id}/replay`, { method: "POST" }).catch((e) => alert(e.message));
   const draw = () => {
     $("#summary").innerHTML = `<p>${esc(trial.task)} · “${esc(trial.instruction)}” · planner ${esc(trial.planner)} · segmenter ${esc(trial.resolver)}
       · status <b id="status">${esc(trial.status)}</b>${trial.success === null || trial.success === undefined ? "" : ` · <b class="${trial.success ? "ok" : "fail"}" id="verdict">${trial.success ? "success" : "failure"}</b>`}
@@ -145,10 +153,12 @@ async function trialPage(view, id) {
   };
   draw();
   api("/api/viser").then((v) => {
-    $("#viser").innerHTML = v.enabled ? `<iframe id="viser-frame" src="${location.protocol}//${location.hostname}:${v.port}/" width="100%" height="420" style="border:0"></iframe>`
+    // Same origin: viser's client page from /viser/, its websocket relayed by the console at /viser.
+    const src = token ? `${v.path}?websocket=${encodeURIComponent(wsUrl("/viser"))}` : v.path;
+    $("#viser").innerHTML = v.enabled ? `<iframe id="viser-frame" src="${src}" width="100%" height="420" style="border:0"></iframe>`
       : "3D view disabled (SPARK_VISER=0)";
   }).catch(() => {});
-  const ws = new WebSocket(`${location.protocol === "https:" ? "wss" : "ws"}://${location.host}/api/trials/${id}/events`);
+  const ws = new WebSocket(wsUrl(`/api/trials/${id}/events`));
   ws.onmessage = async (msg) => {
     const ev = JSON.parse(msg.data);
     apply(ev);
@@ -160,7 +170,9 @@ async function trialPage(view, id) {
 
 async function batchPage(view, id) {
   view.innerHTML = `<section><h3>Batch ${esc(id)}</h3><progress id="batch-progress" max="1" value="0" style="width:30em"></progress>
-    <span id="batch-count"></span> <button id="batch-cancel">Cancel</button><div id="batch-table"></div></section>`;
+    <span id="batch-count"></span> <button id="batch-cancel">Cancel</button>
+    <a id="batch-results-csv" href="/api/batches/${id}/results.csv">results (CSV)</a>
+    <a id="batch-trials-csv" href="/api/batches/${id}/trials.csv">trials (CSV)</a><div id="batch-table"></div></section>`;
   $("#batch-cancel").onclick = () => api(`/api/batches/${id}/cancel`, { method: "POST" });
   const pct = (x) => (x === null ? "" : (100 * x).toFixed(1) + " %");
   for (;;) {

@@ -1,17 +1,31 @@
-"""Batches: many trials from a suite (tasks × seeds) queued at once; progress, result table, cancel."""
+"""Batches: many trials queued at once, from a suite (tasks × seeds) or an explicit list of trial specs;
+progress, result table (JSON or CSV), per-trial export, cancel."""
 
 from __future__ import annotations
 
 import uuid
 
 from fastapi import APIRouter, HTTPException, Request
+from fastapi.responses import PlainTextResponse
 from pydantic import BaseModel, Field
 
 router = APIRouter(prefix="/api/batches", tags=["batches"])
 
 
+class BatchTrial(BaseModel):
+    """One trial of an explicit batch; unset fields take the batch's values."""
+
+    task: str
+    instruction: str | None = Field(None, max_length=2000, description="default: the task's own")
+    seed: int = Field(0, ge=0)
+    planner: str | None = Field(None, pattern="^(reference|rules|gemini|openai)$")
+    resolver: str | None = Field(None, pattern="^(privileged|sim|sim-noisy)$")
+
+
 class BatchCreate(BaseModel):
     suite: str = Field("builtin", description="task suite (builtin)")
+    specs: list[BatchTrial] | None = Field(None, max_length=2000,
+                                           description="explicit trials (instead of tasks × trials from the suite)")
     tasks: list[str] | None = Field(None, description="subset of the suite's tasks (default: all)")
     trials: int = Field(1, ge=1, le=100, description="seeds per task")
     seed: int = Field(0, ge=0)
@@ -27,27 +41,72 @@ def create_batch(body: BatchCreate, request: Request) -> dict:
 
     if body.suite != "builtin":
         raise HTTPException(422, f"unknown suite {body.suite!r}; available: builtin")
-    tasks = body.tasks or list(BUILTIN)
-    unknown = [t for t in tasks if t not in BUILTIN]
+    if body.specs is not None:
+        if not body.specs:
+            raise HTTPException(422, "specs is empty: give at least one trial, or leave it out to run the suite")
+        wanted = [sp.task for sp in body.specs]
+    else:
+        wanted = body.tasks or list(BUILTIN)
+    unknown = [t for t in dict.fromkeys(wanted) if t not in BUILTIN]
     if unknown:
         raise HTTPException(422, f"unknown task(s) {', '.join(unknown)}; builtin tasks: {', '.join(BUILTIN)}")
-    if len(tasks) * body.trials > 2000:
-        raise HTTPException(422, f"{len(tasks) * body.trials} trials is more than one batch may hold (2000)")
+    if body.specs is not None:
+        specs = [TrialSpec(sp.task, sp.instruction or BUILTIN[sp.task].instruction, sp.planner or body.planner,
+                           sp.resolver or body.resolver, sp.seed) for sp in body.specs]
+    else:
+        specs = [TrialSpec(task, BUILTIN[task].instruction, body.planner, body.resolver, body.seed + k)
+                 for task in wanted for k in range(body.trials)]
+    if len(specs) > 2000:
+        raise HTTPException(422, f"{len(specs)} trials is more than one batch may hold (2000)")
     batch_id = f"batch-{uuid.uuid4().hex[:10]}"
     store, runner = request.app.state.store, request.app.state.runner
     store.create_batch(batch_id, body.model_dump())
     ids = []
-    for task in tasks:
-        for k in range(body.trials):
-            trial_id = f"{batch_id}-{task}-{body.seed + k}"
-            runner.submit(trial_id, TrialSpec(task, BUILTIN[task].instruction, body.planner, body.resolver, body.seed + k),
-                          batch_id=batch_id)
-            ids.append(trial_id)
+    for n, spec in enumerate(specs):
+        trial_id = f"{batch_id}-{n:04d}-{spec.task}-{spec.seed}"
+        runner.submit(trial_id, spec, batch_id=batch_id)
+        ids.append(trial_id)
     return {"id": batch_id, "trials": len(ids)}
 
 
 @router.get("/{batch_id}")
 def get_batch(batch_id: str, request: Request) -> dict:
+    return _batch_with_results(request, batch_id)
+
+
+CSV_TRIAL_COLUMNS = ("id", "task", "seed", "instruction", "planner", "resolver", "status", "outcome", "success",
+                     "failure", "failed_node", "reason", "wall_time_s", "sim_time_s", "cost_usd")
+
+
+@router.get("/{batch_id}/results.csv", response_class=PlainTextResponse)
+def batch_results_csv(batch_id: str, request: Request) -> PlainTextResponse:
+    """The per-task result table (success rate with its Wilson 95 % interval) as CSV."""
+    b = _batch_with_results(request, batch_id)
+    rows = [{"task": r["task"], "done": r["done"], "total": r["total"], "successes": r["successes"],
+             "success_rate": r["success_rate"], "ci95_low": r["ci95"][0], "ci95_high": r["ci95"][1]} for r in b["results"]]
+    return _csv(rows, ("task", "done", "total", "successes", "success_rate", "ci95_low", "ci95_high"), f"{batch_id}-results.csv")
+
+
+@router.get("/{batch_id}/trials.csv", response_class=PlainTextResponse)
+def batch_trials_csv(batch_id: str, request: Request) -> PlainTextResponse:
+    """One row per trial of the batch (outcome, failure attribution, timings, cost) as CSV."""
+    b = _batch_with_results(request, batch_id)
+    return _csv(b["trials"], CSV_TRIAL_COLUMNS, f"{batch_id}-trials.csv")
+
+
+def _csv(rows: list[dict], columns: tuple[str, ...], filename: str) -> PlainTextResponse:
+    import csv
+    import io
+
+    buf = io.StringIO()
+    w = csv.DictWriter(buf, fieldnames=columns, extrasaction="ignore", lineterminator="\n")
+    w.writeheader()
+    w.writerows(rows)
+    return PlainTextResponse(buf.getvalue(), media_type="text/csv",
+                             headers={"content-disposition": f'attachment; filename="{filename}"'})
+
+
+def _batch_with_results(request: Request, batch_id: str) -> dict:
     from spark_core.bench.report import wilson
 
     batch = request.app.state.store.get_batch(batch_id)

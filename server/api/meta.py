@@ -35,15 +35,6 @@ def grammar() -> dict:
     return {"primitives": prims, "json_schema": plan_json_schema()}
 
 
-@router.get("/viser")
-def viser_view(request: Request) -> dict:
-    """Where the live 3D view is served (its own port; the UI embeds it)."""
-    scene = request.app.state.scene
-    if scene is None:
-        return {"enabled": False}
-    return {"enabled": True, "port": scene.port, "rate_hz": scene.rate_hz, "frames_published": scene.ticks}
-
-
 @router.get("/tasks")
 def tasks() -> list[dict]:
     from spark_core.sim.tasks import BUILTIN

@@ -7,6 +7,7 @@ import uuid
 
 from fastapi import APIRouter, HTTPException, Query, Request, WebSocket, WebSocketDisconnect
 
+from .auth import websocket_allowed
 from .models import Control, TrialCreate, TrialCreated, TrialPage
 
 router = APIRouter(prefix="/api/trials", tags=["trials"])
@@ -47,8 +48,9 @@ def get_trial(trial_id: str, request: Request) -> dict:
         raise HTTPException(404, f"no trial {trial_id!r}")
     live = request.app.state.runner.live.get(trial_id)
     if live is not None:  # still running: the stored events lag, serve the live ones
-        trial["events"] = [e.to_dict() for e in live.bus.history]
+        trial["events"] = list(live.history)
         trial["control_state"] = live.control.state
+        trial["worker_pid"] = live.worker_pid
     return trial
 
 
@@ -72,6 +74,22 @@ def delete_trial(trial_id: str, request: Request) -> None:
         raise HTTPException(404, f"no trial {trial_id!r}")
 
 
+@router.post("/{trial_id}/replay", status_code=202)
+def replay(trial_id: str, request: Request, speed: float = Query(1.0, gt=0.0, le=20.0)) -> dict:
+    """Replay a finished trial in the 3D view from its recorded scene states (`speed`x real time)."""
+    from ..replay import ReplayUnavailable, start_replay
+
+    scene = request.app.state.scene
+    if scene is None:
+        raise HTTPException(409, "the 3D view is off (SPARK_VISER=0)")
+    try:
+        return start_replay(request.app.state.store, scene, trial_id, speed)
+    except KeyError:
+        raise HTTPException(404, f"no trial {trial_id!r}") from None
+    except ReplayUnavailable as e:
+        raise HTTPException(409, str(e)) from None
+
+
 @router.post("/{trial_id}/control")
 def control(trial_id: str, body: Control, request: Request) -> dict:
     live = request.app.state.runner.live.get(trial_id)
@@ -88,6 +106,8 @@ def control(trial_id: str, body: Control, request: Request) -> dict:
 @router.websocket("/{trial_id}/events")
 async def events(websocket: WebSocket, trial_id: str) -> None:
     """Every event of the trial (history first), then live ones; closes when the trial ends."""
+    if not await websocket_allowed(websocket):
+        return
     await websocket.accept()
     runner = websocket.app.state.runner
     loop = asyncio.get_running_loop()
@@ -118,6 +138,8 @@ dashboard = APIRouter(tags=["trials"])
 @dashboard.websocket("/api/events")
 async def all_events(websocket: WebSocket) -> None:
     """Dashboard stream: {kind: trial, id, status, ...} whenever any trial is queued, starts or ends."""
+    if not await websocket_allowed(websocket):
+        return
     await websocket.accept()
     loop = asyncio.get_running_loop()
     q: asyncio.Queue = asyncio.Queue()

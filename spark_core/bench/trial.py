@@ -97,7 +97,8 @@ def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
         record_trial(store, result.trial_id + f"-{int(time.time() * 1000)}", task=task.name, instruction=task.instruction,
                      seed=seed, planner="reference", resolver=perception.resolver, protocol=protocol, plan=plan,
                      result=result, success=success, groundings=getattr(resolver, "groundings", []),
-                     trajectory=world.recorder.rows, wall_time_s=round(time.perf_counter() - t0, 3))
+                     trajectory=world.recorder.rows, scene_states=world.recorder.states,
+                     wall_time_s=round(time.perf_counter() - t0, 3))
     return TrialOutcome(
         task=task.name, seed=seed, success=success, outcome=result.outcome,
         failure=result.failure.value if result.failure else None, failed_node=result.failed_node, reason=result.reason,

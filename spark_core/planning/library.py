@@ -27,7 +27,7 @@ class PlanLibrary:
             return []
         return [json.loads(line) for line in self.path.read_text().splitlines() if line.strip()]
 
-    def add(self, instruction: str, plan_yaml: str, scene_summary: str = "") -> None:
+    def add(self, instruction: str, plan_yaml: str, scene_summary: str = "", trial_id: str | None = None) -> None:
         """Call only for plans whose trial succeeded."""
         if not self.enabled:
             return
@@ -39,11 +39,14 @@ class PlanLibrary:
 
     def examples(self, instruction: str, k: int = 2) -> tuple[tuple[str, str], ...]:
         """The k stored (instruction, plan) pairs whose instructions are most similar to `instruction`."""
-        entries = self.entries() if self.enabled else []
-        if not entries:
-            return ()
-        uniq = {e["instruction"]: e for e in entries}  # newest plan per instruction
-        texts = list(uniq)
-        sims = self.encoder.encode(texts) @ self.encoder.encode([instruction])[0]
-        order = np.argsort(-sims)[:k]
-        return tuple((texts[i], uniq[texts[i]]["plan"]) for i in order)
+        return most_similar(self.entries() if self.enabled else [], instruction, self.encoder, k)
+
+
+def most_similar(entries: list[dict], instruction: str, encoder: TextEncoder, k: int) -> tuple[tuple[str, str], ...]:
+    if not entries:
+        return ()
+    uniq = {e["instruction"]: e for e in entries}  # newest plan per instruction
+    texts = list(uniq)
+    sims = encoder.encode(texts) @ encoder.encode([instruction])[0]
+    order = np.argsort(-sims)[:k]
+    return tuple((texts[i], uniq[texts[i]]["plan"]) for i in order)

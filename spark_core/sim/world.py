@@ -20,9 +20,12 @@ CONTROL_DT_S = 0.01  # control period; physics runs at the scene's timestep unde
 
 @dataclass
 class TrajectoryRecorder:
-    """Joint states at the control rate (t_s, arm, q_rad, gripper_width_m, ctrl), for the trace store."""
+    """Joint states at the control rate (t_s, arm, q_rad, gripper_width_m), and the whole scene state
+    (t_s, qpos) every `state_period_s` of simulated time, enough to replay the trial in a viewer."""
 
     rows: list[tuple[float, str, list[float], float]] = field(default_factory=list)
+    states: list[tuple[float, list[float]]] = field(default_factory=list)
+    state_period_s: float = 0.04
 
 
 @dataclass(frozen=True)
@@ -56,6 +59,7 @@ class MujocoWorld:
                              for a, h in hands.items()}
         self._lock = threading.RLock()
         self.recorder: TrajectoryRecorder | None = None
+        self.target_tcp: dict[str, Pose] = {}  # the TCP pose the current joint trajectory ends at, per arm
         self.monitors: list[Callable[["MujocoWorld"], None]] = []  # called every control period (task metrics)
         self.renderer = None
         self.reset()
@@ -129,8 +133,12 @@ class MujocoWorld:
             monitor(self)
 
     def _record(self, arm: str) -> None:
-        if self.recorder is not None:
-            self.recorder.rows.append((self.sim_time_s, arm, self.q(arm).round(5).tolist(), round(self.gripper_width_m(arm), 5)))
+        rec = self.recorder
+        if rec is not None:
+            t = self.sim_time_s
+            rec.rows.append((t, arm, self.q(arm).round(5).tolist(), round(self.gripper_width_m(arm), 5)))
+            if not rec.states or t - rec.states[-1][0] >= rec.state_period_s - 1e-9:
+                rec.states.append((t, self.data.qpos.round(5).tolist()))
 
     def execute(self, arm: str, traj: JointTrajectory, stop: Callable[[], bool] | None = None,
                 settle_s: float = 0.05) -> ExecResult:
@@ -138,6 +146,8 @@ class MujocoWorld:
         n_sub = max(int(round(CONTROL_DT_S / self.model.opt.timestep)), 1)
         t0 = self.sim_time_s
         completed = True
+        if len(traj.q_rad):  # where this motion is taking the TCP (shown live in the 3D view)
+            self.target_tcp[arm] = self.kinematics[arm].fk(np.asarray(traj.q_rad[-1]))
         for q_cmd in traj.q_rad:
             with self._lock:
                 self.data.ctrl[self._act[arm]] = q_cmd

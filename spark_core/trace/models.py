@@ -45,6 +45,8 @@ class TrialRow(Base):
     trajectory: Mapped[list] = mapped_column(JSON, default=list)  # joint states at the control rate
     artifacts: Mapped[list] = mapped_column(JSON, default=list)  # [{name, kind, camera, path, sha256}] files on disk
     batch_id: Mapped[str | None] = mapped_column(String(64), nullable=True, index=True)
+    # [(t_s, qpos)] every 40 ms of simulated time: enough to replay the trial in the 3D view. Loaded on demand.
+    scene_states: Mapped[list | None] = mapped_column(JSON, nullable=True, deferred=True)
 
     events: Mapped[list["EventRow"]] = relationship(back_populates="trial", cascade="all, delete-orphan",
                                                     order_by="EventRow.seq")
@@ -88,3 +90,16 @@ class BatchRow(Base):
     created_at: Mapped[datetime] = mapped_column(DateTime(timezone=True), default=utcnow)
     status: Mapped[str] = mapped_column(String(16), default="running")  # running|cancelled|done
     spec: Mapped[dict] = mapped_column(JSON, default=dict)
+
+
+class PlanLibraryRow(Base):
+    """A plan whose trial succeeded, kept as a few-shot example for the LLM planners."""
+
+    __tablename__ = "plan_library"
+
+    id: Mapped[int] = mapped_column(Integer, primary_key=True, autoincrement=True)
+    created_at: Mapped[datetime] = mapped_column(DateTime(timezone=True), default=utcnow)
+    instruction: Mapped[str] = mapped_column(Text, index=True)
+    plan_text: Mapped[str] = mapped_column(Text)
+    scene_summary: Mapped[str] = mapped_column(Text, default="")
+    trial_id: Mapped[str | None] = mapped_column(String(64), nullable=True)

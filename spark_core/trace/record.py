@@ -10,7 +10,8 @@ from .store import TraceStore, _jsonable
 def record_trial(store: TraceStore, trial_id: str, *, task: str, instruction: str, seed: int, planner: str,
                  resolver: str, protocol: dict, plan: Plan | None, result: TrialResult | None, success: bool | None,
                  groundings: list[dict] = (), trajectory: list = (), wall_time_s: float | None = None,
-                 cost_usd: float = 0.0, usage: dict | None = None, reason: str = "", artifacts: list[dict] = ()) -> None:
+                 cost_usd: float = 0.0, usage: dict | None = None, reason: str = "", artifacts: list[dict] = (),
+                 scene_states: list | None = None) -> None:
     """Create-or-complete the trial row and append its events and groundings in one go."""
     fields = dict(
         status="done", instruction=instruction, task=task, seed=seed, planner=planner, resolver=resolver,
@@ -21,6 +22,7 @@ def record_trial(store: TraceStore, trial_id: str, *, task: str, instruction: st
         wall_time_s=wall_time_s, sim_time_s=result.sim_time_s if result else None, cost_usd=cost_usd,
         usage=usage or {}, nodes=_jsonable({p: r.to_dict() for p, r in result.nodes.items()}) if result else {},
         trajectory=_jsonable(list(trajectory)), artifacts=_jsonable(list(artifacts)),
+        scene_states=_jsonable(list(scene_states)) if scene_states else None,
     )
     if store.get_trial(trial_id) is None:
         store.create_trial(trial_id, **fields)

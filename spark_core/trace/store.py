@@ -9,7 +9,7 @@ from typing import Any, Iterable
 from sqlalchemy import create_engine, delete, event, func, or_, select
 from sqlalchemy.orm import Session, selectinload, sessionmaker
 
-from .models import BatchRow, EventRow, GroundingRow, TrialRow
+from .models import BatchRow, EventRow, GroundingRow, PlanLibraryRow, TrialRow
 
 MIGRATIONS_DIR = Path(__file__).resolve().parents[2] / "migrations"
 SORTABLE = {"created_at", "task", "outcome", "wall_time_s", "sim_time_s", "cost_usd", "status"}
@@ -112,7 +112,25 @@ class TraceStore:
         return {"id": row.id, "status": row.status, "spec": row.spec,
                 "created_at": row.created_at.isoformat() if row.created_at else None, "trials": items}
 
+    # -- plan library -------------------------------------------------------------------------------------------
+    def add_library_plan(self, instruction: str, plan_text: str, scene_summary: str = "", trial_id: str | None = None) -> None:
+        with self.Session.begin() as s:
+            s.add(PlanLibraryRow(instruction=instruction, plan_text=plan_text, scene_summary=scene_summary,
+                                 trial_id=trial_id))
+
+    def library_plans(self) -> list[dict]:
+        """Oldest first: {instruction, plan, scene_summary, trial_id, t}."""
+        with self.Session() as s:
+            rows = s.scalars(select(PlanLibraryRow).order_by(PlanLibraryRow.id)).all()
+            return [{"instruction": r.instruction, "plan": r.plan_text, "scene_summary": r.scene_summary,
+                     "trial_id": r.trial_id, "t": r.created_at.timestamp() if r.created_at else None} for r in rows]
+
     # -- reads --------------------------------------------------------------------------------------------------
+    def scene_states(self, trial_id: str) -> list | None:
+        """The trial's recorded scene states [(t_s, qpos)], or None (unknown trial, or recorded before 0004)."""
+        with self.Session() as s:
+            return s.scalar(select(TrialRow.scene_states).where(TrialRow.id == trial_id))
+
     def get_trial(self, trial_id: str) -> dict | None:
         with self.Session() as s:
             row = s.scalars(select(TrialRow).where(TrialRow.id == trial_id)
@@ -155,11 +173,13 @@ def _sqlite_pragmas(dbapi_conn, _record) -> None:
     cur = dbapi_conn.cursor()
     cur.execute("PRAGMA journal_mode=WAL")
     cur.execute("PRAGMA foreign_keys=ON")
+    cur.execute("PRAGMA busy_timeout=30000")  # worker processes write the same file; wait instead of failing
     cur.close()
 
 
 def _row_dict(row: TrialRow, summary: bool = False) -> dict:
     heavy = {"plan_tree", "nodes", "trajectory", "plan_text", "artifacts"} if summary else set()
+    heavy.add("scene_states")  # deferred: read through scene_states()
     out = {c.name: getattr(row, c.name) for c in TrialRow.__table__.columns if c.name not in heavy}
     out["created_at"] = row.created_at.isoformat() if row.created_at else None
     return out

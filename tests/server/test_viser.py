@@ -1,21 +1,28 @@
-"""The live 3D view: the scene mirrors the world's bodies, and the server exposes it for the UI."""
+"""The live 3D view: fed from the simulation as plain arrays, served from the console's origin through a
+websocket relay, following running trials (target pose, markers, active node) and replaying finished ones."""
 
 import time
 
 import numpy as np
+import viser
 from fastapi.testclient import TestClient
+from starlette.websockets import WebSocketDisconnect
 
 from server.app import create_app
+from server.scene_feed import SceneFeed
 from server.settings import Settings
 from server.viser_scene import ViserScene
+from spark_core.sim.geometry import body_poses
 from spark_core.sim.tasks import BUILTIN
 
+from .test_api import wait_done
 
-def test_scene_mirrors_the_world_at_its_rate():
+
+def test_feed_mirrors_the_world_at_its_rate():
     world = BUILTIN["stack_two"].make_world(0)
-    scene = ViserScene(rate_hz=30)
+    scene = ViserScene()
     try:
-        scene.show(world)
+        feed = SceneFeed(world, scene.sink("w"), rate_hz=30).start()
         robot_links = [b for b in scene._frames if world.model.body(b).name.startswith("robot/")]
         assert len(robot_links) >= 8 and world.model.body("red block").id in scene._frames
         world.set_body_position("red block", [0.61, 0.21, 0.0])
@@ -24,27 +31,70 @@ def test_scene_mirrors_the_world_at_its_rate():
         assert scene.ticks - t0 >= 5
         b = world.model.body("red block").id
         np.testing.assert_allclose(scene._frames[b].position, world.data.xpos[b], atol=1e-9)
-        scene.detach(world)
+        feed.stop()
         frozen = scene.ticks
         time.sleep(0.2)
-        assert scene.ticks == frozen  # detached: no more updates
+        assert scene.ticks == frozen  # stopped: no more updates
+        scene.show("other", [])  # another trial takes the view: late frames of the old one are ignored
+        feed._publish()
+        assert scene.ticks == frozen
     finally:
         scene.stop()
         world.close()
 
 
-def test_server_reports_the_view_and_mirrors_trials(tmp_path):
-    with TestClient(create_app(Settings(store_url=f"sqlite:///{tmp_path / 'v.db'}", workers=1, artifacts_dir=str(tmp_path)))) as c:
+def _app(tmp_path, **kw):
+    return create_app(Settings(store_url=f"sqlite:///{tmp_path / 'v.db'}", workers=1, artifacts_dir=str(tmp_path / "a"), **kw))
+
+
+def test_trials_stream_into_the_view_which_is_relayed_from_the_console_origin_and_replays(tmp_path):
+    with TestClient(_app(tmp_path)) as c:
         v = c.get("/api/viser").json()
-        assert v["enabled"] and v["port"] > 0
+        assert v["enabled"] and v["path"] == "/viser/" and v["port"] > 0
+        page = c.get("/viser/")
+        assert page.status_code == 200 and "<script" in page.text  # viser's own client, from our origin
+        scene = c.app.state.scene
         tid = c.post("/api/trials", json={"task": "lift_block", "resolver": "sim"}).json()["id"]
-        for _ in range(600):
-            if c.get(f"/api/trials/{tid}").json()["status"] == "done":
-                break
-            time.sleep(0.1)
-        assert c.get("/api/viser").json()["frames_published"] > 0
-    with TestClient(create_app(Settings(store_url=f"sqlite:///{tmp_path / 'w.db'}", workers=1, viser=False))) as c:
+        trial = wait_done(c, tid)
+        assert trial["success"] is True
+        assert c.get("/api/viser").json()["frames_published"] > 10 and scene.current == tid
+        assert "right" in scene._targets  # the TCP target pose was drawn
+        assert "lift_block" in scene._active.content or "tree" in scene._active.content
+        # the relay: a raw client speaking viser's subprotocol gets the scene through /viser
+        with c.websocket_connect("/viser", subprotocols=[f"viser-v{viser.__version__}"]) as ws:
+            assert len(ws.receive_bytes()) > 0
+        # replay from the stored scene states: the view ends on the last recorded state
+        r = c.post(f"/api/trials/{tid}/replay", params={"speed": 20}).json()
+        assert r["states"] > 20 and r["duration_s"] > 1
+        assert scene.current == f"replay:{tid}"
+        time.sleep(r["duration_s"] / 20 + 1.5)
+        states = c.app.state.store.scene_states(tid)
+        world = BUILTIN["lift_block"].make_world(0)
+        import mujoco
+
+        xpos, _ = body_poses(world.model, mujoco.MjData(world.model), np.asarray(states[-1][1]))
+        b = world.model.body("red block").id  # it was lifted: far from where the scene starts it
+        assert abs(xpos[b][2] - world.data.xpos[b][2]) > 0.03
+        np.testing.assert_allclose(scene._frames[b].position, xpos[b], atol=1e-6)
+        assert "finished" in scene._active.content
+        world.close()
+        assert c.post("/api/trials/nope/replay").status_code == 404
+    with TestClient(_app(tmp_path, viser=False)) as c:
         assert c.get("/api/viser").json() == {"enabled": False}
+        assert c.get("/viser/").status_code == 404
+
+
+def test_websockets_need_the_token_beyond_loopback(tmp_path):
+    with TestClient(_app(tmp_path, host="0.0.0.0", api_token="s3cret", viser=False)) as c:
+        for path in ("/api/events", "/api/trials/x/events", "/viser"):
+            try:
+                with c.websocket_connect(path) as ws:
+                    ws.receive_json()
+                raise AssertionError(f"{path} accepted a client without the token")
+            except WebSocketDisconnect as e:
+                assert e.code == 1008
+        with c.websocket_connect("/api/trials/x/events?token=s3cret") as ws:
+            assert ws.receive_json() == {"kind": "closed"}  # unknown trial: nothing stored, closed
 
 
 def test_frame_rate_benchmark_runs():

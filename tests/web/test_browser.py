@@ -9,6 +9,7 @@ from pathlib import Path
 import pytest
 
 ARTIFACTS = Path(__file__).resolve().parents[2] / "test-artifacts"
+APPS = []  # the app behind the `server` fixture, to look at its 3D view
 CHROMIUM = shutil.which("chromium-headless-shell") or shutil.which("chromium")
 
 
@@ -23,6 +24,7 @@ def server(tmp_path_factory):
         s.bind(("127.0.0.1", 0))
         port = s.getsockname()[1]
     app = create_app(Settings(port=port, store_url=f"sqlite:///{tmp_path_factory.mktemp('web') / 'ui.db'}", workers=2))
+    APPS.append(app)
     srv = uvicorn.Server(uvicorn.Config(app, host="127.0.0.1", port=port, log_level="warning"))
     thread = threading.Thread(target=srv.run, daemon=True)
     thread.start()
@@ -80,6 +82,21 @@ def test_submit_step_breakpoint_resume_and_history(server, page):
     page.click("#resume")
     page.wait_for_selector("#verdict.ok", timeout=60_000)
     page.wait_for_selector("#timeline rect")
+    # the 3D view comes from the console's own origin, and the browser's viser client connects through the relay
+    assert page.locator("#viser-frame").get_attribute("src") == "/viser/"
+    scene = APPS[-1].state.scene
+    for _ in range(300):
+        if scene.server.get_clients():
+            break
+        time.sleep(0.1)
+    assert scene.server.get_clients(), "the embedded viser client never connected through /viser"
+    trial_id = page.url.split("/trial/")[1]
+    page.click("#replay")
+    for _ in range(100):
+        if scene.current == f"replay:{trial_id}":
+            break
+        time.sleep(0.05)
+    assert scene.current == f"replay:{trial_id}"
     shot(page, "3-finished")
     trial_url = page.url
     # history: the finished trial is listed and opens with its tree and timeline
@@ -115,3 +132,8 @@ def test_batch_from_the_form_shows_progress_and_results(server, page):
     rows = page.locator("#batch-table tr")
     assert rows.count() == 3 and "100.0 %" in rows.nth(1).inner_text()
     shot(page, "5-batch")
+    # the result table downloads as CSV from the page's link
+    with page.expect_download() as dl:
+        page.click("#batch-results-csv")
+    text = Path(dl.value.path()).read_text()
+    assert text.startswith("task,done,total,successes") and "lift_block,2,2,2" in text

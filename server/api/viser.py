@@ -1,0 +1,80 @@
+"""The live 3D view from the console's own origin: viser's bundled client page at /viser/ and a websocket
+relay at /viser to the viser server, which listens on loopback only (so the token check here guards it)."""
+
+from __future__ import annotations
+
+import asyncio
+from pathlib import Path
+
+from fastapi import APIRouter, HTTPException, Request, WebSocket, WebSocketDisconnect
+from fastapi.responses import FileResponse
+
+from .auth import websocket_allowed
+
+router = APIRouter(tags=["3d view"])
+
+
+@router.get("/api/viser")
+def viser_view(request: Request) -> dict:
+    """Where the live 3D view is served, and what it shows."""
+    scene = request.app.state.scene
+    if scene is None:
+        return {"enabled": False}
+    return {"enabled": True, "path": "/viser/", "port": scene.port, "rate_hz": scene.rate_hz,
+            "frames_published": scene.ticks, "showing": scene.current}
+
+
+@router.get("/viser/", include_in_schema=False)
+def viser_client(request: Request) -> FileResponse:
+    """viser's client (one self-contained page shipped in the viser wheel); it opens its websocket at /viser."""
+    import viser
+
+    if request.app.state.scene is None:
+        raise HTTPException(404, "the 3D view is off (SPARK_VISER=0)")
+    return FileResponse(Path(viser.__file__).parent / "client" / "build" / "index.html", media_type="text/html")
+
+
+@router.websocket("/viser")
+async def viser_relay(websocket: WebSocket) -> None:
+    """Byte-for-byte relay between the browser and the viser server (same subprotocol both ways)."""
+    from websockets.asyncio.client import connect
+    from websockets.exceptions import ConnectionClosed
+
+    if not await websocket_allowed(websocket):
+        return
+    scene = websocket.app.state.scene
+    if scene is None:
+        await websocket.close(code=1013, reason="the 3D view is off")
+        return
+    offered = list(websocket.scope.get("subprotocols", []))
+    async with connect(f"ws://127.0.0.1:{scene.port}", subprotocols=offered or None, max_size=None,
+                       compression=None) as upstream:
+        await websocket.accept(subprotocol=upstream.subprotocol)
+
+        async def to_browser() -> None:
+            async for message in upstream:
+                if isinstance(message, bytes):
+                    await websocket.send_bytes(message)
+                else:
+                    await websocket.send_text(message)
+
+        async def to_viser() -> None:
+            while True:
+                message = await websocket.receive()
+                if message["type"] == "websocket.disconnect":
+                    return
+                await upstream.send(message["bytes"] if message.get("bytes") is not None else message["text"])
+
+        tasks = [asyncio.create_task(to_browser()), asyncio.create_task(to_viser())]
+        try:
+            await asyncio.wait(tasks, return_when=asyncio.FIRST_COMPLETED)
+        except (WebSocketDisconnect, ConnectionClosed):
+            pass
+        finally:
+            for t in tasks:
+                t.cancel()
+            await asyncio.gather(*tasks, return_exceptions=True)
+    try:
+        await websocket.close()
+    except RuntimeError:
+        pass  # already closed by the browser
