@@ -65,6 +65,6 @@ def run(trials: int = 3) -> dict:
 
 def section(r: dict, command: str) -> str:
     return (f"| events | p50 | p99 |\n|---|---|---|\n| {r['events']} | {r['p50_ms']:.1f} ms | {r['p99_ms']:.1f} ms |\n\n"
-            + footer(command, f"executor event published in a server worker thread -> WebSocket -> headless chromium "
+            + footer(command, f"executor event published in the trial worker process -> pipe -> console -> WebSocket -> headless chromium "
                               f"(Debian chromium-headless-shell, same machine clock); stack_two reference plan, privileged "
                               f"resolver, {r['trials']} trials; events replayed from history at connect are excluded"))

@@ -25,11 +25,14 @@ def run(task: str = "stack_three", seeds: int = 3) -> dict:
             for seed in range(seeds):
                 tid = f"viser-bench-{seed}"
                 runner.submit(tid, TrialSpec(task, BUILTIN[task].instruction, "reference", "sim", seed))
-                while (store.get_trial(tid) or {}).get("status") != "running":
+                while (store.get_trial(tid) or {}).get("status") == "queued":
                     time.sleep(0.005)
                 t0, k0 = time.perf_counter(), scene.ticks
                 while store.get_trial(tid)["status"] == "running":
                     time.sleep(0.05)
+                trial = store.get_trial(tid)
+                if not trial["success"]:
+                    raise RuntimeError(f"benchmark trial {tid} failed: {trial['reason']}")
                 rates.append((scene.ticks - k0) / (time.perf_counter() - t0))
         finally:
             runner.shutdown()

@@ -36,10 +36,14 @@ class SceneFeed:
         self._perception(force=True)
 
     def _run(self) -> None:
+        import time
+
         period = 1.0 / self.rate_hz
-        while not self._stop.wait(period):
+        due = time.monotonic() + period
+        while not self._stop.wait(max(0.0, due - time.monotonic())):
             self._publish()
             self._perception()
+            due = max(due + period, time.monotonic() - period)  # catch up after a stall, but never in a burst
 
     def _publish(self) -> None:
         w = self.world

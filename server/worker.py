@@ -106,6 +106,7 @@ class WorkerProcess:
 
 def child_main(inbox, outbox, store_url: str, artifacts_dir: str, feed_hz: float) -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C belongs to the console, which stops us in order
+    os.environ.setdefault("MUJOCO_GL", "egl")  # before mujoco is imported: cameras render headless
     from spark_core.execution import StepControl
     from spark_core.trace import TraceStore
 
@@ -119,6 +120,7 @@ def child_main(inbox, outbox, store_url: str, artifacts_dir: str, feed_hz: float
                 os._exit(0)  # the console is gone: nobody is left to report to
 
     store = TraceStore(store_url, migrate=False)  # the console migrated it before starting workers
+    _warm_up()
     current: dict[str, Any] = {"id": None, "control": None}
     send("ready", os.getpid())
     while True:
@@ -142,6 +144,16 @@ def child_main(inbox, outbox, store_url: str, artifacts_dir: str, feed_hz: float
             c.set_breakpoints(arg) if action == "breakpoints" else getattr(c, action)()
         elif msg[0] == "stop":
             return
+
+
+def _warm_up() -> None:
+    """Import the simulator and planners and load the text encoder now, so the first trial does not pay for it
+    (and its 3D feed is not starved while it does)."""
+    import spark_core.bench.trial  # noqa: F401 - mujoco, pinocchio, perception, primitives
+    from spark_core.perception.text_encoder import SHARED_ENCODER
+    from spark_core.sim.tasks import BUILTIN  # noqa: F401
+
+    SHARED_ENCODER.encode(["warm up"])
 
 
 def _job(trial_id: str, spec: TrialSpec, control, store, send: Callable, artifacts_dir: Path, feed_hz: float) -> None:

@@ -464,6 +464,9 @@ def _apply_config(args: argparse.Namespace) -> None:
 
 
 def main(argv: list[str] | None = None) -> int:
+    import os
+
+    os.environ.setdefault("MUJOCO_GL", "egl")  # headless rendering (cameras) unless the user chose a backend
     parser = build_parser()
     args = parser.parse_args(argv)
     try:
