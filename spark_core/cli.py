@@ -366,6 +366,36 @@ def BUILTIN_INSTRUCTION(task: str) -> str:  # noqa: N802 - reads like a constant
     return BUILTIN[task].instruction
 
 
+def _date(text: str):
+    from datetime import datetime, timezone
+
+    try:
+        return datetime.strptime(text, "%Y-%m-%d").replace(tzinfo=timezone.utc)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a date YYYY-MM-DD, got {text!r}") from None
+
+
+def _cmd_export(args: argparse.Namespace) -> int:
+    """Recorded trials (captured with frames) -> a LeRobot v3.0 dataset with SPARK's per-frame labels."""
+    from .sim.tasks import BUILTIN
+    from .trace import TraceStore
+    from .trace.lerobot import ExportError, ExportFilter, export_lerobot
+
+    tasks = tuple(args.task) or (tuple(BUILTIN) if args.suite == "builtin" else ())
+    flt = ExportFilter(tasks=tasks, trial_ids=tuple(args.trial), batch=args.batch,
+                       success_only=not args.include_failures, since=args.since, until=args.until)
+    try:
+        r = export_lerobot(TraceStore(args.store), args.out, flt)
+    except ExportError as e:
+        print(f"export failed: {e}", file=sys.stderr)
+        return 1
+    print(f"{r.episodes} episodes, {r.frames} frames -> {r.out_dir} ({r.bytes_on_disk / 1e6:.1f} MB, "
+          f"{r.data_files} data file(s), {r.video_files} video file(s)) in {r.wall_time_s:.1f} s")
+    for s in r.skipped:
+        print(f"  skipped {s['id']}: {s['reason']}")
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="spark", description="SPARK: typed behavior trees over anchored keypoints.")
     p.add_argument("--version", action="version", version=f"spark {__version__}")
@@ -403,6 +433,20 @@ def build_parser() -> argparse.ArgumentParser:
     sv.add_argument("--store", help="trace store URL (default sqlite:///var/spark.db)")
     sv.add_argument("--workers", type=int, help="trials run concurrently (default 2)")
     sv.set_defaults(func=_cmd_serve)
+
+    ex = sub.add_parser("export", help="export recorded trials as a training dataset (LeRobot v3.0)")
+    ex.add_argument("--format", choices=["lerobot"], default="lerobot")
+    ex.add_argument("--out", required=True, help="new (or empty) directory for the dataset")
+    ex.add_argument("--store", default="sqlite:///var/spark.db", help="trace store (SQLAlchemy URL)")
+    ex.add_argument("--suite", choices=["builtin"], help="only trials of this suite's tasks")
+    ex.add_argument("--task", nargs="*", default=[], help="only these tasks")
+    ex.add_argument("--trial", nargs="*", default=[], help="only these trial ids")
+    ex.add_argument("--batch", help="only this batch's trials")
+    ex.add_argument("--since", type=_date, help="recorded on or after this date (YYYY-MM-DD)")
+    ex.add_argument("--until", type=_date, help="recorded before this date (YYYY-MM-DD)")
+    ex.add_argument("--include-failures", action="store_true",
+                    help="also failed trials (default: verified successes only, i.e. clean demonstrations)")
+    ex.set_defaults(func=_cmd_export)
 
     tr = sub.add_parser("trials", help="list recorded trials (or print one with --id)")
     tr.add_argument("--store", default="sqlite:///var/spark.db")

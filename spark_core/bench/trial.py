@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import time
+from pathlib import Path
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -71,22 +72,40 @@ def make_resolver(world, config: PerceptionConfig, seed: int):
 
 def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
                         recovery: RecoveryPolicy = RecoveryPolicy(),
-                        perception: PerceptionConfig = PerceptionConfig(), store=None) -> TrialOutcome:
+                        perception: PerceptionConfig = PerceptionConfig(), store=None, capture=None,
+                        artifacts_dir: str | Path = "var/artifacts") -> TrialOutcome:
     """The task's hand-written reference plan (or `plan`) with the configured resolver. With a TraceStore,
-    the trial (events, groundings, trajectory at the control rate) is recorded under its trial id."""
+    the trial (events, groundings, trajectory at the control rate) is recorded under its trial id; with a
+    `CaptureConfig` too, training-data frames and videos are written under `artifacts_dir/<trial id>/`."""
+    from ..execution import EventBus
+
     t0 = time.perf_counter()
+    trial_id = f"{task.name}-{seed}-{int(time.time() * 1000)}"
     world = task.make_world(seed)
+    bus = EventBus(f"{task.name}-{seed}")
+    episode, artifacts = None, []
     if store is not None:
         from ..sim.world import TrajectoryRecorder
 
         world.recorder = TrajectoryRecorder()
+        if capture is not None:
+            from ..sim.capture import EpisodeCapture
+
+            episode = EpisodeCapture(world, capture, clock=bus.now)
+            bus.subscribe(episode.on_event)
+            world.monitors.append(episode)
     try:
         resolver = make_resolver(world, perception, seed)
         library = PrimitiveLibrary(world, resolver, seed=seed)
         plan = plan or parse_plan(task.reference_plan_text())
-        result = Executor(library, resolver, recovery=recovery, trial_id=f"{task.name}-{seed}").run(plan)
+        result = Executor(library, resolver, recovery=recovery, bus=bus, trial_id=f"{task.name}-{seed}").run(plan)
         world.settle(0.5)
         success = bool(task.success(world))
+        if episode is not None:
+            from ..trace.artifacts import capture_entries
+
+            world.monitors.remove(episode)
+            artifacts = capture_entries(episode, Path(artifacts_dir) / trial_id)
     finally:
         world.close()
     protocol = {"planner": "reference plan (hand-written)", "resolver": perception.describe(),
@@ -94,10 +113,10 @@ def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
     if store is not None:
         from ..trace.record import record_trial
 
-        record_trial(store, result.trial_id + f"-{int(time.time() * 1000)}", task=task.name, instruction=task.instruction,
+        record_trial(store, trial_id, task=task.name, instruction=task.instruction,
                      seed=seed, planner="reference", resolver=perception.resolver, protocol=protocol, plan=plan,
                      result=result, success=success, groundings=getattr(resolver, "groundings", []),
-                     trajectory=world.recorder.rows, scene_states=world.recorder.states,
+                     trajectory=world.recorder.rows, scene_states=world.recorder.states, artifacts=artifacts,
                      wall_time_s=round(time.perf_counter() - t0, 3))
     return TrialOutcome(
         task=task.name, seed=seed, success=success, outcome=result.outcome,

@@ -83,6 +83,18 @@ class MujocoWorld:
     def q(self, arm: str) -> np.ndarray:
         return self.data.qpos[self._qadr[arm]].copy()
 
+    def qd(self, arm: str) -> np.ndarray:
+        """Joint velocities (rad/s)."""
+        return self.data.qvel[self._dadr[arm]].copy()
+
+    def joint_command(self, arm: str) -> np.ndarray:
+        """The joint position targets the arm's actuators are tracking (rad): the commanded action."""
+        return self.data.ctrl[self._act[arm]].copy()
+
+    def gripper_command_m(self, arm: str) -> float:
+        """The commanded finger gap (m); the sensed gap is `gripper_width_m`."""
+        return float(2 * self.data.ctrl[self._grip[arm]])
+
     def tcp_pose(self, arm: str) -> Pose:
         sid = self._tcp[arm]
         return Pose(self.data.site_xpos[sid].copy(), self.data.site_xmat[sid].reshape(3, 3).copy())

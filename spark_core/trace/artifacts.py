@@ -9,6 +9,20 @@ import cv2
 import numpy as np
 
 
+def file_entry(path: Path, **meta) -> dict:
+    """A file already on disk as an artifact entry: {name, path, sha256, **meta}."""
+    h = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            h.update(block)
+    return {"name": Path(path).name, "path": str(path), "sha256": h.hexdigest(), **meta}
+
+
+def capture_entries(capture, directory: Path) -> list[dict]:
+    """Write an EpisodeCapture (training-data frames and videos) under `directory`; its artifact entries."""
+    return [file_entry(path, **meta) for path, meta in capture.save(Path(directory))]
+
+
 def save_png(directory: Path, name: str, rgb: np.ndarray, **meta) -> dict:
     directory.mkdir(parents=True, exist_ok=True)
     path = directory / f"{name}.png"

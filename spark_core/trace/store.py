@@ -143,6 +143,25 @@ class TraceStore:
             out["groundings"] = [g.record for g in row.groundings]
             return out
 
+    def trial_ids(self, *, tasks=(), ids=(), batch: str | None = None, success: bool | None = None,
+                  since=None, until=None) -> list[str]:
+        """Ids of trials matching every given filter, oldest first (export, batch tools)."""
+        q = select(TrialRow.id)
+        if tasks:
+            q = q.where(TrialRow.task.in_(list(tasks)))
+        if ids:
+            q = q.where(TrialRow.id.in_(list(ids)))
+        if batch:
+            q = q.where(TrialRow.batch_id == batch)
+        if success is not None:
+            q = q.where(TrialRow.success == success)
+        if since is not None:
+            q = q.where(TrialRow.created_at >= since)
+        if until is not None:
+            q = q.where(TrialRow.created_at < until)
+        with self.Session() as s:
+            return list(s.scalars(q.order_by(TrialRow.created_at, TrialRow.id)).all())
+
     def list_trials(self, *, status: str | None = None, task: str | None = None, success: bool | None = None,
                     batch: str | None = None,
                     search: str | None = None, sort: str = "-created_at", limit: int = 50, offset: int = 0) -> tuple[int, list[dict]]:
