@@ -71,12 +71,13 @@ def create_app(settings: Settings | None = None) -> FastAPI:
                                            f"(bursts of {settings.rate_burst:g}) mutating calls per client"}, status_code=429)
         return await call_next(request)
 
-    from .api import batches, meta, trials, viser
+    from .api import batches, exports, meta, trials, viser
 
     app.include_router(meta.router)
     app.include_router(viser.router)
     app.include_router(trials.router)
     app.include_router(batches.router)
+    app.include_router(exports.router)
     app.include_router(trials.dashboard)
     web = Path(__file__).resolve().parents[1] / "web"
     if web.is_dir():

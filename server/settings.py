@@ -17,6 +17,7 @@ class Settings:
     api_token: str | None = None  # required for mutating calls when bound beyond loopback
     cors_origins: tuple[str, ...] = field(default_factory=tuple)
     artifacts_dir: str = "var/artifacts"  # annotated detection images, one directory per trial
+    exports_dir: str = "var/exports"  # datasets exported from the console (LeRobot), one directory + zip each
     viser: bool = True  # live 3D view of the running trial (viser on its own port)
     viser_port: int = 0  # 0 = any free port
     rate_per_s: float = 20.0  # mutating calls per second per client, sustained
@@ -32,7 +33,8 @@ class Settings:
             hang_timeout_s=float(e.get("SPARK_HANG_TIMEOUT_S", cls.hang_timeout_s)),
             api_token=e.get("SPARK_API_TOKEN") or None,
             cors_origins=tuple(o for o in e.get("SPARK_CORS_ORIGINS", "").split(",") if o),
-            viser=e.get("SPARK_VISER", "1") != "0", artifacts_dir=e.get("SPARK_ARTIFACTS_DIR", cls.artifacts_dir), viser_port=int(e.get("SPARK_VISER_PORT", 0)),
+            viser=e.get("SPARK_VISER", "1") != "0", artifacts_dir=e.get("SPARK_ARTIFACTS_DIR", cls.artifacts_dir),
+            exports_dir=e.get("SPARK_EXPORTS_DIR", cls.exports_dir), viser_port=int(e.get("SPARK_VISER_PORT", 0)),
         )
 
     @property

@@ -34,6 +34,7 @@ class TrialSpec:
     model: str | None = None
     base_url: str | None = None
     start_paused: bool = False
+    capture: bool = False  # training-data frames (spark_core.sim.capture) for `spark export`
 
 
 class WorkerProcess:
@@ -194,6 +195,13 @@ def run_trial(trial_id: str, spec: TrialSpec, control, store, send: Callable, ar
     task = BUILTIN[spec.task]
     world = task.make_world(spec.seed)
     world.recorder = TrajectoryRecorder()
+    episode = None
+    if spec.capture:
+        from spark_core.sim.capture import EpisodeCapture
+
+        episode = EpisodeCapture(world, clock=bus.now)
+        bus.subscribe(episode.on_event)
+        world.monitors.append(episode)
     feed = None
     try:
         resolver = make_resolver(world, PerceptionConfig(spec.resolver), spec.seed)
@@ -233,6 +241,11 @@ def run_trial(trial_id: str, spec: TrialSpec, control, store, send: Callable, ar
         world.settle(0.5)
         success = bool(task.success(world)) and trial.outcome == "success"
         artifacts = detection_images(resolver, artifacts_dir / trial_id)
+        if episode is not None:
+            from spark_core.trace.artifacts import capture_entries
+
+            world.monitors.remove(episode)
+            artifacts += capture_entries(episode, artifacts_dir / trial_id)
         record_trial(store, trial_id, **record, plan=plan, result=trial, success=success,
                      groundings=getattr(resolver, "groundings", []), trajectory=world.recorder.rows,
                      scene_states=world.recorder.states, wall_time_s=round(time.perf_counter() - t0, 3),

@@ -24,6 +24,7 @@ async function dashboard(view) {
         <label>Segmenter <select name="resolver"><option>sim</option><option>privileged</option><option>sim-noisy</option></select></label>
         <label>Seed <input type="number" name="seed" value="0" min="0" style="width:5em"></label>
         <label><input type="checkbox" name="start_paused"> start paused</label>
+        <label title="agentview + wrist video and per-frame labels, for LeRobot export"><input type="checkbox" name="capture"> record training data</label>
         <button type="submit">Run</button> <span id="form-error" class="fail"></span>
       </form></section>
     <section><h3>New batch</h3>
@@ -31,6 +32,7 @@ async function dashboard(view) {
         <label>Tasks <select name="tasks" multiple size="4">${tasks.map((t) => `<option value="${t.name}">${t.name}</option>`).join("")}</select></label>
         <label>Trials per task <input type="number" name="trials" value="2" min="1" max="100" style="width:5em"></label>
         <label>Segmenter <select name="resolver"><option>sim</option><option>privileged</option><option>sim-noisy</option></select></label>
+        <label><input type="checkbox" name="capture"> record training data</label>
         <button type="submit">Run batch</button> <span id="batch-error" class="fail"></span>
       </form></section>
     <section><h3>Recent trials</h3><div id="recent">loading…</div></section>`;
@@ -38,7 +40,7 @@ async function dashboard(view) {
     e.preventDefault();
     const f = new FormData(e.target);
     const body = { task: f.get("task"), planner: f.get("planner"), resolver: f.get("resolver"),
-                   seed: Number(f.get("seed")), start_paused: f.get("start_paused") === "on" };
+                   seed: Number(f.get("seed")), start_paused: f.get("start_paused") === "on", capture: f.get("capture") === "on" };
     if (f.get("instruction")) body.instruction = f.get("instruction");
     try { const r = await api("/api/trials", { method: "POST", body: JSON.stringify(body) }); location.hash = `#/trial/${r.id}`; }
     catch (err) { $("#form-error").textContent = err.message; }
@@ -46,7 +48,7 @@ async function dashboard(view) {
   $("#new-batch").onsubmit = async (e) => {
     e.preventDefault();
     const f = new FormData(e.target);
-    const body = { trials: Number(f.get("trials")), resolver: f.get("resolver") };
+    const body = { trials: Number(f.get("trials")), resolver: f.get("resolver"), capture: f.get("capture") === "on" };
     const chosen = f.getAll("tasks");
     if (chosen.length) body.tasks = chosen;
     try { const r = await api("/api/batches", { method: "POST", body: JSON.stringify(body) }); location.hash = `#/batch/${r.id}`; }
@@ -58,11 +60,20 @@ async function dashboard(view) {
   ws.onmessage = () => { if (location.hash === "" || location.hash === "#/") refresh(); else ws.close(); };
 }
 
-function trialTable(items) {
-  return `<table><tr><th>trial</th><th>task</th><th>status</th><th>success</th><th>planner</th><th>wall s</th><th>cost $</th><th>instruction</th></tr>
-    ${items.map((t) => `<tr><td><a href="#/trial/${t.id}">${esc(t.id)}</a></td><td>${esc(t.task)}</td><td>${esc(t.status)}</td>
+function trialTable(items, selectable = false) {
+  return `<table><tr>${selectable ? "<th></th>" : ""}<th>trial</th><th>task</th><th>status</th><th>success</th><th>planner</th><th>wall s</th><th>cost $</th><th>instruction</th></tr>
+    ${items.map((t) => `<tr>${selectable ? `<td><input type="checkbox" class="pick" value="${esc(t.id)}"></td>` : ""}<td><a href="#/trial/${t.id}">${esc(t.id)}</a></td><td>${esc(t.task)}</td><td>${esc(t.status)}</td>
       <td class="${t.success ? "ok" : "fail"}">${t.success === null ? "" : t.success ? "yes" : "no"}</td><td>${esc(t.planner)}</td>
       <td>${t.wall_time_s ?? ""}</td><td>${(t.cost_usd ?? 0).toFixed(4)}</td><td>${esc(t.instruction)}</td></tr>`).join("")}</table>`;
+}
+
+async function exportDataset(body, out) {
+  out.textContent = "exporting…";
+  try {
+    const r = await api("/api/exports", { method: "POST", body: JSON.stringify(body) });
+    out.innerHTML = `${r.episodes} episode(s), ${r.frames} frames, ${(r.bytes / 1e6).toFixed(1)} MB
+      <a id="export-download" href="${r.download}">download (zip)</a>${r.skipped.length ? ` · ${r.skipped.length} skipped (${esc(r.skipped[0].reason)})` : ""}`;
+  } catch (err) { out.innerHTML = `<span class="fail">${esc(err.message)}</span>`; }
 }
 
 async function history(view) {
@@ -71,12 +82,18 @@ async function history(view) {
       <label>Status <select name="status"><option value="">any</option><option>done</option><option>running</option><option>queued</option><option>interrupted</option></select></label>
       <label>Success <select name="success"><option value="">any</option><option value="true">yes</option><option value="false">no</option></select></label>
       <label>Sort <select name="sort"><option>-created_at</option><option>created_at</option><option>-wall_time_s</option><option>-cost_usd</option><option>task</option></select></label>
-      <button>Filter</button></form><div id="rows"></div></section>`;
+      <button>Filter</button></form>
+    <p><button id="export-selected">Export selected (LeRobot)</button> <label><input type="checkbox" id="export-failures"> include failures</label>
+      <span id="export-result"></span></p><div id="rows"></div></section>`;
   const load = async () => {
     const f = new FormData($("#filters"));
     const params = new URLSearchParams([...f.entries()].filter(([, v]) => v));
     const page = await api(`/api/trials?limit=100&${params}`);
-    $("#rows").innerHTML = `<p>${page.total} trial(s)</p>` + trialTable(page.items);
+    $("#rows").innerHTML = `<p>${page.total} trial(s)</p>` + trialTable(page.items, true);
+  };
+  $("#export-selected").onclick = () => {
+    const ids = [...document.querySelectorAll("#rows .pick:checked")].map((c) => c.value);
+    exportDataset({ trial_ids: ids, success_only: !$("#export-failures").checked }, $("#export-result"));
   };
   $("#filters").onsubmit = (e) => { e.preventDefault(); load(); };
   load();
@@ -172,7 +189,9 @@ async function batchPage(view, id) {
   view.innerHTML = `<section><h3>Batch ${esc(id)}</h3><progress id="batch-progress" max="1" value="0" style="width:30em"></progress>
     <span id="batch-count"></span> <button id="batch-cancel">Cancel</button>
     <a id="batch-results-csv" href="/api/batches/${id}/results.csv">results (CSV)</a>
-    <a id="batch-trials-csv" href="/api/batches/${id}/trials.csv">trials (CSV)</a><div id="batch-table"></div></section>`;
+    <a id="batch-trials-csv" href="/api/batches/${id}/trials.csv">trials (CSV)</a>
+    <button id="batch-export">Export successes (LeRobot)</button> <span id="export-result"></span><div id="batch-table"></div></section>`;
+  $("#batch-export").onclick = () => exportDataset({ batch: id }, $("#export-result"));
   $("#batch-cancel").onclick = () => api(`/api/batches/${id}/cancel`, { method: "POST" });
   const pct = (x) => (x === null ? "" : (100 * x).toFixed(1) + " %");
   for (;;) {

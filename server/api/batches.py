@@ -31,6 +31,7 @@ class BatchCreate(BaseModel):
     seed: int = Field(0, ge=0)
     planner: str = Field("reference", pattern="^(reference|rules|gemini|openai)$")
     resolver: str = Field("sim", pattern="^(privileged|sim|sim-noisy)$")
+    capture: bool = Field(False, description="record training-data frames for every trial (for LeRobot export)")
 
 
 @router.post("", status_code=202)
@@ -52,10 +53,10 @@ def create_batch(body: BatchCreate, request: Request) -> dict:
         raise HTTPException(422, f"unknown task(s) {', '.join(unknown)}; builtin tasks: {', '.join(BUILTIN)}")
     if body.specs is not None:
         specs = [TrialSpec(sp.task, sp.instruction or BUILTIN[sp.task].instruction, sp.planner or body.planner,
-                           sp.resolver or body.resolver, sp.seed) for sp in body.specs]
+                           sp.resolver or body.resolver, sp.seed, capture=body.capture) for sp in body.specs]
     else:
-        specs = [TrialSpec(task, BUILTIN[task].instruction, body.planner, body.resolver, body.seed + k)
-                 for task in wanted for k in range(body.trials)]
+        specs = [TrialSpec(task, BUILTIN[task].instruction, body.planner, body.resolver, body.seed + k,
+                           capture=body.capture) for task in wanted for k in range(body.trials)]
     if len(specs) > 2000:
         raise HTTPException(422, f"{len(specs)} trials is more than one batch may hold (2000)")
     batch_id = f"batch-{uuid.uuid4().hex[:10]}"

@@ -17,6 +17,7 @@ class TrialCreate(BaseModel):
     model: str | None = None
     base_url: str | None = None
     start_paused: bool = Field(False, description="pause before the first primitive")
+    capture: bool = Field(False, description="record training-data frames (agentview + wrist video at 10 fps)")
 
 
 class TrialCreated(BaseModel):

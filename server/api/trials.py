@@ -24,7 +24,7 @@ def create_trial(body: TrialCreate, request: Request) -> TrialCreated:
         raise HTTPException(422, f"unknown task {body.task!r}; builtin tasks: {', '.join(BUILTIN)}")
     trial_id = f"{body.task}-{uuid.uuid4().hex[:10]}"
     spec = TrialSpec(body.task, body.instruction or task.instruction, body.planner, body.resolver, body.seed,
-                     tuple(body.breakpoints), body.model, body.base_url, body.start_paused)
+                     tuple(body.breakpoints), body.model, body.base_url, body.start_paused, body.capture)
     request.app.state.runner.submit(trial_id, spec)
     return TrialCreated(id=trial_id, status="queued")
 

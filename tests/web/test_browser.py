@@ -23,7 +23,9 @@ def server(tmp_path_factory):
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
         port = s.getsockname()[1]
-    app = create_app(Settings(port=port, store_url=f"sqlite:///{tmp_path_factory.mktemp('web') / 'ui.db'}", workers=2))
+    tmp = tmp_path_factory.mktemp("web")
+    app = create_app(Settings(port=port, store_url=f"sqlite:///{tmp / 'ui.db'}", workers=2,
+                              artifacts_dir=str(tmp / "art"), exports_dir=str(tmp / "exports")))
     APPS.append(app)
     srv = uvicorn.Server(uvicorn.Config(app, host="127.0.0.1", port=port, log_level="warning"))
     thread = threading.Thread(target=srv.run, daemon=True)
@@ -137,3 +139,29 @@ def test_batch_from_the_form_shows_progress_and_results(server, page):
         page.click("#batch-results-csv")
     text = Path(dl.value.path()).read_text()
     assert text.startswith("task,done,total,successes") and "lift_block,2,2,2" in text
+
+
+def test_history_selection_exports_a_lerobot_dataset(server, page):
+    import io
+    import json
+    import urllib.request
+    import zipfile
+
+    req = urllib.request.Request(server + "/api/trials", method="POST", headers={"content-type": "application/json"},
+                                 data=json.dumps({"task": "lift_block", "resolver": "privileged", "capture": True}).encode())
+    tid = json.loads(urllib.request.urlopen(req).read())["id"]
+    for _ in range(1200):
+        if json.loads(urllib.request.urlopen(f"{server}/api/trials/{tid}").read())["status"] == "done":
+            break
+        time.sleep(0.1)
+    page.goto(server + "/#/history")
+    page.wait_for_selector(f"#rows .pick[value='{tid}']")
+    page.check(f"#rows .pick[value='{tid}']")
+    page.click("#export-selected")
+    page.wait_for_selector("#export-download", timeout=60_000)
+    assert "1 episode(s)" in page.locator("#export-result").inner_text()
+    shot(page, "6-history-export")
+    with page.expect_download() as dl:
+        page.click("#export-download")
+    z = zipfile.ZipFile(io.BytesIO(Path(dl.value.path()).read_bytes()))
+    assert json.loads(z.read("meta/info.json"))["total_episodes"] == 1

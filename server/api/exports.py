@@ -1,0 +1,50 @@
+"""Exports: selected trials (or a batch's) as a LeRobot v3.0 dataset, zipped for download."""
+
+from __future__ import annotations
+
+import shutil
+import uuid
+from pathlib import Path
+
+from fastapi import APIRouter, HTTPException, Request
+from fastapi.responses import FileResponse
+from pydantic import BaseModel, Field
+
+router = APIRouter(prefix="/api/exports", tags=["exports"])
+
+
+class ExportCreate(BaseModel):
+    trial_ids: list[str] | None = Field(None, max_length=5000, description="these trials (history selection)")
+    batch: str | None = Field(None, max_length=64, description="or every trial of this batch")
+    success_only: bool = Field(True, description="verified successes only (clean demonstrations)")
+    format: str = Field("lerobot", pattern="^lerobot$")
+
+
+@router.post("", status_code=201)
+def create_export(body: ExportCreate, request: Request) -> dict:
+    from spark_core.trace.lerobot import ExportError, ExportFilter, export_lerobot
+
+    if not body.trial_ids and not body.batch:
+        raise HTTPException(422, "say what to export: trial_ids (a selection) or batch")
+    export_id = f"export-{uuid.uuid4().hex[:10]}"
+    root = Path(request.app.state.settings.exports_dir) / export_id
+    flt = ExportFilter(trial_ids=tuple(body.trial_ids or ()), batch=body.batch, success_only=body.success_only)
+    try:
+        report = export_lerobot(request.app.state.store, root / "dataset", flt)
+    except ExportError as e:
+        shutil.rmtree(root, ignore_errors=True)
+        raise HTTPException(422, str(e)) from None
+    shutil.make_archive(str(root / export_id), "zip", root / "dataset")
+    return {"id": export_id, "episodes": report.episodes, "frames": report.frames, "bytes": report.bytes_on_disk,
+            "skipped": report.skipped, "wall_time_s": report.wall_time_s, "path": str(root / "dataset"),
+            "download": f"/api/exports/{export_id}.zip"}
+
+
+@router.get("/{export_id}.zip")
+def download_export(export_id: str, request: Request) -> FileResponse:
+    if not export_id.startswith("export-") or not export_id[7:].isalnum():
+        raise HTTPException(404, f"no export {export_id!r}")
+    path = Path(request.app.state.settings.exports_dir) / export_id / f"{export_id}.zip"
+    if not path.exists():
+        raise HTTPException(404, f"no export {export_id!r}")
+    return FileResponse(path, media_type="application/zip", filename=f"{export_id}-lerobot.zip")
