@@ -17,7 +17,7 @@ from typing import Callable
 from spark_core.execution import StepControl
 from spark_core.trace import TraceStore
 
-from .worker import EOF_MSG, TrialSpec, WorkerProcess
+from .worker import TrialSpec, WorkerProcess
 
 __all__ = ["TrialRunner", "TrialSpec", "RemoteControl", "Live"]
 

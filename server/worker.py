@@ -120,6 +120,14 @@ def child_main(inbox, outbox, store_url: str, artifacts_dir: str, feed_hz: float
             except (BrokenPipeError, OSError):
                 os._exit(0)  # the console is gone: nobody is left to report to
 
+    parent = os.getppid()
+
+    def orphan_watch() -> None:  # belt and braces: a pipe end leaked into another process would hide the EOF
+        while os.getppid() == parent:
+            time.sleep(1.0)
+        os._exit(0)
+
+    threading.Thread(target=orphan_watch, name="orphan-watch", daemon=True).start()
     store = TraceStore(store_url, migrate=False)  # the console migrated it before starting workers
     _warm_up()
     current: dict[str, Any] = {"id": None, "control": None}

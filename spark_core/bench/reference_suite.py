@@ -18,15 +18,15 @@ def protocol(perception: PerceptionConfig, recovery: RecoveryPolicy) -> str:
             f"{perception.describe()}; {rec}; success: the task's predicate over simulator state")
 
 
-def _one(args: tuple[str, int, PerceptionConfig, RecoveryPolicy]) -> dict:
-    task, seed, perception, recovery = args
-    return run_reference_trial(BUILTIN[task], seed, recovery=recovery, perception=perception).row()
+def _one(args: tuple[str, int, PerceptionConfig, RecoveryPolicy, str]) -> dict:
+    task, seed, perception, recovery, embodiment = args
+    return run_reference_trial(BUILTIN[task], seed, recovery=recovery, perception=perception, embodiment=embodiment).row()
 
 
 def run(tasks: Iterable[str], trials: int, seed: int = 0, workers: int = 1,
         progress: Callable[[dict], None] | None = None, perception: PerceptionConfig = PerceptionConfig(),
-        recovery: RecoveryPolicy = RecoveryPolicy()) -> list[dict]:
-    jobs = [(t, seed + k, perception, recovery) for t in tasks for k in range(trials)]
+        recovery: RecoveryPolicy = RecoveryPolicy(), embodiment: str = "panda") -> list[dict]:
+    jobs = [(t, seed + k, perception, recovery, embodiment) for t in tasks for k in range(trials)]
     rows: list[dict] = []
     if workers <= 1:
         for job in jobs:
@@ -68,4 +68,36 @@ def section(rows: list[dict], command: str, perception: PerceptionConfig, recove
     return table(rows) + "\n\n" + footer(command, protocol(perception, recovery) + seeds)
 
 
-__all__ = ["run", "section", "table", "TrialOutcome"]
+def embodiment_section(rows_by_embodiment: dict[str, list[dict]], command: str, perception: PerceptionConfig,
+                       recovery: RecoveryPolicy) -> str:
+    """One row per task, one column per embodiment: the same reference plan text on every robot."""
+    embs = list(rows_by_embodiment)
+    lines = ["| task | " + " | ".join(f"{e} success" for e in embs) + " | failures |",
+             "|---|" + "---|" * len(embs) + "---|"]
+    tasks = list(dict.fromkeys(r["task"] for rows in rows_by_embodiment.values() for r in rows))
+    for task in tasks:
+        cells, fails = [], []
+        for e in embs:
+            rs = [r for r in rows_by_embodiment[e] if r["task"] == task]
+            k = sum(r["success"] for r in rs)
+            cells.append(f"{pct(k / len(rs))} ({k}/{len(rs)})" if rs else "-")
+            for r in rs:
+                if not r["success"]:
+                    fails.append(f"{e}: {r['failure'] or 'predicate false'}")
+        counts = {f: fails.count(f) for f in dict.fromkeys(fails)}
+        lines.append(f"| {task} | " + " | ".join(cells) + f" | {', '.join(f'{v}× {k}' for k, v in counts.items()) or '-'} |")
+    totals = []
+    for e in embs:
+        rs = rows_by_embodiment[e]
+        k = sum(r["success"] for r in rs)
+        lo, hi = wilson(k, len(rs))
+        totals.append(f"**{pct(k / len(rs))}** ({pct(lo)} – {pct(hi)})")
+    lines.append("| all tasks | " + " | ".join(totals) + " | |")
+    n = max(len(r) for r in rows_by_embodiment.values()) // max(len(tasks), 1)
+    return "\n".join(lines) + "\n\n" + footer(
+        command, protocol(perception, recovery) + f"; {n} seeds per task per embodiment; the same reference plan "
+                 f"text on every embodiment (single-arm plans run on the 'right' arm); embodiments: "
+                 + ", ".join(embs))
+
+
+__all__ = ["run", "section", "table", "embodiment_section", "TrialOutcome"]

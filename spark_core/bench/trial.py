@@ -73,7 +73,7 @@ def make_resolver(world, config: PerceptionConfig, seed: int):
 def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
                         recovery: RecoveryPolicy = RecoveryPolicy(),
                         perception: PerceptionConfig = PerceptionConfig(), store=None, capture=None,
-                        artifacts_dir: str | Path = "var/artifacts") -> TrialOutcome:
+                        artifacts_dir: str | Path = "var/artifacts", embodiment: str = "panda") -> TrialOutcome:
     """The task's hand-written reference plan (or `plan`) with the configured resolver. With a TraceStore,
     the trial (events, groundings, trajectory at the control rate) is recorded under its trial id; with a
     `CaptureConfig` too, training-data frames and videos are written under `artifacts_dir/<trial id>/`."""
@@ -81,7 +81,7 @@ def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
 
     t0 = time.perf_counter()
     trial_id = f"{task.name}-{seed}-{int(time.time() * 1000)}"
-    world = task.make_world(seed)
+    world = task.make_world(seed, embodiment)
     bus = EventBus(f"{task.name}-{seed}")
     episode, artifacts = None, []
     if store is not None:
@@ -108,7 +108,7 @@ def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
             artifacts = capture_entries(episode, Path(artifacts_dir) / trial_id)
     finally:
         world.close()
-    protocol = {"planner": "reference plan (hand-written)", "resolver": perception.describe(),
+    protocol = {"planner": "reference plan (hand-written)", "resolver": perception.describe(), "embodiment": embodiment,
                 "recovery": "off" if recovery.max_retries == 0 else f"tiers 1-2, {recovery.max_retries} retries"}
     if store is not None:
         from ..trace.record import record_trial

@@ -16,7 +16,7 @@ class ArmKinematics:
     """
 
     def __init__(self, robot: RobotDescription, T_world_base: np.ndarray | None = None):
-        full = pin.buildModelFromUrdf(str(robot.urdf_path))
+        full = pin.buildModelFromXML(robot.urdf_text())
         lock = [full.getJointId(j) for j in robot.gripper.finger_joints]
         self.model = pin.buildReducedModel(full, lock, pin.neutral(full))
         self.data = self.model.createData()
@@ -27,6 +27,9 @@ class ArmKinematics:
         self._base = pin.SE3(T[:3, :3], T[:3, 3])
         self.lower = self.model.lowerPositionLimit.copy()
         self.upper = self.model.upperPositionLimit.copy()
+        if robot.ik_limits_rad is not None:
+            lo, hi = np.array(robot.ik_limits_rad, float).T
+            self.lower, self.upper = np.maximum(self.lower, lo), np.minimum(self.upper, hi)
         assert self.model.nq == len(robot.arm_joints), "reduced model must contain exactly the arm joints"
 
     @property

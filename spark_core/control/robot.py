@@ -44,9 +44,15 @@ class RobotDescription:
     armature: float = 0.1
     reach_m: float = 0.85
     collision_links: tuple[str, ...] = field(default_factory=tuple)  # links that collide with the scene
+    extra_urdf: str = ""  # links and joints appended to the URDF (e.g. a gripper built for this arm)
+    # Narrower joint ranges for IK (rad), per arm joint, or None for the URDF's: keeps solutions in one arm
+    # configuration (e.g. the UR10's elbow up, shoulder above the base plane) so moves never flip the arm.
+    ik_limits_rad: tuple[tuple[float, float], ...] | None = None
 
     def urdf_text(self) -> str:
-        """The URDF with visual meshes stripped (MuJoCo cannot read .dae) and package paths made absolute."""
+        """The URDF with visual meshes stripped (MuJoCo cannot read .dae), package paths made absolute and
+        `extra_urdf` appended: the one text both MuJoCo and pinocchio load."""
         text = self.urdf_path.read_text()
         text = re.sub(r"<visual>.*?</visual>", "", text, flags=re.S)
-        return text.replace(self.package_prefix, str(self.urdf_path.parent.parent) + "/")
+        text = text.replace(self.package_prefix, str(self.urdf_path.parent.parent) + "/")
+        return text.replace("</robot>", self.extra_urdf + "</robot>") if self.extra_urdf else text

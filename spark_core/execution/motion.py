@@ -30,14 +30,22 @@ class ArmMotion:
     def ik(self, pose: Pose, seed: np.ndarray | None = None, what: str = "target") -> np.ndarray:
         return solve_ik(self.kin, pose, self.world.q(self.arm) if seed is None else seed, rng=self.rng, what=what).q
 
-    def move_to(self, pose: Pose | list[Pose], what: str = "target", settle_s: float = 0.05) -> ActionOutcome:
-        """Joint-space move through one or more TCP poses (one smooth chained trajectory)."""
+    def move_to(self, pose: Pose | list[Pose], what: str = "target", settle_s: float = 0.05,
+                reconfigure_via: np.ndarray | None = None) -> ActionOutcome:
+        """Joint-space move through one or more TCP poses (one smooth chained trajectory).
+
+        `reconfigure_via` (m, world frame): when reaching the first pose needs a large joint change (> 1.5 rad on
+        some joint: a wrist flip, an elbow swing), pass through that pose offset by this vector first, so the
+        reconfiguration happens in free space rather than next to the target."""
         poses = pose if isinstance(pose, list) else [pose]
         q = self.world.q(self.arm)
         waypoints = [q]
         try:
             for p in poses:
                 waypoints.append(self.ik(p, waypoints[-1], what))
+            if reconfigure_via is not None and np.max(np.abs(waypoints[1] - q)) > 1.5:
+                via = self.ik(Pose(poses[0].position_m + reconfigure_via, poses[0].rotation), q, what)
+                waypoints = [q, via, self.ik(poses[0], via, what)] + waypoints[2:]
         except Unreachable as e:
             return ActionOutcome.fail(str(e), FailureKind.KINEMATIC_LIMIT)
         res = self.world.execute(self.arm, chain_joint_waypoints(waypoints, self.limits), settle_s=settle_s)

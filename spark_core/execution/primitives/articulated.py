@@ -17,7 +17,10 @@ def _grasp_handle(ctx: Ctx, label_slot: str = "keypoint_label") -> ActionOutcome
     at = kp.position_m.copy()
     at[0] -= kp.extent_m[0] / 2 - 0.01  # finger pads 1 cm behind the handle's front face, around the grip
     open_gripper(ctx)
-    out = ctx.motion.move_to(Pose(at - [0.06, 0, 0], SIDE_ROTATION), what=f"approach to {kp.label!r}")
+    # A big wrist reorientation (e.g. the UR10 turning from top-down to sideways) happens above and in front of
+    # the handle, in free space, then the hand descends to the approach point.
+    out = ctx.motion.move_to(Pose(at - [0.06, 0, 0], SIDE_ROTATION), what=f"approach to {kp.label!r}",
+                             reconfigure_via=np.array([-0.08, 0.0, 0.15]))
     if not out.ok:
         return out
     out = ctx.motion.move_line(Pose(at, SIDE_ROTATION), speed_m_s=0.15, what=f"{kp.label!r}",
@@ -33,7 +36,8 @@ def _pull_held(ctx: Ctx, distance: float, what: str) -> ActionOutcome:
     travelled = float(start[0] - ctx.tcp.position_m[0])
     held = ctx.holding()
     open_gripper(ctx)
-    ctx.motion.move_line(Pose(ctx.tcp.position_m - [0.06, 0, 0], SIDE_ROTATION), check=False)
+    # back and up, clear of the drawer: the next (often joint-space) move must not sweep the hand through it
+    ctx.motion.move_line(Pose(ctx.tcp.position_m + [-0.06, 0, 0.08], SIDE_ROTATION), speed_m_s=0.4, check=False)
     if not held:
         return ctx.fail(f"the {what} slipped out of the gripper while pulling")
     if travelled < 0.8 * distance:
@@ -72,10 +76,10 @@ def close_drawer(ctx: Ctx) -> ActionOutcome:
 
 def _rotate_held(ctx: Ctx, angle_rad: float) -> ActionOutcome:
     tcp = ctx.tcp
-    start_yaw = ctx.world.q(ctx.arm)[-1]
     out = ctx.motion.move_line(Pose(tcp.position_m, rot_z(angle_rad) @ tcp.rotation), speed_m_s=0.05, what="rotated grip",
                                check=False)
-    turned = abs(ctx.world.q(ctx.arm)[-1] - start_yaw)
+    rel = tcp.rotation.T @ ctx.tcp.rotation  # measured on the TCP, not on a joint: any wrist layout
+    turned = abs(float(np.arctan2(rel[1, 0], rel[0, 0])))
     if not ctx.holding():
         return ctx.fail("lost the grip while turning")
     if turned < 0.5 * abs(angle_rad):

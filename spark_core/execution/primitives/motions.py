@@ -59,7 +59,14 @@ def lift(ctx: Ctx) -> ActionOutcome:
 
 @primitive("go_home")
 def go_home(ctx: Ctx) -> ActionOutcome:
-    return ctx.motion.move_joints(ctx.world.kinematics[ctx.arm].robot.home_q_rad, what="home configuration")
+    """Rise straight up to the home height first (never sweep low through what was just opened or placed),
+    then move in joint space to the home configuration."""
+    kin = ctx.world.kinematics[ctx.arm]
+    home_z = float(kin.fk(kin.robot.home_q_rad).position_m[2])
+    tcp = ctx.tcp
+    if tcp.position_m[2] < home_z - 0.05:
+        ctx.motion.move_line(tcp.translated([0, 0, min(0.15, home_z - tcp.position_m[2])]), check=False)
+    return ctx.motion.move_joints(kin.robot.home_q_rad, what="home configuration")
 
 
 @primitive("wait")

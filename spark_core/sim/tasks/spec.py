@@ -8,7 +8,7 @@ from typing import Callable
 
 import numpy as np
 
-from ...control.panda import panda
+from ..embodiments import robots_for
 from ..scene import ObjectRequest, build_scene
 from ..world import MujocoWorld
 
@@ -33,8 +33,8 @@ class TaskSpec:
     def reference_plan_text(self) -> str:
         return resources.files(__package__).joinpath("reference", f"{self.name}.yaml").read_text(encoding="utf-8")
 
-    def make_world(self, seed: int) -> MujocoWorld:
-        scene = build_scene({"right": (panda(), np.eye(4))}, list(self.objects), seed)
+    def make_world(self, seed: int, embodiment: str = "panda") -> MujocoWorld:
+        scene = build_scene(robots_for(embodiment), list(self.objects), seed)
         world = MujocoWorld(scene)
         if self.setup is not None:
             self.setup(world, np.random.default_rng(seed + 10_000))

@@ -1,0 +1,152 @@
+"""`spark bench SUITE`: benchmarks, optionally written into their section of BENCHMARKS.md."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+
+def register(sub) -> None:
+    b = sub.add_parser("bench", help="run a benchmark and optionally write its section of BENCHMARKS.md")
+    b.add_argument("suite", choices=["builtin", "embodiments", "grounding", "paraphrases", "ik", "speed", "api", "latency",
+                                     "viser", "export"])
+    b.add_argument("--embodiment", default="panda", help="robot set-up for the builtin suite (panda, ur10, bimanual)")
+    b.add_argument("--embodiments", nargs="+", default=["panda", "ur10", "bimanual"],
+                   help="robot set-ups compared by the embodiments suite")
+    b.add_argument("--trials", type=int, default=20, help="trials (seeds) per task")
+    b.add_argument("--tasks", nargs="*", help="subset of task names")
+    b.add_argument("--seed", type=int, default=0, help="first seed")
+    b.add_argument("--planner", default="reference", help="reference (hand-written plans)")
+    b.add_argument("--resolver", default="privileged", choices=["privileged", "sim", "sim-noisy"],
+                   help="privileged (simulator state) or a segmenter pipeline (cameras + masks + depth)")
+    b.add_argument("--no-adaptive", action="store_true", help="one prompt per label (no adaptive self-consistency)")
+    b.add_argument("--no-recovery", action="store_true", help="no retries (recovery tiers off)")
+    b.add_argument("--miss-rate", type=float, default=0.2, help="sim-noisy detector miss rate")
+    b.add_argument("--cameras", nargs="+", default=["agentview", "side"], help="cameras the resolver fuses")
+    b.add_argument("--title", help="BENCHMARKS.md section title (default derived from the resolver)")
+    b.add_argument("--workers", type=int, default=1, help="local worker processes")
+    b.add_argument("--targets", type=int, default=200, help="IK targets (ik suite)")
+    b.add_argument("--store-size", type=int, default=10_000, help="trials in the trace store (api suite)")
+    b.add_argument("--write", metavar="BENCHMARKS.md", help="replace this benchmark's section in the file")
+    b.add_argument("--json", metavar="FILE", help="also write per-trial rows as JSON")
+    b.set_defaults(func=_cmd_bench)
+
+
+def _simple_benches(args: argparse.Namespace) -> dict:
+    """suite -> (BENCHMARKS.md title, run(), section(result, command)); imports stay lazy."""
+    from ..bench import control_bench
+
+    def server_bench(module: str):
+        import importlib
+
+        return importlib.import_module(f"server.{module}")
+
+    return {
+        "ik": ("IK (Panda, pinocchio)", lambda: control_bench.ik_benchmark(args.targets), control_bench.ik_section),
+        "speed": ("simulation speed", control_bench.speed_benchmark, control_bench.speed_section),
+        "api": ("console API latency", lambda: server_bench("bench_api").run(args.store_size),
+                lambda r, c: server_bench("bench_api").section(r, c)),
+        "latency": ("console event latency (executor to browser)", lambda: server_bench("bench_latency").run(),
+                    lambda r, c: server_bench("bench_latency").section(r, c)),
+        "viser": ("live 3D view frame rate", lambda: server_bench("bench_viser").run(),
+                  lambda r, c: server_bench("bench_viser").section(r, c)),
+        "export": ("training-data export (LeRobot)", lambda: _export_bench(args), _export_section),
+    }
+
+
+def _export_bench(args: argparse.Namespace) -> dict:
+    from ..bench import export_bench
+
+    def progress(row: dict) -> None:
+        print(f"{'ok  ' if row['success'] else 'FAIL'} {row['task']} seed {row['seed']} ({row['wall_time_s']:.1f} s)", flush=True)
+
+    r = export_bench.run(args.trials, args.workers, progress)
+    return {k: v for k, v in r.items()}
+
+
+def _export_section(r: dict, command: str) -> str:
+    from ..bench import export_bench
+
+    return export_bench.section(r, command)
+
+
+def _cmd_bench(args: argparse.Namespace) -> int:
+    from ..bench import reference_suite
+    from ..bench.report import write_section
+
+    command = "spark bench " + " ".join(sys.argv[2:]) if sys.argv[1:2] == ["bench"] else "spark bench " + args.suite
+    simple = _simple_benches(args)  # suites whose result is one dict: print it, then its section
+    if args.suite in simple:
+        title, run, section = simple[args.suite]
+        r = run()
+        print(json.dumps(r, indent=2))
+        body = section(r, command)
+    elif args.suite == "paraphrases":
+        from ..bench import paraphrases
+
+        rows, errors = paraphrases.run(args.seed)
+        for r in rows:
+            print(f"{'ok ' if r['success'] else 'FAIL'} {r['task']:<16} {r['instruction']!r} {'' if r['success'] else r['outcome']}")
+        for e in errors:
+            print(f"{'refused' if e['refused'] else 'PLANNED'} {e['instruction']!r}: {e['error']}")
+        title, body = "rules planner on paraphrased instructions", paraphrases.section(rows, errors, command)
+        print(body)
+    elif args.suite == "grounding":
+        from ..bench import grounding
+
+        rows = grounding.run()
+        for r in rows:
+            err = f"{100 * r['keypoint_error_m']:.2f} cm" if r["keypoint_error_m"] is not None else "-"
+            print(f"{'ok ' if r['correct'] else 'MISS'} {r['scene']:<22} {r['prompt']!r:<36} -> {r['got']} ({err})")
+        title, body = "perception grounding (sim segmenter)", grounding.section(rows, command)
+        print(body)
+    else:
+        from ..sim.tasks import BUILTIN
+
+        from ..bench.trial import PerceptionConfig
+        from ..execution import RecoveryPolicy
+        from ..perception.noisy_segmenter import NoiseModel
+
+        if args.planner != "reference":
+            print("only --planner reference is available until the planning backends land", file=sys.stderr)
+            return 2
+        perception = PerceptionConfig(args.resolver, not args.no_adaptive, NoiseModel(miss_rate=args.miss_rate),
+                                      tuple(args.cameras))
+        recovery = RecoveryPolicy(max_retries=0) if args.no_recovery else RecoveryPolicy()
+        tasks = args.tasks or list(BUILTIN)
+        unknown = [t for t in tasks if t not in BUILTIN]
+        if unknown:
+            print(f"unknown task(s): {', '.join(unknown)}; builtin tasks: {', '.join(BUILTIN)}", file=sys.stderr)
+            return 2
+        total = len(tasks) * args.trials
+        done = [0]
+
+        def progress(row: dict) -> None:
+            done[0] += 1
+            mark = "ok " if row["success"] else "FAIL"
+            print(f"[{done[0]:>4}/{total}] {mark} {row['task']} seed {row['seed']} "
+                  f"({row['sim_time_s']:.1f} s sim, {row['wall_time_s']:.2f} s wall) {row['reason'][:100]}", flush=True)
+
+        if args.suite == "embodiments":
+            total *= len(args.embodiments)
+            by_emb = {e: reference_suite.run(tasks, args.trials, args.seed, args.workers, progress, perception, recovery, e)
+                      for e in args.embodiments}
+            title = args.title or f"builtin reference plans on every embodiment ({args.resolver} resolver)"
+            body = reference_suite.embodiment_section(by_emb, command, perception, recovery)
+            print(body)
+            rows = [dict(r, embodiment=e) for e, rs in by_emb.items() for r in rs]
+        else:
+            rows = reference_suite.run(tasks, args.trials, args.seed, args.workers, progress, perception, recovery,
+                                       args.embodiment)
+            print(reference_suite.table(rows))
+            suffix = "" if args.embodiment == "panda" else f", {args.embodiment}"
+            title = args.title or f"builtin reference plans ({args.resolver} resolver{suffix})"
+            body = reference_suite.section(rows, command, perception, recovery)
+        if args.json:
+            Path(args.json).write_text(json.dumps(rows, indent=1))
+    if args.write:
+        write_section(Path(args.write), title, body)
+        print(f"wrote section {title!r} of {args.write}")
+    return 0
