@@ -13,6 +13,7 @@ from .protocols import ActionOutcome, FailureKind
 from .world import World
 
 POSITION_TOL_M = 0.01
+ARM_CLEARANCE_M = 0.15  # closest a planned TCP path may come to another arm's hand (now or where it is heading)
 
 
 class ArmMotion:
@@ -26,6 +27,32 @@ class ArmMotion:
         self.limits = Limits(np.array(desc.max_velocity_rad_s), np.full(len(desc.arm_joints), desc.max_acceleration_rad_s2),
                              np.full(len(desc.arm_joints), desc.max_jerk_rad_s3)).scaled(speed)
         self.rng = rng or np.random.default_rng(0)
+        self.clearance_m = ARM_CLEARANCE_M  # cooperative primitives (handoff, two-handed lift) lower it
+
+    def workspace_conflict(self, tcp_path_m: np.ndarray) -> str | None:
+        """Shared-workspace check for multi-arm cells: why the TCP path (N x 3, world, m) would bring this hand
+        within `clearance_m` of another arm's hand, counting where that arm is and where it is moving to."""
+        others = [a for a in getattr(self.world, "arms", ()) if a != self.arm]
+        for other in others:
+            a = self.world.tcp_pose(other).position_m
+            target = getattr(self.world, "target_tcp", {}).get(other)
+            b = a if target is None else target.position_m
+            ab = b - a
+            t = np.clip(((tcp_path_m - a) @ ab) / max(float(ab @ ab), 1e-12), 0.0, 1.0)
+            d = np.linalg.norm(tcp_path_m - (a + t[:, None] * ab), axis=1)
+            k = int(np.argmin(d))
+            if d[k] < self.clearance_m:
+                return (f"the {self.arm} arm's path would pass {100 * d[k]:.0f} cm from the {other} arm's hand "
+                        f"(keeps {100 * self.clearance_m:.0f} cm): refused before moving")
+        return None
+
+    def _guard(self, q_path: np.ndarray) -> ActionOutcome | None:
+        if len(getattr(self.world, "arms", ())) < 2:
+            return None
+        step = max(len(q_path) // 40, 1)
+        tcp = np.array([self.kin.fk(q).position_m for q in q_path[::step]] + [self.kin.fk(q_path[-1]).position_m])
+        why = self.workspace_conflict(tcp)
+        return ActionOutcome.fail(why, FailureKind.COLLISION) if why else None
 
     def ik(self, pose: Pose, seed: np.ndarray | None = None, what: str = "target") -> np.ndarray:
         return solve_ik(self.kin, pose, self.world.q(self.arm) if seed is None else seed, rng=self.rng, what=what).q
@@ -48,11 +75,19 @@ class ArmMotion:
                 waypoints = [q, via, self.ik(poses[0], via, what)] + waypoints[2:]
         except Unreachable as e:
             return ActionOutcome.fail(str(e), FailureKind.KINEMATIC_LIMIT)
-        res = self.world.execute(self.arm, chain_joint_waypoints(waypoints, self.limits), settle_s=settle_s)
+        traj = chain_joint_waypoints(waypoints, self.limits)
+        refused = self._guard(np.asarray(traj.q_rad))
+        if refused:
+            return refused
+        res = self.world.execute(self.arm, traj, settle_s=settle_s)
         return self._check(poses[-1], res.sim_time_s, what)
 
     def move_joints(self, q_target: np.ndarray, what: str = "joint target") -> ActionOutcome:
-        res = self.world.execute(self.arm, chain_joint_waypoints([self.world.q(self.arm), q_target], self.limits))
+        traj = chain_joint_waypoints([self.world.q(self.arm), q_target], self.limits)
+        refused = self._guard(np.asarray(traj.q_rad))
+        if refused:
+            return refused
+        res = self.world.execute(self.arm, traj)
         err = float(np.max(np.abs(self.world.q(self.arm) - q_target)))
         if err > 0.05:
             return ActionOutcome.fail(f"joints {err:.3f} rad from the {what}", FailureKind.CONTROL, res.sim_time_s)
@@ -91,6 +126,9 @@ class ArmMotion:
         except Unreachable as e:
             return ActionOutcome.fail(str(e), FailureKind.KINEMATIC_LIMIT)
         duration = max(dist / speed_m_s, ang / 1.0, 0.2)
+        refused = self._guard(path)
+        if refused:
+            return refused
         res = self.world.execute(self.arm, line_trajectory(path, duration), stop=stop)
         if not res.completed or not check:
             return ActionOutcome.success(res.sim_time_s, stopped_early=not res.completed)

@@ -17,6 +17,7 @@ class FailureKind(str, enum.Enum):
     PERCEPTION = "perception"
     CONTROL = "control"
     KINEMATIC_LIMIT = "kinematic_limit"
+    COLLISION = "collision"  # the motion would bring two arms together (refused before moving)
     TIMEOUT = "timeout"
 
 

@@ -160,6 +160,26 @@ def brush(color: str) -> ObjectSpec:
                       grasp_width_m=0.024)
 
 
+def bar(color: str) -> ObjectSpec:
+    """A long bar (26 cm): long enough for two hands to hold it at once (hand-overs)."""
+    def build(body, rgba):
+        _geom(body, BOX, [0.13, 0.0125, 0.016], (0, 0, 0.016), rgba, mass=0.12)
+    return ObjectSpec("bar", "tool", f"long {color} wooden bar, a straight rectangular stick", 0.14, 0.032, True, build,
+                      grasp_width_m=0.025)
+
+
+def carry_tray(color: str) -> ObjectSpec:
+    """A 34 cm tray with an upright handle at each end (along its x axis), to be lifted with two hands."""
+    def build(body, rgba):
+        _geom(body, BOX, [0.15, 0.08, 0.004], (0, 0, 0.004), rgba, mass=0.25)
+        for sy in (-1, 1):  # low rims along the long sides
+            _geom(body, BOX, [0.15, 0.004, 0.012], (0, sy * 0.076, 0.016), rgba, mass=0.03)
+        for sx in (-1, 1):  # the handles: posts the fingers close across (2.4 cm)
+            _geom(body, BOX, [0.012, 0.03, 0.03], (sx * 0.162, 0, 0.03), rgba, mass=0.04)
+    return ObjectSpec("carry_tray", "container", f"long {color} serving tray with a handle at each end", 0.19, 0.06,
+                      True, build, grasp_width_m=0.024)
+
+
 def target_zone(color: str) -> ObjectSpec:
     def build(body, rgba):
         g = _geom(body, BOX, [0.07, 0.07, 0.0005], (0, 0, 0.0005), [rgba[0], rgba[1], rgba[2], 0.5])
@@ -222,5 +242,5 @@ def ball(color: str, radius: float = 0.007) -> ObjectSpec:
 KINDS: dict[str, Callable[[str], ObjectSpec]] = {
     "block": block, "bowl": bowl, "plate": plate, "mug": mug, "tray": tray, "basket": basket, "sponge": sponge,
     "bottle": bottle, "peg": peg, "nut": nut, "brush": brush, "zone": target_zone, "cabinet": cabinet, "stove": stove,
-    "ball": ball,
+    "ball": ball, "bar": bar, "carry_tray": carry_tray,
 }

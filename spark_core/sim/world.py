@@ -107,9 +107,10 @@ class MujocoWorld:
         """Touch sensing: for each finger body id, the non-robot body ids it touches."""
         out: dict[int, set[int]] = {b: set() for b in self._finger_bodies[arm]}
         m, d = self.model, self.data
-        for i in range(d.ncon):
-            c = d.contact[i]
-            b1, b2 = m.geom_bodyid[c.geom1], m.geom_bodyid[c.geom2]
+        with self._lock:  # another arm's thread may be stepping: read one consistent contact list
+            contacts = [(d.contact[i].geom1, d.contact[i].geom2) for i in range(d.ncon)]
+        for g1, g2 in contacts:
+            b1, b2 = m.geom_bodyid[g1], m.geom_bodyid[g2]
             for f, o in ((b1, b2), (b2, b1)):
                 if f in out and o not in self._robot_bodies:
                     out[f].add(int(o))
@@ -128,14 +129,15 @@ class MujocoWorld:
         inside = self._hand_bodies[arm] | held
         total = 0.0
         f6 = np.zeros(6)
-        for i in range(d.ncon):
-            c = d.contact[i]
-            b1, b2 = m.geom_bodyid[c.geom1], m.geom_bodyid[c.geom2]
-            for a, b in ((b1, b2), (b2, b1)):
-                if a in inside and b not in inside and b not in self._robot_bodies:
-                    mujoco.mj_contactForce(m, d, i, f6)
-                    total += abs(f6[0])
-                    break
+        with self._lock:  # a consistent contact list while another arm's thread steps
+            for i in range(d.ncon):
+                c = d.contact[i]
+                b1, b2 = m.geom_bodyid[c.geom1], m.geom_bodyid[c.geom2]
+                for a, b in ((b1, b2), (b2, b1)):
+                    if a in inside and b not in inside and b not in self._robot_bodies:
+                        mujoco.mj_contactForce(m, d, i, f6)
+                        total += abs(f6[0])
+                        break
         return total
 
     # -- actuation ---------------------------------------------------------------------------------------------

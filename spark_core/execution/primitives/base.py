@@ -47,6 +47,14 @@ class Ctx:
     memory: ArmMemory
     resolver: Resolver | None = None
     rng: np.random.Generator = field(default_factory=lambda: np.random.default_rng(0))
+    peers: Mapping[str, tuple[ArmMotion, ArmMemory]] = field(default_factory=dict)  # every arm, for two-arm skills
+
+    def for_arm(self, arm: str) -> "Ctx":
+        """The same call seen from another arm (handoff, two-handed lift)."""
+        if arm not in self.peers:
+            raise KeyError(f"no arm {arm!r} on this embodiment (arms: {', '.join(self.peers) or self.arm})")
+        motion, memory = self.peers[arm]
+        return Ctx(self.world, arm, motion, self.args, self.keypoints, memory, self.resolver, self.rng, self.peers)
 
     # -- perception ---------------------------------------------------------------------------------------------
     def kp(self, slot: str) -> Keypoint:

@@ -11,7 +11,7 @@ from ...perception import Keypoint
 from ..motion import ArmMotion
 from ..protocols import ActionOutcome, FailureKind, Resolver
 from ..world import World
-from . import articulated, contact, gripper, motions, pick_place, pouring  # noqa: F401 - register implementations
+from . import articulated, bimanual, contact, gripper, motions, pick_place, pouring  # noqa: F401 - register implementations
 from .base import IMPLEMENTATIONS, ArmMemory, Ctx
 
 
@@ -38,7 +38,10 @@ class PrimitiveLibrary:
         if impl is None:
             return ActionOutcome.fail(f"{call.primitive} is not implemented on this embodiment", FailureKind.PLANNER)
         t0 = self.world.sim_time_s
-        ctx = Ctx(self.world, arm, self.motion[arm], dict(call.args), keypoints, self.memory[arm], self.resolver, self.rng)
+        peers = {a: (self.motion[a], self.memory[a]) for a in self.arms}
+        own = arm if arm in self.motion else self.arms[0]  # "both" (two-arm skills): they address arms via peers
+        ctx = Ctx(self.world, own, self.motion[own], dict(call.args), keypoints, self.memory[own], self.resolver, self.rng,
+                  peers)
         outcome = impl(ctx)
         outcome.sim_time_s = self.world.sim_time_s - t0
         return outcome

@@ -17,7 +17,7 @@ def _pos(w: MujocoWorld, body: str) -> np.ndarray:
 
 
 def _released(w: MujocoWorld, body: str) -> bool:
-    return w.body_id(body) not in w.pinched_bodies(w.arms[0])
+    return not any(w.body_id(body) in w.pinched_bodies(a) for a in w.arms)
 
 
 def on_top(w: MujocoWorld, obj: str, support: str, xy_tol: float) -> bool:

@@ -29,11 +29,16 @@ class TaskSpec:
     setup: Callable[[MujocoWorld, np.random.Generator], None] | None = None
     max_sim_s: float = 60.0
     tags: tuple[str, ...] = field(default_factory=tuple)
+    embodiments: tuple[str, ...] = ("panda", "ur10", "bimanual")  # where the task fits; the first is the default
 
     def reference_plan_text(self) -> str:
         return resources.files(__package__).joinpath("reference", f"{self.name}.yaml").read_text(encoding="utf-8")
 
-    def make_world(self, seed: int, embodiment: str = "panda") -> MujocoWorld:
+    def make_world(self, seed: int, embodiment: str | None = None) -> MujocoWorld:
+        embodiment = embodiment or self.embodiments[0]
+        if embodiment not in self.embodiments:
+            raise ValueError(f"task {self.name!r} needs one of the embodiments {', '.join(self.embodiments)}, "
+                             f"not {embodiment!r}")
         scene = build_scene(robots_for(embodiment), list(self.objects), seed)
         world = MujocoWorld(scene)
         if self.setup is not None:

@@ -1,0 +1,156 @@
+"""Two-arm skills: hand an object from one arm to the other, and lift one object with both arms.
+
+Both are cooperative: the hands are meant to come close, so the shared-workspace clearance is lowered for
+their duration. Simultaneous motions run on two threads (the world interleaves the arms' control steps)."""
+
+from __future__ import annotations
+
+import threading
+from contextlib import contextmanager
+from dataclasses import replace
+
+import numpy as np
+
+from ...control.pose import wrap_grasp_yaw
+from ...perception import Keypoint
+from ..protocols import ActionOutcome, FailureKind
+from .base import Ctx, primitive
+from .gripper import grasp, open_gripper
+from .pick_place import grasp_object, pick_and_lift
+
+HANDOFF_HEIGHT_M = 0.25  # where the arms meet (TCP height above the table)
+HANDOFF_GAP_M = 0.09  # TCP to TCP along the object at the meeting point: two hands side by side on one object
+COOPERATIVE_CLEARANCE_M = 0.05
+
+
+@contextmanager
+def cooperative(*ctxs: Ctx):
+    saved = [c.motion.clearance_m for c in ctxs]
+    for c in ctxs:
+        c.motion.clearance_m = COOPERATIVE_CLEARANCE_M
+    try:
+        yield
+    finally:
+        for c, s in zip(ctxs, saved):
+            c.motion.clearance_m = s
+
+
+def both(*steps) -> list[ActionOutcome]:
+    """Run one step per arm at the same time; every step's outcome, in order."""
+    out: list[ActionOutcome | None] = [None] * len(steps)
+
+    def run(i, fn):
+        try:
+            out[i] = fn()
+        except Exception as e:  # noqa: BLE001 - an arm's exception becomes that arm's failure
+            out[i] = ActionOutcome.fail(f"{type(e).__name__}: {e}", FailureKind.CONTROL)
+
+    threads = [threading.Thread(target=run, args=(i, fn), daemon=True) for i, fn in enumerate(steps)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    return out  # type: ignore[return-value]
+
+
+def _holds(ctx: Ctx, label: str) -> bool:
+    return ctx.holding() and ctx.memory.held_label == label
+
+
+@primitive("handoff")
+def handoff(ctx: Ctx) -> ActionOutcome:
+    """The giver holds the object (it picks it first if needed) and brings it between the arms; the receiver
+    grasps it beside the giver's hand; only once the receiver holds it does the giver let go."""
+    a = ctx.args
+    label, giver, receiver = a["keypoint_label"], ctx.for_arm(a["from_arm"]), ctx.for_arm(a["to_arm"])
+    if giver.arm == receiver.arm:
+        return ctx.fail(f"handoff from the {giver.arm} arm to itself", FailureKind.PLANNER)
+    if not _holds(giver, label):
+        out = pick_and_lift(giver, giver.kp("keypoint_label"), 0.1)
+        if not out.ok:
+            return out
+    base = {arm: ctx.world.kinematics[arm].T_world_base[:3, 3] for arm in (giver.arm, receiver.arm)}
+    toward = base[receiver.arm] - base[giver.arm]
+    toward[2] = 0.0
+    toward /= max(np.linalg.norm(toward), 1e-9)
+    mid = (base[giver.arm] + base[receiver.arm]) / 2
+    meet = np.array([mid[0] + 0.5, mid[1], HANDOFF_HEIGHT_M])
+    yaw = wrap_grasp_yaw(float(np.arctan2(toward[1], toward[0])))  # the object's long axis points at the receiver
+    with cooperative(giver, receiver):
+        open_gripper(receiver)
+        out = giver.motion.move_to(giver.top_down(meet - toward * HANDOFF_GAP_M / 2, yaw), what="hand-over point")
+        if not out.ok:
+            return out
+        if not _holds(giver, label):
+            return giver.fail(f"the {giver.arm} arm lost the {label!r} on the way to the hand-over point")
+        grip = meet + toward * HANDOFF_GAP_M / 2
+        out = receiver.motion.move_to(receiver.top_down(grip + [0, 0, 0.10], yaw), what="above the hand-over grip")
+        if out.ok:
+            out = receiver.motion.move_line(receiver.top_down(grip, yaw), speed_m_s=0.15, what="hand-over grip")
+        if not out.ok:
+            return out
+        receiver.args = {**receiver.args, "force": 40.0, "target_width": None}
+        out = grasp(receiver)
+        if not out.ok:  # the giver still holds it: nothing dropped
+            open_gripper(receiver)
+            return receiver.fail(f"the {receiver.arm} arm could not take the {label!r}: {out.reason}")
+        receiver.memory.held_label = label
+        receiver.memory.held_extent_m = giver.memory.held_extent_m
+        receiver.memory.grasp_offset_z_m = giver.memory.grasp_offset_z_m
+        open_gripper(giver)
+        giver.memory.held_label = None
+        giver.motion.move_line(giver.tcp.translated([0, 0, 0.08]), check=False)
+    if not receiver.holding():
+        return receiver.fail(f"the {label!r} slipped from the {receiver.arm} arm when the {giver.arm} arm let go")
+    if giver.world.pinched_bodies(giver.arm):
+        return giver.fail(f"the {giver.arm} arm still pinches something after opening")
+    return ActionOutcome.success(0.0, receiver=receiver.arm)
+
+
+def _handles(kp: Keypoint) -> list[Keypoint]:
+    """The two ends of the object's long axis (its handles), as small keypoints whose short side runs along it."""
+    yaw = kp.yaw_rad or 0.0
+    # extents are world-axis-aligned: the object's own x axis is its long one if it lies along the longer side
+    body_x_long = (kp.extent_m[0] >= kp.extent_m[1]) == (abs(np.cos(yaw)) >= abs(np.sin(yaw)))
+    axis_yaw = yaw if body_x_long else yaw + np.pi / 2
+    half = max(kp.extent_m[0], kp.extent_m[1]) / 2
+    axis = np.array([np.cos(axis_yaw), np.sin(axis_yaw), 0.0])
+    out = []
+    for s in (-1.0, 1.0):
+        p = kp.position_m + s * axis * (half - 0.012)
+        out.append(replace(kp, label=f"{kp.label} handle", position_m=p, extent_m=np.array([0.024, 0.06, kp.extent_m[2]]),
+                           yaw_rad=axis_yaw))
+    return out
+
+
+@primitive("bimanual_lift")
+def bimanual_lift(ctx: Ctx) -> ActionOutcome:
+    """Each arm grasps the handle nearer to it, both at once; then both lift together."""
+    kp = ctx.kp("keypoint_label")
+    arms = [ctx.for_arm(a) for a in ctx.peers] if len(ctx.peers) >= 2 else []
+    if len(arms) != 2:
+        return ctx.fail("bimanual_lift needs an embodiment with two arms", FailureKind.PLANNER)
+    handles = _handles(kp)
+    bases = [ctx.world.kinematics[c.arm].T_world_base[:3, 3] for c in arms]
+    if np.linalg.norm(handles[0].position_m - bases[0]) > np.linalg.norm(handles[1].position_m - bases[0]):
+        handles = handles[::-1]
+    grip_z = kp.top_z_m - 0.02
+    with cooperative(*arms):
+        outs = both(*(lambda c=c, h=h: grasp_object(c, h, force=60.0, z=grip_z) for c, h in zip(arms, handles)))
+        failed = [o for o in outs if not o.ok]
+        if failed:
+            both(*(lambda c=c: (open_gripper(c), ActionOutcome.success(0.0))[1] for c in arms))
+            return failed[0]
+        z0 = kp.position_m[2]
+        height = ctx.args["height"]
+        both(*(lambda c=c: c.motion.move_line(c.tcp.translated([0, 0, height]), speed_m_s=0.08, check=False)
+               for c in arms))
+    if not all(c.holding() for c in arms):
+        return ctx.fail(f"the {kp.label!r} slipped from " + " and ".join(c.arm for c in arms if not c.holding()))
+    now = ctx.observe(kp.label)
+    raised = (now.position_m[2] - z0) if now is not None else min(c.tcp.position_m[2] for c in arms) - grip_z
+    if raised < height / 2:
+        return ctx.fail(f"the {kp.label!r} rose only {raised * 100:.1f} of {height * 100:.0f} cm")
+    for c in arms:
+        c.memory.held_label = kp.label
+    return ActionOutcome.success(0.0, raised_m=round(float(raised), 4))
