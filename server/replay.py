@@ -16,7 +16,7 @@ class ReplayUnavailable(Exception):
 
 def start_replay(store, scene, trial_id: str, speed: float = 1.0) -> dict:
     """Start replaying on a thread; raises KeyError for an unknown trial, ReplayUnavailable with the reason."""
-    from spark_core.sim.tasks import BUILTIN
+    from spark_core.sim.tasks import TASKS
 
     trial = store.get_trial(trial_id)
     if trial is None:
@@ -27,7 +27,7 @@ def start_replay(store, scene, trial_id: str, speed: float = 1.0) -> dict:
     if not states:
         raise ReplayUnavailable(f"trial {trial_id!r} has no recorded scene states (recorded before replay existed, "
                                 f"or it ended before the robot moved)")
-    task = BUILTIN.get(trial["task"])
+    task = TASKS.get(trial["task"])
     if task is None:
         raise ReplayUnavailable(f"trial {trial_id!r} ran task {trial['task']!r}, which this build does not have")
     keypoints = {g["label"]: g["keypoint"]["position_m"] for g in trial.get("groundings", []) if g.get("keypoint")}

@@ -185,7 +185,7 @@ def run_trial(trial_id: str, spec: TrialSpec, control, store, send: Callable, ar
     from spark_core.execution.primitives import PrimitiveLibrary
     from spark_core.grammar import parse_plan, plan_to_dict, to_yaml
     from spark_core.planning import PlanRequest
-    from spark_core.sim.tasks import BUILTIN
+    from spark_core.sim.tasks import TASKS
     from spark_core.sim.world import TrajectoryRecorder
     from spark_core.trace.artifacts import detection_images
     from spark_core.trace.record import record_trial
@@ -200,7 +200,7 @@ def run_trial(trial_id: str, spec: TrialSpec, control, store, send: Callable, ar
     send("status", trial_id, "running")
     bus = EventBus(trial_id)
     bus.subscribe(lambda ev: send("event", trial_id, ev.to_dict()))
-    task = BUILTIN[spec.task]
+    task = TASKS[spec.task]
     world = task.make_world(spec.seed)
     world.recorder = TrajectoryRecorder()
     episode = None

@@ -23,7 +23,7 @@ class BatchTrial(BaseModel):
 
 
 class BatchCreate(BaseModel):
-    suite: str = Field("builtin", description="task suite (builtin)")
+    suite: str = Field("builtin", description="task suite (builtin, bimanual)")
     specs: list[BatchTrial] | None = Field(None, max_length=2000,
                                            description="explicit trials (instead of tasks × trials from the suite)")
     tasks: list[str] | None = Field(None, description="subset of the suite's tasks (default: all)")
@@ -36,12 +36,13 @@ class BatchCreate(BaseModel):
 
 @router.post("", status_code=202)
 def create_batch(body: BatchCreate, request: Request) -> dict:
-    from spark_core.sim.tasks import BUILTIN
+    from spark_core.sim.tasks import SUITES
 
     from ..runner import TrialSpec
 
-    if body.suite != "builtin":
-        raise HTTPException(422, f"unknown suite {body.suite!r}; available: builtin")
+    if body.suite not in SUITES:
+        raise HTTPException(422, f"unknown suite {body.suite!r}; available: {', '.join(SUITES)}")
+    BUILTIN = SUITES[body.suite]  # noqa: N806 - the chosen suite's tasks
     if body.specs is not None:
         if not body.specs:
             raise HTTPException(422, "specs is empty: give at least one trial, or leave it out to run the suite")
@@ -50,7 +51,7 @@ def create_batch(body: BatchCreate, request: Request) -> dict:
         wanted = body.tasks or list(BUILTIN)
     unknown = [t for t in dict.fromkeys(wanted) if t not in BUILTIN]
     if unknown:
-        raise HTTPException(422, f"unknown task(s) {', '.join(unknown)}; builtin tasks: {', '.join(BUILTIN)}")
+        raise HTTPException(422, f"unknown task(s) {', '.join(unknown)}; {body.suite} tasks: {', '.join(BUILTIN)}")
     if body.specs is not None:
         specs = [TrialSpec(sp.task, sp.instruction or BUILTIN[sp.task].instruction, sp.planner or body.planner,
                            sp.resolver or body.resolver, sp.seed, capture=body.capture) for sp in body.specs]

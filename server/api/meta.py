@@ -37,10 +37,11 @@ def grammar() -> dict:
 
 @router.get("/tasks")
 def tasks() -> list[dict]:
-    from spark_core.sim.tasks import BUILTIN
+    from spark_core.sim.tasks import SUITES
 
     return [{"name": t.name, "instruction": t.instruction, "predicate": t.predicate,
-             "objects": [o.label for o in t.objects]} for t in BUILTIN.values()]
+             "objects": [o.label for o in t.objects], "suite": suite, "embodiments": list(t.embodiments)}
+            for suite, tasks in SUITES.items() for t in tasks.values()]
 
 
 @router.post("/plans/validate", response_model=PlanValidation)

@@ -15,13 +15,13 @@ router = APIRouter(prefix="/api/trials", tags=["trials"])
 
 @router.post("", status_code=202, response_model=TrialCreated)
 def create_trial(body: TrialCreate, request: Request) -> TrialCreated:
-    from spark_core.sim.tasks import BUILTIN
+    from spark_core.sim.tasks import TASKS
 
     from ..runner import TrialSpec
 
-    task = BUILTIN.get(body.task)
+    task = TASKS.get(body.task)
     if task is None:
-        raise HTTPException(422, f"unknown task {body.task!r}; builtin tasks: {', '.join(BUILTIN)}")
+        raise HTTPException(422, f"unknown task {body.task!r}; tasks: {', '.join(TASKS)}")
     trial_id = f"{body.task}-{uuid.uuid4().hex[:10]}"
     spec = TrialSpec(body.task, body.instruction or task.instruction, body.planner, body.resolver, body.seed,
                      tuple(body.breakpoints), body.model, body.base_url, body.start_paused, body.capture)

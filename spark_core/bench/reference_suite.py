@@ -6,7 +6,7 @@ import statistics
 from concurrent.futures import ProcessPoolExecutor
 from typing import Callable, Iterable
 
-from ..sim.tasks import BUILTIN
+from ..sim.tasks import TASKS
 from ..execution import RecoveryPolicy
 from .report import footer, pct, wilson
 from .trial import PerceptionConfig, TrialOutcome, run_reference_trial
@@ -20,12 +20,12 @@ def protocol(perception: PerceptionConfig, recovery: RecoveryPolicy) -> str:
 
 def _one(args: tuple[str, int, PerceptionConfig, RecoveryPolicy, str]) -> dict:
     task, seed, perception, recovery, embodiment = args
-    return run_reference_trial(BUILTIN[task], seed, recovery=recovery, perception=perception, embodiment=embodiment).row()
+    return run_reference_trial(TASKS[task], seed, recovery=recovery, perception=perception, embodiment=embodiment).row()
 
 
 def run(tasks: Iterable[str], trials: int, seed: int = 0, workers: int = 1,
         progress: Callable[[dict], None] | None = None, perception: PerceptionConfig = PerceptionConfig(),
-        recovery: RecoveryPolicy = RecoveryPolicy(), embodiment: str = "panda") -> list[dict]:
+        recovery: RecoveryPolicy = RecoveryPolicy(), embodiment: str | None = None) -> list[dict]:
     jobs = [(t, seed + k, perception, recovery, embodiment) for t in tasks for k in range(trials)]
     rows: list[dict] = []
     if workers <= 1:

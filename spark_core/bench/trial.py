@@ -73,7 +73,7 @@ def make_resolver(world, config: PerceptionConfig, seed: int):
 def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
                         recovery: RecoveryPolicy = RecoveryPolicy(),
                         perception: PerceptionConfig = PerceptionConfig(), store=None, capture=None,
-                        artifacts_dir: str | Path = "var/artifacts", embodiment: str = "panda") -> TrialOutcome:
+                        artifacts_dir: str | Path = "var/artifacts", embodiment: str | None = None) -> TrialOutcome:
     """The task's hand-written reference plan (or `plan`) with the configured resolver. With a TraceStore,
     the trial (events, groundings, trajectory at the control rate) is recorded under its trial id; with a
     `CaptureConfig` too, training-data frames and videos are written under `artifacts_dir/<trial id>/`."""
@@ -108,7 +108,7 @@ def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
             artifacts = capture_entries(episode, Path(artifacts_dir) / trial_id)
     finally:
         world.close()
-    protocol = {"planner": "reference plan (hand-written)", "resolver": perception.describe(), "embodiment": embodiment,
+    protocol = {"planner": "reference plan (hand-written)", "resolver": perception.describe(), "embodiment": embodiment or task.embodiments[0],
                 "recovery": "off" if recovery.max_retries == 0 else f"tiers 1-2, {recovery.max_retries} retries"}
     if store is not None:
         from ..trace.record import record_trial

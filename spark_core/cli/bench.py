@@ -10,9 +10,9 @@ from pathlib import Path
 
 def register(sub) -> None:
     b = sub.add_parser("bench", help="run a benchmark and optionally write its section of BENCHMARKS.md")
-    b.add_argument("suite", choices=["builtin", "embodiments", "grounding", "paraphrases", "ik", "speed", "api", "latency",
+    b.add_argument("suite", choices=["builtin", "bimanual", "embodiments", "grounding", "paraphrases", "ik", "speed", "api", "latency",
                                      "viser", "export"])
-    b.add_argument("--embodiment", default="panda", help="robot set-up for the builtin suite (panda, ur10, bimanual)")
+    b.add_argument("--embodiment", help="robot set-up (panda, ur10, bimanual; default: the task's own)")
     b.add_argument("--embodiments", nargs="+", default=["panda", "ur10", "bimanual"],
                    help="robot set-ups compared by the embodiments suite")
     b.add_argument("--trials", type=int, default=20, help="trials (seeds) per task")
@@ -103,7 +103,7 @@ def _cmd_bench(args: argparse.Namespace) -> int:
         title, body = "perception grounding (sim segmenter)", grounding.section(rows, command)
         print(body)
     else:
-        from ..sim.tasks import BUILTIN
+        from ..sim.tasks import SUITES
 
         from ..bench.trial import PerceptionConfig
         from ..execution import RecoveryPolicy
@@ -115,10 +115,11 @@ def _cmd_bench(args: argparse.Namespace) -> int:
         perception = PerceptionConfig(args.resolver, not args.no_adaptive, NoiseModel(miss_rate=args.miss_rate),
                                       tuple(args.cameras))
         recovery = RecoveryPolicy(max_retries=0) if args.no_recovery else RecoveryPolicy()
-        tasks = args.tasks or list(BUILTIN)
-        unknown = [t for t in tasks if t not in BUILTIN]
+        suite = SUITES["bimanual" if args.suite == "bimanual" else "builtin"]
+        tasks = args.tasks or list(suite)
+        unknown = [t for t in tasks if t not in suite]
         if unknown:
-            print(f"unknown task(s): {', '.join(unknown)}; builtin tasks: {', '.join(BUILTIN)}", file=sys.stderr)
+            print(f"unknown task(s): {', '.join(unknown)}; {args.suite} tasks: {', '.join(suite)}", file=sys.stderr)
             return 2
         total = len(tasks) * args.trials
         done = [0]
@@ -141,8 +142,8 @@ def _cmd_bench(args: argparse.Namespace) -> int:
             rows = reference_suite.run(tasks, args.trials, args.seed, args.workers, progress, perception, recovery,
                                        args.embodiment)
             print(reference_suite.table(rows))
-            suffix = "" if args.embodiment == "panda" else f", {args.embodiment}"
-            title = args.title or f"builtin reference plans ({args.resolver} resolver{suffix})"
+            suffix = "" if args.embodiment in (None, "panda") else f", {args.embodiment}"
+            title = args.title or f"{args.suite} reference plans ({args.resolver} resolver{suffix})"
             body = reference_suite.section(rows, command, perception, recovery)
         if args.json:
             Path(args.json).write_text(json.dumps(rows, indent=1))

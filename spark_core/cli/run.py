@@ -11,6 +11,7 @@ def register(sub) -> None:
     r = sub.add_parser("run", help="run one builtin task in simulation (reference plan or --plan) and print its events")
     r.add_argument("task", help="builtin task name")
     r.add_argument("--seed", type=int, default=0)
+    r.add_argument("--embodiment", help="robot set-up: panda, ur10 or bimanual (default: the task's own)")
     r.add_argument("--plan", help="plan file to run instead of the task's reference plan")
     r.add_argument("--resolver", choices=["privileged", "sim", "sim-noisy"], help="default: sim")
     r.add_argument("--planner", choices=["reference", "rules", "gemini", "openai"],
@@ -45,10 +46,10 @@ def _plan_in_scene(task_name: str, instruction: str, seed: int, resolver_kind: s
     from ..planning import PlanRequest
     from ..planning.backends import make_planner
     from ..planning.observe import observe
-    from ..sim.tasks import BUILTIN
+    from ..sim.tasks import TASKS
 
     planner = make_planner(planner_name, model, base_url)  # fails fast (missing key, server) before any simulation
-    task = BUILTIN[task_name]
+    task = TASKS[task_name]
     world = task.make_world(seed)
     resolver = make_resolver(world, PerceptionConfig(resolver_kind), seed)
     view = observe(instruction, resolver)
@@ -103,10 +104,10 @@ def _print_plan_result(view, result) -> None:
 
 def _cmd_plan(args: argparse.Namespace) -> int:
     """Plan only: perception on the task's scene, one planner call, print the tree."""
-    from ..sim.tasks import BUILTIN
+    from ..sim.tasks import TASKS
 
-    if args.task not in BUILTIN:
-        print(f"unknown task {args.task!r}; builtin tasks: {', '.join(BUILTIN)}", file=sys.stderr)
+    if args.task not in TASKS:
+        print(f"unknown task {args.task!r}; tasks: {', '.join(TASKS)}", file=sys.stderr)
         return 2
     from ..planning.llm import PlannerUnavailable
 
@@ -129,11 +130,11 @@ def _cmd_run(args: argparse.Namespace) -> int:
     """One trial in simulation, printing the live event trail."""
     from ..bench.trial import run_reference_trial
     from ..grammar import validate
-    from ..sim.tasks import BUILTIN
+    from ..sim.tasks import TASKS
 
-    task = BUILTIN.get(args.task)
+    task = TASKS.get(args.task)
     if task is None:
-        print(f"unknown task {args.task!r}; builtin tasks: {', '.join(BUILTIN)}", file=sys.stderr)
+        print(f"unknown task {args.task!r}; tasks: {', '.join(TASKS)}", file=sys.stderr)
         return 2
     if args.planner != "reference":
         return _run_planned(args)
@@ -147,7 +148,12 @@ def _cmd_run(args: argparse.Namespace) -> int:
 
     perception = PerceptionConfig(args.resolver)
     print(f"task {task.name!r}: {task.instruction!r} (seed {args.seed}); resolver: {perception.describe()}")
-    out = run_reference_trial(task, args.seed, plan, perception=perception, store=_store(args))
+    try:
+        out = run_reference_trial(task, args.seed, plan, perception=perception, store=_store(args),
+                                  embodiment=args.embodiment)
+    except ValueError as e:  # the task does not fit that embodiment
+        print(str(e), file=sys.stderr)
+        return 2
     for ev in out.result.events:
         detail = " ".join(f"{k}={v}" for k, v in ev.detail.items() if k not in ("arm",))
         print(f"  {ev.t:7.3f}s  {ev.kind:<9} {ev.node_path:<22} {detail}")
@@ -217,6 +223,6 @@ def _store(args: argparse.Namespace):
 
 
 def BUILTIN_INSTRUCTION(task: str) -> str:  # noqa: N802 - reads like a constant lookup
-    from ..sim.tasks import BUILTIN
+    from ..sim.tasks import TASKS
 
-    return BUILTIN[task].instruction
+    return TASKS[task].instruction

@@ -28,8 +28,10 @@ def run(plan_text, task="stack_two", seed=0, recovery=RecoveryPolicy(), hook=Non
 
 def test_every_single_arm_primitive_is_implemented():
     single_arm = {s.name for s in REGISTRY if not s.uses_both_arms and s.name not in EXECUTOR_HANDLED}
-    missing = single_arm - set(IMPLEMENTATIONS) - {"handoff", "bimanual_lift"}
+    missing = single_arm - set(IMPLEMENTATIONS)
     assert not missing, f"no implementation for {sorted(missing)}"
+    two_arm = {s.name for s in REGISTRY if s.uses_both_arms}
+    assert two_arm <= set(IMPLEMENTATIONS), f"no implementation for {sorted(two_arm - set(IMPLEMENTATIONS))}"
 
 
 def test_grasp_on_empty_air_fails_its_postcondition():

@@ -81,10 +81,10 @@ def test_an_exception_inside_the_worker_is_recorded_and_the_worker_lives_on(tmp_
     plugin.mkdir()
     (plugin / "sitecustomize.py").write_text(
         "import dataclasses\n"
-        "from spark_core.sim.tasks import BUILTIN\n"
+        "from spark_core.sim.tasks import TASKS\n"
         "def crash(world, rng):\n"
         "    raise RuntimeError('simulated crash inside the trial')\n"
-        "BUILTIN['close_drawer'] = dataclasses.replace(BUILTIN['close_drawer'], setup=crash)\n")
+        "TASKS['close_drawer'] = dataclasses.replace(TASKS['close_drawer'], setup=crash)\n")
     monkeypatch.setenv("PYTHONPATH", f"{plugin}{os.pathsep}{os.environ.get('PYTHONPATH', '')}")
     with TestClient(_app(tmp_path)) as c:
         tid = c.post("/api/trials", json={"task": "close_drawer", "resolver": "privileged"}).json()["id"]
