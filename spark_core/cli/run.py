@@ -40,23 +40,23 @@ def register(sub) -> None:
 
 
 def _plan_in_scene(task_name: str, instruction: str, seed: int, resolver_kind: str, planner_name: str,
-                   model: str | None = None, base_url: str | None = None, library=None):
+                   model: str | None = None, base_url: str | None = None, library=None, embodiment: str | None = None):
     """Build the task's world, let perception look for the instruction's phrases, and call the planner once."""
     from ..bench.trial import PerceptionConfig, make_resolver
     from ..planning import PlanRequest
     from ..planning.backends import make_planner
-    from ..planning.observe import observe
+    from ..planning.observe import arm_bases, observe
     from ..sim.tasks import TASKS
 
     planner = make_planner(planner_name, model, base_url)  # fails fast (missing key, server) before any simulation
     task = TASKS[task_name]
-    world = task.make_world(seed)
+    world = task.make_world(seed, embodiment)
     resolver = make_resolver(world, PerceptionConfig(resolver_kind), seed)
     view = observe(instruction, resolver)
     if planner_name != "rules" and getattr(resolver, "frames", None):
         view = _with_annotated_image(view, resolver)
     examples = library.examples(instruction) if library is not None and planner_name != "rules" else ()
-    result = planner.plan(PlanRequest(instruction, view, examples))
+    result = planner.plan(PlanRequest(instruction, view, examples, arm_bases(world)))
     return task, world, resolver, view, result
 
 
@@ -176,7 +176,7 @@ def _run_planned(args: argparse.Namespace) -> int:
     try:
         library = _library(args)
         task, world, resolver, view, result = _plan_in_scene(args.task, instruction, args.seed, args.resolver, args.planner,
-                                                             args.model, args.base_url, library)
+                                                             args.model, args.base_url, library, args.embodiment)
     except (PlannerUnavailable, ValueError) as e:
         print(f"planner {args.planner!r} unavailable: {e}", file=sys.stderr)
         return 2

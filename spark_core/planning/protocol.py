@@ -26,6 +26,8 @@ class PlanRequest:
     instruction: str
     scene: SceneView = SceneView()
     examples: tuple[tuple[str, str], ...] = ()  # (instruction, plan YAML) few-shot pairs from the plan library
+    arms: dict[str, tuple[float, float]] = field(default_factory=dict)  # arm -> base (x, y) in the world, m;
+    # with two arms a planner may write arm-tagged parallel branches
 
 
 @dataclass(frozen=True)

@@ -88,12 +88,16 @@ class EpisodeCapture:
             action += [*w.joint_command(arm), w.gripper_command_m(arm)]
         self.rows.append({"t_s": w.sim_time_s, "clock_s": clock_s, "state": state, "velocity": vel, "ee_pose": ee,
                           "action": action, "node_path": ";".join(paths), "primitive": ";".join(prims)})
-        if self._renderer is None:
-            self._renderer = mujoco.Renderer(w.model, cfg.height, cfg.width)
         for key, cam in self.cameras.items():
-            self._renderer.update_scene(w.data, camera=cam)
-            self.images[key].append(self._renderer.render().copy())
+            self.images[key].append(w.on_render_thread(self._draw, cam))
         self._k += 1
+
+    def _draw(self, camera: str) -> np.ndarray:
+        """On the world's render thread (which owns the GL context)."""
+        if self._renderer is None:
+            self._renderer = mujoco.Renderer(self.world.model, self.config.height, self.config.width)
+        self._renderer.update_scene(self.world.data, camera=camera)
+        return self._renderer.render().copy()
 
     def names(self) -> dict[str, list[str]]:
         """Per-dimension names of the numeric features (arm-prefixed when there are several arms)."""
@@ -116,7 +120,7 @@ class EpisodeCapture:
         directory = Path(directory)
         directory.mkdir(parents=True, exist_ok=True)
         if self._renderer is not None:
-            self._renderer.close()
+            self.world.on_render_thread(self._renderer.close)
             self._renderer = None
         n = len(self.rows)
         arrays = {k: np.asarray([r[k] for r in self.rows], np.float32).reshape(n, -1)

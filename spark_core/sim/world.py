@@ -62,6 +62,7 @@ class MujocoWorld:
         self.target_tcp: dict[str, Pose] = {}  # the TCP pose the current joint trajectory ends at, per arm
         self.monitors: list[Callable[["MujocoWorld"], None]] = []  # called every control period (task metrics)
         self.renderer = None
+        self._render_pool = None  # created on first use: see on_render_thread
         self.reset()
 
     # -- state -------------------------------------------------------------------------------------------------
@@ -266,13 +267,27 @@ class MujocoWorld:
     def render(self, camera: str, width: int = 640, height: int = 480):
         from .cameras import render_frame
 
-        with self._lock:
-            return render_frame(self, camera, width, height)
+        with self._lock:  # no physics step while the frame is drawn
+            return self.on_render_thread(render_frame, self, camera, width, height)
+
+    def on_render_thread(self, fn: Callable, *args):
+        """Run `fn(*args)` on this world's one rendering thread. An EGL context is current on one thread at a
+        time, and arms in parallel branches (or a capture monitor) may ask for frames from different threads."""
+        if self._render_pool is None:
+            from concurrent.futures import ThreadPoolExecutor
+
+            self._render_pool = ThreadPoolExecutor(1, thread_name_prefix="render")
+        return self._render_pool.submit(fn, *args).result()
 
     def close(self) -> None:
-        if self.renderer is not None:
+        if self._render_pool is not None:
+            if self.renderer is not None:
+                self._render_pool.submit(self.renderer.close).result()
+            self._render_pool.shutdown(wait=True)
+            self._render_pool = None
+        elif self.renderer is not None:
             self.renderer.close()
-            self.renderer = None
+        self.renderer = None
 
 
 def _is_descendant(m: mujoco.MjModel, b: int, root: int) -> bool:

@@ -39,6 +39,7 @@ class RulesPlanner:
             clauses = parse_instruction(request.instruction)
             understood = [_describe(c) for c in clauses]
             children = self._compose(clauses, request)
+            children = _two_arm_branches(children, request) or children
             data = {"task": request.instruction.strip(), "tree": {"type": "sequence", "children": children}}
             plan = check_plan(data)
             return PlanResult(self.name, to_yaml(plan), plan, latency_s=time.perf_counter() - t0,
@@ -138,6 +139,35 @@ class RulesPlanner:
         if not c.direction:
             raise CannotPlan(f"{c.text!r}: push which way? (forward, backward, left, right, or into something)")
         return c.direction, round(min(c.distance_m or 0.10, 0.5), 3)
+
+
+CARRY_ENDS = ("place", "place_in")
+
+
+def _two_arm_branches(steps: list[dict], request: PlanRequest) -> list[dict] | None:
+    """On a two-arm robot, independent carries (pick X, then place / place_in Y) are shared out: each to the
+    arm whose base is closer to both its object and its destination, the two arms' carries in parallel
+    (the paper's bimanual silverware sort). None when the plan is not made of such carries, or one arm would
+    get them all."""
+    if len(request.arms) != 2 or len(steps) < 4 or len(steps) % 2:
+        return None
+    pairs = [steps[i:i + 2] for i in range(0, len(steps), 2)]
+    if not all(p[0]["primitive"] == "pick" and p[1]["primitive"] in CARRY_ENDS for p in pairs):
+        return None
+    scene = request.scene.keypoints
+    arms = sorted(request.arms)
+    branches: dict[str, list[dict]] = {a: [] for a in arms}
+    for pick, put in pairs:
+        labels = [pick["params"]["keypoint_label"], next(iter(put["params"].values()))]
+        if not all(lb in scene for lb in labels):
+            return None
+        reach = {a: max(float(np.linalg.norm(scene[lb].position_m[:2] - np.asarray(request.arms[a]))) for lb in labels)
+                 for a in arms}
+        arm = min(arms, key=reach.get)
+        branches[arm] += [{"primitive": "pick_with_arm", "params": dict(pick["params"])}, put]
+    if not all(branches.values()):
+        return None
+    return [{"type": "parallel", "children": [{"type": "sequence", "arm": a, "children": branches[a]} for a in arms]}]
 
 
 def _describe(c: Clause) -> str:
