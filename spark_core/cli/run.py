@@ -12,6 +12,10 @@ def register(sub) -> None:
     r.add_argument("task", help="builtin task name")
     r.add_argument("--seed", type=int, default=0)
     r.add_argument("--embodiment", help="robot set-up: panda, ur10 or bimanual (default: the task's own)")
+    r.add_argument("--capture", action="store_true",
+                   help="record training-data frames (state, action, agentview + wrist video) for `spark export`")
+    r.add_argument("--capture-fps", type=float, default=10.0, help="capture rate, frames per simulated second")
+    r.add_argument("--capture-size", default="256x256", help="capture image size WxH (multiples of 8)")
     r.add_argument("--plan", help="plan file to run instead of the task's reference plan")
     r.add_argument("--resolver", choices=["privileged", "sim", "sim-noisy"], help="default: sim")
     r.add_argument("--planner", choices=["reference", "rules", "gemini", "openai"],
@@ -148,9 +152,22 @@ def _cmd_run(args: argparse.Namespace) -> int:
 
     perception = PerceptionConfig(args.resolver)
     print(f"task {task.name!r}: {task.instruction!r} (seed {args.seed}); resolver: {perception.describe()}")
+    capture = None
+    if args.capture:
+        from ..sim.capture import CaptureConfig
+
+        if args.no_store:
+            print("--capture records into the trace store: drop --no-store", file=sys.stderr)
+            return 2
+        try:
+            w, h = (int(v) for v in args.capture_size.lower().split("x"))
+            capture = CaptureConfig(fps=args.capture_fps, width=w, height=h)
+        except ValueError as e:
+            print(f"--capture-size / --capture-fps: {e}", file=sys.stderr)
+            return 2
     try:
         out = run_reference_trial(task, args.seed, plan, perception=perception, store=_store(args),
-                                  embodiment=args.embodiment)
+                                  embodiment=args.embodiment, capture=capture)
     except ValueError as e:  # the task does not fit that embodiment
         print(str(e), file=sys.stderr)
         return 2
