@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import statistics
-from concurrent.futures import ProcessPoolExecutor
 from typing import Callable, Iterable
 
 from ..sim.tasks import TASKS
@@ -25,21 +24,13 @@ def _one(args: tuple[str, int, PerceptionConfig, RecoveryPolicy, str]) -> dict:
 
 def run(tasks: Iterable[str], trials: int, seed: int = 0, workers: int = 1,
         progress: Callable[[dict], None] | None = None, perception: PerceptionConfig = PerceptionConfig(),
-        recovery: RecoveryPolicy = RecoveryPolicy(), embodiment: str | None = None) -> list[dict]:
+        recovery: RecoveryPolicy = RecoveryPolicy(), embodiment: str | None = None, executor: str = "local",
+        ray_address: str | None = None) -> list[dict]:
+    """Every task x seed; `executor` local (process pool of `workers`) or ray (see bench.executors)."""
+    from .executors import run_jobs
+
     jobs = [(t, seed + k, perception, recovery, embodiment) for t in tasks for k in range(trials)]
-    rows: list[dict] = []
-    if workers <= 1:
-        for job in jobs:
-            rows.append(_one(job))
-            if progress:
-                progress(rows[-1])
-    else:
-        with ProcessPoolExecutor(workers) as pool:
-            for row in pool.map(_one, jobs):
-                rows.append(row)
-                if progress:
-                    progress(row)
-    return rows
+    return run_jobs(_one, jobs, executor, workers, ray_address, progress)
 
 
 def table(rows: list[dict]) -> str:
@@ -63,9 +54,24 @@ def table(rows: list[dict]) -> str:
     return "\n".join(lines)
 
 
-def section(rows: list[dict], command: str, perception: PerceptionConfig, recovery: RecoveryPolicy) -> str:
-    seeds = f"; seeds {min(r['seed'] for r in rows)}–{max(r['seed'] for r in rows)}"
-    return table(rows) + "\n\n" + footer(command, protocol(perception, recovery) + seeds)
+PHASES = ("setup", "perception", "rendering", "planning", "simulation", "execution")
+
+
+def phase_table(rows: list[dict]) -> str:
+    """Median wall seconds per phase, per task (where a trial's time goes)."""
+    lines = ["| task | " + " | ".join(PHASES) + " |", "|---|" + "---|" * len(PHASES)]
+    for task in dict.fromkeys(r["task"] for r in rows):
+        rs = [r["phases_s"] for r in rows if r["task"] == task and r.get("phases_s")]
+        if rs:
+            lines.append(f"| {task} | " + " | ".join(f"{statistics.median(p.get(k, 0.0) for p in rs):.2f} s" for k in PHASES) + " |")
+    return "\n".join(lines)
+
+
+def section(rows: list[dict], command: str, perception: PerceptionConfig, recovery: RecoveryPolicy,
+            executor: str = "local") -> str:
+    seeds = f"; seeds {min(r['seed'] for r in rows)}–{max(r['seed'] for r in rows)}; executor: {executor}"
+    return (table(rows) + "\n\nMedian wall time per phase:\n\n" + phase_table(rows) + "\n\n"
+            + footer(command, protocol(perception, recovery) + seeds))
 
 
 def embodiment_section(rows_by_embodiment: dict[str, list[dict]], command: str, perception: PerceptionConfig,
@@ -100,4 +106,4 @@ def embodiment_section(rows_by_embodiment: dict[str, list[dict]], command: str, 
                  + ", ".join(embs))
 
 
-__all__ = ["run", "section", "table", "embodiment_section", "TrialOutcome"]
+__all__ = ["run", "section", "table", "phase_table", "embodiment_section", "TrialOutcome"]

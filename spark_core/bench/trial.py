@@ -55,6 +55,7 @@ class TrialOutcome:
     wall_time_s: float
     protocol: dict[str, str]
     retries: int = 0
+    phases_s: dict[str, float] = field(default_factory=dict)  # wall seconds: perception, planning, execution, ...
     result: TrialResult | None = field(default=None, repr=False)
 
     def row(self) -> dict[str, Any]:
@@ -68,6 +69,42 @@ def make_resolver(world, config: PerceptionConfig, seed: int):
     if config.resolver == "sim-noisy":
         segmenter = SimNoisySegmenter(segmenter, config.noise, seed)
     return PerceptionResolver(world, segmenter, cameras=config.cameras, adaptive=config.adaptive)
+
+
+class TimedResolver:
+    """Counts the wall time spent resolving labels (perception, including the camera frames it draws)."""
+
+    def __init__(self, inner):
+        self._inner = inner
+        self.wall_s = 0.0
+
+    def resolve(self, label: str):
+        t0 = time.perf_counter()
+        try:
+            return self._inner.resolve(label)
+        finally:
+            self.wall_s += time.perf_counter() - t0
+
+    def refresh(self) -> None:
+        t0 = time.perf_counter()
+        try:
+            self._inner.refresh()
+        finally:
+            self.wall_s += time.perf_counter() - t0
+
+    def __getattr__(self, name: str):  # groundings, frames, detections, ...
+        return getattr(self._inner, name)
+
+
+def phase_split(setup_s: float, run_s: float, world, resolver: TimedResolver, planning_s: float = 0.0) -> dict[str, float]:
+    """Where a trial's wall time went: setup (scene build, model loading), rendering (camera frames), perception
+    (the rest of label resolution), simulation (physics steps), planning (the planner call) and execution
+    (control, IK, trajectories: the rest of the run)."""
+    render, sim = world.wall_s["rendering"], world.wall_s["simulation"]
+    perception = max(resolver.wall_s - render, 0.0)
+    execution = max(run_s - render - sim - perception - planning_s, 0.0)
+    return {k: round(v, 4) for k, v in (("setup", setup_s), ("perception", perception), ("rendering", render),
+                                        ("planning", planning_s), ("simulation", sim), ("execution", execution))}
 
 
 def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
@@ -95,11 +132,14 @@ def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
             bus.subscribe(episode.on_event)
             world.monitors.append(episode)
     try:
-        resolver = make_resolver(world, perception, seed)
+        resolver = TimedResolver(make_resolver(world, perception, seed))
         library = PrimitiveLibrary(world, resolver, seed=seed)
         plan = plan or parse_plan(task.reference_plan_text())
+        t_run = time.perf_counter()
+        world.wall_s.update(simulation=0.0, rendering=0.0)  # the scene's settling belongs to setup
         result = Executor(library, resolver, recovery=recovery, bus=bus, trial_id=f"{task.name}-{seed}").run(plan)
         world.settle(0.5)
+        t_end = time.perf_counter()
         success = bool(task.success(world))
         if episode is not None:
             from ..trace.artifacts import capture_entries
@@ -124,5 +164,6 @@ def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
         sim_time_s=round(world.sim_time_s, 3), wall_time_s=round(time.perf_counter() - t0, 3),
         protocol=protocol,
         retries=sum(r.retries for r in result.nodes.values()),
+        phases_s=phase_split(t_run - t0, t_end - t_run, world, resolver),
         result=result,
     )

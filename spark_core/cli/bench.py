@@ -11,7 +11,7 @@ from pathlib import Path
 def register(sub) -> None:
     b = sub.add_parser("bench", help="run a benchmark and optionally write its section of BENCHMARKS.md")
     b.add_argument("suite", choices=["builtin", "bimanual", "embodiments", "grounding", "paraphrases", "ik", "speed", "api", "latency",
-                                     "viser", "export"])
+                                     "viser", "export", "throughput"])
     b.add_argument("--embodiment", help="robot set-up (panda, ur10, bimanual; default: the task's own)")
     b.add_argument("--embodiments", nargs="+", default=["panda", "ur10", "bimanual"],
                    help="robot set-ups compared by the embodiments suite")
@@ -26,7 +26,10 @@ def register(sub) -> None:
     b.add_argument("--miss-rate", type=float, default=0.2, help="sim-noisy detector miss rate")
     b.add_argument("--cameras", nargs="+", default=["agentview", "side"], help="cameras the resolver fuses")
     b.add_argument("--title", help="BENCHMARKS.md section title (default derived from the resolver)")
-    b.add_argument("--workers", type=int, default=1, help="local worker processes")
+    b.add_argument("--workers", type=int, default=1, help="worker processes (local pool) or CPUs (a local Ray cluster)")
+    b.add_argument("--executor", choices=["local", "ray"], default="local",
+                   help="local process pool, or Ray (a local cluster, or --ray-address for an existing one)")
+    b.add_argument("--ray-address", help="existing Ray cluster, e.g. ray://head:10001 or auto")
     b.add_argument("--targets", type=int, default=200, help="IK targets (ik suite)")
     b.add_argument("--store-size", type=int, default=10_000, help="trials in the trace store (api suite)")
     b.add_argument("--write", metavar="BENCHMARKS.md", help="replace this benchmark's section in the file")
@@ -53,6 +56,7 @@ def _simple_benches(args: argparse.Namespace) -> dict:
         "viser": ("live 3D view frame rate", lambda: server_bench("bench_viser").run(),
                   lambda r, c: server_bench("bench_viser").section(r, c)),
         "export": ("training-data export (LeRobot)", lambda: _export_bench(args), _export_section),
+        "throughput": ("batch throughput (local pool vs Ray)", lambda: _throughput(args), _throughput_section),
     }
 
 
@@ -64,6 +68,18 @@ def _export_bench(args: argparse.Namespace) -> dict:
 
     r = export_bench.run(args.trials, args.workers, progress)
     return {k: v for k, v in r.items()}
+
+
+def _throughput(args: argparse.Namespace) -> dict:
+    from ..bench import throughput
+
+    return throughput.run(args.trials, args.workers, args.resolver)
+
+
+def _throughput_section(r: dict, command: str) -> str:
+    from ..bench import throughput
+
+    return throughput.section(r, command)
 
 
 def _export_section(r: dict, command: str) -> str:
@@ -140,11 +156,11 @@ def _cmd_bench(args: argparse.Namespace) -> int:
             rows = [dict(r, embodiment=e) for e, rs in by_emb.items() for r in rs]
         else:
             rows = reference_suite.run(tasks, args.trials, args.seed, args.workers, progress, perception, recovery,
-                                       args.embodiment)
+                                       args.embodiment, args.executor, args.ray_address)
             print(reference_suite.table(rows))
             suffix = "" if args.embodiment in (None, "panda") else f", {args.embodiment}"
             title = args.title or f"{args.suite} reference plans ({args.resolver} resolver{suffix})"
-            body = reference_suite.section(rows, command, perception, recovery)
+            body = reference_suite.section(rows, command, perception, recovery, args.executor)
         if args.json:
             Path(args.json).write_text(json.dumps(rows, indent=1))
     if args.write:

@@ -4,6 +4,7 @@ force-limited gripper, touch sensing, on-demand cameras, and (privileged) ground
 from __future__ import annotations
 
 import threading
+import time
 from dataclasses import dataclass, field
 from typing import Callable
 
@@ -63,6 +64,7 @@ class MujocoWorld:
         self.monitors: list[Callable[["MujocoWorld"], None]] = []  # called every control period (task metrics)
         self.renderer = None
         self._render_pool = None  # created on first use: see on_render_thread
+        self.wall_s = {"simulation": 0.0, "rendering": 0.0}  # wall seconds spent stepping physics / drawing cameras
         self.reset()
 
     # -- state -------------------------------------------------------------------------------------------------
@@ -143,7 +145,9 @@ class MujocoWorld:
 
     # -- actuation ---------------------------------------------------------------------------------------------
     def _tick(self, steps: int) -> None:
+        t0 = time.perf_counter()
         mujoco.mj_step(self.model, self.data, nstep=steps)
+        self.wall_s["simulation"] += time.perf_counter() - t0
         for monitor in self.monitors:
             monitor(self)
 
@@ -268,7 +272,11 @@ class MujocoWorld:
         from .cameras import render_frame
 
         with self._lock:  # no physics step while the frame is drawn
-            return self.on_render_thread(render_frame, self, camera, width, height)
+            t0 = time.perf_counter()
+            try:
+                return self.on_render_thread(render_frame, self, camera, width, height)
+            finally:
+                self.wall_s["rendering"] += time.perf_counter() - t0
 
     def on_render_thread(self, fn: Callable, *args):
         """Run `fn(*args)` on this world's one rendering thread. An EGL context is current on one thread at a

@@ -1,0 +1,60 @@
+"""Where a batch's trials run: a local process pool (the default), or Ray, either a local cluster started for
+the batch or an existing cluster at an address (evaluation beyond one machine). Results stream back in
+completion order to `progress`; the returned list is in job order."""
+
+from __future__ import annotations
+
+import os
+from concurrent.futures import ProcessPoolExecutor, as_completed
+from typing import Any, Callable, Sequence
+
+EXECUTORS = ("local", "ray")
+
+
+def run_jobs(fn: Callable[[Any], dict], jobs: Sequence[Any], executor: str = "local", workers: int = 1,
+             ray_address: str | None = None, progress: Callable[[dict], None] | None = None) -> list[dict]:
+    """`fn(job) -> row` for every job. `fn` must be a module-level function (it is pickled to the workers)."""
+    if executor not in EXECUTORS:
+        raise ValueError(f"unknown executor {executor!r}; available: {', '.join(EXECUTORS)}")
+    results: list[dict | None] = [None] * len(jobs)
+
+    def done(i: int, row: dict) -> None:
+        results[i] = row
+        if progress:
+            progress(row)
+
+    if executor == "ray":
+        _run_ray(fn, jobs, workers, ray_address, done)
+    elif workers <= 1:
+        for i, job in enumerate(jobs):
+            done(i, fn(job))
+    else:
+        with ProcessPoolExecutor(workers) as pool:
+            futures = {pool.submit(fn, job): i for i, job in enumerate(jobs)}
+            for fut in as_completed(futures):
+                done(futures[fut], fut.result())
+    return results  # type: ignore[return-value]
+
+
+def _run_ray(fn, jobs, workers: int, address: str | None, done: Callable[[int, dict], None]) -> None:
+    try:
+        import ray
+    except ImportError:
+        raise RuntimeError("the ray executor needs the `ray` package: make install (it is pinned in requirements.lock)") from None
+    started = not ray.is_initialized()
+    if started:
+        # A local cluster sized to `workers` CPUs, or join an existing one. Workers inherit this environment
+        # (MUJOCO_GL, HF_HUB_OFFLINE) so rendering and the offline text model work there too.
+        env = {k: v for k, v in os.environ.items() if k in ("MUJOCO_GL", "HF_HUB_OFFLINE", "PYTHONPATH")}
+        ray.init(address=address, num_cpus=None if address else max(workers, 1), include_dashboard=False,
+                 log_to_driver=False, configure_logging=False, runtime_env={"env_vars": env})
+    try:
+        remote = ray.remote(num_cpus=1, max_retries=1)(fn)
+        pending = {remote.remote(job): i for i, job in enumerate(jobs)}
+        while pending:
+            ready, _ = ray.wait(list(pending), num_returns=1)
+            ref = ready[0]
+            done(pending.pop(ref), ray.get(ref))
+    finally:
+        if started:
+            ray.shutdown()
