@@ -35,6 +35,7 @@ class TrialSpec:
     base_url: str | None = None
     start_paused: bool = False
     capture: bool = False  # training-data frames (spark_core.sim.capture) for `spark export`
+    embodiment: str | None = None  # panda | ur10 | bimanual (default: the task's own)
 
 
 class WorkerProcess:
@@ -201,7 +202,7 @@ def run_trial(trial_id: str, spec: TrialSpec, control, store, send: Callable, ar
     bus = EventBus(trial_id)
     bus.subscribe(lambda ev: send("event", trial_id, ev.to_dict()))
     task = TASKS[spec.task]
-    world = task.make_world(spec.seed)
+    world = task.make_world(spec.seed, spec.embodiment)
     world.recorder = TrajectoryRecorder()
     episode = None
     if spec.capture:

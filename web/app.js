@@ -18,10 +18,11 @@ async function dashboard(view) {
   view.innerHTML = `
     <section><h3>New trial</h3>
       <form id="new-trial">
-        <label>Task <select name="task">${tasks.map((t) => `<option value="${t.name}">${t.name}</option>`).join("")}</select></label>
+        <label>Task <select name="task">${tasks.map((t) => `<option value="${t.name}">${t.name}${t.suite === "builtin" ? "" : ` (${t.suite})`}</option>`).join("")}</select></label>
         <label>Instruction <input type="text" name="instruction" placeholder="default: the task's own"></label><br>
         <label>Planner <select name="planner"><option>reference</option><option>rules</option><option>gemini</option><option>openai</option></select></label>
         <label>Segmenter <select name="resolver"><option>sim</option><option>privileged</option><option>sim-noisy</option></select></label>
+        <label>Robot <select name="embodiment"><option value="">task default</option><option>panda</option><option>ur10</option><option>bimanual</option></select></label>
         <label>Seed <input type="number" name="seed" value="0" min="0" style="width:5em"></label>
         <label><input type="checkbox" name="start_paused"> start paused</label>
         <label title="agentview + wrist video and per-frame labels, for LeRobot export"><input type="checkbox" name="capture"> record training data</label>
@@ -42,6 +43,7 @@ async function dashboard(view) {
     const body = { task: f.get("task"), planner: f.get("planner"), resolver: f.get("resolver"),
                    seed: Number(f.get("seed")), start_paused: f.get("start_paused") === "on", capture: f.get("capture") === "on" };
     if (f.get("instruction")) body.instruction = f.get("instruction");
+    if (f.get("embodiment")) body.embodiment = f.get("embodiment");
     try { const r = await api("/api/trials", { method: "POST", body: JSON.stringify(body) }); location.hash = `#/trial/${r.id}`; }
     catch (err) { $("#form-error").textContent = err.message; }
   };

@@ -36,13 +36,14 @@ class BatchCreate(BaseModel):
 
 @router.post("", status_code=202)
 def create_batch(body: BatchCreate, request: Request) -> dict:
-    from spark_core.sim.tasks import SUITES
+    from spark_core.sim.tasks import SUITES, TASKS
 
     from ..runner import TrialSpec
 
     if body.suite not in SUITES:
         raise HTTPException(422, f"unknown suite {body.suite!r}; available: {', '.join(SUITES)}")
-    BUILTIN = SUITES[body.suite]  # noqa: N806 - the chosen suite's tasks
+    # named tasks may come from any suite; without names, the whole chosen suite runs
+    BUILTIN = TASKS if (body.tasks or body.specs) else SUITES[body.suite]  # noqa: N806
     if body.specs is not None:
         if not body.specs:
             raise HTTPException(422, "specs is empty: give at least one trial, or leave it out to run the suite")

@@ -18,6 +18,7 @@ class TrialCreate(BaseModel):
     base_url: str | None = None
     start_paused: bool = Field(False, description="pause before the first primitive")
     capture: bool = Field(False, description="record training-data frames (agentview + wrist video at 10 fps)")
+    embodiment: Literal["panda", "ur10", "bimanual"] | None = Field(None, description="robot set-up (default: the task's own)")
 
 
 class TrialCreated(BaseModel):

@@ -22,9 +22,12 @@ def create_trial(body: TrialCreate, request: Request) -> TrialCreated:
     task = TASKS.get(body.task)
     if task is None:
         raise HTTPException(422, f"unknown task {body.task!r}; tasks: {', '.join(TASKS)}")
+    if body.embodiment and body.embodiment not in task.embodiments:
+        raise HTTPException(422, f"task {body.task!r} runs on {', '.join(task.embodiments)}, not {body.embodiment!r}")
     trial_id = f"{body.task}-{uuid.uuid4().hex[:10]}"
     spec = TrialSpec(body.task, body.instruction or task.instruction, body.planner, body.resolver, body.seed,
-                     tuple(body.breakpoints), body.model, body.base_url, body.start_paused, body.capture)
+                     tuple(body.breakpoints), body.model, body.base_url, body.start_paused, body.capture,
+                     body.embodiment)
     request.app.state.runner.submit(trial_id, spec)
     return TrialCreated(id=trial_id, status="queued")
 

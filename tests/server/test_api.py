@@ -227,3 +227,15 @@ def test_batch_from_an_explicit_spec_list_exports_csv(client):
     bad = client.post("/api/batches", json={"specs": [{"task": "juggle"}]})
     assert bad.status_code == 422 and "juggle" in bad.json()["detail"]
     assert client.get("/api/batches/nope/results.csv").status_code == 404
+
+
+def test_trials_on_other_embodiments(client):
+    ur = client.post("/api/trials", json={"task": "stack_two", "resolver": "privileged", "embodiment": "ur10"}).json()["id"]
+    two = client.post("/api/trials", json={"task": "handover_bar", "resolver": "privileged"}).json()["id"]
+    bad = client.post("/api/trials", json={"task": "lift_tray", "embodiment": "ur10"})
+    assert bad.status_code == 422 and "runs on bimanual" in bad.json()["detail"]
+    done = wait_done(client, ur)
+    assert done["success"] is True and done["protocol"]["embodiment"] == "ur10"
+    assert wait_done(client, two)["success"] is True
+    tasks = {t["name"]: t for t in client.get("/api/tasks").json()}
+    assert tasks["lift_tray"]["suite"] == "bimanual" and tasks["lift_tray"]["embodiments"] == ["bimanual"]
