@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import threading
 from typing import Callable
 
 import numpy as np
@@ -47,12 +48,20 @@ class ArmMotion:
         return None
 
     def _guard(self, q_path: np.ndarray) -> ActionOutcome | None:
+        """Check the path against the other arms and, if clear, claim its end as this arm's target, atomically:
+        two arms planning at the same moment must not both see the other still at rest."""
         if len(getattr(self.world, "arms", ())) < 2:
             return None
         step = max(len(q_path) // 40, 1)
         tcp = np.array([self.kin.fk(q).position_m for q in q_path[::step]] + [self.kin.fk(q_path[-1]).position_m])
-        why = self.workspace_conflict(tcp)
-        return ActionOutcome.fail(why, FailureKind.COLLISION) if why else None
+        with _claims_lock(self.world):
+            why = self.workspace_conflict(tcp)
+            if why:
+                return ActionOutcome.fail(why, FailureKind.COLLISION)
+            targets = getattr(self.world, "target_tcp", None)
+            if targets is not None:
+                targets[self.arm] = self.kin.fk(q_path[-1])
+        return None
 
     def ik(self, pose: Pose, seed: np.ndarray | None = None, what: str = "target") -> np.ndarray:
         return solve_ik(self.kin, pose, self.world.q(self.arm) if seed is None else seed, rng=self.rng, what=what).q
@@ -140,6 +149,14 @@ class ArmMotion:
             return ActionOutcome.fail(f"TCP {err * 100:.1f} cm from the {what} (tolerance 1 cm): blocked or dragged",
                                       FailureKind.CONTROL, sim_s)
         return ActionOutcome.success(sim_s)
+
+
+_CLAIMS = threading.Lock()
+
+
+def _claims_lock(world) -> threading.Lock:
+    """The world's lock for checking and claiming arm targets (one per world; a module lock as fallback)."""
+    return getattr(world, "claims_lock", _CLAIMS)
 
 
 def _slerp(R0: np.ndarray, R1: np.ndarray, s: float) -> np.ndarray:

@@ -61,6 +61,7 @@ class MujocoWorld:
         self._lock = threading.RLock()
         self.recorder: TrajectoryRecorder | None = None
         self.target_tcp: dict[str, Pose] = {}  # the TCP pose the current joint trajectory ends at, per arm
+        self.claims_lock = threading.Lock()  # arms check each other's targets and claim their own under it
         self.monitors: list[Callable[["MujocoWorld"], None]] = []  # called every control period (task metrics)
         self.renderer = None
         self._render_pool = None  # created on first use: see on_render_thread
