@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import tempfile
 import time
-from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 from ..sim.tasks import BUILTIN
+from .executors import run_jobs
 from .report import footer, pct
 
 
@@ -33,12 +33,7 @@ def run(trials: int = 100, workers: int = 2, progress=None) -> dict:
         url = f"sqlite:///{tmp}/trials.db"
         TraceStore(url)  # migrate once, before the workers open it
         t0 = time.perf_counter()
-        rows = []
-        with ProcessPoolExecutor(workers) as pool:
-            for row in pool.map(_record, [(t, s, url, f"{tmp}/art") for t, s in jobs]):
-                rows.append(row)
-                if progress:
-                    progress(row)
+        rows = run_jobs(_record, [(t, s, url, f"{tmp}/art") for t, s in jobs], "local", workers, progress=progress)
         record_s = time.perf_counter() - t0
         report = export_lerobot(TraceStore(url), Path(tmp) / "dataset")
     return {"trials": trials, "workers": workers, "rows": rows, "record_wall_s": record_s,

@@ -66,8 +66,7 @@ def _export_bench(args: argparse.Namespace) -> dict:
     def progress(row: dict) -> None:
         print(f"{'ok  ' if row['success'] else 'FAIL'} {row['task']} seed {row['seed']} ({row['wall_time_s']:.1f} s)", flush=True)
 
-    r = export_bench.run(args.trials, args.workers, progress)
-    return {k: v for k, v in r.items()}
+    return export_bench.run(args.trials, args.workers, progress)
 
 
 def _throughput(args: argparse.Namespace) -> dict:
