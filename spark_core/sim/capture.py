@@ -72,7 +72,7 @@ class EpisodeCapture:
             self.sample()
 
     def sample(self) -> None:
-        w, cfg = self.world, self.config
+        w = self.world
         with self._lock:  # the label and the clock together: a frame is never labelled with a node that ended
             clock_s = self.clock()
             paths = [self._active.by_arm[a] for a in self.arms if a in self._active.by_arm]
