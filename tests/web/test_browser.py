@@ -60,29 +60,29 @@ def shot(page, name):
 def test_submit_step_breakpoint_resume_and_history(server, page):
     page.goto(server + "/")
     page.select_option("select[name=task]", "stack_two")
-    page.select_option("select[name=resolver]", "privileged")
+    page.select_option("select[name=resolver]", "sim")  # cameras + masks: the trial has detection images
     page.check("input[name=start_paused]")
     page.click("button[type=submit]")
     page.wait_for_url("**/#/trial/stack_two-*")
     first = page.locator(".node[data-path='tree.children[0]']")
     first.wait_for()
-    page.wait_for_selector(".node.paused[data-path='tree.children[0]']", timeout=60_000)
+    page.wait_for_selector(".node.paused[data-path='tree.children[0]']", timeout=120_000)
     # set a breakpoint by clicking a node of the tree
     page.click(".node[data-path='tree.children[3]']")
     page.wait_for_selector(".node.breakpoint[data-path='tree.children[3]']")
     shot(page, "1-paused-with-breakpoint")
     # step: exactly one primitive runs, then it pauses again
     page.click("#step")
-    page.wait_for_selector(".node.succeeded[data-path='tree.children[0]']", timeout=60_000)
-    page.wait_for_selector(".node.paused[data-path='tree.children[1]']", timeout=60_000)
+    page.wait_for_selector(".node.succeeded[data-path='tree.children[0]']", timeout=120_000)
+    page.wait_for_selector(".node.paused[data-path='tree.children[1]']", timeout=120_000)
     assert page.locator(".node.succeeded").count() == 1
     # resume: runs until the breakpoint
     page.click("#resume")
-    page.wait_for_selector(".node.paused[data-path='tree.children[3]']", timeout=60_000)
+    page.wait_for_selector(".node.paused[data-path='tree.children[3]']", timeout=120_000)
     assert page.locator(".node.succeeded[data-path='tree.children[2]']").count() == 1
     shot(page, "2-at-breakpoint")
     page.click("#resume")
-    page.wait_for_selector("#verdict.ok", timeout=60_000)
+    page.wait_for_selector("#verdict.ok", timeout=120_000)
     page.wait_for_selector("#timeline rect")
     # the 3D view comes from the console's own origin, and the browser's viser client connects through the relay
     assert page.locator("#viser-frame").get_attribute("src") == "/viser/"
@@ -108,6 +108,9 @@ def test_submit_step_breakpoint_resume_and_history(server, page):
     page.wait_for_selector(".node.succeeded[data-path='tree.children[4]']")
     assert page.locator("#timeline rect").count() >= 5
     assert "move_to_keypoint" in page.locator("#timeline").text_content()
+    page.wait_for_selector("#detections img")
+    assert page.eval_on_selector("#detections img", "img => img.complete && img.naturalWidth") > 0  # served, decodes
+    assert "red block" in page.locator("#groundings").inner_text()
     shot(page, "4-history-detail")
 
 
@@ -158,7 +161,7 @@ def test_history_selection_exports_a_lerobot_dataset(server, page):
     page.wait_for_selector(f"#rows .pick[value='{tid}']")
     page.check(f"#rows .pick[value='{tid}']")
     page.click("#export-selected")
-    page.wait_for_selector("#export-download", timeout=60_000)
+    page.wait_for_selector("#export-download", timeout=120_000)
     assert "1 episode(s)" in page.locator("#export-result").inner_text()
     shot(page, "6-history-export")
     with page.expect_download() as dl:
