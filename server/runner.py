@@ -210,7 +210,8 @@ class TrialRunner:
         p = self.processes[i]
         if p is None or not p.alive:
             p = self.processes[i] = WorkerProcess(self.store.url, self.artifacts_dir,
-                                                  self.scene.rate_hz if self.scene else 30.0)
+                                                  self.scene.rate_hz if self.scene else 30.0,
+                                                  cancelled=lambda: self._closing)
         return p
 
     def _pump(self, trial_id: str, live: Live, worker: WorkerProcess) -> str | None:

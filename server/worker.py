@@ -41,7 +41,8 @@ class TrialSpec:
 class WorkerProcess:
     """The console's handle on one worker process."""
 
-    def __init__(self, store_url: str, artifacts_dir: str, feed_hz: float = 30.0, ready_timeout_s: float = 300.0):
+    def __init__(self, store_url: str, artifacts_dir: str, feed_hz: float = 30.0, ready_timeout_s: float = 300.0,
+                 cancelled: Callable[[], bool] = lambda: False):
         ctx = mp.get_context("spawn")  # never fork a threaded server
         child_inbox, self._to_child = ctx.Pipe(duplex=False)
         self._from_child, child_outbox = ctx.Pipe(duplex=False)
@@ -51,7 +52,11 @@ class WorkerProcess:
         child_inbox.close()  # only the child holds these ends: its death closes the pipe (EOF here)
         child_outbox.close()
         self._send_lock = threading.Lock()
-        msg = self.recv(ready_timeout_s)
+        deadline = time.monotonic() + ready_timeout_s
+        while (msg := self.recv(0.5)) is None and time.monotonic() < deadline:
+            if cancelled():  # the console is stopping: do not keep it waiting for a warm-up
+                self.kill()
+                raise RuntimeError("the console is shutting down")
         if msg is None or msg[0] != "ready":
             self.kill()
             raise RuntimeError(f"trial worker did not start within {ready_timeout_s:.0f} s ({self.death()})")

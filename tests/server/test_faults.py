@@ -153,3 +153,18 @@ def test_restarting_the_server_process_mid_trial_marks_the_trial_interrupted(tmp
     finally:
         proc.kill()
         proc.wait(10)
+
+
+def test_stopping_the_server_while_workers_warm_up_is_prompt_and_leaves_no_process(tmp_path):
+    port, db, log = _free_port(), tmp_path / "stop.db", tmp_path / "stop.log"
+    proc = _serve(port, db, log)  # `spark serve` spawns its workers at start; they take seconds to warm up
+    try:
+        _wait_up(f"http://127.0.0.1:{port}", proc, log)
+        children = [int(p) for t in Path(f"/proc/{proc.pid}/task").iterdir() for p in (t / "children").read_text().split()]
+        proc.send_signal(signal.SIGTERM)
+        proc.wait(5)  # the lifespan does not wait for a warm-up to finish (which takes 5-10 s)
+        time.sleep(1.0)
+        assert children and not [c for c in children if _alive(c)]
+    finally:
+        proc.kill()
+        proc.wait(10)
