@@ -17,19 +17,36 @@ def protocol(perception: PerceptionConfig, recovery: RecoveryPolicy) -> str:
             f"{perception.describe()}; {rec}; success: the task's predicate over simulator state")
 
 
-def _one(args: tuple[str, int, PerceptionConfig, RecoveryPolicy, str]) -> dict:
-    task, seed, perception, recovery, embodiment = args
-    return run_reference_trial(TASKS[task], seed, recovery=recovery, perception=perception, embodiment=embodiment).row()
+def _one(args: tuple) -> dict:
+    task, seed, perception, recovery, embodiment, store_url, batch_id = args
+    store = None
+    if store_url:
+        from ..trace import TraceStore
+
+        store = TraceStore(store_url, migrate=False)  # the driver migrated it
+    return run_reference_trial(TASKS[task], seed, recovery=recovery, perception=perception, embodiment=embodiment,
+                               store=store, batch_id=batch_id).row()
 
 
 def run(tasks: Iterable[str], trials: int, seed: int = 0, workers: int = 1,
         progress: Callable[[dict], None] | None = None, perception: PerceptionConfig = PerceptionConfig(),
         recovery: RecoveryPolicy = RecoveryPolicy(), embodiment: str | None = None, executor: str = "local",
-        ray_address: str | None = None) -> list[dict]:
-    """Every task x seed; `executor` local (process pool of `workers`) or ray (see bench.executors)."""
+        ray_address: str | None = None, store_url: str | None = None) -> list[dict]:
+    """Every task x seed; `executor` local (process pool of `workers`) or ray (see bench.executors). With
+    `store_url` every trial is recorded in that trace store under one batch (watch it in the console)."""
     from .executors import run_jobs
 
-    jobs = [(t, seed + k, perception, recovery, embodiment) for t in tasks for k in range(trials)]
+    batch_id = None
+    tasks = list(tasks)
+    if store_url:
+        import uuid
+
+        from ..trace import TraceStore
+
+        batch_id = f"bench-{uuid.uuid4().hex[:10]}"
+        TraceStore(store_url).create_batch(batch_id, {"suite": "bench", "tasks": tasks, "trials": trials, "seed": seed,
+                                                      "resolver": perception.resolver, "executor": executor})
+    jobs = [(t, seed + k, perception, recovery, embodiment, store_url, batch_id) for t in tasks for k in range(trials)]
     return run_jobs(_one, jobs, executor, workers, ray_address, progress)
 
 

@@ -110,7 +110,8 @@ def phase_split(setup_s: float, run_s: float, world, resolver: TimedResolver, pl
 def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
                         recovery: RecoveryPolicy = RecoveryPolicy(),
                         perception: PerceptionConfig = PerceptionConfig(), store=None, capture=None,
-                        artifacts_dir: str | Path = "var/artifacts", embodiment: str | None = None) -> TrialOutcome:
+                        artifacts_dir: str | Path = "var/artifacts", embodiment: str | None = None,
+                        batch_id: str | None = None) -> TrialOutcome:
     """The task's hand-written reference plan (or `plan`) with the configured resolver. With a TraceStore,
     the trial (events, groundings, trajectory at the control rate) is recorded under its trial id; with a
     `CaptureConfig` too, training-data frames and videos are written under `artifacts_dir/<trial id>/`."""
@@ -157,7 +158,7 @@ def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
                      seed=seed, planner="reference", resolver=perception.resolver, protocol=protocol, plan=plan,
                      result=result, success=success, groundings=getattr(resolver, "groundings", []),
                      trajectory=world.recorder.rows, scene_states=world.recorder.states, artifacts=artifacts,
-                     wall_time_s=round(time.perf_counter() - t0, 3))
+                     wall_time_s=round(time.perf_counter() - t0, 3), batch_id=batch_id)
     return TrialOutcome(
         task=task.name, seed=seed, success=success, outcome=result.outcome,
         failure=result.failure.value if result.failure else None, failed_node=result.failed_node, reason=result.reason,

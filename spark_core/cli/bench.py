@@ -30,6 +30,7 @@ def register(sub) -> None:
     b.add_argument("--executor", choices=["local", "ray"], default="local",
                    help="local process pool, or Ray (a local cluster, or --ray-address for an existing one)")
     b.add_argument("--ray-address", help="existing Ray cluster, e.g. ray://head:10001 or auto")
+    b.add_argument("--store", help="also record every trial in this trace store (SQLAlchemy URL) as one batch")
     b.add_argument("--targets", type=int, default=200, help="IK targets (ik suite)")
     b.add_argument("--store-size", type=int, default=10_000, help="trials in the trace store (api suite)")
     b.add_argument("--write", metavar="BENCHMARKS.md", help="replace this benchmark's section in the file")
@@ -155,7 +156,7 @@ def _cmd_bench(args: argparse.Namespace) -> int:
             rows = [dict(r, embodiment=e) for e, rs in by_emb.items() for r in rs]
         else:
             rows = reference_suite.run(tasks, args.trials, args.seed, args.workers, progress, perception, recovery,
-                                       args.embodiment, args.executor, args.ray_address)
+                                       args.embodiment, args.executor, args.ray_address, args.store)
             print(reference_suite.table(rows))
             suffix = "" if args.embodiment in (None, "panda") else f", {args.embodiment}"
             title = args.title or f"{args.suite} reference plans ({args.resolver} resolver{suffix})"

@@ -11,7 +11,7 @@ def record_trial(store: TraceStore, trial_id: str, *, task: str, instruction: st
                  resolver: str, protocol: dict, plan: Plan | None, result: TrialResult | None, success: bool | None,
                  groundings: list[dict] = (), trajectory: list = (), wall_time_s: float | None = None,
                  cost_usd: float = 0.0, usage: dict | None = None, reason: str = "", artifacts: list[dict] = (),
-                 scene_states: list | None = None) -> None:
+                 scene_states: list | None = None, batch_id: str | None = None) -> None:
     """Create-or-complete the trial row and append its events and groundings in one go."""
     fields = dict(
         status="done", instruction=instruction, task=task, seed=seed, planner=planner, resolver=resolver,
@@ -24,6 +24,8 @@ def record_trial(store: TraceStore, trial_id: str, *, task: str, instruction: st
         trajectory=_jsonable(list(trajectory)), artifacts=_jsonable(list(artifacts)),
         scene_states=_jsonable(list(scene_states)) if scene_states else None,
     )
+    if batch_id is not None:
+        fields["batch_id"] = batch_id
     if store.get_trial(trial_id) is None:
         store.create_trial(trial_id, **fields)
     else:
