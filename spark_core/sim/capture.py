@@ -24,6 +24,7 @@ class CaptureConfig:
     height: int = 256
     cameras: tuple[str, ...] = ("agentview", "wrist")  # "wrist" = every arm's wrist camera
     vcodec: str = "libsvtav1"  # LeRobot's default (AV1); "libx264" for H.264
+    shadows: bool = False  # shadow maps cost ~33 ms a 256x256 frame with software GL (5 ms without)
 
     def __post_init__(self):
         if not 1.0 <= self.fps <= 100.0:
@@ -97,6 +98,7 @@ class EpisodeCapture:
         if self._renderer is None:
             self._renderer = mujoco.Renderer(self.world.model, self.config.height, self.config.width)
         self._renderer.update_scene(self.world.data, camera=camera)
+        self._renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = self.config.shadows
         return self._renderer.render().copy()
 
     def names(self) -> dict[str, list[str]]:
@@ -126,7 +128,7 @@ class EpisodeCapture:
         arrays = {k: np.asarray([r[k] for r in self.rows], np.float32).reshape(n, -1)
                   for k in ("state", "velocity", "ee_pose", "action")}
         meta = {"fps": self.config.fps, "width": self.config.width, "height": self.config.height,
-                "vcodec": self.config.vcodec, "cameras": self.cameras, "arms": list(self.arms), "names": self.names(),
+                "vcodec": self.config.vcodec, "shadows": self.config.shadows, "cameras": self.cameras, "arms": list(self.arms), "names": self.names(),
                 "image_stats": {k: _image_stats(v) for k, v in self.images.items()}}
         npz = directory / "episode.npz"
         np.savez_compressed(npz, t_s=np.asarray([r["t_s"] for r in self.rows], np.float64),
@@ -159,13 +161,22 @@ def _resolve_cameras(world, wanted: tuple[str, ...]) -> dict[str, str]:
 
 def _image_stats(frames: list[np.ndarray]) -> dict:
     """Per-channel min / max / mean / std / count over every pixel of every frame, in [0, 1] (LeRobot's layout
-    for image features: shape (3, 1, 1))."""
+    for image features: shape (3, 1, 1)). Exact, from each channel's 256-bin histogram (fast on uint8)."""
     if not frames:
         return {}
-    x = np.stack(frames).reshape(-1, 3).astype(np.float64) / 255.0
-    col = lambda v: [[[float(c)]] for c in v]  # noqa: E731 - (3,) -> (3, 1, 1)
-    return {"min": col(x.min(0)), "max": col(x.max(0)), "mean": col(x.mean(0)), "std": col(x.std(0)),
-            "count": [len(frames)]}
+    x = np.stack(frames).reshape(-1, 3)
+    levels = np.arange(256) / 255.0
+    stats: dict[str, list] = {"min": [], "max": [], "mean": [], "std": []}
+    for c in range(3):
+        hist = np.bincount(x[:, c], minlength=256).astype(np.float64)
+        p = hist / hist.sum()
+        mean = float(p @ levels)
+        present = np.nonzero(hist)[0]
+        stats["min"].append([[float(levels[present[0]])]])
+        stats["max"].append([[float(levels[present[-1]])]])
+        stats["mean"].append([[mean]])
+        stats["std"].append([[float(np.sqrt(max(p @ (levels - mean) ** 2, 0.0)))]])
+    return {**stats, "count": [len(frames)]}
 
 
 def encode_video(frames: list[np.ndarray], path: Path, fps: float, vcodec: str = "libsvtav1") -> None:
