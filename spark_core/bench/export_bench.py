@@ -54,6 +54,6 @@ def section(r: dict, command: str) -> str:
                f"{r['export_wall_s']:.1f} s | {mb:.1f} MB | {mb / max(r['episodes'], 1):.2f} MB |\n\n")
     return "\n".join(lines) + "\n" + summary + footer(
         command, f"{r['trials']} builtin trials (tasks in turn, seeds 0..), reference plans, PRIVILEGED resolver, "
-                 f"capture on (agentview + wrist 256×256 at 10 fps of simulated time, libsvtav1 crf 30), recorded on "
+                 f"capture on (agentview + wrist 256×256 at 10 fps of simulated time, no shadow maps, libsvtav1 crf 30), recorded on "
                  f"{r['workers']} local processes in {r['record_wall_s']:.0f} s; export = verified successes only "
                  f"({r['data_files']} data file(s), {r['video_files']} video file(s), videos concatenated by packet copy)")
