@@ -21,7 +21,6 @@ class SceneFeed:
         self._stop = threading.Event()
         self._thread = threading.Thread(target=self._run, name="scene-feed", daemon=True)
         self._n_groundings = 0
-        self.frames = 0
 
     def start(self) -> "SceneFeed":
         self.sink("scene", visual_geoms(self.world.model))
@@ -56,7 +55,6 @@ class SceneFeed:
             mujoco.mju_mat2Quat(q, np.ascontiguousarray(pose.rotation).ravel())
             targets[arm] = (pose.position_m.copy(), q)
         self.sink("poses", (xpos, xquat, targets))
-        self.frames += 1
 
     def _perception(self, force: bool = False) -> None:
         """New groundings since the last look: their keypoints, and the annotated image of the camera used."""

@@ -43,21 +43,21 @@ def create_batch(body: BatchCreate, request: Request) -> dict:
     if body.suite not in SUITES:
         raise HTTPException(422, f"unknown suite {body.suite!r}; available: {', '.join(SUITES)}")
     # named tasks may come from any suite; without names, the whole chosen suite runs
-    BUILTIN = TASKS if (body.tasks or body.specs) else SUITES[body.suite]  # noqa: N806
+    pool = TASKS if (body.tasks or body.specs) else SUITES[body.suite]
     if body.specs is not None:
         if not body.specs:
             raise HTTPException(422, "specs is empty: give at least one trial, or leave it out to run the suite")
         wanted = [sp.task for sp in body.specs]
     else:
-        wanted = body.tasks or list(BUILTIN)
-    unknown = [t for t in dict.fromkeys(wanted) if t not in BUILTIN]
+        wanted = body.tasks or list(pool)
+    unknown = [t for t in dict.fromkeys(wanted) if t not in pool]
     if unknown:
-        raise HTTPException(422, f"unknown task(s) {', '.join(unknown)}; {body.suite} tasks: {', '.join(BUILTIN)}")
+        raise HTTPException(422, f"unknown task(s) {', '.join(unknown)}; {body.suite} tasks: {', '.join(pool)}")
     if body.specs is not None:
-        specs = [TrialSpec(sp.task, sp.instruction or BUILTIN[sp.task].instruction, sp.planner or body.planner,
+        specs = [TrialSpec(sp.task, sp.instruction or pool[sp.task].instruction, sp.planner or body.planner,
                            sp.resolver or body.resolver, sp.seed, capture=body.capture) for sp in body.specs]
     else:
-        specs = [TrialSpec(task, BUILTIN[task].instruction, body.planner, body.resolver, body.seed + k,
+        specs = [TrialSpec(task, pool[task].instruction, body.planner, body.resolver, body.seed + k,
                            capture=body.capture) for task in wanted for k in range(body.trials)]
     if len(specs) > 2000:
         raise HTTPException(422, f"{len(specs)} trials is more than one batch may hold (2000)")

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from ..perception.text_encoder import SHARED_ENCODER, TextEncoder
-from ..planning.library import PlanLibrary, most_similar
+from ..planning.library import PlanLibrary
 from .store import TraceStore
 
 
@@ -36,4 +36,4 @@ class StorePlanLibrary(PlanLibrary):
         return added
 
 
-__all__ = ["StorePlanLibrary", "most_similar"]
+__all__ = ["StorePlanLibrary"]
