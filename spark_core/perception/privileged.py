@@ -35,5 +35,8 @@ class PrivilegedResolver:
         lo, hi = self.world.body_aabb(body)
         R = self.world.body_rotation(body)
         yaw = float(np.arctan2(R[1, 0], R[0, 0]))
-        # AABB extent in the object's own frame is more useful for grasp width: undo the yaw for boxes
-        return Keypoint(label, (lo + hi) / 2, hi - lo, yaw, SOURCE)
+        # The object's own length and width (a turned object's world box overstates them) decide which side the
+        # fingers close across; see Ctx.grasp_yaw.
+        own = self.world.body_extent_m(body, yaw)
+        return Keypoint(label, (lo + hi) / 2, hi - lo, yaw, SOURCE,
+                        detail={"body_extent_m": [round(float(x), 5) for x in own]})

@@ -21,23 +21,29 @@ def _renderer(world, width: int, height: int) -> mujoco.Renderer:
 
 
 def label_table(world) -> tuple[dict[int, str], np.ndarray]:
-    """Object ids and a body-id -> object-id lookup (a part's own id wins over its object's)."""
+    """Object ids and a geom-id -> object-id lookup. A part's own id wins over its object's; a part may be a
+    body or (robosuite) some geoms of a body, listed in `world.part_geoms`."""
     m = world.model
-    labels: dict[int, str] = {}
-    body_to_obj = np.zeros(m.nbody, dtype=np.int32)
+    part_geoms: dict[str, set[int]] = getattr(world, "part_geoms", {})
     named = [(label, world.scene.objects[label].body) for label in world.scene.objects]
     named += [(label, body) for label, (body, _) in world.scene.parts.items()]
-    for i, (label, body) in enumerate(named, start=1):
-        labels[i] = label
+    labels = {i: label for i, (label, _) in enumerate(named, start=1)}
+    body_to_obj = np.zeros(m.nbody, dtype=np.int32)
     depth = {}
     for i, (label, body) in enumerate(named, start=1):
+        if body in part_geoms:
+            continue
         root = m.body(body).id
         for b in range(m.nbody):
             d = _depth_below(m, b, root)
             if d is not None and (b not in depth or d < depth[b]):
                 depth[b] = d
                 body_to_obj[b] = i
-    return labels, body_to_obj
+    geom_to_obj = body_to_obj[m.geom_bodyid]
+    for i, (label, body) in enumerate(named, start=1):
+        if body in part_geoms:
+            geom_to_obj[sorted(part_geoms[body])] = i
+    return labels, geom_to_obj
 
 
 def _depth_below(m: mujoco.MjModel, b: int, root: int) -> int | None:
@@ -72,13 +78,13 @@ def render_frame(world, camera: str, width: int, height: int) -> CameraFrame:
     r.disable_segmentation_rendering()
     if getattr(world, "_label_cache", None) is None:
         world._label_cache = label_table(world)
-    labels, body_to_obj = world._label_cache
+    labels, geom_to_obj = world._label_cache
     geom_ids = seg[:, :, 0]
     is_geom = (seg[:, :, 1] == int(mujoco.mjtObj.mjOBJ_GEOM)) & (geom_ids >= 0)
     obj = np.zeros(geom_ids.shape, dtype=np.int32)
-    obj[is_geom] = body_to_obj[m.geom_bodyid[geom_ids[is_geom]]]
+    obj[is_geom] = geom_to_obj[geom_ids[is_geom]]
     cid = m.camera(camera).id
     T = np.eye(4)
     T[:3, :3] = d.cam_xmat[cid].reshape(3, 3) @ np.diag([1.0, -1.0, -1.0])
-    T[:3, 3] = d.cam_xpos[cid]
+    T[:3, 3] = d.cam_xpos[cid] - getattr(world, "origin_m", 0.0)  # in the world's frame
     return CameraFrame(camera, rgb, depth, intrinsics(m, camera, width, height), T, world.sim_time_s, obj, labels)

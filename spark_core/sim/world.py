@@ -40,10 +40,13 @@ class MujocoWorld:
     """One simulated tabletop. Thread-safe: arms may be commanded from different threads; physics steps
     are serialised under a lock (two arms interleave at control-period granularity)."""
 
-    def __init__(self, scene: Scene):
+    def __init__(self, scene: Scene, data: mujoco.MjData | None = None, origin_m=None):
         self.scene = scene
         self.model = scene.model
-        self.data = mujoco.MjData(self.model)
+        self.data = mujoco.MjData(self.model) if data is None else data
+        # Where this world's frame origin sits in MuJoCo coordinates. Our scenes put it at the robot base on the
+        # table top (zero); adapters of other simulators (robosuite) shift it there so primitives see one frame.
+        self.origin_m = np.zeros(3) if origin_m is None else np.asarray(origin_m, float)
         self.arms: tuple[str, ...] = tuple(scene.robots)
         self.kinematics = {a: ArmKinematics(scene.robot_descriptions[a], scene.T_world_base[a]) for a in self.arms}
         m = self.model
@@ -52,7 +55,9 @@ class MujocoWorld:
         self._act = {a: np.array([m.actuator(x).id for x in n.arm_actuators]) for a, n in scene.robots.items()}
         self._grip = {a: m.actuator(n.gripper_actuator).id for a, n in scene.robots.items()}
         self._fingers = {a: [m.joint(f).qposadr[0] for f in n.finger_joints] for a, n in scene.robots.items()}
-        self._finger_bodies = {a: {m.body(b).id for b in n.finger_bodies} for a, n in scene.robots.items()}
+        # finger -> the bodies that touch with it (a finger and, where the model has them, its pad bodies)
+        self._finger_bodies = {a: {m.body(b).id: _subtree(m, m.body(b).id) for b in n.finger_bodies}
+                               for a, n in scene.robots.items()}
         self._robot_bodies = {m.body(b).id for n in scene.robots.values() for b in n.bodies}
         self._tcp = {a: m.site(n.tcp_site).id for a, n in scene.robots.items()}
         hands = {a: m.site(n.tcp_site).bodyid for a, n in scene.robots.items()}  # the TCP body
@@ -95,29 +100,41 @@ class MujocoWorld:
         """The joint position targets the arm's actuators are tracking (rad): the commanded action."""
         return self.data.ctrl[self._act[arm]].copy()
 
+    def _command_joints(self, arm: str, q_rad: np.ndarray, qd_rad_s: np.ndarray | None = None) -> None:
+        """Set the joint targets the arm tracks from now on (position actuators track them in physics)."""
+        self.data.ctrl[self._act[arm]] = q_rad
+
     def gripper_command_m(self, arm: str) -> float:
         """The commanded finger gap (m); the sensed gap is `gripper_width_m`."""
         return float(2 * self.data.ctrl[self._grip[arm]])
 
+    def _command_gripper(self, arm: str, width_m: float) -> None:
+        self.data.ctrl[self._grip[arm]] = width_m / 2
+
+    def _limit_gripper_force(self, arm: str, force_n: float) -> None:
+        self.model.actuator_forcerange[self._grip[arm]] = [-force_n, force_n]
+
     def tcp_pose(self, arm: str) -> Pose:
         sid = self._tcp[arm]
-        return Pose(self.data.site_xpos[sid].copy(), self.data.site_xmat[sid].reshape(3, 3).copy())
+        return Pose(self.data.site_xpos[sid] - self.origin_m, self.data.site_xmat[sid].reshape(3, 3).copy())
 
     def gripper_width_m(self, arm: str) -> float:
         """Finger gap in metres (the width sensor)."""
-        return float(self.data.qpos[self._fingers[arm]].sum())
+        return float(np.abs(self.data.qpos[self._fingers[arm]]).sum())
 
     def finger_contacts(self, arm: str) -> dict[int, set[int]]:
         """Touch sensing: for each finger body id, the non-robot body ids it touches."""
-        out: dict[int, set[int]] = {b: set() for b in self._finger_bodies[arm]}
+        fingers = self._finger_bodies[arm]
+        out: dict[int, set[int]] = {f: set() for f in fingers}
+        owner = {b: f for f, bodies in fingers.items() for b in bodies}
         m, d = self.model, self.data
         with self._lock:  # another arm's thread may be stepping: read one consistent contact list
             contacts = [(d.contact[i].geom1, d.contact[i].geom2) for i in range(d.ncon)]
         for g1, g2 in contacts:
             b1, b2 = m.geom_bodyid[g1], m.geom_bodyid[g2]
             for f, o in ((b1, b2), (b2, b1)):
-                if f in out and o not in self._robot_bodies:
-                    out[f].add(int(o))
+                if f in owner and o not in self._robot_bodies:
+                    out[owner[f]].add(int(o))
         return out
 
     def pinched_bodies(self, arm: str) -> set[int]:
@@ -168,18 +185,21 @@ class MujocoWorld:
         completed = True
         if len(traj.q_rad):  # where this motion is taking the TCP (shown live in the 3D view)
             self.target_tcp[arm] = self.kinematics[arm].fk(np.asarray(traj.q_rad[-1]))
-        for q_cmd in traj.q_rad:
+        for q_cmd, qd_cmd in zip(traj.q_rad, traj.qd_rad_s):
             with self._lock:
-                self.data.ctrl[self._act[arm]] = q_cmd
+                self._command_joints(arm, q_cmd, qd_cmd)
                 self._tick(n_sub)
                 self._record(arm)
                 if stop is not None and stop():
-                    self.data.ctrl[self._act[arm]] = self.q(arm)  # hold where contact stopped us
+                    self._command_joints(arm, self.q(arm))  # hold where contact stopped us
                     completed = False
                     break
-        if completed and settle_s > 0:
-            self.settle(settle_s)
-        err = float(np.max(np.abs(self.q(arm) - self.data.ctrl[self._act[arm]])))
+        if completed:
+            with self._lock:
+                self._command_joints(arm, self.joint_command(arm))  # the end point, at rest
+            if settle_s > 0:
+                self.settle(settle_s)
+        err = float(np.max(np.abs(self.q(arm) - self.joint_command(arm))))
         return ExecResult(completed, self.sim_time_s - t0, err)
 
     def set_gripper(self, arm: str, width_m: float, force_n: float, duration_s: float = 0.6) -> float:
@@ -187,18 +207,17 @@ class MujocoWorld:
         g = self.scene.robot_descriptions[arm].gripper
         width_m = float(np.clip(width_m, 0.0, g.max_width_m))
         force_n = float(np.clip(force_n, 1.0, g.max_force_n))
-        gid = self._grip[arm]
         n_sub = max(int(round(CONTROL_DT_S / self.model.opt.timestep)), 1)
         t0 = self.sim_time_s
         with self._lock:
-            self.model.actuator_forcerange[gid] = [-force_n, force_n]
+            self._limit_gripper_force(arm, force_n)
         # The finger set-point moves at the finger speed (a stiff servo tracking a ramp): fingers never slam
         # through thin parts, and on contact the servo error grows until the force limit caps the squeeze.
-        step = g.finger_speed_m_s * CONTROL_DT_S
-        while abs(self.data.ctrl[gid] - width_m / 2) > 1e-9:
+        step = 2 * g.finger_speed_m_s * CONTROL_DT_S
+        while abs(self.gripper_command_m(arm) - width_m) > 1e-9:
             with self._lock:
-                c = self.data.ctrl[gid]
-                self.data.ctrl[gid] = c + float(np.clip(width_m / 2 - c, -step, step))
+                c = self.gripper_command_m(arm)
+                self._command_gripper(arm, width_m if abs(width_m - c) <= step else c + float(np.sign(width_m - c)) * step)
                 self._tick(n_sub)
                 self._record(arm)
         remaining = duration_s - (self.sim_time_s - t0)
@@ -218,7 +237,7 @@ class MujocoWorld:
 
     # -- privileged ground truth (only for oracles and success predicates; never for the planner) ----------------
     def body_position(self, body: str) -> np.ndarray:
-        return self.data.body(body).xpos.copy()
+        return self.data.body(body).xpos - self.origin_m
 
     def body_rotation(self, body: str) -> np.ndarray:
         return self.data.body(body).xmat.reshape(3, 3).copy()
@@ -235,25 +254,40 @@ class MujocoWorld:
         """Teleport a free object (tests: move an object mid-plan)."""
         with self._lock:
             adr = self.model.joint(body + "/free").qposadr[0]
-            self.data.qpos[adr:adr + 3] = xyz
+            self.data.qpos[adr:adr + 3] = np.asarray(xyz, float) + self.origin_m
             self.data.qvel[self.model.joint(body + "/free").dofadr[0]:][:6] = 0
             mujoco.mj_forward(self.model, self.data)
 
+    def body_geoms(self, body: str) -> list[int]:
+        """Geom ids of a body and its sub-bodies."""
+        m = self.model
+        root = m.body(body).id
+        ids = {b for b in range(m.nbody) if b == root or _is_descendant(m, b, root)}
+        return [g for g in range(m.ngeom) if m.geom_bodyid[g] in ids]
+
+    def _geoms_bounds(self, geoms, R_frame: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """(min, max) of the geoms' boxes along the axes of `R_frame` (world axes when None), MuJoCo origin."""
+        m, d = self.model, self.data
+        Rt = np.eye(3) if R_frame is None else R_frame.T
+        lo, hi = np.full(3, np.inf), np.full(3, -np.inf)
+        for g in geoms:
+            R = Rt @ d.geom_xmat[g].reshape(3, 3)
+            ext = np.abs(R) @ _geom_half_extent(m, g)
+            c = Rt @ d.geom_xpos[g]
+            lo, hi = np.minimum(lo, c - ext), np.maximum(hi, c + ext)
+        return lo, hi
+
     def body_aabb(self, body: str) -> tuple[np.ndarray, np.ndarray]:
         """World-frame axis-aligned bounds (min, max) of a body and its sub-bodies' geoms."""
-        m, d = self.model, self.data
-        root = m.body(body).id
-        ids = [b for b in range(m.nbody) if b == root or _is_descendant(m, b, root)]
-        lo, hi = np.full(3, np.inf), np.full(3, -np.inf)
-        for g in range(m.ngeom):
-            if m.geom_bodyid[g] not in ids:
-                continue
-            R = d.geom_xmat[g].reshape(3, 3)
-            half = _geom_half_extent(m, g)
-            ext = np.abs(R) @ half
-            lo = np.minimum(lo, d.geom_xpos[g] - ext)
-            hi = np.maximum(hi, d.geom_xpos[g] + ext)
-        return lo, hi
+        lo, hi = self._geoms_bounds(self.body_geoms(body))
+        return lo - self.origin_m, hi - self.origin_m
+
+    def body_extent_m(self, body: str, yaw_rad: float) -> np.ndarray:
+        """Full size of the body's geoms along the axes of a frame turned `yaw_rad` about world z: the object's
+        own length and width, which a world-axis box overstates once it is turned."""
+        c, s = np.cos(yaw_rad), np.sin(yaw_rad)
+        lo, hi = self._geoms_bounds(self.body_geoms(body), np.array([[c, -s, 0], [s, c, 0], [0, 0, 1.0]]))
+        return hi - lo
 
     def body_id(self, body: str) -> int:
         return self.model.body(body).id
@@ -297,6 +331,10 @@ class MujocoWorld:
         elif self.renderer is not None:
             self.renderer.close()
         self.renderer = None
+
+
+def _subtree(m: mujoco.MjModel, root: int) -> set[int]:
+    return {b for b in range(m.nbody) if b == root or _is_descendant(m, b, root)}
 
 
 def _is_descendant(m: mujoco.MjModel, b: int, root: int) -> bool:

@@ -82,8 +82,9 @@ class Ctx:
         """Fingers close across the object's short side: yaw from its principal axis, else keep the current."""
         if kp.yaw_rad is None:
             return self.current_yaw()
-        ext = kp.extent_m
-        yaw = kp.yaw_rad if ext[0] >= ext[1] else kp.yaw_rad + np.pi / 2
+        own = kp.detail.get("body_extent_m")  # length along the yaw axis and width across it, when known
+        longer_along_yaw = own[0] >= own[1] if own is not None else kp.extent_m[0] >= kp.extent_m[1]
+        yaw = kp.yaw_rad if longer_along_yaw else kp.yaw_rad + np.pi / 2
         return wrap_grasp_yaw(yaw)
 
     def top_down(self, position, yaw: float | None = None) -> Pose:

@@ -111,15 +111,20 @@ def _handles(kp: Keypoint) -> list[Keypoint]:
     """The two ends of the object's long axis (its handles), as small keypoints whose short side runs along it."""
     yaw = kp.yaw_rad or 0.0
     # extents are world-axis-aligned: the object's own x axis is its long one if it lies along the longer side
-    body_x_long = (kp.extent_m[0] >= kp.extent_m[1]) == (abs(np.cos(yaw)) >= abs(np.sin(yaw)))
+    own = kp.detail.get("body_extent_m")  # the object's own length and width, when the resolver knows them
+    if own is not None:
+        body_x_long = own[0] >= own[1]
+        half = max(own[0], own[1]) / 2
+    else:
+        body_x_long = (kp.extent_m[0] >= kp.extent_m[1]) == (abs(np.cos(yaw)) >= abs(np.sin(yaw)))
+        half = max(kp.extent_m[0], kp.extent_m[1]) / 2
     axis_yaw = yaw if body_x_long else yaw + np.pi / 2
-    half = max(kp.extent_m[0], kp.extent_m[1]) / 2
     axis = np.array([np.cos(axis_yaw), np.sin(axis_yaw), 0.0])
     out = []
     for s in (-1.0, 1.0):
         p = kp.position_m + s * axis * (half - 0.012)
         out.append(replace(kp, label=f"{kp.label} handle", position_m=p, extent_m=np.array([0.024, 0.06, kp.extent_m[2]]),
-                           yaw_rad=axis_yaw))
+                           yaw_rad=axis_yaw, detail={}))
     return out
 
 

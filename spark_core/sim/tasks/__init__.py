@@ -2,9 +2,10 @@
 
 from .bimanual import SUITE as BIMANUAL
 from .builtin import SUITE as BUILTIN
+from .capbench import SUITE as CAPBENCH
 from .spec import TaskSpec
 
-TASKS: dict[str, TaskSpec] = {**BUILTIN, **BIMANUAL}  # every task by name (console, replay, export)
-SUITES: dict[str, dict[str, TaskSpec]] = {"builtin": BUILTIN, "bimanual": BIMANUAL}
+TASKS: dict[str, TaskSpec] = {**BUILTIN, **BIMANUAL, **CAPBENCH}  # every task by name (console, replay, export)
+SUITES: dict[str, dict[str, TaskSpec]] = {"builtin": BUILTIN, "bimanual": BIMANUAL, "capbench": CAPBENCH}
 
-__all__ = ["BIMANUAL", "BUILTIN", "SUITES", "TASKS", "TaskSpec"]
+__all__ = ["BIMANUAL", "BUILTIN", "CAPBENCH", "SUITES", "TASKS", "TaskSpec"]

@@ -30,6 +30,8 @@ class TaskSpec:
     max_sim_s: float = 60.0
     tags: tuple[str, ...] = field(default_factory=tuple)
     embodiments: tuple[str, ...] = ("panda", "ur10", "bimanual")  # where the task fits; the first is the default
+    # Worlds not built by our scene builder (robosuite, LIBERO): seed -> world, already in its start state
+    world_factory: Callable[[int], MujocoWorld] | None = None
 
     def reference_plan_text(self) -> str:
         return resources.files(__package__).joinpath("reference", f"{self.name}.yaml").read_text(encoding="utf-8")
@@ -39,6 +41,8 @@ class TaskSpec:
         if embodiment not in self.embodiments:
             raise ValueError(f"task {self.name!r} needs one of the embodiments {', '.join(self.embodiments)}, "
                              f"not {embodiment!r}")
+        if self.world_factory is not None:
+            return self.world_factory(seed)
         scene = build_scene(robots_for(embodiment), list(self.objects), seed)
         world = MujocoWorld(scene)
         if self.setup is not None:

@@ -1,0 +1,77 @@
+"""The `capbench` suite: CaP-Bench robosuite tasks (as CaP-X defines them) behind the robosuite adapter.
+
+Success is robosuite's own predicate on the env (plus what CaP-X adds, said in `predicate`), evaluated after the
+plan ends; a trial also fails when it used more simulated time than the task's horizon (N steps at 20 Hz).
+Needs the benchmark extras (`make bench-deps`).
+"""
+
+from __future__ import annotations
+
+from functools import partial
+
+from ..capbench_envs import ENVS, make_env
+from ..robosuite_world import RobosuiteObject as Obj
+from ..robosuite_world import RobosuiteWorld
+from .spec import TaskSpec
+
+ROBOSUITE_PANDA = "robosuite-panda"
+ROBOSUITE_TWO_PANDAS = "robosuite-two-pandas"
+
+# What perception can be asked about in each env: labels, descriptions, and the bodies (or geoms) they are.
+OBJECTS: dict[str, list[Obj]] = {
+    "Lift": [Obj("red cube", "small red wooden cube", "cube_main")],
+    "Stack": [Obj("red cube", "small red wooden cube", "cubeA_main"),
+              Obj("green cube", "green wooden cube", "cubeB_main")],
+    "CubeRestack": [Obj("red cube", "small red wooden cube", "cubeA_main"),
+                    Obj("green cube", "small green wooden cube", "cubeB_main")],
+    "NutAssemblySquare": [Obj("square nut", "brass square nut with a handle", "SquareNut_main", category="tool"),
+                          Obj("square nut handle", "handle of the brass square nut", "SquareNut_main",
+                              geoms=("SquareNut_g4",), category="tool"),
+                          Obj("square peg", "square metal peg standing on the table", "peg1", category="fixture"),
+                          Obj("round peg", "round metal peg standing on the table", "peg2", category="fixture")],
+    "TwoArmLift": [Obj("pot", "metal pot with two handles", "pot_root", category="container"),
+                   Obj("pot handle 0", "one handle of the pot", "pot_root",
+                       geoms=("pot_handle0_c", "pot_handle0_-", "pot_handle0_+"), category="container"),
+                   Obj("pot handle 1", "the other handle of the pot", "pot_root",
+                       geoms=("pot_handle1_c", "pot_handle1_-", "pot_handle1_+"), category="container")],
+    "TwoArmHandover": [Obj("hammer", "hammer with a wooden handle", "hammer_root", category="tool"),
+                       Obj("hammer handle", "wooden handle of the hammer", "hammer_root", geoms=("hammer_handle",),
+                           category="tool")],
+}
+
+
+def _world(name: str, seed: int) -> RobosuiteWorld:
+    return RobosuiteWorld(make_env(name, seed), OBJECTS[name], seed=seed)
+
+
+def _lift_success(w: RobosuiteWorld) -> bool:
+    env = w.env
+    return bool(env._check_success() and env._check_grasp(gripper=env.robots[0].gripper, object_geoms=env.cube))
+
+
+def _robosuite_success(w: RobosuiteWorld) -> bool:
+    return bool(w.env._check_success())
+
+
+def _task(name: str, instruction: str, success, predicate: str, two_arms: bool = False) -> TaskSpec:
+    return TaskSpec(name, instruction, (), success, predicate, max_sim_s=ENVS[name].horizon_s,
+                    tags=("capbench", "robosuite"), embodiments=(ROBOSUITE_TWO_PANDAS if two_arms else ROBOSUITE_PANDA,),
+                    world_factory=partial(_world, name))
+
+
+SUITE: dict[str, TaskSpec] = {t.name: t for t in [
+    _task("Lift", "lift the red cube", _lift_success,
+          "robosuite Lift: cube > 4 cm above the table, and (CaP-X) still grasped at the end"),
+    _task("Stack", "stack the red cube on the green cube", _robosuite_success,
+          "robosuite Stack: red cube lifted, touching the green cube, not grasped (CaP-X placement x +-18, y +-12 cm)"),
+    _task("CubeRestack", "put the red cube on top of the green cube", _robosuite_success,
+          "robosuite Stack predicate on CaP-X CubeRestack: two 4 cm cubes, green starts on red; red ends on green, released"),
+    _task("NutAssemblySquare", "put the square nut onto the square peg", _robosuite_success,
+          "robosuite NutAssemblySquare: nut within 3 cm of the peg axis, below 5 cm, gripper > 4.2 cm from the nut"),
+    _task("TwoArmLift", "lift the pot with both arms, holding it by its two handles", _robosuite_success,
+          "robosuite TwoArmLift: pot bottom > 10 cm above the table (does not check that both arms hold it)",
+          two_arms=True),
+    _task("TwoArmHandover", "pick up the hammer with one arm and hand it over to the other arm", _robosuite_success,
+          "robosuite TwoArmHandover: arm 1 grasps the handle, arm 0 holds nothing, hammer above the height threshold",
+          two_arms=True),
+]}
