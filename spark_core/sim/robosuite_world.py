@@ -4,8 +4,9 @@ The executor and primitives run unchanged. What the adapter does:
 - Frame: our world frame has its origin under the first robot's base on the table top, x forward, z up
   (robosuite's is the floor under the table centre). `origin_m` is where our origin sits in robosuite's.
 - Arms: robosuite's Pandas have torque motors. A computed-torque joint servo (PD through the joint-space
-  inertia plus gravity/Coriolis compensation) tracks our joint trajectories at every physics step, in place of
-  robosuite's 20 Hz controllers. Nothing else in the model changes.
+  inertia, plus gravity, Coriolis and passive-force compensation) tracks our joint trajectories at every
+  physics step, in place of robosuite's 20 Hz controllers. Nothing in the model changes but the gripper's
+  force limit per grasp.
 - Gripper: the two finger position actuators get +-half the commanded gap; the force limit is the model's own
   (20 N), the strongest the robosuite Panda hand can squeeze.
 - TCP: robosuite's `grip_site` (0.097 m below the hand flange) with the hand's orientation, which is the frame
@@ -63,6 +64,9 @@ def robosuite_panda() -> RobotDescription:
         home_q_rad=np.array([0.0, np.pi / 16, 0.0, -np.pi / 2 - np.pi / 3, 0.0, np.pi - 0.2, np.pi / 4]),
         gripper=GripperSpec(base.gripper.finger_joints, max_width_m=0.08, closed_empty_width_m=0.004,
                             max_force_n=20.0, finger_speed_m_s=0.1),
+        # The wrist motors give 12 N m, and robosuite's hand has a large inertia box that MuJoCo's air drag
+        # acts on: the wrist joints top out near 1.5 rad/s, so trajectories are planned slower there.
+        max_velocity_rad_s=(2.175, 2.175, 2.175, 2.175, 1.0, 1.0, 1.0),
     )
 
 
@@ -167,7 +171,7 @@ class RobosuiteWorld(MujocoWorld):
             for a in self.arms:
                 dofs, q = self._dadr[a], d.qpos[self._qadr[a]]
                 accel = SERVO_KP * (self._q_cmd[a] - q) + SERVO_KD * (self._qd_cmd[a] - d.qvel[dofs])
-                tau = self._M[np.ix_(dofs, dofs)] @ accel + d.qfrc_bias[dofs]
+                tau = self._M[np.ix_(dofs, dofs)] @ accel + d.qfrc_bias[dofs] - d.qfrc_passive[dofs]
                 lo, hi = self._ctrl_range[a]
                 d.ctrl[self._act[a]] = np.clip(tau, lo, hi)
             mujoco.mj_step(m, d)

@@ -1,4 +1,4 @@
-"""Grasping objects and putting them down: pick, place, place_in, stack, insert, drag, hang, grasp_se3."""
+"""Grasping objects and putting them down: pick, place, place_in, stack, insert, place_over, drag, hang, grasp_se3."""
 
 from __future__ import annotations
 
@@ -166,6 +166,65 @@ def insert(ctx: Ctx) -> ActionOutcome:
     if not reached:
         return ctx.fail(f"jammed {100 * (ctx.tcp.position_m[2] - goal_z):.1f} cm above the insertion depth")
     return ActionOutcome.success(0.0)
+
+
+def _wrap(angle: float, period: float = 2 * np.pi) -> float:
+    return float((angle + period / 2) % period - period / 2)
+
+
+@primitive("place_over")
+def place_over(ctx: Ctx) -> ActionOutcome:
+    """The held object's centre (seen now, in the hand) goes over the peg: the TCP target is the peg minus the
+    object's offset from the TCP, turned by the wrist rotation that lines the object's sides up with the peg's
+    (square openings: modulo 90 degrees). Compliant descent to the peg's base; stopping high means it jammed."""
+    if not ctx.holding():
+        return ctx.fail("place_over with nothing in the gripper")
+    obj, peg = ctx.kp("keypoint_label"), ctx.kp("target_label")
+    tcp = ctx.tcp
+    turn = 0.0
+    if obj.yaw_rad is not None and peg.yaw_rad is not None:
+        turn = _wrap(peg.yaw_rad - obj.yaw_rad, np.pi / 2)
+    actual_yaw = float(np.arctan2(tcp.rotation[1, 0], tcp.rotation[0, 0]))
+    base_xy = ctx.world.kinematics[ctx.arm].T_world_base[:2, 3]
+    options = []  # a square opening fits every quarter turn: take the one that keeps the hand nearest the base
+    for k in range(4):
+        yaw = ctx.current_yaw() + turn + k * np.pi / 2
+        R = ctx.top_down(tcp.position_m, yaw).rotation
+        applied = _wrap(float(np.arctan2(R[1, 0], R[0, 0])) - actual_yaw)  # the wrist's real turn, incl. any flip
+        c, s = np.cos(applied), np.sin(applied)
+        xy = peg.position_m[:2] - np.array([[c, -s], [s, c]]) @ (obj.position_m[:2] - tcp.position_m[:2])
+        options.append((float(np.linalg.norm(xy - base_xy)), yaw, applied, xy))
+    _, yaw, applied, xy = min(options, key=lambda o: o[0])
+    tcp_above_bottom = float(tcp.position_m[2] - (obj.position_m[2] - obj.extent_m[2] / 2))
+    above = ctx.top_down([xy[0], xy[1], peg.top_z_m + tcp_above_bottom + 0.03], yaw)
+    out = ctx.motion.move_to(above, what=f"point above {peg.label!r}")
+    if not out.ok:
+        return out
+    for _ in range(3):  # look again and close the remaining gap: openings leave millimetres of clearance
+        now = ctx.observe(obj.label)
+        if now is None:
+            break
+        gap = peg.position_m[:2] - now.position_m[:2]
+        if np.linalg.norm(gap) < 0.002:
+            break
+        xy = xy + gap
+        ctx.motion.move_line(ctx.top_down([xy[0], xy[1], above.position_m[2]], yaw), speed_m_s=0.05,
+                             what="centre over the peg", check=False)
+    base_z = max(peg.position_m[2] - peg.extent_m[2] / 2, 0.0)  # a peg may be sunk into the table (z = 0)
+    goal_z = base_z + tcp_above_bottom + 0.004
+    ctx.motion.move_line(ctx.top_down([xy[0], xy[1], goal_z], yaw), speed_m_s=0.05, stop=ctx.contact(10.0),
+                         what=f"base of {peg.label!r}", check=False)
+    bottom_z = float(ctx.tcp.position_m[2] - tcp_above_bottom)  # where the object's underside got to
+    open_gripper(ctx)
+    ctx.memory.held_label = None
+    ctx.motion.move_line(ctx.tcp.translated([0, 0, 0.10]), what="retreat", check=False)
+    through_m = peg.top_z_m - bottom_z
+    if through_m < min(0.03, 0.5 * (peg.top_z_m - base_z)):
+        return ctx.fail(f"{obj.label!r} jammed: its underside stopped {100 * (bottom_z - base_z):.1f} cm above the "
+                        f"base of {peg.label!r}, {100 * max(through_m, 0.0):.1f} cm down the peg")
+    if ctx.world.pinched_bodies(ctx.arm):
+        return ctx.fail("object stuck to the gripper after release")
+    return ActionOutcome.success(0.0, turned_rad=round(applied, 4))
 
 
 @primitive("drag")

@@ -24,7 +24,9 @@ OBJECTS: dict[str, list[Obj]] = {
               Obj("green cube", "green wooden cube", "cubeB_main")],
     "CubeRestack": [Obj("red cube", "small red wooden cube", "cubeA_main"),
                     Obj("green cube", "small green wooden cube", "cubeB_main")],
-    "NutAssemblySquare": [Obj("square nut", "brass square nut with a handle", "SquareNut_main", category="tool"),
+    # the nut is its ring (whose centre is the opening's); the handle is a part of its own
+    "NutAssemblySquare": [Obj("square nut", "brass square nut", "SquareNut_main",
+                              geoms=("SquareNut_g0", "SquareNut_g1", "SquareNut_g2", "SquareNut_g3"), category="tool"),
                           Obj("square nut handle", "handle of the brass square nut", "SquareNut_main",
                               geoms=("SquareNut_g4",), category="tool"),
                           Obj("square peg", "square metal peg standing on the table", "peg1", category="fixture"),

@@ -42,9 +42,9 @@ class TaskSpec:
             raise ValueError(f"task {self.name!r} needs one of the embodiments {', '.join(self.embodiments)}, "
                              f"not {embodiment!r}")
         if self.world_factory is not None:
-            return self.world_factory(seed)
-        scene = build_scene(robots_for(embodiment), list(self.objects), seed)
-        world = MujocoWorld(scene)
+            world = self.world_factory(seed)
+        else:
+            world = MujocoWorld(build_scene(robots_for(embodiment), list(self.objects), seed))
         if self.setup is not None:
             self.setup(world, np.random.default_rng(seed + 10_000))
         world.settle(0.3)
