@@ -223,6 +223,13 @@ class MujocoWorld:
         remaining = duration_s - (self.sim_time_s - t0)
         if remaining > 0:
             self.settle(remaining, arm)
+        # Like a gripper driver's "motion complete": wait (at most 1 s more) while the fingers are still moving,
+        # e.g. heavily damped fingers (robosuite's) lagging the set-point.
+        for _ in range(100):
+            before = self.gripper_width_m(arm)
+            self.settle(CONTROL_DT_S, arm)
+            if abs(self.gripper_width_m(arm) - before) < 2e-4:
+                break
         return self.sim_time_s - t0
 
     def settle(self, seconds: float, arm: str | None = None) -> float:

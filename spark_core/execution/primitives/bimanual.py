@@ -74,7 +74,12 @@ def handoff(ctx: Ctx) -> ActionOutcome:
     toward[2] = 0.0
     toward /= max(np.linalg.norm(toward), 1e-9)
     mid = (base[giver.arm] + base[receiver.arm]) / 2
-    meet = np.array([mid[0] + 0.5, mid[1], HANDOFF_HEIGHT_M])
+    # Meet in front of arms standing side by side (their facing directions agree); between arms that face
+    # each other across the table (the directions cancel), at the midpoint.
+    facing = sum(ctx.world.kinematics[arm].T_world_base[:3, 0] for arm in (giver.arm, receiver.arm)) / 2
+    facing[2] = 0.0
+    ahead = 0.5 * facing / np.linalg.norm(facing) if np.linalg.norm(facing) > 0.5 else np.zeros(3)
+    meet = np.array([mid[0] + ahead[0], mid[1] + ahead[1], HANDOFF_HEIGHT_M])
     yaw = wrap_grasp_yaw(float(np.arctan2(toward[1], toward[0])))  # the object's long axis points at the receiver
     with cooperative(giver, receiver):
         open_gripper(receiver)

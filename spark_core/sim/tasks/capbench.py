@@ -33,9 +33,9 @@ OBJECTS: dict[str, list[Obj]] = {
                           Obj("round peg", "round metal peg standing on the table", "peg2", category="fixture")],
     "TwoArmLift": [Obj("pot", "metal pot with two handles", "pot_root", category="container"),
                    Obj("pot handle 0", "one handle of the pot", "pot_root",
-                       geoms=("pot_handle0_c", "pot_handle0_-", "pot_handle0_+"), category="container"),
+                       geoms=("pot_handle0_c",), category="container"),  # the grip bar
                    Obj("pot handle 1", "the other handle of the pot", "pot_root",
-                       geoms=("pot_handle1_c", "pot_handle1_-", "pot_handle1_+"), category="container")],
+                       geoms=("pot_handle1_c",), category="container")],
     "TwoArmHandover": [Obj("hammer", "hammer with a wooden handle", "hammer_root", category="tool"),
                        Obj("hammer handle", "wooden handle of the hammer", "hammer_root", geoms=("hammer_handle",),
                            category="tool")],
