@@ -6,7 +6,7 @@ STAMP := $(VENV)/.installed
 export MUJOCO_GL ?= egl
 export HF_HUB_OFFLINE := 1
 
-.PHONY: install run serve demo test test-all grammar-docs clean
+.PHONY: install bench-deps run serve demo test test-all grammar-docs clean
 
 install: $(STAMP)
 
@@ -19,6 +19,16 @@ $(STAMP): pyproject.toml requirements.lock scripts/apt-deps.sh
 	$(BIN)/pip install -q --no-deps -e .
 	@touch $@
 
+# Benchmark extras (robosuite for the capbench suite) into the same venv, one pinned mujoco for everything.
+BENCH_STAMP := $(VENV)/.bench-installed
+bench-deps: $(BENCH_STAMP)
+
+$(BENCH_STAMP): $(STAMP) requirements-bench.lock
+	$(BIN)/pip install -q -r requirements-bench.lock
+	$(BIN)/pip install -q --no-deps robosuite==1.4.0
+	@$(BIN)/python -c "import mujoco, robosuite; assert mujoco.__version__ == '3.3.7', mujoco.__version__" 2>/dev/null
+	@touch $@
+
 run: demo
 
 serve: install
@@ -28,10 +38,11 @@ demo: install
 	$(BIN)/spark validate examples/plans/*.yaml
 	$(BIN)/spark run stack_three --seed 0
 
-test: install
+# The benchmark extras are part of the tests: each suite gets a one-trial smoke.
+test: install bench-deps
 	$(BIN)/python -m pytest -q
 
-test-all: install
+test-all: install bench-deps
 	SPARK_SLOW=1 $(BIN)/python -m pytest -q
 
 grammar-docs: install

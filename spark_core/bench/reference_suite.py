@@ -86,9 +86,17 @@ def phase_table(rows: list[dict]) -> str:
 
 def section(rows: list[dict], command: str, perception: PerceptionConfig, recovery: RecoveryPolicy,
             executor: str = "local") -> str:
+    from ..sim.tasks import TASKS
+    from .published import comparison_table
+
     seeds = f"; seeds {min(r['seed'] for r in rows)}–{max(r['seed'] for r in rows)}; executor: {executor}"
-    return (table(rows) + "\n\nMedian wall time per phase:\n\n" + phase_table(rows) + "\n\n"
-            + footer(command, protocol(perception, recovery) + seeds))
+    predicates = "; ".join(f"{t}: {TASKS[t].predicate}" for t in dict.fromkeys(r["task"] for r in rows) if t in TASKS)
+    published = comparison_table(rows)
+    return (table(rows) + ("\n\nAgainst the published figures (different planner and perception: see protocol):\n\n"
+                           + published if published else "")
+            + "\n\nMedian wall time per phase:\n\n" + phase_table(rows) + "\n\n"
+            + footer(command, protocol(perception, recovery) + seeds
+                     + f"; success predicates: {predicates}; a trial also fails past the task's horizon"))
 
 
 def embodiment_section(rows_by_embodiment: dict[str, list[dict]], command: str, perception: PerceptionConfig,

@@ -65,6 +65,9 @@ class TrialOutcome:
 def make_resolver(world, config: PerceptionConfig, seed: int):
     if config.resolver == "privileged":
         return PrivilegedResolver(world)
+    missing = [c for c in config.cameras if c not in world.scene.cameras]
+    if missing:
+        raise ValueError(f"camera(s) {', '.join(missing)} not in this scene; it has {', '.join(world.scene.cameras)}")
     segmenter = SimSegmenter(world.scene.catalog())
     if config.resolver == "sim-noisy":
         segmenter = SimNoisySegmenter(segmenter, config.noise, seed)
@@ -137,11 +140,15 @@ def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
         library = PrimitiveLibrary(world, resolver, seed=seed)
         plan = plan or parse_plan(task.reference_plan_text())
         t_run = time.perf_counter()
+        sim_start_s = world.sim_time_s
         world.wall_s.update(simulation=0.0, rendering=0.0)  # the scene's settling belongs to setup
         result = Executor(library, resolver, recovery=recovery, bus=bus, trial_id=f"{task.name}-{seed}").run(plan)
         world.settle(0.5)
         t_end = time.perf_counter()
-        success = bool(task.success(world))
+        used_s = world.sim_time_s - sim_start_s
+        success = bool(task.success(world)) and used_s <= task.max_sim_s  # past the horizon the episode is over
+        if used_s > task.max_sim_s and result.outcome == "success":
+            result.reason = f"past the task's horizon: {used_s:.1f} s of simulated time, limit {task.max_sim_s:.0f} s"
         if episode is not None:
             from ..trace.artifacts import capture_entries
 

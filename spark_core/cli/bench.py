@@ -10,7 +10,7 @@ from pathlib import Path
 
 def register(sub) -> None:
     b = sub.add_parser("bench", help="run a benchmark and optionally write its section of BENCHMARKS.md")
-    b.add_argument("suite", choices=["builtin", "bimanual", "embodiments", "grounding", "paraphrases", "ik", "speed", "api", "latency",
+    b.add_argument("suite", choices=["builtin", "bimanual", "capbench", "embodiments", "grounding", "paraphrases", "ik", "speed", "api", "latency",
                                      "viser", "export", "throughput"])
     b.add_argument("--embodiment", help="robot set-up (panda, ur10, bimanual; default: the task's own)")
     b.add_argument("--embodiments", nargs="+", default=["panda", "ur10", "bimanual"],
@@ -24,7 +24,8 @@ def register(sub) -> None:
     b.add_argument("--no-adaptive", action="store_true", help="one prompt per label (no adaptive self-consistency)")
     b.add_argument("--no-recovery", action="store_true", help="no retries (recovery tiers off)")
     b.add_argument("--miss-rate", type=float, default=0.2, help="sim-noisy detector miss rate")
-    b.add_argument("--cameras", nargs="+", default=["agentview", "side"], help="cameras the resolver fuses")
+    b.add_argument("--cameras", nargs="+", help="cameras the resolver fuses (default: agentview side; robosuite "
+                                                "suites: agentview sideview)")
     b.add_argument("--title", help="BENCHMARKS.md section title (default derived from the resolver)")
     b.add_argument("--workers", type=int, default=1, help="worker processes (local pool) or CPUs (a local Ray cluster)")
     b.add_argument("--executor", choices=["local", "ray"], default="local",
@@ -129,9 +130,10 @@ def _cmd_bench(args: argparse.Namespace) -> int:
             print("only --planner reference is available until the planning backends land", file=sys.stderr)
             return 2
         perception = PerceptionConfig(args.resolver, not args.no_adaptive, NoiseModel(miss_rate=args.miss_rate),
-                                      tuple(args.cameras))
+                                      tuple(args.cameras or (["agentview", "sideview"] if args.suite == "capbench"
+                                                             else ["agentview", "side"])))
         recovery = RecoveryPolicy(max_retries=0) if args.no_recovery else RecoveryPolicy()
-        suite = SUITES["bimanual" if args.suite == "bimanual" else "builtin"]
+        suite = SUITES[args.suite if args.suite in ("bimanual", "capbench") else "builtin"]
         tasks = args.tasks or list(suite)
         unknown = [t for t in tasks if t not in suite]
         if unknown:

@@ -121,7 +121,10 @@ class RobosuiteWorld(MujocoWorld):
         cams = tuple(m.camera(c).name for c in range(m.ncam))
         scene = Scene(m, names, {a: robosuite_panda() for a in arms}, T_world_base, placed, parts, cams, seed,
                       extra={"perception_cameras": perception_cameras, "simulator": "robosuite"})
-        self.part_geoms = {f"{o.body}#{o.label}": {m.geom(g).id for g in o.geoms} for o in objects if o.geoms}
+        # a part's geoms with their visual twins (robosuite draws `<geom>_visual` / `<geom>_vis`, not the collider)
+        self.part_geoms = {f"{o.body}#{o.label}": {m.geom(n).id for g in o.geoms for n in (g, f"{g}_visual", f"{g}_vis")
+                                                   if mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_GEOM, n) >= 0}
+                           for o in objects if o.geoms}
         m.vis.global_.offwidth, m.vis.global_.offheight = max(m.vis.global_.offwidth, 640), max(m.vis.global_.offheight, 480)
         self._q_cmd: dict[str, np.ndarray] = {}
         self._qd_cmd: dict[str, np.ndarray] = {}
