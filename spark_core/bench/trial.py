@@ -4,10 +4,11 @@ from __future__ import annotations
 
 import time
 from pathlib import Path
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from ..execution import Executor, RecoveryPolicy, TrialResult
+from ..execution.protocols import FailureKind
 from ..execution.primitives import PrimitiveLibrary
 from ..grammar import Plan, parse_plan
 from ..perception.noisy_segmenter import NoiseModel, SimNoisySegmenter
@@ -62,6 +63,18 @@ class TrialOutcome:
         return {k: v for k, v in self.__dict__.items() if k != "result"}
 
 
+def _plan_once(planner: str, instruction: str, world, resolver):
+    """Perception looks for the instruction's phrases, then one planner call (timed)."""
+    from ..planning.backends import make_planner
+    from ..planning.observe import arm_bases, observe
+    from ..planning.protocol import PlanRequest
+
+    t0 = time.perf_counter()
+    view = observe(instruction, resolver)
+    result = make_planner(planner).plan(PlanRequest(instruction, view, (), arm_bases(world)))
+    return replace(result, latency_s=time.perf_counter() - t0)
+
+
 def make_resolver(world, config: PerceptionConfig, seed: int):
     if config.resolver == "privileged":
         return PrivilegedResolver(world)
@@ -114,8 +127,10 @@ def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
                         recovery: RecoveryPolicy = RecoveryPolicy(),
                         perception: PerceptionConfig = PerceptionConfig(), store=None, capture=None,
                         artifacts_dir: str | Path = "var/artifacts", embodiment: str | None = None,
-                        batch_id: str | None = None) -> TrialOutcome:
-    """The task's hand-written reference plan (or `plan`) with the configured resolver. With a TraceStore,
+                        batch_id: str | None = None, planner: str = "reference") -> TrialOutcome:
+    """The task's hand-written reference plan (or `plan`), or with `planner` (rules, gemini, openai) one planner
+    call on the env's instruction and what perception finds for its phrases, with the configured resolver. A
+    plan the planner could not write is a `planner` failure with nothing executed. With a TraceStore,
     the trial (events, groundings, trajectory at the control rate) is recorded under its trial id; with a
     `CaptureConfig` too, training-data frames and videos are written under `artifacts_dir/<trial id>/`."""
     from ..execution import EventBus
@@ -138,11 +153,22 @@ def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
     try:
         resolver = TimedResolver(make_resolver(world, perception, seed))
         library = PrimitiveLibrary(world, resolver, seed=seed)
-        plan = plan or parse_plan(task.reference_plan_text())
+        instruction = getattr(world, "instruction", task.instruction)  # LIBERO: the env's own
         t_run = time.perf_counter()
         sim_start_s = world.sim_time_s
         world.wall_s.update(simulation=0.0, rendering=0.0)  # the scene's settling belongs to setup
-        result = Executor(library, resolver, recovery=recovery, bus=bus, trial_id=f"{task.name}-{seed}").run(plan)
+        planning_s, planned = 0.0, None
+        if planner != "reference" and plan is None:
+            planned = _plan_once(planner, instruction, world, resolver)
+            planning_s = planned.latency_s
+            plan = planned.plan
+        else:
+            plan = plan or parse_plan(task.reference_plan_text())
+        if plan is None:
+            result = TrialResult(f"{task.name}-{seed}", "failure", FailureKind.PLANNER, None,
+                                 f"the {planner} planner wrote no plan: {planned.error}", {}, [], 0.0, 0.0)
+        else:
+            result = Executor(library, resolver, recovery=recovery, bus=bus, trial_id=f"{task.name}-{seed}").run(plan)
         world.settle(0.5)
         t_end = time.perf_counter()
         used_s = world.sim_time_s - sim_start_s
@@ -156,13 +182,15 @@ def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
             artifacts = capture_entries(episode, Path(artifacts_dir) / trial_id)
     finally:
         world.close()
-    protocol = {"planner": "reference plan (hand-written)", "resolver": perception.describe(), "embodiment": embodiment or task.embodiments[0],
+    planner_text = ("reference plan (hand-written)" if planner == "reference"
+                    else f"{planner} (one call; saw the instruction and perception of its phrases, no object dictionary)")
+    protocol = {"planner": planner_text, "resolver": perception.describe(), "embodiment": embodiment or task.embodiments[0],
                 "recovery": "off" if recovery.max_retries == 0 else f"tiers 1-2, {recovery.max_retries} retries"}
     if store is not None:
         from ..trace.record import record_trial
 
-        record_trial(store, trial_id, task=task.name, instruction=task.instruction,
-                     seed=seed, planner="reference", resolver=perception.resolver, protocol=protocol, plan=plan,
+        record_trial(store, trial_id, task=task.name, instruction=instruction,
+                     seed=seed, planner=planner, resolver=perception.resolver, protocol=protocol, plan=plan,
                      result=result, success=success, groundings=getattr(resolver, "groundings", []),
                      trajectory=world.recorder.rows, scene_states=world.recorder.states, artifacts=artifacts,
                      wall_time_s=round(time.perf_counter() - t0, 3), batch_id=batch_id)
@@ -172,6 +200,6 @@ def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
         sim_time_s=round(world.sim_time_s, 3), wall_time_s=round(time.perf_counter() - t0, 3),
         protocol=protocol,
         retries=sum(r.retries for r in result.nodes.values()),
-        phases_s=phase_split(t_run - t0, t_end - t_run, world, resolver),
+        phases_s=phase_split(t_run - t0, t_end - t_run, world, resolver, planning_s),
         result=result,
     )

