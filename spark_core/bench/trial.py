@@ -28,7 +28,7 @@ class PerceptionConfig:
     resolver: str = "privileged"
     adaptive: bool = True
     noise: NoiseModel = NoiseModel()
-    cameras: tuple[str, ...] = ("agentview", "side")
+    cameras: tuple[str, ...] | None = None  # None: the scene's own (builtin agentview+side, robosuite agentview+sideview)
 
     def __post_init__(self):
         if self.resolver not in RESOLVERS:
@@ -37,7 +37,9 @@ class PerceptionConfig:
     def describe(self) -> str:
         if self.resolver == "privileged":
             return "PrivilegedResolver (privileged:sim-state, no cameras)"
-        base = (f"{self.resolver} segmenter (privileged masks), cameras {'+'.join(self.cameras)} 640x480, "
+        cams = ("+".join(self.cameras) if self.cameras else "the scene's default pair (builtin agentview+side, "
+                "capbench agentview+sideview, liberopro agentview+frontview)")
+        base = (f"{self.resolver} segmenter (privileged masks), cameras {cams} 640x480, "
                 f"adaptive prompts {'on (label + 3 variants)' if self.adaptive else 'off'}")
         noise = f", noise: {self.noise.describe()}, misses independent per prompt and per view"
         return base + (noise if self.resolver == "sim-noisy" else "")
@@ -78,13 +80,14 @@ def _plan_once(planner: str, instruction: str, world, resolver):
 def make_resolver(world, config: PerceptionConfig, seed: int):
     if config.resolver == "privileged":
         return PrivilegedResolver(world)
-    missing = [c for c in config.cameras if c not in world.scene.cameras]
+    cameras = config.cameras or world.scene.extra.get("perception_cameras", ("agentview", "side"))
+    missing = [c for c in cameras if c not in world.scene.cameras]
     if missing:
         raise ValueError(f"camera(s) {', '.join(missing)} not in this scene; it has {', '.join(world.scene.cameras)}")
     segmenter = SimSegmenter(world.scene.catalog())
     if config.resolver == "sim-noisy":
         segmenter = SimNoisySegmenter(segmenter, config.noise, seed)
-    return PerceptionResolver(world, segmenter, cameras=config.cameras, adaptive=config.adaptive)
+    return PerceptionResolver(world, segmenter, cameras=cameras, adaptive=config.adaptive)
 
 
 class TimedResolver:
@@ -169,9 +172,9 @@ def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
                                  f"the {planner} planner wrote no plan: {planned.error}", {}, [], 0.0, 0.0)
         else:
             result = Executor(library, resolver, recovery=recovery, bus=bus, trial_id=f"{task.name}-{seed}").run(plan)
+        used_s = world.sim_time_s - sim_start_s  # the plan's time; the settle below only lets things come to rest
         world.settle(0.5)
         t_end = time.perf_counter()
-        used_s = world.sim_time_s - sim_start_s
         success = bool(task.success(world)) and used_s <= task.max_sim_s  # past the horizon the episode is over
         if used_s > task.max_sim_s and result.outcome == "success":
             result.reason = f"past the task's horizon: {used_s:.1f} s of simulated time, limit {task.max_sim_s:.0f} s"

@@ -130,8 +130,7 @@ def _cmd_bench(args: argparse.Namespace) -> int:
             print("only --planner reference is available until the planning backends land", file=sys.stderr)
             return 2
         perception = PerceptionConfig(args.resolver, not args.no_adaptive, NoiseModel(miss_rate=args.miss_rate),
-                                      tuple(args.cameras or (["agentview", "sideview"] if args.suite == "capbench"
-                                                             else ["agentview", "side"])))
+                                      tuple(args.cameras) if args.cameras else None)
         recovery = RecoveryPolicy(max_retries=0) if args.no_recovery else RecoveryPolicy()
         suite = SUITES[args.suite if args.suite in ("bimanual", "capbench") else "builtin"]
         tasks = args.tasks or list(suite)

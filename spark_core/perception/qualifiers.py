@@ -23,3 +23,22 @@ def split_qualifier(prompt: str) -> tuple[str | None, str]:
             core = _ARTICLES.sub(" ", rest).split()
             return w, " ".join(core) if core else rest
     return None, prompt
+
+
+# Relations to another object ("the bowl next to the plate", "the bowl between the plate and the ramekin"):
+# the chosen instance is the one whose centroid is nearest (in the table plane) to the anchor(s).
+RELATIONS = ("between", "next to", "beside", "near", "by", "on top of", "on", "in", "inside", "at", "from")
+_RELATION = re.compile(r"^(.+?)\s+(" + "|".join(re.escape(r) for r in sorted(RELATIONS, key=len, reverse=True))
+                       + r")\s+(.+)$")
+
+
+def split_relation(prompt: str) -> tuple[str, str | None, list[str]]:
+    """('black bowl', 'between', ['plate', 'ramekin']) for 'black bowl between the plate and the ramekin';
+    (prompt, None, []) when the phrase names no second object."""
+    m = _RELATION.match(prompt.lower().strip())
+    if not m:
+        return prompt, None, []
+    head, relation, rest = m.group(1), m.group(2), m.group(3)
+    anchors = re.split(r"\s+and\s+", rest) if relation == "between" else [rest]
+    anchors = [" ".join(w for w in a.split() if w not in ("the", "a", "an")) for a in anchors]
+    return head.strip(), relation, [a for a in anchors if a]

@@ -10,7 +10,7 @@ import numpy as np
 from .colors import colours_in, normalise_colours
 from .detection import Detection
 from .frame import CameraFrame
-from .qualifiers import QUALIFIERS, split_qualifier
+from .qualifiers import QUALIFIERS, split_qualifier, split_relation
 from .text_encoder import SHARED_ENCODER, TextEncoder
 
 
@@ -72,6 +72,10 @@ class SimSegmenter:
         visible = {frame.labels[i]: i for i in np.unique(frame.object_ids) if i and i in frame.labels}
         out: list[Detection] = []
         for prompt in prompts:
+            head, relation, anchors = split_relation(prompt)
+            if relation is not None:
+                out.extend(self._related(frame, prompt, head, anchors))
+                continue
             qualifier, core = split_qualifier(prompt)
             sims = self.similarities(core)
             if not sims:
@@ -86,6 +90,26 @@ class SimSegmenter:
                 dets = [pick_by_qualifier(dets, frame, qualifier)]
             out.extend(dets)
         return out
+
+    def _related(self, frame: CameraFrame, prompt: str, head: str, anchors: list[str]) -> list[Detection]:
+        """Instances of `head`; when several, the one nearest the anchor objects (their midpoint for "between")."""
+        dets = self.segment(frame, [head])
+        found = []
+        for a in anchors:
+            cands = [d for d in self.segment(frame, [a]) if d.detail.get("object") not in {x.detail.get("object") for x in dets}]
+            if cands:
+                found.append(_centroid_xy(max(cands, key=lambda d: d.score), frame))
+        if len(dets) > 1 and found:
+            target = np.mean(found, axis=0)
+            dets = [min(dets, key=lambda d: float(np.linalg.norm(_centroid_xy(d, frame) - target)))]
+        return [Detection(prompt, prompt, d.mask, d.score, d.camera, d.privileged, {**d.detail, "relation_anchors": anchors})
+                for d in dets]
+
+
+def _centroid_xy(d: Detection, frame: CameraFrame) -> np.ndarray:
+    vs, us = np.nonzero(d.mask)
+    pts = frame.backproject(us.astype(float), vs.astype(float), frame.depth_m[vs, us])
+    return np.median(pts[:, :2], axis=0)
 
 
 def pick_by_qualifier(dets: list[Detection], frame: CameraFrame, qualifier: str) -> Detection:

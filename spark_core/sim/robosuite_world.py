@@ -130,6 +130,7 @@ class RobosuiteWorld(MujocoWorld):
         self._qd_cmd: dict[str, np.ndarray] = {}
         super().__init__(scene, data=d, origin_m=origin)
         self._grip2 = {a: m.actuator(f"gripper{i}_gripper_finger_joint2").id for a, i in arms.items()}
+        self.reset()  # again, now that both finger actuators are known
         self._hand = {a: m.body(f"{n.prefix}right_hand").id for a, n in names.items()}
         self._ctrl_range = {a: m.actuator_ctrlrange[self._act[a]].T.copy() for a in self.arms}
         self._M = np.zeros((m.nv, m.nv))
@@ -137,9 +138,13 @@ class RobosuiteWorld(MujocoWorld):
 
     # -- state: the env's own reset is the start state --------------------------------------------------------
     def reset(self) -> None:
+        """Hold the start state: arm joints where they are, fingers at their current gap (robosuite leaves the
+        finger set-points at zero, which would close an open hand during the first settle)."""
         for a in self.arms:
             self._q_cmd[a] = self.q(a)
             self._qd_cmd[a] = np.zeros(len(self._q_cmd[a]))
+            if hasattr(self, "_grip2"):
+                self._command_gripper(a, self.gripper_width_m(a))
 
     def tcp_pose(self, arm: str) -> Pose:
         """robosuite's grip site, in the hand's orientation (fingers close along the hand's y axis)."""

@@ -211,6 +211,8 @@ class MujocoWorld:
         t0 = self.sim_time_s
         with self._lock:
             self._limit_gripper_force(arm, force_n)
+        if abs(self.gripper_command_m(arm) - width_m) < 1e-9 and abs(self.gripper_width_m(arm) - width_m) < 0.002:
+            return 0.0  # already there (opening an open hand): nothing to wait for
         # The finger set-point moves at the finger speed (a stiff servo tracking a ramp): fingers never slam
         # through thin parts, and on contact the servo error grows until the force limit caps the squeeze.
         step = 2 * g.finger_speed_m_s * CONTROL_DT_S

@@ -35,6 +35,9 @@ class ArmMemory:
     held_label: str | None = None
     held_extent_m: np.ndarray | None = None
     grasp_offset_z_m: float = 0.0  # TCP height above the held object's bottom
+    # The held object's centre relative to the TCP in the hand's own (yaw) frame, m: non-zero for an off-centre
+    # grasp such as a bowl's rim, so putting down can centre the object (not the hand) on its target.
+    grasp_offset_xy_hand_m: np.ndarray = field(default_factory=lambda: np.zeros(2))
 
 
 @dataclass

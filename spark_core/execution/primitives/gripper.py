@@ -11,6 +11,7 @@ from .base import Ctx, primitive
 @primitive("grasp")
 def grasp(ctx: Ctx) -> ActionOutcome:
     g = ctx.world.kinematics[ctx.arm].robot.gripper
+    ctx.memory.grasp_offset_xy_hand_m = np.zeros(2)  # unknown for a bare grasp: assume centred (pick sets it)
     ctx.world.set_gripper(ctx.arm, 0.0, ctx.args["force"], duration_s=0.4)
     width = ctx.world.gripper_width_m(ctx.arm)
     if width <= g.closed_empty_width_m or not ctx.world.pinched_bodies(ctx.arm):

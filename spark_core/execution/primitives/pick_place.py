@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...control.pose import Pose
+from ...control.pose import Pose, wrap_grasp_yaw
 from ...perception import Keypoint
 from ..protocols import ActionOutcome, FailureKind
-from .base import CONTACT_FORCE_N, Ctx, primitive
+from .base import CONTACT_FORCE_N, TABLE_CLEARANCE_M, Ctx, primitive
 from .gripper import grasp, open_gripper
 
 APPROACH_M = 0.10
@@ -34,10 +34,13 @@ def grasp_object(ctx: Ctx, kp: Keypoint, force: float = 50.0, strategy: str = "t
         at = np.array([kp.position_m[0], kp.position_m[1], z])
         pre, pose = Pose(at - [APPROACH_M, 0, 0], SIDE_ROTATION), Pose(at, SIDE_ROTATION)
     else:
-        yaw = ctx.grasp_yaw(kp)
+        at, yaw = kp.position_m[:2], ctx.grasp_yaw(kp)
         z = ctx.grasp_height(kp) if z is None else z
-        pre = ctx.top_down([kp.position_m[0], kp.position_m[1], kp.top_z_m + APPROACH_M], yaw)
-        pose = ctx.top_down([kp.position_m[0], kp.position_m[1], z], yaw)
+        rim = _rim_grasp(ctx, kp) if target_width is None else None
+        if rim is not None:  # too wide for the fingers to span: take its rim (a bowl's wall, a plate's edge)
+            at, yaw, z = rim
+        pre = ctx.top_down([at[0], at[1], kp.top_z_m + APPROACH_M], yaw)
+        pose = ctx.top_down([at[0], at[1], z], yaw)
     out = _seq(lambda: ctx.motion.move_to(pre, what=f"approach above {kp.label!r}"),
                lambda: ctx.motion.move_line(pose, speed_m_s=0.2, what=f"grasp pose of {kp.label!r}"))
     if not out.ok:
@@ -48,7 +51,35 @@ def grasp_object(ctx: Ctx, kp: Keypoint, force: float = 50.0, strategy: str = "t
         ctx.memory.held_label = kp.label
         ctx.memory.held_extent_m = np.asarray(kp.extent_m, float).copy()
         ctx.memory.grasp_offset_z_m = float(pose.position_m[2] - (kp.position_m[2] - kp.extent_m[2] / 2))
+        ctx.memory.grasp_offset_xy_hand_m = _rot2(-_hand_yaw(pose.rotation)) @ (kp.position_m[:2] - pose.position_m[:2])
     return out
+
+
+def _hand_yaw(rotation: np.ndarray) -> float:
+    """Direction of the hand's x axis about world z (not wrapped: a half turn moves an off-centre object)."""
+    return float(np.arctan2(rotation[1, 0], rotation[0, 0]))
+
+
+def _rot2(angle: float) -> np.ndarray:
+    c, s = np.cos(angle), np.sin(angle)
+    return np.array([[c, -s], [s, c]])
+
+
+def _rim_grasp(ctx: Ctx, kp: Keypoint) -> tuple[np.ndarray, float, float] | None:
+    """For an object wider than the open fingers in every direction: (xy, yaw, z) of a grasp on its edge nearest
+    the robot, fingers closing radially across the wall, 2 cm below the top. None when the fingers can span it."""
+    g = ctx.world.kinematics[ctx.arm].robot.gripper
+    own = kp.detail.get("body_extent_m") or kp.detail.get("principal_extent_m") or kp.extent_m[:2]
+    if min(own[0], own[1]) < 0.9 * g.max_width_m:
+        return None
+    base = ctx.world.kinematics[ctx.arm].T_world_base[:2, 3]
+    radial = base - kp.position_m[:2]
+    radial = radial / max(float(np.linalg.norm(radial)), 1e-9)
+    half = min(float(kp.extent_m[0]), float(kp.extent_m[1])) / 2
+    xy = kp.position_m[:2] + radial * max(half - 0.012, 0.0)
+    yaw = wrap_grasp_yaw(float(np.arctan2(radial[1], radial[0])) - np.pi / 2)  # closing axis along the radius
+    z = max(kp.top_z_m - 0.02, TABLE_CLEARANCE_M)
+    return xy, yaw, z
 
 
 def lift_held(ctx: Ctx, height: float) -> ActionOutcome:
@@ -87,8 +118,10 @@ def put_down(ctx: Ctx, target: Keypoint, offset_xy=(0.0, 0.0), floor_z: float | 
         return ctx.fail(f"nothing in the gripper to put on the {what}")
     support_z = target.top_z_m if floor_z is None else floor_z
     tcp_at_contact = support_z + ctx.memory.grasp_offset_z_m
-    xy = target.position_m[:2] + np.asarray(offset_xy, float)
     yaw = ctx.current_yaw()
+    # the object's centre, not the hand, over the target (they differ for a rim grasp)
+    held_offset = _rot2(_hand_yaw(ctx.top_down(ctx.tcp.position_m, yaw).rotation)) @ ctx.memory.grasp_offset_xy_hand_m
+    xy = target.position_m[:2] + np.asarray(offset_xy, float) - held_offset
     above = ctx.top_down([xy[0], xy[1], max(tcp_at_contact, target.top_z_m + ctx.memory.grasp_offset_z_m) + 0.06 + 0.02], yaw)
     out = ctx.motion.move_to(above, what=f"point above the {what} {target.label!r}")
     if not out.ok:

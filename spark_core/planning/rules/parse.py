@@ -29,8 +29,10 @@ def normalise(text: str) -> str:
     text = text.lower().strip()
     text = re.sub(r"[!?.;:]+", " , ", text)
     text = re.sub(r"\s+", " ", text)
+    text = text.replace("next to", "next_to")  # a relation, not the filler "next"
     for f in sorted(FILLERS, key=len, reverse=True):
         text = re.sub(rf"(^|\s|,){re.escape(f)}(\s|,|$)", r"\1 \2", text)
+    text = text.replace("next_to", "next to")
     text = re.sub(r"\s+", " ", text).strip(" ,")
     # "use the sponge to scrub the plate" -> "scrub the plate with the sponge"
     return re.sub(r"^(?:use|take) (.+?) (?:to|and) (\w+) (.+)$", r"\2 \3 with \1", text)
@@ -44,6 +46,14 @@ def noun_phrase(words: str) -> str:
     if m and m.group(2).split()[-1] not in ("stove", "table") or m and "drawer" in m.group(1):
         text = f"{m.group(2)} {m.group(1)}"
     return text
+
+
+def object_phrase(words: str) -> str:
+    """An object phrase that may locate the object by another ("bowl next to the plate"): determiners go, the
+    relation stays in place (noun_phrase's "drawer of the cabinet" reordering would scramble it)."""
+    if re.search(r"\b(between|next to|beside|near|on top of|on|in|inside|at|from)\b", words):
+        return " ".join(w for w in words.replace(",", " ").split() if w not in DETERMINERS)
+    return noun_phrase(words)
 
 
 def _split_on(phrase: str, preps: tuple[str, ...]) -> tuple[str, str] | None:
@@ -99,7 +109,9 @@ def parse_instruction(instruction: str) -> list[Clause]:
     # "put A in B and C in D": a second object/target pair after "and" with no verb of its own
     expanded = []
     for part in raw:
-        expanded += [p for p in re.split(r"\s+and\s+(?=(?:the|a|an)\s)", part) if p.strip()]
+        # ("between the plate and the ramekin" is one phrase)
+        expanded += ([p for p in re.split(r"\s+and\s+(?=(?:the|a|an)\s)", part) if p.strip()]
+                     if " between " not in f" {part} " else [part])
     previous: str | None = None
     for part in expanded:
         verb = _match_verb(part)
@@ -135,6 +147,8 @@ def _clause(action: str, rest: str, text: str) -> Clause:
         source = noun_phrase(source) if source else noun_phrase(obj)
         return Clause(action, obj=noun_phrase(obj) if obj else None, target=noun_phrase(target) if target else None,
                       source=source, text=text)
+    if action == "pick":  # "pick the bowl on the stove": where it is picks out which bowl; keep it in the phrase
+        return Clause(action, obj=object_phrase(rest) or None, direction=direction, distance_m=distance, text=text)
     for relation, preps in (("in", IN), ("on", ON)):
         split = _split_on(rest, preps)
         if split:

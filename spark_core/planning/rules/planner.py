@@ -69,6 +69,7 @@ class RulesPlanner:
         out: list[dict] = []
         last_object: str | None = None
         last_container: str | None = None
+        held: str | None = None  # what the previous step left in the hand (a bare "pick X")
         for i, c in enumerate(clauses):
             later_puts_in = any(k.action in ("put", "sort") and k.relation == "in" and is_pronoun(k.target) for k in clauses[i + 1:])
             obj = last_object if is_pronoun(c.obj) else c.obj
@@ -79,12 +80,13 @@ class RulesPlanner:
                 o, t = need(obj, "object", c), need(target, "destination", c)
                 if c.relation == "near":
                     raise CannotPlan(f"{c.text!r}: I can put things on or in something, not next to it")
+                pick = [] if held == o else [_prim("pick", keypoint_label=o)]  # "pick X and place it": X is in hand
                 if c.action == "stack":
-                    out.append(_prim("stack", keypoint_label=o, target_label=t))
+                    out += [_prim("place", target_label=t)] if held == o else [_prim("stack", keypoint_label=o, target_label=t)]
                 elif c.relation == "in":
-                    out += [_prim("pick", keypoint_label=o), _prim("place_in", container_label=t)]
+                    out += pick + [_prim("place_in", container_label=t)]
                 else:
-                    out += [_prim("pick", keypoint_label=o), _prim("place", target_label=t)]
+                    out += pick + [_prim("place", target_label=t)]
             elif c.action == "push":
                 o = need(obj, "object", c)
                 direction, distance = self._push_geometry(c, o, target, scene)
@@ -119,6 +121,7 @@ class RulesPlanner:
                 tool = need(c.tool, "tool", c)
                 out += [_prim("pick", keypoint_label=tool), _prim("constrained_scrub", target_label=t),
                         _prim("move_relative", dz=0.10), _prim("release")]
+            held = obj if c.action == "pick" else None
             last_object = obj or last_object
         if clauses and clauses[-1].action in ("open", "close", "turn_on", "turn_off"):
             out.append(_prim("go_home"))  # leave the fixture's neighbourhood
