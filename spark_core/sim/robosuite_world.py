@@ -104,7 +104,7 @@ class RobosuiteWorld(MujocoWorld):
         m, d = env.sim.model._model, env.sim.data._data
         n_robots = len(env.robots)
         arms = arms or ({"right": 0} if n_robots == 1 else {"right": 0, "left": 1})
-        table_z = float(env.table_offset[2]) if hasattr(env, "table_offset") else float(env.table_offsets[0][2])
+        table_z = _support_height(env)
         base0 = d.body(f"robot{min(arms.values())}_base").xpos.copy()
         origin = np.array([base0[0], base0[1], table_z])
         names = {a: _names(m, i) for a, i in arms.items()}
@@ -198,6 +198,16 @@ class RobosuiteWorld(MujocoWorld):
     def close(self) -> None:
         super().close()
         self.env.close()
+
+
+def _support_height(env) -> float:
+    """Height of the surface the task's objects stand on (robosuite's frame): the table top, or the floor."""
+    for attr in ("table_offset",):
+        if hasattr(env, attr):
+            return float(np.asarray(getattr(env, attr))[2])
+    if hasattr(env, "table_offsets"):  # two-arm envs
+        return float(env.table_offsets[0][2])
+    return 0.0  # LIBERO-Object: a floor scene
 
 
 def _no_build(body, rgba):  # robosuite builds its own objects
