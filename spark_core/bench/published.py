@@ -29,3 +29,27 @@ def comparison_table(rows: list[dict]) -> str:
         lines.append(f"| {t} | {pct(ours)} | {pub['SPARK'] + ' %' if pub['SPARK'] else '-'} | "
                      f"{pub['CaP-X'] + ' %' if pub['CaP-X'] else '-'} |")
     return "\n".join(lines)
+
+
+# LIBERO-PRO (SPARK paper, success %): per suite, position perturbation (the `_swap` cells) and task perturbation.
+LIBEROPRO_CELLS: dict[str, str] = {
+    "libero_object_swap": "43.4", "libero_object_task": "36.4", "libero_goal_swap": "40.0",
+    "libero_goal_task": "14.0", "libero_spatial_swap": "56.0", "libero_spatial_task": "72.4",
+}
+LIBEROPRO_MEAN = "43.7"
+
+
+def cell_table(rows: list[dict]) -> str:
+    """LIBERO-PRO: success per cell (tasks named '<cell>:<task>') next to the paper's, and the mean over cells."""
+    cells = [c for c in LIBEROPRO_CELLS if any(r["task"].startswith(c + ":") for r in rows)]
+    if not cells:
+        return ""
+    lines = ["| cell | ours | trials | SPARK (paper) |", "|---|---|---|---|"]
+    rates = []
+    for c in cells:
+        rs = [r for r in rows if r["task"].startswith(c + ":")]
+        rate = sum(r["success"] for r in rs) / len(rs)
+        rates.append(rate)
+        lines.append(f"| {c} | {pct(rate)} | {len(rs)} | {LIBEROPRO_CELLS[c]} % |")
+    lines.append(f"| **mean over cells** | **{pct(sum(rates) / len(rates))}** | {len(rows)} | {LIBEROPRO_MEAN} % |")
+    return "\n".join(lines)

@@ -11,27 +11,29 @@ from .report import footer, pct, wilson
 from .trial import PerceptionConfig, TrialOutcome, run_reference_trial
 
 
-def protocol(perception: PerceptionConfig, recovery: RecoveryPolicy) -> str:
+def protocol(perception: PerceptionConfig, recovery: RecoveryPolicy, planner: str = "reference") -> str:
     rec = "recovery off" if recovery.max_retries == 0 else f"recovery tiers 1-2 on ({recovery.max_retries} retries per node), replan off"
-    return (f"planner: hand-written reference plan per task (no LLM; the planner saw nothing); resolver: "
-            f"{perception.describe()}; {rec}; success: the task's predicate over simulator state")
+    who = ("hand-written reference plan per task (no LLM; the planner saw nothing)" if planner == "reference" else
+           f"{planner} planner, one call per trial on the env's instruction; it received the instruction and what "
+           "perception found for the instruction's phrases (no object-name dictionary)")
+    return (f"planner: {who}; resolver: {perception.describe()}; {rec}; success: the task's predicate over simulator state")
 
 
 def _one(args: tuple) -> dict:
-    task, seed, perception, recovery, embodiment, store_url, batch_id = args
+    task, seed, perception, recovery, embodiment, store_url, batch_id, planner = args
     store = None
     if store_url:
         from ..trace import TraceStore
 
         store = TraceStore(store_url, migrate=False)  # the driver migrated it
     return run_reference_trial(TASKS[task], seed, recovery=recovery, perception=perception, embodiment=embodiment,
-                               store=store, batch_id=batch_id).row()
+                               store=store, batch_id=batch_id, planner=planner).row()
 
 
 def run(tasks: Iterable[str], trials: int, seed: int = 0, workers: int = 1,
         progress: Callable[[dict], None] | None = None, perception: PerceptionConfig = PerceptionConfig(),
         recovery: RecoveryPolicy = RecoveryPolicy(), embodiment: str | None = None, executor: str = "local",
-        ray_address: str | None = None, store_url: str | None = None) -> list[dict]:
+        ray_address: str | None = None, store_url: str | None = None, planner: str = "reference") -> list[dict]:
     """Every task x seed; `executor` local (process pool of `workers`) or ray (see bench.executors). With
     `store_url` every trial is recorded in that trace store under one batch (watch it in the console)."""
     from .executors import run_jobs
@@ -46,7 +48,8 @@ def run(tasks: Iterable[str], trials: int, seed: int = 0, workers: int = 1,
         batch_id = f"bench-{uuid.uuid4().hex[:10]}"
         TraceStore(store_url).create_batch(batch_id, {"suite": "bench", "tasks": tasks, "trials": trials, "seed": seed,
                                                       "resolver": perception.resolver, "executor": executor})
-    jobs = [(t, seed + k, perception, recovery, embodiment, store_url, batch_id) for t in tasks for k in range(trials)]
+    jobs = [(t, seed + k, perception, recovery, embodiment, store_url, batch_id, planner)
+            for t in tasks for k in range(trials)]
     return run_jobs(_one, jobs, executor, workers, ray_address, progress)
 
 
@@ -85,17 +88,17 @@ def phase_table(rows: list[dict]) -> str:
 
 
 def section(rows: list[dict], command: str, perception: PerceptionConfig, recovery: RecoveryPolicy,
-            executor: str = "local") -> str:
+            executor: str = "local", planner: str = "reference") -> str:
     from ..sim.tasks import TASKS
-    from .published import comparison_table
+    from .published import cell_table, comparison_table
 
     seeds = f"; seeds {min(r['seed'] for r in rows)}–{max(r['seed'] for r in rows)}; executor: {executor}"
     predicates = "; ".join(f"{t}: {TASKS[t].predicate}" for t in dict.fromkeys(r["task"] for r in rows) if t in TASKS)
-    published = comparison_table(rows)
+    published = comparison_table(rows) or cell_table(rows)
     return (table(rows) + ("\n\nAgainst the published figures (different planner and perception: see protocol):\n\n"
                            + published if published else "")
             + "\n\nMedian wall time per phase:\n\n" + phase_table(rows) + "\n\n"
-            + footer(command, protocol(perception, recovery) + seeds
+            + footer(command, protocol(perception, recovery, planner) + seeds
                      + f"; success predicates: {predicates}; a trial also fails past the task's horizon"))
 
 

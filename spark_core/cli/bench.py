@@ -10,7 +10,7 @@ from pathlib import Path
 
 def register(sub) -> None:
     b = sub.add_parser("bench", help="run a benchmark and optionally write its section of BENCHMARKS.md")
-    b.add_argument("suite", choices=["builtin", "bimanual", "capbench", "embodiments", "grounding", "paraphrases", "ik", "speed", "api", "latency",
+    b.add_argument("suite", choices=["builtin", "bimanual", "capbench", "liberopro", "embodiments", "grounding", "paraphrases", "ik", "speed", "api", "latency",
                                      "viser", "export", "throughput"])
     b.add_argument("--embodiment", help="robot set-up (panda, ur10, bimanual; default: the task's own)")
     b.add_argument("--embodiments", nargs="+", default=["panda", "ur10", "bimanual"],
@@ -18,7 +18,8 @@ def register(sub) -> None:
     b.add_argument("--trials", type=int, default=20, help="trials (seeds) per task")
     b.add_argument("--tasks", nargs="*", help="subset of task names")
     b.add_argument("--seed", type=int, default=0, help="first seed")
-    b.add_argument("--planner", default="reference", help="reference (hand-written plans)")
+    b.add_argument("--planner", default="reference", choices=["reference", "rules", "gemini", "openai"],
+                   help="reference (hand-written plans), or one planner call per trial (liberopro has no reference plans)")
     b.add_argument("--resolver", default="privileged", choices=["privileged", "sim", "sim-noisy"],
                    help="privileged (simulator state) or a segmenter pipeline (cameras + masks + depth)")
     b.add_argument("--no-adaptive", action="store_true", help="one prompt per label (no adaptive self-consistency)")
@@ -126,13 +127,16 @@ def _cmd_bench(args: argparse.Namespace) -> int:
         from ..execution import RecoveryPolicy
         from ..perception.noisy_segmenter import NoiseModel
 
-        if args.planner != "reference":
-            print("only --planner reference is available until the planning backends land", file=sys.stderr)
+        if args.suite == "liberopro" and args.planner == "reference":
+            print("liberopro has no reference plans: pass --planner rules (offline) or an LLM planner", file=sys.stderr)
+            return 2
+        if args.suite == "embodiments" and args.planner != "reference":
+            print("the embodiments suite compares reference plans: --planner reference", file=sys.stderr)
             return 2
         perception = PerceptionConfig(args.resolver, not args.no_adaptive, NoiseModel(miss_rate=args.miss_rate),
                                       tuple(args.cameras) if args.cameras else None)
         recovery = RecoveryPolicy(max_retries=0) if args.no_recovery else RecoveryPolicy()
-        suite = SUITES[args.suite if args.suite in ("bimanual", "capbench") else "builtin"]
+        suite = SUITES[args.suite if args.suite in ("bimanual", "capbench", "liberopro") else "builtin"]
         tasks = args.tasks or list(suite)
         unknown = [t for t in tasks if t not in suite]
         if unknown:
@@ -157,11 +161,12 @@ def _cmd_bench(args: argparse.Namespace) -> int:
             rows = [dict(r, embodiment=e) for e, rs in by_emb.items() for r in rs]
         else:
             rows = reference_suite.run(tasks, args.trials, args.seed, args.workers, progress, perception, recovery,
-                                       args.embodiment, args.executor, args.ray_address, args.store)
+                                       args.embodiment, args.executor, args.ray_address, args.store, args.planner)
             print(reference_suite.table(rows))
             suffix = "" if args.embodiment in (None, "panda") else f", {args.embodiment}"
-            title = args.title or f"{args.suite} reference plans ({args.resolver} resolver{suffix})"
-            body = reference_suite.section(rows, command, perception, recovery, args.executor)
+            plans = "reference plans" if args.planner == "reference" else f"{args.planner} planner"
+            title = args.title or f"{args.suite} {plans} ({args.resolver} resolver{suffix})"
+            body = reference_suite.section(rows, command, perception, recovery, args.executor, args.planner)
         if args.json:
             Path(args.json).write_text(json.dumps(rows, indent=1))
     if args.write:

@@ -18,6 +18,7 @@ class GripperSpec:
     closed_empty_width_m: float  # gap reading when closed on nothing (sensor noise floor + margin)
     max_force_n: float = 140.0
     finger_speed_m_s: float = 0.15  # per finger
+    grasp_depth_m: float = 0.045  # how far below an object's top the TCP may go before the palm touches it
 
 
 @dataclass(frozen=True)

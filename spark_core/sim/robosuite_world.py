@@ -63,7 +63,7 @@ def robosuite_panda() -> RobotDescription:
         # robosuite's Panda.init_qpos: where every episode starts (before its initialisation noise)
         home_q_rad=np.array([0.0, np.pi / 16, 0.0, -np.pi / 2 - np.pi / 3, 0.0, np.pi - 0.2, np.pi / 4]),
         gripper=GripperSpec(base.gripper.finger_joints, max_width_m=0.08, closed_empty_width_m=0.004,
-                            max_force_n=20.0, finger_speed_m_s=0.1),
+                            max_force_n=20.0, finger_speed_m_s=0.1, grasp_depth_m=0.03),  # short fingers
         # The wrist motors give 12 N m, and robosuite's hand has a large inertia box that MuJoCo's air drag
         # acts on: the wrist joints top out near 1.5 rad/s, so trajectories are planned slower there.
         max_velocity_rad_s=(2.175, 2.175, 2.175, 2.175, 1.0, 1.0, 1.0),

@@ -96,7 +96,8 @@ class Ctx:
     def grasp_height(self, kp: Keypoint) -> float:
         """TCP z for a top-down grasp: the object's centre, a little below its top for tall objects."""
         top = kp.top_z_m
-        return float(max(min(kp.position_m[2], top - 0.02), TABLE_CLEARANCE_M, top - 0.045))
+        depth = self.world.kinematics[self.arm].robot.gripper.grasp_depth_m
+        return float(max(min(kp.position_m[2], top - 0.02), TABLE_CLEARANCE_M, top - depth))
 
     # -- sensing ------------------------------------------------------------------------------------------------
     def holding(self) -> bool:

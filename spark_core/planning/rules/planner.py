@@ -74,6 +74,8 @@ class RulesPlanner:
             later_puts_in = any(k.action in ("put", "sort") and k.relation == "in" and is_pronoun(k.target) for k in clauses[i + 1:])
             obj = last_object if is_pronoun(c.obj) else c.obj
             target = (last_container or last_object) if is_pronoun(c.target) else c.target
+            if target is None and c.relation == "in" and c.text.rstrip().endswith(("inside", "in", "into")):
+                target = last_container  # "open the drawer and put the bowl inside"
             if c.action == "pick":
                 out.append(_prim("pick", keypoint_label=need(obj, "object", c)))
             elif c.action in ("put", "sort", "stack"):
