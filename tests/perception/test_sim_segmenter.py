@@ -90,3 +90,11 @@ def test_noisy_erosion_confusion_and_depth(scene):
     assert confused.detail["object"] != "red block" and confused.detail["confused_from"] == "red block"
     noisy = SimNoisySegmenter(seg, NoiseModel(miss_rate=0.0, depth_noise_m=0.01)).perturb_frame(frame)
     assert 0.008 < float(np.std(noisy.depth_m - frame.depth_m)) < 0.012
+
+
+def test_split_relation():
+    from spark_core.perception.qualifiers import split_relation
+
+    assert split_relation("black bowl between the plate and the ramekin") == ("black bowl", "between", ["plate", "ramekin"])
+    assert split_relation("bowl next to the cookie box") == ("bowl", "next to", ["cookie box"])
+    assert split_relation("red block") == ("red block", None, [])

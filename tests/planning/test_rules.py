@@ -126,3 +126,22 @@ def test_rules_plan_executes_in_physics_through_perception():
     world.settle(0.5)
     assert trial.outcome == "success" and task.success(world)
     world.close()
+
+
+def test_an_object_located_by_others_keeps_its_relation_in_the_phrase():
+    got = [(c.action, c.obj, c.target) for c in parse_instruction(
+        "pick the akita black bowl between the plate and the ramekin and place it on the plate")]
+    assert got == [("pick", "akita black bowl between plate and ramekin", None), ("put", "it", "plate")]
+    assert parse_instruction("pick the bowl next to the cookie box")[0].obj == "bowl next to cookie box"
+
+
+def test_pick_then_place_it_picks_once():
+    view = scene(bowl_next_to_plate=(0.5, 0.1, 0.03), plate=((0.6, 0.0, 0.008), (0.18, 0.18, 0.016)))
+    res = RulesPlanner().plan(PlanRequest("pick the bowl next to the plate and place it on the plate", view))
+    assert prims(res) == [("pick", {"keypoint_label": "bowl next to plate"}), ("place", {"target_label": "plate"})]
+
+
+def test_put_inside_after_opening_targets_the_opened_drawer():
+    view = scene(drawer=(0.7, 0.2, 0.07), drawer_handle=(0.65, 0.2, 0.09), bowl=(0.4, -0.1, 0.03))
+    res = RulesPlanner().plan(PlanRequest("open the drawer and put the bowl inside", view))
+    assert prims(res)[-1] == ("place_in", {"container_label": "drawer"})

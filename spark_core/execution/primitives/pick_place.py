@@ -11,6 +11,7 @@ from .base import CONTACT_FORCE_N, TABLE_CLEARANCE_M, Ctx, primitive
 from .gripper import grasp, open_gripper
 
 APPROACH_M = 0.10
+RIM_PRESHAPE_M = 0.04  # finger gap when going down over a rim
 SUPPORT_TOL_M = 0.012  # how far below the expected support height contact may come before the target is "gone"
 # Horizontal approach: TCP z = world +x, fingers close along world y (the hand's wide side stays horizontal,
 # clear of the table).
@@ -39,6 +40,8 @@ def grasp_object(ctx: Ctx, kp: Keypoint, force: float = 50.0, strategy: str = "t
         rim = _rim_grasp(ctx, kp) if target_width is None else None
         if rim is not None:  # too wide for the fingers to span: take its rim (a bowl's wall, a plate's edge)
             at, yaw, z = rim
+            # pre-shape half open, so the inner finger goes down beside the wall, not into the bowl's floor
+            ctx.world.set_gripper(ctx.arm, RIM_PRESHAPE_M, 20.0, duration_s=0.1)
         pre = ctx.top_down([at[0], at[1], kp.top_z_m + APPROACH_M], yaw)
         pose = ctx.top_down([at[0], at[1], z], yaw)
     out = _seq(lambda: ctx.motion.move_to(pre, what=f"approach above {kp.label!r}"),
@@ -123,6 +126,9 @@ def put_down(ctx: Ctx, target: Keypoint, offset_xy=(0.0, 0.0), floor_z: float | 
     held_offset = _rot2(_hand_yaw(ctx.top_down(ctx.tcp.position_m, yaw).rotation)) @ ctx.memory.grasp_offset_xy_hand_m
     xy = target.position_m[:2] + np.asarray(offset_xy, float) - held_offset
     above = ctx.top_down([xy[0], xy[1], max(tcp_at_contact, target.top_z_m + ctx.memory.grasp_offset_z_m) + 0.06 + 0.02], yaw)
+    if ctx.tcp.position_m[2] < above.position_m[2] - 0.01:  # rise first: never drag the load low across the scene
+        ctx.motion.move_line(ctx.tcp.translated([0, 0, above.position_m[2] - ctx.tcp.position_m[2]]),
+                             what="carry height", check=False)
     out = ctx.motion.move_to(above, what=f"point above the {what} {target.label!r}")
     if not out.ok:
         return out

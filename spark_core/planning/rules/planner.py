@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import time
 
 import numpy as np
@@ -77,7 +78,9 @@ class RulesPlanner:
             if target is None and c.relation == "in" and c.text.rstrip().endswith(("inside", "in", "into")):
                 target = last_container  # "open the drawer and put the bowl inside"
             if c.action == "pick":
-                out.append(_prim("pick", keypoint_label=need(obj, "object", c)))
+                o = need(obj, "object", c)
+                inside = re.search(r"\b(in|inside)\b", o) is not None  # out of a drawer or a box: clear its walls
+                out.append(_prim("pick", keypoint_label=o, **({"lift_height": 0.2} if inside else {})))
             elif c.action in ("put", "sort", "stack"):
                 o, t = need(obj, "object", c), need(target, "destination", c)
                 if c.relation == "near":
