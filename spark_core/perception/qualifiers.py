@@ -33,12 +33,14 @@ _RELATION = re.compile(r"^(.+?)\s+(" + "|".join(re.escape(r) for r in sorted(REL
 
 
 def split_relation(prompt: str) -> tuple[str, str | None, list[str]]:
-    """('black bowl', 'between', ['plate', 'ramekin']) for 'black bowl between the plate and the ramekin';
-    (prompt, None, []) when the phrase names no second object."""
+    """('black bowl', 'between', ['plate', 'ramekin']) for 'black bowl between the plate and the ramekin'
+    ('not between' when negated); (prompt, None, []) when the phrase names no second object."""
     m = _RELATION.match(prompt.lower().strip())
     if not m:
         return prompt, None, []
     head, relation, rest = m.group(1), m.group(2), m.group(3)
-    anchors = re.split(r"\s+and\s+", rest) if relation == "between" else [rest]
+    if head.endswith(" not"):  # "the bowl not between the plate and the ramekin": the other one
+        head, relation = head[: -len(" not")], f"not {relation}"
+    anchors = re.split(r"\s+and\s+", rest) if relation.endswith("between") else [rest]
     anchors = [" ".join(w for w in a.split() if w not in ("the", "a", "an")) for a in anchors]
     return head.strip(), relation, [a for a in anchors if a]

@@ -3,6 +3,7 @@ grounded to scene objects by sentence similarity over each object's label and de
 
 from __future__ import annotations
 
+import re
 from typing import Mapping, Sequence
 
 import numpy as np
@@ -40,7 +41,10 @@ class SimSegmenter:
         self.threshold = threshold
         self.margin = margin
         self.encoder = encoder or SHARED_ENCODER
-        self._docs = [f"{label}: {desc}" for label, desc in self.catalog.items()]
+        # an instance number ("bowl 2") is no visual property: two bowls must ground alike, for a qualifier or a
+        # relation to choose between them
+        self._names = {label: re.sub(r" [0-9]+$", "", label) for label in self.catalog}
+        self._docs = [f"{self._names[label]}: {desc}" for label, desc in self.catalog.items()]
         self._doc_vecs = self.encoder.encode(self._docs) if self._docs else np.zeros((0, 384))
         self._labels = list(self.catalog)
 
@@ -58,7 +62,7 @@ class SimSegmenter:
         wanted = colours_in(norm)
         out = {}
         for label, c in zip(self._labels, cos.tolist()):
-            if head and head == label.split()[-1]:
+            if head and head == self._names[label].split()[-1]:
                 c += HEAD_NOUN_BONUS
             have = colours_in(f"{label} {self.catalog[label]}")
             if wanted and have and not wanted & have:
@@ -74,7 +78,7 @@ class SimSegmenter:
         for prompt in prompts:
             head, relation, anchors = split_relation(prompt)
             if relation is not None:
-                out.extend(self._related(frame, prompt, head, anchors))
+                out.extend(self._related(frame, prompt, head, anchors, negated=relation.startswith("not ")))
                 continue
             qualifier, core = split_qualifier(prompt)
             sims = self.similarities(core)
@@ -91,17 +95,25 @@ class SimSegmenter:
             out.extend(dets)
         return out
 
-    def _related(self, frame: CameraFrame, prompt: str, head: str, anchors: list[str]) -> list[Detection]:
-        """Instances of `head`; when several, the one nearest the anchor objects (their midpoint for "between")."""
+    def _related(self, frame: CameraFrame, prompt: str, head: str, anchors: list[str],
+                 negated: bool = False) -> list[Detection]:
+        """Instances of `head`; when several, the one nearest the anchor objects (their midpoint for "between"),
+        or the farthest when negated ("not between")."""
         dets = self.segment(frame, [head])
         found = []
         for a in anchors:
             cands = [d for d in self.segment(frame, [a]) if d.detail.get("object") not in {x.detail.get("object") for x in dets}]
             if cands:
                 found.append(_centroid_xy(max(cands, key=lambda d: d.score), frame))
+        if len(dets) > 1 and not found and any(w in a for a in anchors for w in ("center", "centre", "middle")):
+            # "from the table center": the middle of everything on the table in this view
+            ids = [i for i in np.unique(frame.object_ids) if i]
+            found = [np.mean([_centroid_xy(Detection("", "", frame.object_ids == i, 1.0, frame.camera), frame)
+                              for i in ids], axis=0)]
         if len(dets) > 1 and found:
             target = np.mean(found, axis=0)
-            dets = [min(dets, key=lambda d: float(np.linalg.norm(_centroid_xy(d, frame) - target)))]
+            pick = max if negated else min
+            dets = [pick(dets, key=lambda d: float(np.linalg.norm(_centroid_xy(d, frame) - target)))]
         return [Detection(prompt, prompt, d.mask, d.score, d.camera, d.privileged, {**d.detail, "relation_anchors": anchors})
                 for d in dets]
 

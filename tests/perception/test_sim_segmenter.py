@@ -98,3 +98,9 @@ def test_split_relation():
     assert split_relation("black bowl between the plate and the ramekin") == ("black bowl", "between", ["plate", "ramekin"])
     assert split_relation("bowl next to the cookie box") == ("bowl", "next to", ["cookie box"])
     assert split_relation("red block") == ("red block", None, [])
+
+
+def test_split_relation_negated():
+    from spark_core.perception.qualifiers import split_relation
+
+    assert split_relation("bowl not between the plate and the ramekin") == ("bowl", "not between", ["plate", "ramekin"])
