@@ -53,6 +53,11 @@ def create_batch(body: BatchCreate, request: Request) -> dict:
     unknown = [t for t in dict.fromkeys(wanted) if t not in pool]
     if unknown:
         raise HTTPException(422, f"unknown task(s) {', '.join(unknown)}; {body.suite} tasks: {', '.join(pool)}")
+    no_plan = [t for t in dict.fromkeys(wanted) if not pool[t].has_reference_plan]
+    planners = [sp.planner or body.planner for sp in body.specs] if body.specs is not None else [body.planner]
+    if no_plan and "reference" in planners:
+        raise HTTPException(422, f"task(s) {', '.join(no_plan[:5])}{' ...' if len(no_plan) > 5 else ''} have no "
+                                 "reference plan: choose a planner (rules, gemini, openai)")
     if body.specs is not None:
         specs = [TrialSpec(sp.task, sp.instruction or pool[sp.task].instruction, sp.planner or body.planner,
                            sp.resolver or body.resolver, sp.seed, capture=body.capture) for sp in body.specs]

@@ -22,6 +22,8 @@ def create_trial(body: TrialCreate, request: Request) -> TrialCreated:
     task = TASKS.get(body.task)
     if task is None:
         raise HTTPException(422, f"unknown task {body.task!r}; tasks: {', '.join(TASKS)}")
+    if body.planner == "reference" and not task.has_reference_plan:
+        raise HTTPException(422, f"task {body.task!r} has no reference plan: choose a planner (rules, gemini, openai)")
     if body.embodiment and body.embodiment not in task.embodiments:
         raise HTTPException(422, f"task {body.task!r} runs on {', '.join(task.embodiments)}, not {body.embodiment!r}")
     trial_id = f"{body.task}-{uuid.uuid4().hex[:10]}"

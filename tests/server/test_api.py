@@ -239,3 +239,11 @@ def test_trials_on_other_embodiments(client):
     assert wait_done(client, two)["success"] is True
     tasks = {t["name"]: t for t in client.get("/api/tasks").json()}
     assert tasks["lift_tray"]["suite"] == "bimanual" and tasks["lift_tray"]["embodiments"] == ["bimanual"]
+
+
+def test_a_suite_without_reference_plans_needs_a_planner(client):
+    r = client.post("/api/batches", json={"suite": "liberopro", "trials": 1, "planner": "reference"})
+    assert r.status_code == 422 and "no reference plan" in r.json()["detail"]
+    task = next(t for t in client.get("/api/tasks").json() if t["suite"] == "liberopro")["name"]
+    r = client.post("/api/trials", json={"task": task, "planner": "reference"})
+    assert r.status_code == 422 and "choose a planner" in r.json()["detail"]

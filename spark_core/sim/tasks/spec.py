@@ -33,7 +33,14 @@ class TaskSpec:
     # Worlds not built by our scene builder (robosuite, LIBERO): seed -> world, already in its start state
     world_factory: Callable[[int], MujocoWorld] | None = None
 
+    @property
+    def has_reference_plan(self) -> bool:
+        return resources.files(__package__).joinpath("reference", f"{self.name}.yaml").is_file()
+
     def reference_plan_text(self) -> str:
+        if not self.has_reference_plan:  # e.g. LIBERO-PRO: its plans come from a planner
+            raise FileNotFoundError(f"task {self.name!r} has no reference plan: run it with a planner "
+                                    "(rules, gemini or openai)")
         return resources.files(__package__).joinpath("reference", f"{self.name}.yaml").read_text(encoding="utf-8")
 
     def make_world(self, seed: int, embodiment: str | None = None) -> MujocoWorld:
