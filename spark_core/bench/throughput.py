@@ -1,34 +1,52 @@
-"""Batch throughput on this machine: the builtin suite's trials per hour on the local process pool and on Ray
-(a local cluster with the same number of workers; cluster start-up counted)."""
+"""Batch throughput on this machine: trials per hour per suite on the local process pool and on Ray (a local
+cluster with the same number of workers; cluster start-up counted)."""
 
 from __future__ import annotations
 
 import time
 
-from ..sim.tasks import BUILTIN
 from .report import footer
 from .trial import PerceptionConfig
 
+PLANNER = {"builtin": "reference", "capbench": "reference", "liberopro": "rules"}  # liberopro has no reference plans
 
-def run(trials: int = 2, workers: int = 2, resolver: str = "privileged") -> dict:
+
+def tasks_of(suite: str) -> list[str]:
+    """The suite's tasks; for liberopro the first task of each of its six cells (a throughput sample)."""
+    from ..sim.tasks import SUITES
+
+    names = list(SUITES[suite])
+    if suite == "liberopro":
+        return [next(n for n in names if n.startswith(cell + ":")) for cell in dict.fromkeys(n.split(":")[0] for n in names)]
+    return names
+
+
+def run(trials: int = 2, workers: int = 2, resolver: str = "privileged", suites: tuple[str, ...] = ("builtin",)) -> dict:
     from . import reference_suite
 
-    out = {"trials_per_task": trials, "workers": workers, "resolver": resolver, "tasks": len(BUILTIN), "runs": {}}
-    for executor in ("local", "ray"):
-        t0 = time.perf_counter()
-        rows = reference_suite.run(list(BUILTIN), trials, 0, workers, None, PerceptionConfig(resolver),
-                                   executor=executor)
-        wall = time.perf_counter() - t0
-        out["runs"][executor] = {"trials": len(rows), "successes": sum(r["success"] for r in rows), "wall_s": wall,
-                                 "per_hour": len(rows) / wall * 3600}
+    out = {"trials_per_task": trials, "workers": workers, "resolver": resolver, "suites": {}}
+    for suite in suites:
+        tasks = tasks_of(suite)
+        runs = {}
+        for executor in ("local", "ray"):
+            t0 = time.perf_counter()
+            rows = reference_suite.run(tasks, trials, 0, workers, None, PerceptionConfig(resolver), executor=executor,
+                                       planner=PLANNER.get(suite, "reference"))
+            wall = time.perf_counter() - t0
+            runs[executor] = {"trials": len(rows), "successes": sum(r["success"] for r in rows), "wall_s": wall,
+                              "per_hour": len(rows) / wall * 3600}
+        out["suites"][suite] = {"tasks": len(tasks), "planner": PLANNER.get(suite, "reference"), "runs": runs}
     return out
 
 
 def section(r: dict, command: str) -> str:
-    lines = ["| executor | trials | success | wall time | trials per hour |", "|---|---|---|---|---|"]
-    for name, x in r["runs"].items():
-        lines.append(f"| {name} ({r['workers']} workers) | {x['trials']} | {100 * x['successes'] / x['trials']:.1f} % | "
-                     f"{x['wall_s']:.0f} s | {x['per_hour']:.0f} |")
+    lines = ["| suite | executor | trials | success | wall time | trials per hour |", "|---|---|---|---|---|---|"]
+    for suite, s in r["suites"].items():
+        for name, x in s["runs"].items():
+            lines.append(f"| {suite} | {name} ({r['workers']} workers) | {x['trials']} | "
+                         f"{100 * x['successes'] / x['trials']:.1f} % | {x['wall_s']:.0f} s | {x['per_hour']:.0f} |")
+    what = "; ".join(f"{suite}: {s['tasks']} tasks x {r['trials_per_task']} seeds, planner {s['planner']}"
+                     + (" (one task per cell)" if suite == "liberopro" else "") for suite, s in r["suites"].items())
     return "\n".join(lines) + "\n\n" + footer(
-        command, f"builtin suite, {r['tasks']} tasks x {r['trials_per_task']} seeds, reference plans, resolver "
-                 f"{r['resolver']}; Ray: a local cluster started by the command (start-up and shutdown included)")
+        command, f"{what}; resolver {r['resolver']}; Ray: a local cluster started by the command (start-up and "
+                 "shutdown included); every trial builds its scene (robosuite/LIBERO env) afresh")

@@ -33,6 +33,8 @@ def register(sub) -> None:
                    help="local process pool, or Ray (a local cluster, or --ray-address for an existing one)")
     b.add_argument("--ray-address", help="existing Ray cluster, e.g. ray://head:10001 or auto")
     b.add_argument("--store", help="also record every trial in this trace store (SQLAlchemy URL) as one batch")
+    b.add_argument("--suites", nargs="+", default=["builtin"], choices=["builtin", "capbench", "liberopro"],
+                   help="suites the throughput bench measures")
     b.add_argument("--targets", type=int, default=200, help="IK targets (ik suite)")
     b.add_argument("--store-size", type=int, default=10_000, help="trials in the trace store (api suite)")
     b.add_argument("--write", metavar="BENCHMARKS.md", help="replace this benchmark's section in the file")
@@ -75,7 +77,7 @@ def _export_bench(args: argparse.Namespace) -> dict:
 def _throughput(args: argparse.Namespace) -> dict:
     from ..bench import throughput
 
-    return throughput.run(args.trials, args.workers, args.resolver)
+    return throughput.run(args.trials, args.workers, args.resolver, tuple(args.suites))
 
 
 def _throughput_section(r: dict, command: str) -> str:

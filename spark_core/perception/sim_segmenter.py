@@ -43,7 +43,7 @@ class SimSegmenter:
         self.encoder = encoder or SHARED_ENCODER
         # an instance number ("bowl 2") is no visual property: two bowls must ground alike, for a qualifier or a
         # relation to choose between them
-        self._names = {label: re.sub(r" [0-9]+$", "", label) for label in self.catalog}
+        self._names = _instance_names(self.catalog)
         self._docs = [f"{self._names[label]}: {desc}" for label, desc in self.catalog.items()]
         self._doc_vecs = self.encoder.encode(self._docs) if self._docs else np.zeros((0, 384))
         self._labels = list(self.catalog)
@@ -116,6 +116,16 @@ class SimSegmenter:
             dets = [pick(dets, key=lambda d: float(np.linalg.norm(_centroid_xy(d, frame) - target)))]
         return [Detection(prompt, prompt, d.mask, d.score, d.camera, d.privileged, {**d.detail, "relation_anchors": anchors})
                 for d in dets]
+
+
+def _instance_names(catalog: Mapping[str, str]) -> dict[str, str]:
+    """label -> the name grounded against: a second copy of a kind ("bowl 2", described exactly like "bowl") drops
+    its number, which is no visual property; numbered parts that are described apart ("pot handle 0") keep it."""
+    base = {label: re.sub(r" [0-9]+$", "", label) for label in catalog}
+    kinds: dict[tuple[str, str], int] = {}
+    for label, desc in catalog.items():
+        kinds[(base[label], desc)] = kinds.get((base[label], desc), 0) + 1
+    return {label: base[label] if kinds[(base[label], catalog[label])] > 1 else label for label in catalog}
 
 
 def _centroid_xy(d: Detection, frame: CameraFrame) -> np.ndarray:

@@ -104,3 +104,11 @@ def test_split_relation_negated():
     from spark_core.perception.qualifiers import split_relation
 
     assert split_relation("bowl not between the plate and the ramekin") == ("bowl", "not between", ["plate", "ramekin"])
+
+
+def test_copies_of_a_kind_ground_alike_but_numbered_parts_stay_apart():
+    from spark_core.perception.sim_segmenter import _instance_names
+
+    names = _instance_names({"bowl": "black bowl", "bowl 2": "black bowl", "pot handle 0": "one handle of the pot",
+                             "pot handle 1": "the other handle of the pot"})
+    assert names == {"bowl": "bowl", "bowl 2": "bowl", "pot handle 0": "pot handle 0", "pot handle 1": "pot handle 1"}
