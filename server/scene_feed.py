@@ -49,6 +49,7 @@ class SceneFeed:
         # No world lock: rendering for perception holds it for ~75 ms per frame and the view must not stall.
         # A copy taken mid-step can mix two physics steps (2 ms apart): invisible on screen.
         xpos, xquat = body_poses(w.model, w.data)
+        xpos -= getattr(w, "origin_m", 0.0)  # bodies in the world's frame, where keypoints and targets are
         targets = {}
         for arm, pose in dict(getattr(w, "target_tcp", {})).items():
             q = np.zeros(4)
