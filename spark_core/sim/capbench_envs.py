@@ -93,7 +93,7 @@ def make_env(name: str, seed: int):
     try:
         np.random.seed(seed)
         if name == "CubeRestack":
-            env = _cube_restack_class()(**{k: v for k, v in kwargs.items()})
+            env = _cube_restack_class()(**kwargs)
         else:
             env = suite.make(spec.env_name, **kwargs)
         np.random.seed(seed)
