@@ -247,3 +247,17 @@ def test_a_suite_without_reference_plans_needs_a_planner(client):
     task = next(t for t in client.get("/api/tasks").json() if t["suite"] == "liberopro")["name"]
     r = client.post("/api/trials", json={"task": task, "planner": "reference"})
     assert r.status_code == 422 and "choose a planner" in r.json()["detail"]
+
+
+def test_a_capbench_batch_runs_in_the_console(client):
+    pytest.importorskip("robosuite", reason="benchmark extras: make bench-deps")
+    r = client.post("/api/batches", json={"suite": "capbench", "tasks": ["Lift"], "trials": 2, "resolver": "privileged"})
+    assert r.status_code == 202
+    bid = r.json()["id"]
+    for _ in range(1800):
+        b = client.get(f"/api/batches/{bid}").json()
+        if b["status"] == "done":
+            break
+        time.sleep(0.1)
+    assert b["progress"] == {"done": 2, "total": 2}
+    assert all(t["outcome"] in ("success", "failure") for t in b["trials"])
