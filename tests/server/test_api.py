@@ -26,6 +26,17 @@ def wait_done(client, trial_id, timeout=120.0):
     raise AssertionError(f"trial {trial_id} did not finish: {trial['status']}")
 
 
+def wait_batch(client, batch_id, until, timeout=180.0):
+    """Poll the batch until `until(batch)` holds; returns the last batch seen."""
+    t0 = time.monotonic()
+    while time.monotonic() - t0 < timeout:
+        b = client.get(f"/api/batches/{batch_id}").json()
+        if until(b):
+            return b
+        time.sleep(0.1)
+    return b
+
+
 def test_health_grammar_tasks_validate(client):
     assert client.get("/api/health").json() == {"status": "ok"}
     g = client.get("/api/grammar").json()
@@ -157,11 +168,7 @@ def test_batch_progress_results_and_cancel(client):
     r = client.post("/api/batches", json={"tasks": ["lift_block", "push_to_zone"], "trials": 2, "resolver": "privileged"})
     assert r.status_code == 202 and r.json()["trials"] == 4
     bid = r.json()["id"]
-    for _ in range(600):
-        b = client.get(f"/api/batches/{bid}").json()
-        if b["status"] == "done":
-            break
-        time.sleep(0.1)
+    b = wait_batch(client, bid, lambda b: b["status"] == "done")
     assert b["progress"] == {"done": 4, "total": 4}
     assert {row["task"]: (row["successes"], row["total"]) for row in b["results"]} == {"lift_block": (2, 2), "push_to_zone": (2, 2)}
     assert client.get("/api/trials", params={"batch": bid}).json()["total"] == 4
@@ -169,11 +176,7 @@ def test_batch_progress_results_and_cancel(client):
     big = client.post("/api/batches", json={"tasks": ["stack_three"], "trials": 8, "resolver": "privileged"}).json()["id"]
     cancel = client.post(f"/api/batches/{big}/cancel").json()
     assert cancel["cancelled"] >= 6  # with 2 workers most of the 8 were still queued
-    for _ in range(600):
-        b = client.get(f"/api/batches/{big}").json()
-        if b["progress"]["done"] == 8:
-            break
-        time.sleep(0.1)
+    b = wait_batch(client, big, lambda b: b["progress"]["done"] == 8)
     assert b["status"] == "cancelled" and b["progress"]["done"] == 8  # every trial accounted for, none lost
     assert sum(t["outcome"] == "aborted" for t in b["trials"]) >= 6
     assert client.post("/api/batches", json={"tasks": ["juggle"]}).status_code == 422
@@ -253,11 +256,6 @@ def test_a_capbench_batch_runs_in_the_console(client):
     pytest.importorskip("robosuite", reason="benchmark extras: make bench-deps")
     r = client.post("/api/batches", json={"suite": "capbench", "tasks": ["Lift"], "trials": 2, "resolver": "privileged"})
     assert r.status_code == 202
-    bid = r.json()["id"]
-    for _ in range(1800):
-        b = client.get(f"/api/batches/{bid}").json()
-        if b["status"] == "done":
-            break
-        time.sleep(0.1)
+    b = wait_batch(client, r.json()["id"], lambda b: b["status"] == "done")
     assert b["progress"] == {"done": 2, "total": 2}
     assert all(t["outcome"] in ("success", "failure") for t in b["trials"])

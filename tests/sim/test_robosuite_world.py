@@ -112,3 +112,11 @@ def test_capbench_lift_through_cameras_and_the_sim_segmenter():
     out = run_reference_trial(TASKS["Lift"], 1, perception=PerceptionConfig("sim", cameras=("agentview", "sideview")))
     assert out.outcome in ("success", "failure")
     assert out.phases_s["rendering"] > 0  # perception drew robosuite's cameras
+
+
+def test_place_over_puts_the_nut_around_the_peg():
+    """place_over lines up the held nut's centre (not the hand) with the peg: without that the nut jams on top."""
+    from spark_core.execution import RecoveryPolicy
+
+    out = run_reference_trial(TASKS["NutAssemblySquare"], 0, recovery=RecoveryPolicy(max_retries=0))
+    assert out.success, out.reason
