@@ -228,7 +228,7 @@ def run_trial(trial_id: str, spec: TrialSpec, control, store, send: Callable, ar
         else:
             from spark_core.planning.backends import make_planner
             from spark_core.planning.llm import PlannerUnavailable
-            from spark_core.planning.observe import arm_bases, observe
+            from spark_core.planning.observe import arm_bases, arm_tools, observe
             from spark_core.trace.plan_library import StorePlanLibrary
 
             try:
@@ -241,7 +241,7 @@ def run_trial(trial_id: str, spec: TrialSpec, control, store, send: Callable, ar
             summary = view.summary
             library = StorePlanLibrary(store) if spec.planner != "rules" else None
             examples = library.examples(spec.instruction) if library is not None else ()
-            result = planner.plan(PlanRequest(spec.instruction, view, examples, arm_bases(world)))
+            result = planner.plan(PlanRequest(spec.instruction, view, examples, arm_bases(world), arm_tools(world)))
             cost, usage, plan = result.cost_usd, asdict(result.usage), result.plan
             if plan is None:
                 record_trial(store, trial_id, **record, plan=None, result=None, success=False,

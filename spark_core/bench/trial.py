@@ -68,12 +68,12 @@ class TrialOutcome:
 def _plan_once(planner: str, instruction: str, world, resolver):
     """Perception looks for the instruction's phrases, then one planner call (timed)."""
     from ..planning.backends import make_planner
-    from ..planning.observe import arm_bases, observe
+    from ..planning.observe import arm_bases, arm_tools, observe
     from ..planning.protocol import PlanRequest
 
     t0 = time.perf_counter()
     view = observe(instruction, resolver)
-    result = make_planner(planner).plan(PlanRequest(instruction, view, (), arm_bases(world)))
+    result = make_planner(planner).plan(PlanRequest(instruction, view, (), arm_bases(world), arm_tools(world)))
     return replace(result, latency_s=time.perf_counter() - t0)
 
 
@@ -178,6 +178,9 @@ def run_reference_trial(task: TaskSpec, seed: int, plan: Plan | None = None,
         success = bool(task.success(world)) and used_s <= task.max_sim_s  # past the horizon the episode is over
         if used_s > task.max_sim_s and result.outcome == "success":
             result.reason = f"past the task's horizon: {used_s:.1f} s of simulated time, limit {task.max_sim_s:.0f} s"
+        referee = getattr(world, "referee", None)  # a task's own bookkeeping (robosuite Wipe's markers)
+        if referee is not None:
+            result.reason = "; ".join(x for x in (result.reason, referee.summary) if x)
         if episode is not None:
             from ..trace.artifacts import capture_entries
 

@@ -49,7 +49,7 @@ def _plan_in_scene(task_name: str, instruction: str, seed: int, resolver_kind: s
     from ..bench.trial import PerceptionConfig, make_resolver
     from ..planning import PlanRequest
     from ..planning.backends import make_planner
-    from ..planning.observe import arm_bases, observe
+    from ..planning.observe import arm_bases, arm_tools, observe
     from ..sim.tasks import TASKS
 
     planner = make_planner(planner_name, model, base_url)  # fails fast (missing key, server) before any simulation
@@ -60,7 +60,7 @@ def _plan_in_scene(task_name: str, instruction: str, seed: int, resolver_kind: s
     if planner_name != "rules" and getattr(resolver, "frames", None):
         view = _with_annotated_image(view, resolver)
     examples = library.examples(instruction) if library is not None and planner_name != "rules" else ()
-    result = planner.plan(PlanRequest(instruction, view, examples, arm_bases(world)))
+    result = planner.plan(PlanRequest(instruction, view, examples, arm_bases(world), arm_tools(world)))
     return task, world, resolver, view, result
 
 

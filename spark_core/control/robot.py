@@ -11,7 +11,11 @@ import numpy as np
 
 @dataclass(frozen=True)
 class GripperSpec:
-    """Parallel-jaw gripper. Widths are the full finger gap in metres; force is the closing force limit in N."""
+    """Parallel-jaw gripper. Widths are the full finger gap in metres; force is the closing force limit in N.
+
+    `mounted_tool` names a tool fixed to the flange in place of fingers (robosuite's wiping pad): the arm always
+    holds it and has nothing to open or close. `finger_joints` still names the URDF's finger joints, which the
+    kinematics locks."""
 
     finger_joints: tuple[str, str]
     max_width_m: float
@@ -19,6 +23,8 @@ class GripperSpec:
     max_force_n: float = 140.0
     finger_speed_m_s: float = 0.15  # per finger
     grasp_depth_m: float = 0.045  # how far below an object's top the TCP may go before the palm touches it
+    mounted_tool: str = ""
+    tool_size_m: tuple[float, float] = (0.0, 0.0)  # a mounted tool's contact face along the hand's (x, y) axes
 
 
 @dataclass(frozen=True)

@@ -13,6 +13,7 @@ from .keypoint import Keypoint
 
 MAX_DEPTH_M = 5.0
 MIN_POINTS = 12
+FOOTPRINT_CELL_M = 0.01  # footprint points: one per 1 cm cell of the top face
 
 
 @dataclass(frozen=True)
@@ -66,7 +67,14 @@ def keypoint_from_points(label: str, evidence: list[PointEvidence], source: str)
                     {"surface_point_m": [round(float(x), 4) for x in best.surface_point],
                      "principal_extent_m": [round(float(x), 4) for x in extent_xy],
                      "cameras": sorted({e.detection.camera for e in evidence}),
-                     "prompt": best.detection.prompt, "n_points": int(len(pts))})
+                     "prompt": best.detection.prompt, "n_points": int(len(pts)),
+                     "footprint_xy_m": _footprint(top[:, :2] if len(top) >= 5 else pts[:, :2])})
+
+
+def _footprint(xy: np.ndarray) -> list[list[float]]:
+    """The top face's xy cover, one point per occupied 1 cm cell (what a wipe or sweep has to pass over)."""
+    cells = np.unique(np.floor(xy / FOOTPRINT_CELL_M).astype(np.int64), axis=0)
+    return [[round(float(x), 3), round(float(y), 3)] for x, y in (cells + 0.5) * FOOTPRINT_CELL_M]
 
 
 def merge_duplicates(dets: list[Detection], radius_px: float = 30.0, keep_apart: frozenset[str] = frozenset()) -> list[Detection]:

@@ -32,11 +32,17 @@ class PrivilegedResolver:
         body = self._bodies.get(label.strip().lower())
         if body is None:
             raise LabelNotFound(label, f"no object with that label in the scene (have: {', '.join(self.labels())})")
+        geoms = self.world.body_geoms(body)
+        if not geoms:
+            raise LabelNotFound(label, "nothing of it is there any more (every part of it was removed or wiped)")
         lo, hi = self.world.body_aabb(body)
         R = self.world.body_rotation(body)
         yaw = float(np.arctan2(R[1, 0], R[0, 0]))
         # The object's own length and width (a turned object's world box overstates them) decide which side the
         # fingers close across; see Ctx.grasp_yaw.
         own = self.world.body_extent_m(body, yaw)
-        return Keypoint(label, (lo + hi) / 2, hi - lo, yaw, SOURCE,
-                        detail={"body_extent_m": [round(float(x), 5) for x in own]})
+        detail = {"body_extent_m": [round(float(x), 5) for x in own]}
+        if len(geoms) > 1:  # a region made of pieces (Wipe's dirt): where each piece is, for covering it
+            xy = self.world.data.geom_xpos[geoms, :2] - self.world.origin_m[:2]
+            detail["footprint_xy_m"] = [[round(float(x), 4), round(float(y), 4)] for x, y in xy]
+        return Keypoint(label, (lo + hi) / 2, hi - lo, yaw, SOURCE, detail=detail)

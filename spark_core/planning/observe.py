@@ -48,3 +48,9 @@ def arm_bases(world) -> dict[str, tuple[float, float]]:
     """Where each arm stands (base x, y in the world, m): what a planner needs to share work between arms."""
     return {a: (float(world.kinematics[a].T_world_base[0, 3]), float(world.kinematics[a].T_world_base[1, 3]))
             for a in world.arms}
+
+
+def arm_tools(world) -> dict[str, str]:
+    """Arms that carry a tool fixed in place of fingers, and the tool: such an arm wipes but cannot grasp."""
+    tools = {a: world.kinematics[a].robot.gripper.mounted_tool for a in world.arms}
+    return {a: t for a, t in tools.items() if t}

@@ -44,6 +44,11 @@ def user_prompt(request: PlanRequest) -> str:
     parts = []
     for instruction, plan_text in request.examples:
         parts.append(f"Example task: {instruction}\nExample plan:\n{plan_text.strip()}\n")
+    if request.arms:
+        arms = [f"{a} (base at x={x:.2f} m, y={y:.2f} m" + (f"; carries a mounted {request.tools[a]} and has no fingers"
+                                                           if a in request.tools else "") + ")"
+                for a, (x, y) in sorted(request.arms.items())]
+        parts.append("The robot's arms: " + "; ".join(arms))
     parts.append("What perception sees now:\n" + (request.scene.summary or "(nothing reported)"))
     parts.append(f"Task: {request.instruction.strip()}")
     return "\n\n".join(parts)

@@ -79,6 +79,39 @@ ENVS: dict[str, CapEnv] = {
 }
 
 
+WIPE_MARKERS = 100  # robosuite Wipe's default task_config: 100 dirt markers in one trail
+
+
+class WipeReferee:
+    """robosuite Wipe's bookkeeping, which robosuite does inside `env.step` (not called here: we step physics).
+
+    Every 50 ms of simulated time (one robosuite step at 20 Hz) it runs robosuite's own `env.reward()`, which
+    wipes (makes transparent) every marker lying within 2 cm above the pad's pressed face while something is in
+    contact, unless the arm touches something or nears a joint limit. Like robosuite's early termination, the
+    episode ends for good at the first such arm contact or joint limit: nothing is wiped after it."""
+
+    def __init__(self, env):
+        self.env = env
+        self.next_t_s = 0.0
+        self.ended: str = ""
+
+    def __call__(self, world) -> None:
+        if self.ended or world.sim_time_s + 1e-9 < self.next_t_s:
+            return
+        self.next_t_s = world.sim_time_s + 1.0 / ROBOSUITE_CONTROL_HZ
+        env = self.env
+        env.reward()  # robosuite's marker update
+        if env.check_contact(env.robots[0].robot_model):
+            self.ended = f"the arm touched the table at t={world.sim_time_s:.2f} s (robosuite ends the episode)"
+        elif env.robots[0].check_q_limits():
+            self.ended = f"a joint came within 0.1 rad of its limit at t={world.sim_time_s:.2f} s (robosuite ends the episode)"
+
+    @property
+    def summary(self) -> str:
+        wiped = len(self.env.wiped_markers)
+        return f"{wiped} of {WIPE_MARKERS} markers wiped" + (f"; {self.ended}" if self.ended else "")
+
+
 def make_env(name: str, seed: int):
     """Build and reset the env for `seed` (deterministic: same seed, same start state)."""
     suite = require_robosuite()

@@ -36,6 +36,7 @@ from .world import MujocoWorld
 
 ROBOSUITE_CONTROL_HZ = 20  # CaP-X runs robosuite at 20 Hz: one robosuite step is 50 ms of simulated time
 GRIP_SITE_BELOW_HAND_M = 0.097  # robosuite PandaGripper: eef body (grip_site) below the hand body
+WIPER_SITE_BELOW_HAND_M = 0.03  # robosuite WipingGripper: grip_site at the pad's bottom face, below the hand
 SERVO_KP = 900.0  # 1/s^2: joint servo stiffness through the inertia matrix (natural frequency 30 rad/s)
 SERVO_KD = 60.0  # 1/s: critically damped
 
@@ -50,20 +51,26 @@ def require_robosuite():
     return robosuite
 
 
-@lru_cache(maxsize=1)
-def robosuite_panda() -> RobotDescription:
+@lru_cache(maxsize=2)
+def robosuite_panda(wiper: bool = False) -> RobotDescription:
     """Our Panda (same URDF, limits and IK) ending in robosuite's grip site instead of the URDF hand TCP, with
-    robosuite's rest pose and hand (80 mm stroke, 20 N force limit)."""
+    robosuite's rest pose and hand (80 mm stroke, 20 N force limit).
+
+    `wiper`: robosuite's WipingGripper instead of the hand, a 12 x 5 cm pad (long side along the hand's y axis,
+    where fingers would close) fixed 3 cm below the flange; the TCP is the middle of the pad's bottom face."""
+    below = WIPER_SITE_BELOW_HAND_M if wiper else GRIP_SITE_BELOW_HAND_M
     extra = ('<link name="robosuite_grip_site"/><joint name="robosuite_grip_site_joint" type="fixed">'
              '<parent link="panda_hand"/><child link="robosuite_grip_site"/>'
-             f'<origin xyz="0 0 {GRIP_SITE_BELOW_HAND_M}" rpy="0 0 0"/></joint>')
+             f'<origin xyz="0 0 {below}" rpy="0 0 0"/></joint>')
     base = panda()
     return dataclasses.replace(
-        base, name="panda-robosuite", tcp_frame="robosuite_grip_site", extra_urdf=extra,
+        base, name="panda-robosuite-wiper" if wiper else "panda-robosuite", tcp_frame="robosuite_grip_site",
+        extra_urdf=extra,
         # robosuite's Panda.init_qpos: where every episode starts (before its initialisation noise)
         home_q_rad=np.array([0.0, np.pi / 16, 0.0, -np.pi / 2 - np.pi / 3, 0.0, np.pi - 0.2, np.pi / 4]),
         gripper=GripperSpec(base.gripper.finger_joints, max_width_m=0.08, closed_empty_width_m=0.004,
-                            max_force_n=20.0, finger_speed_m_s=0.1, grasp_depth_m=0.03),  # short fingers
+                            max_force_n=20.0, finger_speed_m_s=0.1, grasp_depth_m=0.03,  # short fingers
+                            mounted_tool="wiping pad" if wiper else "", tool_size_m=(0.05, 0.12) if wiper else (0.0, 0.0)),
         # The wrist motors give 12 N m, and robosuite's hand has a large inertia box that MuJoCo's air drag
         # acts on: the wrist joints top out near 1.5 rad/s, so trajectories are planned slower there.
         max_velocity_rad_s=(2.175, 2.175, 2.175, 2.175, 1.0, 1.0, 1.0),
@@ -82,16 +89,22 @@ class RobosuiteObject:
     category: str = "block"
 
 
+def _has_fingers(m: mujoco.MjModel, i: int) -> bool:
+    return mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_JOINT, f"gripper{i}_finger_joint1") >= 0
+
+
 def _names(m: mujoco.MjModel, i: int) -> RobotNames:
     r, g = f"robot{i}_", f"gripper{i}_"
     bodies = tuple(m.body(b).name for b in range(m.nbody)
                    if m.body(b).name.startswith((r, g, f"mount{i}_")))
+    fingers = _has_fingers(m, i)
     return RobotNames(
         prefix=r, arm_joints=tuple(f"{r}joint{k}" for k in range(1, 8)),
         arm_actuators=tuple(f"{r}torq_j{k}" for k in range(1, 8)),
-        finger_joints=(f"{g}finger_joint1", f"{g}finger_joint2"), gripper_actuator=f"{g}gripper_finger_joint1",
+        finger_joints=(f"{g}finger_joint1", f"{g}finger_joint2") if fingers else (),
+        gripper_actuator=f"{g}gripper_finger_joint1" if fingers else "",
         tcp_site=f"{g}grip_site", wrist_camera=f"{r}eye_in_hand", bodies=bodies,
-        finger_bodies=(f"{g}leftfinger", f"{g}rightfinger"), base_body=f"{r}base")
+        finger_bodies=(f"{g}leftfinger", f"{g}rightfinger") if fingers else (), base_body=f"{r}base")
 
 
 class RobosuiteWorld(MujocoWorld):
@@ -119,7 +132,7 @@ class RobosuiteWorld(MujocoWorld):
         # a part made of geoms gets a pseudo body name "<body>#<label>" that body_aabb and the cameras understand
         parts = {o.label: (f"{o.body}#{o.label}", o.description) for o in objects if o.geoms}
         cams = tuple(m.camera(c).name for c in range(m.ncam))
-        scene = Scene(m, names, {a: robosuite_panda() for a in arms}, T_world_base, placed, parts, cams, seed,
+        scene = Scene(m, names, {a: robosuite_panda(wiper=not _has_fingers(m, i)) for a, i in arms.items()}, T_world_base, placed, parts, cams, seed,
                       extra={"perception_cameras": perception_cameras, "simulator": "robosuite"})
         # a part's geoms with their visual twins (robosuite draws `<geom>_visual` / `<geom>_vis`, not the collider)
         self.part_geoms = {f"{o.body}#{o.label}": {m.geom(n).id for g in o.geoms for n in (g, f"{g}_visual", f"{g}_vis")
@@ -129,7 +142,7 @@ class RobosuiteWorld(MujocoWorld):
         self._q_cmd: dict[str, np.ndarray] = {}
         self._qd_cmd: dict[str, np.ndarray] = {}
         super().__init__(scene, data=d, origin_m=origin)
-        self._grip2 = {a: m.actuator(f"gripper{i}_gripper_finger_joint2").id for a, i in arms.items()}
+        self._grip2 = {a: m.actuator(f"gripper{i}_gripper_finger_joint2").id for a, i in arms.items() if a in self._grip}
         self.reset()  # again, now that both finger actuators are known
         self._hand = {a: m.body(f"{n.prefix}right_hand").id for a, n in names.items()}
         self._ctrl_range = {a: m.actuator_ctrlrange[self._act[a]].T.copy() for a in self.arms}
@@ -143,7 +156,7 @@ class RobosuiteWorld(MujocoWorld):
         for a in self.arms:
             self._q_cmd[a] = self.q(a)
             self._qd_cmd[a] = np.zeros(len(self._q_cmd[a]))
-            if hasattr(self, "_grip2"):
+            if hasattr(self, "_grip2") and a in self._grip2:
                 self._command_gripper(a, self.gripper_width_m(a))
 
     def tcp_pose(self, arm: str) -> Pose:
@@ -158,6 +171,8 @@ class RobosuiteWorld(MujocoWorld):
         self._qd_cmd[arm] = np.zeros(len(q_rad)) if qd_rad_s is None else np.asarray(qd_rad_s, float).copy()
 
     def gripper_command_m(self, arm: str) -> float:
+        if arm not in self._grip:
+            return 0.0  # a mounted tool
         return float(self.data.ctrl[self._grip[arm]] - self.data.ctrl[self._grip2[arm]])
 
     def _command_gripper(self, arm: str, width_m: float) -> None:
@@ -189,8 +204,13 @@ class RobosuiteWorld(MujocoWorld):
 
     # -- privileged: parts made of some geoms of a body (a nut's handle) --------------------------------------
     def body_geoms(self, body: str) -> list[int]:
+        """A part's geoms that are there now: robosuite erases a wiped Wipe marker by making its visual-only geom
+        transparent, and then it is neither seen nor touched."""
         geoms = self.part_geoms.get(body)
-        return sorted(geoms) if geoms is not None else super().body_geoms(body)
+        if geoms is None:
+            return super().body_geoms(body)
+        m = self.model
+        return sorted(g for g in geoms if m.geom_rgba[g, 3] > 0 or m.geom_contype[g] or m.geom_conaffinity[g])
 
     def body_rotation(self, body: str) -> np.ndarray:
         return super().body_rotation(body.split("#")[0])  # a part turns with its body

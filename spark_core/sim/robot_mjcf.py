@@ -20,12 +20,12 @@ class RobotNames:
     prefix: str
     arm_joints: tuple[str, ...]
     arm_actuators: tuple[str, ...]
-    finger_joints: tuple[str, str]
+    finger_joints: tuple[str, ...]  # empty, like gripper_actuator, for a mounted tool without fingers
     gripper_actuator: str
     tcp_site: str
     wrist_camera: str
     bodies: tuple[str, ...]
-    finger_bodies: tuple[str, str]
+    finger_bodies: tuple[str, ...]
     base_body: str
 
 

@@ -53,7 +53,7 @@ class MujocoWorld:
         self._qadr = {a: np.array([m.joint(j).qposadr[0] for j in n.arm_joints]) for a, n in scene.robots.items()}
         self._dadr = {a: np.array([m.joint(j).dofadr[0] for j in n.arm_joints]) for a, n in scene.robots.items()}
         self._act = {a: np.array([m.actuator(x).id for x in n.arm_actuators]) for a, n in scene.robots.items()}
-        self._grip = {a: m.actuator(n.gripper_actuator).id for a, n in scene.robots.items()}
+        self._grip = {a: m.actuator(n.gripper_actuator).id for a, n in scene.robots.items() if n.gripper_actuator}
         self._fingers = {a: [m.joint(f).qposadr[0] for f in n.finger_joints] for a, n in scene.robots.items()}
         # finger -> the bodies that touch with it (a finger and, where the model has them, its pad bodies)
         self._finger_bodies = {a: {m.body(b).id: _subtree(m, m.body(b).id) for b in n.finger_bodies}
@@ -81,6 +81,8 @@ class MujocoWorld:
                 q = self.scene.robot_descriptions[a].home_q_rad
                 self.data.qpos[self._qadr[a]] = q
                 self.data.ctrl[self._act[a]] = q
+                if a not in self._grip:
+                    continue
                 self.data.ctrl[self._grip[a]] = self.scene.robot_descriptions[a].gripper.max_width_m / 2
                 self.data.qpos[self._fingers[a]] = self.scene.robot_descriptions[a].gripper.max_width_m / 2
             mujoco.mj_forward(self.model, self.data)
@@ -106,7 +108,7 @@ class MujocoWorld:
 
     def gripper_command_m(self, arm: str) -> float:
         """The commanded finger gap (m); the sensed gap is `gripper_width_m`."""
-        return float(2 * self.data.ctrl[self._grip[arm]])
+        return float(2 * self.data.ctrl[self._grip[arm]]) if arm in self._grip else 0.0
 
     def _command_gripper(self, arm: str, width_m: float) -> None:
         self.data.ctrl[self._grip[arm]] = width_m / 2
@@ -119,7 +121,7 @@ class MujocoWorld:
         return Pose(self.data.site_xpos[sid] - self.origin_m, self.data.site_xmat[sid].reshape(3, 3).copy())
 
     def gripper_width_m(self, arm: str) -> float:
-        """Finger gap in metres (the width sensor)."""
+        """Finger gap in metres (the width sensor); 0 for a mounted tool."""
         return float(np.abs(self.data.qpos[self._fingers[arm]]).sum())
 
     def finger_contacts(self, arm: str) -> dict[int, set[int]]:
@@ -203,8 +205,11 @@ class MujocoWorld:
         return ExecResult(completed, self.sim_time_s - t0, err)
 
     def set_gripper(self, arm: str, width_m: float, force_n: float, duration_s: float = 0.6) -> float:
-        """Drive the fingers toward `width_m` with at most `force_n` (N); returns the simulated seconds spent."""
+        """Drive the fingers toward `width_m` with at most `force_n` (N); returns the simulated seconds spent.
+        An arm with a mounted tool has no fingers: nothing moves and no time passes."""
         g = self.scene.robot_descriptions[arm].gripper
+        if arm not in self._grip:
+            return 0.0
         width_m = float(np.clip(width_m, 0.0, g.max_width_m))
         force_n = float(np.clip(force_n, 1.0, g.max_force_n))
         n_sub = max(int(round(CONTROL_DT_S / self.model.opt.timestep)), 1)

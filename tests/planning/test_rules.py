@@ -145,3 +145,18 @@ def test_put_inside_after_opening_targets_the_opened_drawer():
     view = scene(drawer=(0.7, 0.2, 0.07), drawer_handle=(0.65, 0.2, 0.09), bowl=(0.4, -0.1, 0.03))
     res = RulesPlanner().plan(PlanRequest("open the drawer and put the bowl inside", view))
     assert prims(res)[-1] == ("place_in", {"container_label": "drawer"})
+
+
+def test_an_arm_with_a_mounted_pad_wipes_the_region_without_picking_a_tool():
+    seen = scene(dirt=((0.5, 0.0, 0.001), (0.2, 0.1, 0.002)))
+    req = PlanRequest("wipe the dirt off the table", seen, arms={"right": (0.0, 0.0)}, tools={"right": "wiping pad"})
+    assert prims(RulesPlanner().plan(req)) == [("wipe_area", {"keypoint_label": "dirt"})]
+    bare = RulesPlanner().plan(PlanRequest("wipe the dirt off the table", seen, arms={"right": (0.0, 0.0)}))
+    assert bare.plan is None and "scrub with what" in bare.error  # fingers and no tool named: ask for one
+
+
+def test_the_prompt_tells_the_planner_which_arm_carries_a_mounted_tool():
+    from spark_core.planning.prompt import user_prompt
+
+    text = user_prompt(PlanRequest("wipe the table", arms={"right": (0.0, 0.0)}, tools={"right": "wiping pad"}))
+    assert "right (base at x=0.00 m, y=0.00 m; carries a mounted wiping pad and has no fingers)" in text

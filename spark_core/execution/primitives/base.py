@@ -102,7 +102,15 @@ class Ctx:
     # -- sensing ------------------------------------------------------------------------------------------------
     def holding(self) -> bool:
         g = self.world.kinematics[self.arm].robot.gripper
+        if g.mounted_tool:
+            return True  # a tool fixed to the flange is always held
         return self.world.gripper_width_m(self.arm) > g.closed_empty_width_m and bool(self.world.pinched_bodies(self.arm))
+
+    def no_fingers(self) -> ActionOutcome | None:
+        """A failure for finger skills on an arm that carries a mounted tool, else None."""
+        tool = self.world.kinematics[self.arm].robot.gripper.mounted_tool
+        return self.fail(f"arm {self.arm!r} carries a mounted {tool} and has no fingers to grasp or release with") \
+            if tool else None
 
     def contact(self, threshold_n: float = CONTACT_FORCE_N) -> Callable[[], bool]:
         return lambda: self.world.wrist_force_n(self.arm) > threshold_n

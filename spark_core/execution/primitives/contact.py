@@ -1,12 +1,14 @@
-"""Contact-rich motions along the table: push, sweep, wipe, constrained scrub."""
+"""Contact-rich motions along the table: push, sweep, wipe, wipe an area clean, constrained scrub."""
 
 from __future__ import annotations
 
 import numpy as np
 
+from ...control.ik import Unreachable
 from ...control.pose import wrap_grasp_yaw
 from ..protocols import ActionOutcome, FailureKind
 from .base import Ctx, primitive
+from .coverage import coverage_strokes
 
 DIRECTIONS = {"forward": (1.0, 0.0), "backward": (-1.0, 0.0), "left": (0.0, 1.0), "right": (0.0, -1.0)}
 
@@ -99,3 +101,94 @@ def wipe(ctx: Ctx) -> ActionOutcome:
     n = ctx.args["n_strokes"]
     offs = [np.array([0.0, (-1) ** k * 0.05]) for k in range(2 * n)]
     return _surface_pattern(ctx, "keypoint_label", offs, 0.004)
+
+
+WIPE_PRESS_M = 0.008  # below first touch: a soft pad's face gives, so it stays pressed flat on the surface
+WIPE_SPEED_M_S = 0.1
+WIPE_REACH_BELOW_M = 0.015  # how far below the seen surface the pressed path must be reachable
+
+
+def _footprint(kp) -> np.ndarray:
+    """Where the region is (xy, m): perception's 1 cm cover of its top face, else its box."""
+    pts = kp.detail.get("footprint_xy_m")
+    if pts:
+        return np.asarray(pts, float)
+    half = kp.extent_m[:2] / 2
+    gx, gy = (np.arange(-h, h + 1e-9, 0.01) if h > 0.005 else np.zeros(1) for h in half)
+    return np.array([[kp.position_m[0] + x, kp.position_m[1] + y] for x in gx for y in gy])
+
+
+def _stroke_yaw(ctx: Ctx, waypoints: list[np.ndarray], heading: float, surface_z_m: float) -> float | None:
+    """Of the two hand yaws that hold the tool across the strokes (it is symmetric under a half turn), one whose
+    whole pressed path the arm can follow in straight lines without reaching a joint limit; None if neither."""
+    for yaw in (wrap_grasp_yaw(heading), wrap_grasp_yaw(heading) + np.pi):
+        try:
+            above = ctx.top_down([*waypoints[0], surface_z_m + 0.05], yaw)
+            q = ctx.motion.ik(above, what="point above the region")
+            start = above
+            for p in [waypoints[0], *waypoints]:
+                pose = ctx.top_down([*p, surface_z_m - WIPE_REACH_BELOW_M], yaw)
+                q = ctx.motion.plan_line(pose, q_start=q, start=start)[-1]
+                start = pose
+            return yaw
+        except Unreachable:
+            continue
+    return None
+
+
+def _pressed_path(ctx: Ctx, waypoints: list[np.ndarray], yaw: float, surface_z_m: float, label: str) -> ActionOutcome:
+    """Touch down at the first waypoint, slide pressed through the rest, lift off."""
+    above = ctx.top_down([*waypoints[0], surface_z_m + 0.05], yaw)
+    out = ctx.motion.move_to(above, what=f"point above {label!r}")
+    if not out.ok:
+        return out
+    down = ctx.top_down([*waypoints[0], surface_z_m - WIPE_REACH_BELOW_M], yaw)
+    out = ctx.motion.move_line(down, speed_m_s=0.04, stop=ctx.contact(), check=False)
+    if not out.ok:
+        return out
+    if not out.detail.get("stopped_early"):
+        return ctx.fail(f"the tool never touched the surface under {label!r} (TCP at z={ctx.tcp.position_m[2]:.3f} m)",
+                        FailureKind.PERCEPTION)
+    z = ctx.tcp.position_m[2] - WIPE_PRESS_M
+    touching, length = 0, 0.0
+    for p in waypoints:
+        length += float(np.linalg.norm(p - ctx.tcp.position_m[:2]))
+        ctx.motion.move_line(ctx.top_down([*p, z], yaw), speed_m_s=WIPE_SPEED_M_S, check=False)
+        touching += ctx.world.wrist_force_n(ctx.arm) > 0.5
+    ctx.motion.move_line(ctx.tcp.translated([0, 0, 0.1]), check=False)
+    if touching < 0.7 * len(waypoints):
+        return ctx.fail(f"the tool lost contact with the surface on {len(waypoints) - touching} of {len(waypoints)} strokes")
+    return ActionOutcome.success(0.0, path_m=round(length, 3))
+
+
+@primitive("wipe_area")
+def wipe_area(ctx: Ctx) -> ActionOutcome:
+    """Cover what is seen of the region in serpentine strokes as wide as the tool, look again from the rest
+    pose (the arm out of the cameras' way), and cover what is left."""
+    if not ctx.holding():
+        return ctx.fail("nothing held to wipe with")
+    if ctx.resolver is None:
+        return ctx.fail("no perception to tell whether the region is clean", FailureKind.PERCEPTION)
+    robot = ctx.world.kinematics[ctx.arm].robot
+    if robot.gripper.mounted_tool:
+        width = robot.gripper.tool_size_m[1]  # the pad's long side, held across the stroke
+    else:
+        held = ctx.memory.held_extent_m
+        width = float(np.max(held[:2])) if held is not None else 0.04
+    kp, label, path = ctx.kp("keypoint_label"), ctx.args["keypoint_label"], 0.0
+    for n in range(1, ctx.args["max_passes"] + 1):
+        # strokes end 1 cm past the last point: the tool's own length covers the rest
+        strokes, heading = coverage_strokes(_footprint(kp), stripe_m=0.75 * width, margin_m=0.01)
+        yaw = _stroke_yaw(ctx, strokes, heading, kp.top_z_m)
+        if yaw is None:
+            return ctx.fail(f"the strokes over {label!r} are out of the arm's reach", FailureKind.KINEMATIC_LIMIT)
+        out = _pressed_path(ctx, strokes, yaw, kp.top_z_m, label)
+        if not out.ok:
+            return out
+        path += out.detail["path_m"]
+        ctx.motion.move_joints(robot.home_q_rad, what="rest pose")
+        seen = ctx.observe(label)
+        if seen is None:
+            return ActionOutcome.success(0.0, passes=n, wiped_path_m=round(path, 3))
+        kp = seen
+    return ctx.fail(f"{label!r} still seen after {n} passes: {len(_footprint(kp))} cm2 of it left")

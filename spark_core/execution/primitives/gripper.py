@@ -10,6 +10,8 @@ from .base import Ctx, primitive
 
 @primitive("grasp")
 def grasp(ctx: Ctx) -> ActionOutcome:
+    if (no := ctx.no_fingers()) is not None:
+        return no
     g = ctx.world.kinematics[ctx.arm].robot.gripper
     ctx.memory.grasp_offset_xy_hand_m = np.zeros(2)  # unknown for a bare grasp: assume centred (pick sets it)
     ctx.world.set_gripper(ctx.arm, 0.0, ctx.args["force"], duration_s=0.4)
@@ -30,6 +32,8 @@ def open_gripper(ctx: Ctx) -> float:
 
 @primitive("release")
 def release(ctx: Ctx) -> ActionOutcome:
+    if (no := ctx.no_fingers()) is not None:
+        return no
     open_gripper(ctx)
     ctx.memory.held_label = None
     g = ctx.world.kinematics[ctx.arm].robot.gripper

@@ -138,6 +138,8 @@ def _clause(action: str, rest: str, text: str) -> Clause:
     if action == "scrub":
         split = _split_on(rest, WITH)
         obj, tool = (split if split else (rest, None))
+        off = _split_on(obj, ("off of", "off", "from"))
+        obj = re.sub(r"\s+clean$", "", off[0] if off else obj)  # "wipe the dirt off the table": the dirt goes
         return Clause(action, target=noun_phrase(obj), tool=noun_phrase(tool) if tool else None, text=text)
     if action == "pour":
         into = _split_on(rest, IN) or _split_on(rest, ON)

@@ -121,11 +121,14 @@ class RulesPlanner:
                         _prim("pour", target_label=dst, pour_angle=POUR_ANGLE_RAD)]
             elif c.action == "scrub":
                 t = need(target or obj, "surface to scrub", c)
-                if not c.tool:
+                if not c.tool and request.tools:  # an arm carries a wiping pad: wipe the region clean with it
+                    out.append(_prim("wipe_area", keypoint_label=t))
+                elif not c.tool:
                     raise CannotPlan(f"{c.text!r}: scrub with what? say e.g. 'with the sponge'")
-                tool = need(c.tool, "tool", c)
-                out += [_prim("pick", keypoint_label=tool), _prim("constrained_scrub", target_label=t),
-                        _prim("move_relative", dz=0.10), _prim("release")]
+                else:
+                    tool = need(c.tool, "tool", c)
+                    out += [_prim("pick", keypoint_label=tool), _prim("constrained_scrub", target_label=t),
+                            _prim("move_relative", dz=0.10), _prim("release")]
             held = obj if c.action == "pick" else None
             last_object = obj or last_object
         if clauses and clauses[-1].action in ("open", "close", "turn_on", "turn_off"):

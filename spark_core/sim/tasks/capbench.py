@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from functools import partial
 
-from ..capbench_envs import ENVS, make_env
+from ..capbench_envs import ENVS, WIPE_MARKERS, WipeReferee, make_env
 from ..robosuite_world import RobosuiteObject as Obj
 from ..robosuite_world import RobosuiteWorld
 from .spec import TaskSpec
@@ -31,6 +31,9 @@ OBJECTS: dict[str, list[Obj]] = {
                               geoms=("SquareNut_g4",), category="tool"),
                           Obj("square peg", "square metal peg standing on the table", "peg1", category="fixture"),
                           Obj("round peg", "round metal peg standing on the table", "peg2", category="fixture")],
+    # the dirt is one region made of robosuite's 100 marker discs; a wiped disc turns transparent and is gone
+    "Wipe": [Obj("dirt", "brown dirt stains on the table", "table",
+                 geoms=tuple(f"contact{i}_g0_vis" for i in range(WIPE_MARKERS)), category="region")],
     "TwoArmLift": [Obj("pot", "metal pot with two handles", "pot_root", category="container"),
                    Obj("pot handle 0", "one handle of the pot", "pot_root",
                        geoms=("pot_handle0_c",), category="container"),  # the grip bar
@@ -43,7 +46,15 @@ OBJECTS: dict[str, list[Obj]] = {
 
 
 def _world(name: str, seed: int) -> RobosuiteWorld:
-    return RobosuiteWorld(make_env(name, seed), OBJECTS[name], seed=seed)
+    world = RobosuiteWorld(make_env(name, seed), OBJECTS[name], seed=seed)
+    if name == "Wipe":
+        world.referee = WipeReferee(world.env)
+        world.monitors.append(world.referee)
+    return world
+
+
+def _wipe_success(w: RobosuiteWorld) -> bool:
+    return bool(w.env._check_success()) and not w.referee.ended
 
 
 def _lift_success(w: RobosuiteWorld) -> bool:
@@ -68,6 +79,9 @@ SUITE: dict[str, TaskSpec] = {t.name: t for t in [
           "robosuite Stack: red cube lifted, touching the green cube, not grasped (CaP-X placement x +-18, y +-12 cm)"),
     _task("CubeRestack", "put the red cube on top of the green cube", _robosuite_success,
           "robosuite Stack predicate on CaP-X CubeRestack: two 4 cm cubes, green starts on red; red ends on green, released"),
+    _task("Wipe", "wipe the dirt off the table", _wipe_success,
+          "robosuite Wipe: all 100 markers wiped by robosuite's own check at 20 Hz (pad pressed flat on them), "
+          "before any arm contact or joint-limit approach, which end robosuite's episode"),
     _task("NutAssemblySquare", "put the square nut onto the square peg", _robosuite_success,
           "robosuite NutAssemblySquare: nut within 3 cm of the peg axis, below 5 cm, gripper > 4.2 cm from the nut"),
     _task("TwoArmLift", "lift the pot with both arms, holding it by its two handles", _robosuite_success,
