@@ -152,3 +152,16 @@ def test_reference_plan_through_cameras_and_the_sim_segmenter(task):
     out = run_reference_trial(BUILTIN[task], seed=1, perception=PerceptionConfig("sim"))
     assert out.success, f"{out.outcome}: {out.failed_node} {out.reason}"
     assert "sim segmenter (privileged masks)" in out.protocol["resolver"]
+
+
+def test_a_seen_object_is_grasped_across_its_short_side_however_it_is_turned():
+    """Camera keypoints carry the seen top face's length along the yaw axis: a bar turned 57 degrees has a nearly
+    square world box, which must not decide the side the fingers close across."""
+    from spark_core.control.pose import wrap_grasp_yaw
+    from spark_core.execution.primitives.base import ArmMemory, Ctx
+    from spark_core.perception import Keypoint
+
+    bar = Keypoint("bar", np.zeros(3), np.array([0.07, 0.08, 0.02]), yaw_rad=-1.0,
+                   detail={"principal_extent_m": [0.11, 0.02]})  # yaw runs along the long side (lifting)
+    ctx = Ctx(world=None, arm="right", motion=None, args={}, keypoints={}, memory=ArmMemory())
+    assert ctx.grasp_yaw(bar) == pytest.approx(wrap_grasp_yaw(-1.0))  # hand x along the bar: fingers across it

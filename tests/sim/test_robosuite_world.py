@@ -120,3 +120,12 @@ def test_place_over_puts_the_nut_around_the_peg():
 
     out = run_reference_trial(TASKS["NutAssemblySquare"], 0, recovery=RecoveryPolicy(max_retries=0))
     assert out.success, out.reason
+
+
+def test_handoff_of_a_short_handled_hammer_needs_no_recovery():
+    """Seed 10's handle is 10.4 cm: the giver takes it next to the heavy head, the receiver the free end, the
+    hands leaning apart so their wrists clear each other."""
+    from spark_core.execution import RecoveryPolicy
+
+    out = run_reference_trial(TASKS["TwoArmHandover"], 10, recovery=RecoveryPolicy(max_retries=0))
+    assert out.success, out.reason

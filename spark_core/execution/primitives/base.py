@@ -38,6 +38,7 @@ class ArmMemory:
     # The held object's centre relative to the TCP in the hand's own (yaw) frame, m: non-zero for an off-centre
     # grasp such as a bowl's rim, so putting down can centre the object (not the hand) on its target.
     grasp_offset_xy_hand_m: np.ndarray = field(default_factory=lambda: np.zeros(2))
+    held_length_m: float = 0.0  # the held object's own length along its long axis (the hand's x axis), m
 
 
 @dataclass
@@ -85,7 +86,9 @@ class Ctx:
         """Fingers close across the object's short side: yaw from its principal axis, else keep the current."""
         if kp.yaw_rad is None:
             return self.current_yaw()
-        own = kp.detail.get("body_extent_m")  # length along the yaw axis and width across it, when known
+        # length along the yaw axis and width across it: the body's own (privileged) or the seen top face's; the
+        # world-axis box cannot tell which side is long once the object is turned
+        own = kp.detail.get("body_extent_m") or kp.detail.get("principal_extent_m")
         longer_along_yaw = own[0] >= own[1] if own is not None else kp.extent_m[0] >= kp.extent_m[1]
         yaw = kp.yaw_rad if longer_along_yaw else kp.yaw_rad + np.pi / 2
         return wrap_grasp_yaw(yaw)

@@ -11,15 +11,19 @@ from dataclasses import replace
 
 import numpy as np
 
-from ...control.pose import wrap_grasp_yaw
-from ...perception import Keypoint
+from ...control.pose import Pose, rot_y, top_down_rotation, wrap_grasp_yaw
+from ...perception import Keypoint, LabelNotFound
 from ..protocols import ActionOutcome, FailureKind
 from .base import Ctx, primitive
 from .gripper import grasp, open_gripper
-from .pick_place import grasp_object, pick_and_lift
+from .pick_place import grasp_object, own_extent_xy, pick_and_lift
 
 HANDOFF_HEIGHT_M = 0.25  # where the arms meet (TCP height above the table)
-HANDOFF_GAP_M = 0.09  # TCP to TCP along the object at the meeting point: two hands side by side on one object
+HANDOFF_GAP_M = 0.10  # TCP to TCP along the object at the meeting point: two hands side by side on one object
+HANDOFF_MIN_GAP_M = 0.065  # closer, the two hands' bodies (6.4 cm thick along x) touch
+HANDOFF_LEAN_RAD = 0.35  # each hand leans 20 deg away from the other: their wrists are wider than the hands
+HANDOFF_GIVER_MARGIN_M = 0.02  # the giver's finger centres this far inside the end it takes
+HANDOFF_END_MARGIN_M = 0.015  # finger centres this far inside an object's end (pads are 1.6 cm wide)
 COOPERATIVE_CLEARANCE_M = 0.05
 
 
@@ -59,17 +63,20 @@ def _holds(ctx: Ctx, label: str) -> bool:
 
 @primitive("handoff")
 def handoff(ctx: Ctx) -> ActionOutcome:
-    """The giver holds the object (it picks it first if needed) and brings it between the arms; the receiver
-    grasps it beside the giver's hand; only once the receiver holds it does the giver let go."""
+    """The giver holds the object (it picks it first if needed, near the end on its own side, so the receiver has
+    room) and brings it between the arms, the rest of the object pointing at the receiver; the receiver grasps it
+    beside the giver's hand, as far along as the object allows; only once the receiver holds it does the giver
+    let go."""
     a = ctx.args
     label, giver, receiver = a["keypoint_label"], ctx.for_arm(a["from_arm"]), ctx.for_arm(a["to_arm"])
     if giver.arm == receiver.arm:
         return ctx.fail(f"handoff from the {giver.arm} arm to itself", FailureKind.PLANNER)
+    base = {arm: ctx.world.kinematics[arm].T_world_base[:3, 3] for arm in (giver.arm, receiver.arm)}
     if not _holds(giver, label):
-        out = pick_and_lift(giver, giver.kp("keypoint_label"), 0.1)
+        kp = giver.kp("keypoint_label")
+        out = pick_and_lift(giver, kp, 0.1, along_m=_near_end(giver, kp, base[giver.arm]))
         if not out.ok:
             return out
-    base = {arm: ctx.world.kinematics[arm].T_world_base[:3, 3] for arm in (giver.arm, receiver.arm)}
     toward = base[receiver.arm] - base[giver.arm]
     toward[2] = 0.0
     toward /= max(np.linalg.norm(toward), 1e-9)
@@ -80,18 +87,28 @@ def handoff(ctx: Ctx) -> ActionOutcome:
     facing[2] = 0.0
     ahead = 0.5 * facing / np.linalg.norm(facing) if np.linalg.norm(facing) > 0.5 else np.zeros(3)
     meet = np.array([mid[0] + ahead[0], mid[1] + ahead[1], HANDOFF_HEIGHT_M])
-    yaw = wrap_grasp_yaw(float(np.arctan2(toward[1], toward[0])))  # the object's long axis points at the receiver
+    # The object lies along the giver's hand x axis, its centre `offset` along it from the TCP: turn the hand so
+    # the longer part points at the receiver, who grips as far out as the object reaches (fingers inside its end).
+    offset = float(giver.memory.grasp_offset_xy_hand_m[0])
+    reach = abs(offset) + giver.memory.held_length_m / 2 - HANDOFF_END_MARGIN_M
+    if reach < HANDOFF_MIN_GAP_M:
+        return giver.fail(f"only {100 * (reach + HANDOFF_END_MARGIN_M):.1f} cm of the {label!r} sticks out of the "
+                          f"{giver.arm} hand: the other hand needs {100 * (HANDOFF_MIN_GAP_M + HANDOFF_END_MARGIN_M):.1f} cm "
+                          "beside it (grasp it nearer an end)", FailureKind.PLANNER)
+    gap = min(reach, HANDOFF_GAP_M)
+    heading = float(np.arctan2(toward[1], toward[0])) + (np.pi if offset < 0 else 0.0)
     with cooperative(giver, receiver):
         open_gripper(receiver)
-        out = giver.motion.move_to(giver.top_down(meet - toward * HANDOFF_GAP_M / 2, yaw), what="hand-over point")
+        out = giver.motion.move_to(_leaning(meet - toward * gap / 2, heading, toward, +1), what="hand-over point")
         if not out.ok:
             return out
         if not _holds(giver, label):
             return giver.fail(f"the {giver.arm} arm lost the {label!r} on the way to the hand-over point")
-        grip = meet + toward * HANDOFF_GAP_M / 2
-        out = receiver.motion.move_to(receiver.top_down(grip + [0, 0, 0.10], yaw), what="above the hand-over grip")
+        grip = _leaning(giver.tcp.position_m + toward * gap, wrap_grasp_yaw(heading), toward, -1)  # where the giver is
+        above = Pose(grip.position_m - 0.10 * grip.rotation[:, 2], grip.rotation)  # back along the fingers
+        out = receiver.motion.move_to(above, what="above the hand-over grip")
         if out.ok:
-            out = receiver.motion.move_line(receiver.top_down(grip, yaw), speed_m_s=0.15, what="hand-over grip")
+            out = receiver.motion.move_line(grip, speed_m_s=0.15, what="hand-over grip")
         if not out.ok:
             return out
         receiver.args = {**receiver.args, "force": 40.0, "target_width": None}
@@ -101,6 +118,7 @@ def handoff(ctx: Ctx) -> ActionOutcome:
             return receiver.fail(f"the {receiver.arm} arm could not take the {label!r}: {out.reason}")
         receiver.memory.held_label = label
         receiver.memory.held_extent_m = giver.memory.held_extent_m
+        receiver.memory.held_length_m = giver.memory.held_length_m
         receiver.memory.grasp_offset_z_m = giver.memory.grasp_offset_z_m
         open_gripper(giver)
         giver.memory.held_label = None
@@ -109,14 +127,52 @@ def handoff(ctx: Ctx) -> ActionOutcome:
         return receiver.fail(f"the {label!r} slipped from the {receiver.arm} arm when the {giver.arm} arm let go")
     if giver.world.pinched_bodies(giver.arm):
         return giver.fail(f"the {giver.arm} arm still pinches something after opening")
-    return ActionOutcome.success(0.0, receiver=receiver.arm)
+    return ActionOutcome.success(0.0, receiver=receiver.arm, gap_m=round(gap, 3))
+
+
+def _leaning(tcp_m: np.ndarray, yaw: float, toward: np.ndarray, sign: int) -> Pose:
+    """A top-down pose turned HANDOFF_LEAN_RAD about the hand's y axis (the fingers' closing axis), fingers toward
+    the receiver (sign +1, the giver) or away from the giver (sign -1, the receiver): the fingertips can be close on
+    the object while the wrists and flanges, wider than the hands, lean apart."""
+    R = top_down_rotation(yaw)
+    phi = HANDOFF_LEAN_RAD * sign * (1.0 if float(np.dot(R[:, 0], toward)) > 0 else -1.0)
+    return Pose(np.asarray(tcp_m, float), R @ rot_y(phi))
+
+
+def _near_end(giver: Ctx, kp: Keypoint, giver_base: np.ndarray) -> float:
+    """How far from the centre (along the grasp's hand x axis, m) the giver grasps: just inside one end, leaving
+    the rest of the object to the receiver. The end toward the whole object when `kp` is a part of it (a hammer's
+    handle: the end at the heavy head, so the load does not twist in the fingers), else the end on the giver's
+    side. 0 for objects too short to matter."""
+    half = float(max(own_extent_xy(kp))) / 2 - HANDOFF_GIVER_MARGIN_M
+    if half <= 0:
+        return 0.0
+    yaw = giver.grasp_yaw(kp)
+    axis = np.array([np.cos(yaw), np.sin(yaw)])
+    toward = giver_base[:2] - kp.position_m[:2]
+    whole = _whole_of(giver, kp.label)
+    if whole is not None and abs(float(np.dot(axis, whole.position_m[:2] - kp.position_m[:2]))) > 0.01:
+        toward = whole.position_m[:2] - kp.position_m[:2]
+    return half if float(np.dot(axis, toward)) > 0 else -half
+
+
+def _whole_of(ctx: Ctx, label: str) -> Keypoint | None:
+    """The object a part label belongs to ("hammer handle" -> "hammer"), if perception finds it."""
+    words = label.split()
+    for n in range(len(words) - 1, 0, -1):
+        try:
+            return ctx.resolver.resolve(" ".join(words[:n])) if ctx.resolver is not None else None
+        except (LabelNotFound, KeyError):
+            continue
+    return None
 
 
 def _handles(kp: Keypoint) -> list[Keypoint]:
     """The two ends of the object's long axis (its handles), as small keypoints whose short side runs along it."""
     yaw = kp.yaw_rad or 0.0
     # extents are world-axis-aligned: the object's own x axis is its long one if it lies along the longer side
-    own = kp.detail.get("body_extent_m")  # the object's own length and width, when the resolver knows them
+    # the object's own length and width (privileged), or its seen top face's along and across the yaw axis
+    own = kp.detail.get("body_extent_m") or kp.detail.get("principal_extent_m")
     if own is not None:
         body_x_long = own[0] >= own[1]
         half = max(own[0], own[1]) / 2

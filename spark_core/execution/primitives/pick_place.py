@@ -27,15 +27,17 @@ def _seq(*steps) -> ActionOutcome:
 
 
 def grasp_object(ctx: Ctx, kp: Keypoint, force: float = 50.0, strategy: str = "top_down",
-                 target_width: float | None = None, z: float | None = None) -> ActionOutcome:
-    """Approach from above (or from the robot's side), descend straight, close, and remember what is held."""
+                 target_width: float | None = None, z: float | None = None, along_m: float = 0.0) -> ActionOutcome:
+    """Approach from above (or from the robot's side), descend straight, close, and remember what is held.
+    `along_m`: grasp that far from the centre along the object's long axis (a top-down grasp's hand x axis)."""
     open_gripper(ctx)
     if strategy == "side":
         z = float(max(kp.position_m[2] + 0.01, 0.04))  # keep the hand's lower edge off the table
         at = np.array([kp.position_m[0], kp.position_m[1], z])
         pre, pose = Pose(at - [APPROACH_M, 0, 0], SIDE_ROTATION), Pose(at, SIDE_ROTATION)
     else:
-        at, yaw = kp.position_m[:2], ctx.grasp_yaw(kp)
+        yaw = ctx.grasp_yaw(kp)
+        at = kp.position_m[:2] + along_m * np.array([np.cos(yaw), np.sin(yaw)])
         z = ctx.grasp_height(kp) if z is None else z
         rim = _rim_grasp(ctx, kp) if target_width is None else None
         if rim is not None:  # too wide for the fingers to span: take its rim (a bowl's wall, a plate's edge)
@@ -53,9 +55,15 @@ def grasp_object(ctx: Ctx, kp: Keypoint, force: float = 50.0, strategy: str = "t
     if out.ok:
         ctx.memory.held_label = kp.label
         ctx.memory.held_extent_m = np.asarray(kp.extent_m, float).copy()
+        ctx.memory.held_length_m = float(max(own_extent_xy(kp)))
         ctx.memory.grasp_offset_z_m = float(pose.position_m[2] - (kp.position_m[2] - kp.extent_m[2] / 2))
         ctx.memory.grasp_offset_xy_hand_m = _rot2(-_hand_yaw(pose.rotation)) @ (kp.position_m[:2] - pose.position_m[:2])
     return out
+
+
+def own_extent_xy(kp: Keypoint):
+    """The object's own length and width (privileged body extent, else the seen top face's), else its world box."""
+    return kp.detail.get("body_extent_m") or kp.detail.get("principal_extent_m") or kp.extent_m[:2]
 
 
 def _hand_yaw(rotation: np.ndarray) -> float:
@@ -72,7 +80,7 @@ def _rim_grasp(ctx: Ctx, kp: Keypoint) -> tuple[np.ndarray, float, float] | None
     """For an object wider than the open fingers in every direction: (xy, yaw, z) of a grasp on its edge nearest
     the robot, fingers closing radially across the wall, 2 cm below the top. None when the fingers can span it."""
     g = ctx.world.kinematics[ctx.arm].robot.gripper
-    own = kp.detail.get("body_extent_m") or kp.detail.get("principal_extent_m") or kp.extent_m[:2]
+    own = own_extent_xy(kp)
     if min(own[0], own[1]) < 0.9 * g.max_width_m:
         return None
     base = ctx.world.kinematics[ctx.arm].T_world_base[:2, 3]
@@ -99,8 +107,8 @@ def grasp_se3(ctx: Ctx) -> ActionOutcome:
     return grasp_object(ctx, ctx.kp("keypoint_label"), a["force"], a["strategy"], a.get("target_width"))
 
 
-def pick_and_lift(ctx: Ctx, kp: Keypoint, height: float) -> ActionOutcome:
-    out = grasp_object(ctx, kp)
+def pick_and_lift(ctx: Ctx, kp: Keypoint, height: float, along_m: float = 0.0) -> ActionOutcome:
+    out = grasp_object(ctx, kp, along_m=along_m)
     return lift_held(ctx, height) if out.ok else out
 
 
