@@ -50,6 +50,7 @@ def _play(scene, key: str, trial_id: str, world, states: list, keypoints: dict, 
 
     m = world.model
     d = mujoco.MjData(m)
+    origin = np.asarray(getattr(world, "origin_m", np.zeros(3)), float)  # robosuite/LIBERO: not MuJoCo's origin
     try:
         scene.show(key, visual_geoms(m), title=f"replay of {trial_id}")
         scene.markers(key, keypoints)
@@ -60,7 +61,8 @@ def _play(scene, key: str, trial_id: str, world, states: list, keypoints: dict, 
                 time.sleep(delay)
             if scene.current != key:
                 return  # a live trial (or another replay) took over the view
-            scene.update(key, *body_poses(m, d, np.asarray(qpos, float)))
+            xpos, xquat = body_poses(m, d, np.asarray(qpos, float))
+            scene.update(key, xpos - origin, xquat)  # in the world's frame, like the live view and the keypoints
             if t - shown >= 0.5:
                 scene.active(key, f"**Replay:** {trial_id}  \nt = {t:.1f} / {states[-1][0]:.1f} s (simulated)")
                 shown = t
