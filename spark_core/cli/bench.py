@@ -20,8 +20,10 @@ def register(sub) -> None:
     b.add_argument("--seed", type=int, default=0, help="first seed")
     b.add_argument("--planner", default="reference", choices=["reference", "rules", "gemini", "openai"],
                    help="reference (hand-written plans), or one planner call per trial (liberopro has no reference plans)")
-    b.add_argument("--resolver", default="privileged", choices=["privileged", "sim", "sim-noisy"],
-                   help="privileged (simulator state) or a segmenter pipeline (cameras + masks + depth)")
+    b.add_argument("--resolver", "--segmenter", dest="resolver", default="privileged",
+                   choices=["privileged", "sim", "sim-noisy"],
+                   help="where keypoints come from: privileged (simulator state), or the sim / sim-noisy segmenter "
+                        "through the cameras (masks + depth)")
     b.add_argument("--no-adaptive", action="store_true", help="one prompt per label (no adaptive self-consistency)")
     b.add_argument("--no-recovery", action="store_true", help="no retries (recovery tiers off)")
     b.add_argument("--miss-rate", type=float, default=0.2, help="sim-noisy detector miss rate")
