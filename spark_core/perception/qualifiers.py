@@ -10,6 +10,8 @@ QUALIFIERS: dict[str, tuple[int, float]] = {
     "left": (1, 1.0), "leftmost": (1, 1.0), "right": (1, -1.0), "rightmost": (1, -1.0),
     "front": (0, -1.0), "nearest": (0, -1.0), "closest": (0, -1.0), "near": (0, -1.0),
     "back": (0, 1.0), "far": (0, 1.0), "farthest": (0, 1.0), "furthest": (0, 1.0), "rear": (0, 1.0),
+    # stacked instances (a cabinet's drawers, their handles): sign 0 = the middle one
+    "top": (2, 1.0), "upper": (2, 1.0), "bottom": (2, -1.0), "lower": (2, -1.0), "middle": (2, 0.0),
 }
 _ARTICLES = re.compile(r"\b(the|a|an|one|of|to|robot|from)\b", re.I)
 

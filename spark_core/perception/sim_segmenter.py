@@ -135,12 +135,15 @@ def _centroid_xy(d: Detection, frame: CameraFrame) -> np.ndarray:
 
 
 def pick_by_qualifier(dets: list[Detection], frame: CameraFrame, qualifier: str) -> Detection:
-    """The instance a spatial qualifier points at, from each mask's back-projected centroid."""
+    """The instance a spatial qualifier points at, from each mask's back-projected centroid ("middle": the
+    median one along its axis)."""
     axis, sign = QUALIFIERS[qualifier]
 
     def coord(d: Detection) -> float:
         vs, us = np.nonzero(d.mask)
         z = frame.depth_m[vs, us]
-        return float(sign * np.median(frame.backproject(us.astype(float), vs.astype(float), z)[:, axis]))
+        return float(np.median(frame.backproject(us.astype(float), vs.astype(float), z)[:, axis]))
 
-    return max(dets, key=coord)
+    if sign == 0.0:
+        return sorted(dets, key=coord)[len(dets) // 2]
+    return max(dets, key=lambda d: sign * coord(d))

@@ -143,4 +143,47 @@ def objects(env) -> list[RobosuiteObject]:
         label = base if seen[base] == 1 else f"{base} {seen[base]}"
         category = "fixture" if name in inner.fixtures_dict else "object"
         out.append(RobosuiteObject(label, base, obj.root_body, category=category))
+        out += _drawer_handles(inner.sim.model._model, inner.sim.data._data, label, base, obj.root_body)
     return out
+
+
+def _drawer_handles(m, d, label: str, base: str, root: str) -> list[RobosuiteObject]:
+    """Each drawer of a fixture (a body on a slide joint under it) as a handle part, "wooden cabinet top drawer
+    handle": the drawer's geoms that stand out beyond the fixture's closed front, along the way it opens."""
+    import mujoco
+
+    root_id = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, root)
+    if root_id < 0:
+        return []
+    below = [b for b in range(m.nbody) if _under(m, b, root_id)]
+    drawers = [(b, j) for b in below for j in range(m.njnt)
+               if m.jnt_bodyid[j] == b and m.jnt_type[j] == mujoco.mjtJoint.mjJNT_SLIDE]
+    moving = {b for b, _ in drawers}
+    shell = [g for g in range(m.ngeom) if m.geom_bodyid[g] in below and m.geom_bodyid[g] not in moving and m.geom_contype[g]]
+    out = []
+    for b, j in drawers:
+        axis = d.xmat[b].reshape(3, 3) @ m.jnt_axis[j]
+        opens = -axis if m.jnt_range[j][0] < -abs(m.jnt_range[j][1]) else axis  # LIBERO drawers open to negative
+        front = max(_reach_along(m, d, g, opens) for g in shell) if shell else -np.inf
+        handle = tuple(m.geom(g).name for g in range(m.ngeom)
+                       if m.geom_bodyid[g] == b and m.geom(g).name and float(d.geom_xpos[g] @ opens) > front - 0.003)
+        level = re.sub(r"_level$", "", re.sub(rf"^{re.escape(root.removesuffix('_main'))}_", "", m.joint(j).name))
+        if handle:
+            out.append(RobosuiteObject(f"{label} {level} drawer handle", f"handle of the {level} drawer of the {base}",
+                                       m.body(b).name, geoms=handle, category="fixture"))
+    return out
+
+
+def _reach_along(m, d, g: int, direction: np.ndarray) -> float:
+    """How far geom `g`'s box reaches along a unit direction (MuJoCo frame, m)."""
+    R = d.geom_xmat[g].reshape(3, 3)
+    centre, half = d.geom_xpos[g] + R @ m.geom_aabb[g][:3], np.abs(R) @ m.geom_aabb[g][3:]
+    return float(centre @ direction + half @ np.abs(direction))
+
+
+def _under(m, b: int, root: int) -> bool:
+    while b > 0:
+        if b == root:
+            return True
+        b = m.body_parentid[b]
+    return b == root

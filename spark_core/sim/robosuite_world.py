@@ -132,7 +132,11 @@ class RobosuiteWorld(MujocoWorld):
         # a part made of geoms gets a pseudo body name "<body>#<label>" that body_aabb and the cameras understand
         parts = {o.label: (f"{o.body}#{o.label}", o.description) for o in objects if o.geoms}
         cams = tuple(m.camera(c).name for c in range(m.ncam))
-        scene = Scene(m, names, {a: robosuite_panda(wiper=not _has_fingers(m, i)) for a, i in arms.items()}, T_world_base, placed, parts, cams, seed,
+        # home = where the env starts the arm (robosuite's init pose plus its noise; LIBERO's own, much higher)
+        robots = {a: dataclasses.replace(robosuite_panda(wiper=not _has_fingers(m, i)),
+                                         home_q_rad=np.array([d.qpos[m.joint(j).qposadr[0]] for j in names[a].arm_joints]))
+                  for a, i in arms.items()}
+        scene = Scene(m, names, robots, T_world_base, placed, parts, cams, seed,
                       extra={"perception_cameras": perception_cameras, "simulator": "robosuite"})
         # a part's geoms with their visual twins (robosuite draws `<geom>_visual` / `<geom>_vis`, not the collider)
         self.part_geoms = {f"{o.body}#{o.label}": {m.geom(n).id for g in o.geoms for n in (g, f"{g}_visual", f"{g}_vis")

@@ -285,9 +285,12 @@ class MujocoWorld:
         Rt = np.eye(3) if R_frame is None else R_frame.T
         lo, hi = np.full(3, np.inf), np.full(3, -np.inf)
         for g in geoms:
-            R = Rt @ d.geom_xmat[g].reshape(3, 3)
+            Rg = d.geom_xmat[g].reshape(3, 3)
+            R = Rt @ Rg
             ext = np.abs(R) @ _geom_half_extent(m, g)
-            c = Rt @ d.geom_xpos[g]
+            # a mesh's box is its own (its vertices' bounds), which need not be centred on the geom's frame
+            off = m.geom_aabb[g][:3] if m.geom_type[g] == mujoco.mjtGeom.mjGEOM_MESH else np.zeros(3)
+            c = Rt @ (d.geom_xpos[g] + Rg @ off)
             lo, hi = np.minimum(lo, c - ext), np.maximum(hi, c + ext)
         return lo, hi
 
@@ -370,4 +373,6 @@ def _geom_half_extent(m: mujoco.MjModel, g: int) -> np.ndarray:
         return np.full(3, s[0])
     if t == mujoco.mjtGeom.mjGEOM_CAPSULE:
         return np.array([s[0], s[0], s[1] + s[0]])
+    if t == mujoco.mjtGeom.mjGEOM_MESH:
+        return m.geom_aabb[g][3:].copy()  # the mesh's vertex bounds in the geom frame, tighter than its sphere
     return np.full(3, m.geom_rbound[g])

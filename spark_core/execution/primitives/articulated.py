@@ -5,54 +5,131 @@ from __future__ import annotations
 import numpy as np
 
 from ...control.pose import Pose, rot_z
+from ...perception import Keypoint
 from ..protocols import ActionOutcome, FailureKind
 from .base import Ctx, primitive
 from .gripper import grasp, open_gripper
-from .pick_place import SIDE_ROTATION, grasp_object
+from .pick_place import grasp_object
 
 
-def _grasp_handle(ctx: Ctx, label_slot: str = "keypoint_label") -> ActionOutcome:
-    """Horizontal approach toward +x (handles face the robot), fingers closing vertically around the bar."""
+PULL_SPEED_M_S = 0.1
+
+
+def handle_facing(ctx: Ctx, kp: Keypoint) -> np.ndarray:
+    """The way a handle faces (unit, horizontal, world): away from the object it belongs to (a drawer handle from
+    its drawer or cabinet), snapped to that object's sides; toward the robot (-x) when perception knows no such
+    object. A drawer opens along it."""
+    whole = ctx.whole_of(kp.label)
+    if whole is not None:
+        d = kp.position_m[:2] - whole.position_m[:2]
+        if np.linalg.norm(d) > 0.02:
+            base = whole.yaw_rad or 0.0
+            sides = [base + k * np.pi / 2 for k in range(4)]
+            best = max(sides, key=lambda a: float(np.dot(d, [np.cos(a), np.sin(a)])))
+            return np.array([np.cos(best), np.sin(best), 0.0])
+    return np.array([-1.0, 0.0, 0.0])
+
+
+def _handle_rotations(kp: Keypoint, facing: np.ndarray) -> list[np.ndarray]:
+    """Hand rotations that approach against `facing` with the fingers closing across the bar: vertically round a
+    bar lying along the front, horizontally round an upright one (our cabinet's). Two, a half turn apart about
+    the approach axis (the fingers are symmetric): the first is SIDE_ROTATION for a handle facing -x."""
+    along_front = np.cross([0.0, 0.0, 1.0], facing)
+    lying = abs(float(np.dot(np.abs(along_front), kp.extent_m))) > kp.extent_m[2]
+    z = -facing
+    y = np.array([0.0, 0.0, 1.0]) if lying else -along_front
+    R = np.column_stack([np.cross(y, z), y, z])
+    return [R, R @ np.diag([-1.0, -1.0, 1.0])]
+
+
+def _grasp_handle(ctx: Ctx, label_slot: str = "keypoint_label") -> tuple[ActionOutcome, np.ndarray, np.ndarray]:
+    """Approach the handle against the way it faces, fingers closing across the bar. Returns the outcome, the
+    facing (the pull direction) and the hand rotation used."""
     kp = ctx.kp(label_slot)
-    at = kp.position_m.copy()
-    at[0] -= kp.extent_m[0] / 2 - 0.01  # finger pads 1 cm behind the handle's front face, around the grip
+    n = handle_facing(ctx, kp)
+    depth = float(np.dot(np.abs(n), kp.extent_m))
+    at = kp.position_m + n * (depth / 2 - 0.01)  # finger pads 1 cm behind the handle's front face, around the grip
     open_gripper(ctx)
     # A big wrist reorientation (e.g. the UR10 turning from top-down to sideways) happens above and in front of
     # the handle, in free space, then the hand descends to the approach point.
-    out = ctx.motion.move_to(Pose(at - [0.06, 0, 0], SIDE_ROTATION), what=f"approach to {kp.label!r}",
-                             reconfigure_via=np.array([-0.08, 0.0, 0.15]))
+    out = ActionOutcome.fail(f"no hand orientation reaches {kp.label!r}", FailureKind.KINEMATIC_LIMIT)
+    for R in _handle_rotations(kp, n):
+        out = ctx.motion.move_to(Pose(at + 0.06 * n, R), what=f"approach to {kp.label!r}",
+                                 reconfigure_via=0.08 * n + [0.0, 0.0, 0.15])
+        if out.ok or out.failure is not FailureKind.KINEMATIC_LIMIT:
+            break
     if not out.ok:
-        return out
-    out = ctx.motion.move_line(Pose(at, SIDE_ROTATION), speed_m_s=0.15, what=f"{kp.label!r}",
-                               stop=ctx.contact(15.0), check=False)
+        return out, n, R
+    out = ctx.motion.move_line(Pose(at, R), speed_m_s=0.15, what=f"{kp.label!r}", stop=ctx.contact(15.0), check=False)
     ctx.args = {**ctx.args, "force": 60.0, "target_width": None}
-    return grasp(ctx)
+    return grasp(ctx), n, R
 
 
-def _pull_held(ctx: Ctx, distance: float, what: str) -> ActionOutcome:
-    """Pull toward the robot (-x) while holding; success = the hand travelled with the handle still pinched."""
+class _PullWatch:
+    """Watches a pull every control period: a stop condition once the hand has come `after_m` along `facing` and
+    then gained under `eps_m` in the last `window` periods (a drawer on its end stop), and how far the hand had
+    come when the handle was last pinched."""
+
+    def __init__(self, ctx: Ctx, start: np.ndarray, facing: np.ndarray, after_m: float = 0.05, window: int = 20,
+                 eps_m: float = 0.002):
+        self.ctx, self.start, self.facing = ctx, start, facing
+        self.after_m, self.window, self.eps_m = after_m, window, eps_m
+        self.progress: list[float] = []
+        self.pinched_until_m = 0.0
+
+    def __call__(self) -> bool:
+        p = float(np.dot(self.ctx.tcp.position_m - self.start, self.facing))
+        self.progress.append(p)
+        if self.ctx.holding():
+            self.pinched_until_m = p
+        w = self.window
+        return p > self.after_m and len(self.progress) > w and p - self.progress[-1 - w] < self.eps_m
+
+
+def _pull_held(ctx: Ctx, distance: float, what: str, facing: np.ndarray, R: np.ndarray,
+               handle: Keypoint | None = None) -> ActionOutcome:
+    """Pull along the handle's facing while holding, up to `distance` or the end stop. Success: the hand
+    travelled at least 80 % of the distance and the handle came with it: seen again where the hand took it
+    (when perception finds it there), else still pinched when the pull ended."""
     start = ctx.tcp.position_m.copy()
-    ctx.motion.move_line(Pose(start - [distance, 0, 0], SIDE_ROTATION), speed_m_s=0.2, check=False)
-    travelled = float(start[0] - ctx.tcp.position_m[0])
-    held = ctx.holding()
+    # slowly: a drawer's damping (LIBERO's: 50 N s/m) resists in proportion to speed, and the grip is friction
+    watch = _PullWatch(ctx, start, facing)  # stops at the drawer's end stop: pulling on only slips
+    ctx.motion.move_line(Pose(start + distance * facing, R), speed_m_s=PULL_SPEED_M_S, check=False, stop=watch)
+    travelled = float(np.dot(ctx.tcp.position_m - start, facing))
+    held = watch.pinched_until_m >= 0.9 * travelled  # pinched to (nearly) the end of the pull
     open_gripper(ctx)
     # back and up, clear of the drawer: the next (often joint-space) move must not sweep the hand through it
-    ctx.motion.move_line(Pose(ctx.tcp.position_m + [-0.06, 0, 0.08], SIDE_ROTATION), speed_m_s=0.4, check=False)
-    if not held:
-        return ctx.fail(f"the {what} slipped out of the gripper while pulling")
+    ctx.motion.move_line(Pose(ctx.tcp.position_m + 0.10 * facing + [0, 0, 0.12], R), speed_m_s=0.4, check=False)
     if travelled < 0.8 * distance:
         return ctx.fail(f"the {what} moved only {travelled * 100:.1f} of {distance * 100:.0f} cm: blocked")
-    return ActionOutcome.success(0.0, travelled_m=round(travelled, 4))
+    moved = _handle_moved(ctx, handle, facing, travelled) if handle is not None else None
+    if moved is None and not held:
+        return ctx.fail(f"the {what} slipped out of the gripper while pulling")
+    if moved is not None and moved < 0.8 * travelled:
+        return ctx.fail(f"the {what} came {moved * 100:.1f} cm of the hand's {travelled * 100:.1f} cm: it slipped "
+                        "in the fingers")
+    return ActionOutcome.success(0.0, travelled_m=round(travelled, 4), **({} if moved is None else {"moved_m": round(moved, 4)}))
+
+
+def _handle_moved(ctx: Ctx, handle: Keypoint, facing: np.ndarray, travelled: float) -> float | None:
+    """How far (m, along `facing`) perception now sees the handle from where it was; None when it is not seen
+    where it was or where the hand took it (then it is another drawer's handle, or hidden)."""
+    seen = ctx.observe(handle.label)
+    if seen is None or min(np.linalg.norm(seen.position_m - handle.position_m),
+                           np.linalg.norm(seen.position_m - handle.position_m - travelled * facing)) > 0.03:
+        return None
+    return float(np.dot(seen.position_m - handle.position_m, facing))
 
 
 @primitive("open_drawer")
 @primitive("pull")
 def pull(ctx: Ctx) -> ActionOutcome:
     """Grasp the handle at the keypoint and pull it toward the robot (a drawer is opened the same way)."""
-    out = _grasp_handle(ctx)
+    out, facing, R = _grasp_handle(ctx)
     if not out.ok:
         return out
-    return _pull_held(ctx, ctx.args["distance"], "drawer" if "drawer" in ctx.args["keypoint_label"] else "handle")
+    return _pull_held(ctx, ctx.args["distance"], "drawer" if "drawer" in ctx.args["keypoint_label"] else "handle",
+                      facing, R, ctx.kp("keypoint_label"))
 
 
 @primitive("close_drawer")
@@ -62,12 +139,17 @@ def close_drawer(ctx: Ctx) -> ActionOutcome:
     kp = ctx.kp("keypoint_label")
     open_gripper(ctx)
     at = kp.position_m.copy()
-    out = ctx.motion.move_to(Pose(at - [0.08, 0, 0], SIDE_ROTATION), what=f"approach to {kp.label!r}")
+    n = handle_facing(ctx, kp)
+    out = ActionOutcome.fail(f"no hand orientation reaches {kp.label!r}", FailureKind.KINEMATIC_LIMIT)
+    for R in _handle_rotations(kp, n):
+        out = ctx.motion.move_to(Pose(at + 0.08 * n, R), what=f"approach to {kp.label!r}")
+        if out.ok or out.failure is not FailureKind.KINEMATIC_LIMIT:
+            break
     if not out.ok:
         return out
-    out = ctx.motion.move_line(Pose(at + [0.30, 0, 0], SIDE_ROTATION), speed_m_s=0.15,
+    out = ctx.motion.move_line(Pose(at - 0.30 * n, R), speed_m_s=0.15,
                                stop=ctx.sustained_contact(25.0, ticks=5), check=False)
-    ctx.motion.move_line(Pose(ctx.tcp.position_m - [0.08, 0, 0], SIDE_ROTATION), check=False)
+    ctx.motion.move_line(Pose(ctx.tcp.position_m + 0.08 * n, R), check=False)
     if not out.detail.get("stopped_early"):
         return ctx.fail("pushed 30 cm without reaching the drawer's end stop: the drawer is not where expected",
                         FailureKind.PERCEPTION)

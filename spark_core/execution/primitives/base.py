@@ -74,6 +74,24 @@ class Ctx:
         except LabelNotFound:
             return None
 
+    def whole_of(self, label: str) -> Keypoint | None:
+        """The object a part label belongs to ("hammer handle" -> "hammer", "drawer handle" -> "drawer"): the
+        longest leading words of the label that perception resolves to something bigger than the part, elsewhere
+        (not the part itself, nor a sibling part such as another drawer's handle)."""
+        if self.resolver is None:
+            return None
+        part = self.keypoints.get(label)
+        words = label.split()
+        for n in range(len(words) - 1, 0, -1):
+            try:
+                whole = self.resolver.resolve(" ".join(words[:n]))
+            except (LabelNotFound, KeyError):
+                continue
+            if part is None or (np.linalg.norm(whole.position_m - part.position_m) > 0.02
+                                and float(np.max(whole.extent_m)) > float(np.max(part.extent_m)) + 0.01):
+                return whole
+        return None
+
     # -- geometry -----------------------------------------------------------------------------------------------
     @property
     def tcp(self) -> Pose:

@@ -12,7 +12,7 @@ from dataclasses import replace
 import numpy as np
 
 from ...control.pose import Pose, rot_y, top_down_rotation, wrap_grasp_yaw
-from ...perception import Keypoint, LabelNotFound
+from ...perception import Keypoint
 from ..protocols import ActionOutcome, FailureKind
 from .base import Ctx, primitive
 from .gripper import grasp, open_gripper
@@ -150,21 +150,10 @@ def _near_end(giver: Ctx, kp: Keypoint, giver_base: np.ndarray) -> float:
     yaw = giver.grasp_yaw(kp)
     axis = np.array([np.cos(yaw), np.sin(yaw)])
     toward = giver_base[:2] - kp.position_m[:2]
-    whole = _whole_of(giver, kp.label)
+    whole = giver.whole_of(kp.label)
     if whole is not None and abs(float(np.dot(axis, whole.position_m[:2] - kp.position_m[:2]))) > 0.01:
         toward = whole.position_m[:2] - kp.position_m[:2]
     return half if float(np.dot(axis, toward)) > 0 else -half
-
-
-def _whole_of(ctx: Ctx, label: str) -> Keypoint | None:
-    """The object a part label belongs to ("hammer handle" -> "hammer"), if perception finds it."""
-    words = label.split()
-    for n in range(len(words) - 1, 0, -1):
-        try:
-            return ctx.resolver.resolve(" ".join(words[:n])) if ctx.resolver is not None else None
-        except (LabelNotFound, KeyError):
-            continue
-    return None
 
 
 def _handles(kp: Keypoint) -> list[Keypoint]:

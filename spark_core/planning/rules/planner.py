@@ -72,7 +72,6 @@ class RulesPlanner:
         last_container: str | None = None
         held: str | None = None  # what the previous step left in the hand (a bare "pick X")
         for i, c in enumerate(clauses):
-            later_puts_in = any(k.action in ("put", "sort") and k.relation == "in" and is_pronoun(k.target) for k in clauses[i + 1:])
             obj = last_object if is_pronoun(c.obj) else c.obj
             target = (last_container or last_object) if is_pronoun(c.target) else c.target
             if target is None and c.relation == "in" and c.text.rstrip().endswith(("inside", "in", "into")):
@@ -103,7 +102,8 @@ class RulesPlanner:
                     raise CannotPlan(f"cannot {c.action} {o!r}: perception found no handle on it (looked for {o + ' handle'!r}; "
                                      f"found: {seen})")
                 if c.action == "open":
-                    out.append(_prim("open_drawer", keypoint_label=handle, distance=0.18 if later_puts_in else 0.15))
+                    # fully: into the end stop if it comes first (LIBERO's drawers count as open past 14 of 16 cm)
+                    out.append(_prim("open_drawer", keypoint_label=handle, distance=0.18))
                     last_container = o
                 else:
                     out.append(_prim("close_drawer", keypoint_label=handle))
