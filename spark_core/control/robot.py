@@ -50,6 +50,9 @@ class RobotDescription:
     max_jerk_rad_s3: float = 80.0
     armature: float = 0.1
     reach_m: float = 0.85
+    # Primitive timeouts (the grammar's, from the paper) are stretched by this on a slower arm: robosuite's
+    # Panda wrist tops out near 1 rad/s where the real one turns 2.6 rad/s.
+    timeout_scale: float = 1.0
     collision_links: tuple[str, ...] = field(default_factory=tuple)  # links that collide with the scene
     extra_urdf: str = ""  # links and joints appended to the URDF (e.g. a gripper built for this arm)
     # Narrower joint ranges for IK (rad), per arm joint, or None for the URDF's: keeps solutions in one arm

@@ -268,10 +268,12 @@ class Executor:
             return ActionOutcome.fail(str(e), FailureKind.PERCEPTION), keypoints
         if call.primitive == "redetect":
             return ActionOutcome.success(0.0), keypoints
-        outcome = self.actuator.perform(call, keypoints, arm, spec.timeout_s)
-        if outcome.sim_time_s > spec.timeout_s + 1e-9:
+        scale = getattr(self.actuator, "timeout_scale", None)  # a slower embodiment's allowance (robosuite's wrist)
+        timeout_s = spec.timeout_s * (scale(arm) if scale is not None else 1.0)
+        outcome = self.actuator.perform(call, keypoints, arm, timeout_s)
+        if outcome.sim_time_s > timeout_s + 1e-9:
             outcome = ActionOutcome.fail(
-                f"{call.primitive} exceeded its timeout of {spec.timeout_s:g} s (took {outcome.sim_time_s:.2f} s)",
+                f"{call.primitive} exceeded its timeout of {timeout_s:g} s (took {outcome.sim_time_s:.2f} s)",
                 FailureKind.TIMEOUT, outcome.sim_time_s,
             )
         return outcome, keypoints

@@ -148,8 +148,9 @@ def objects(env) -> list[RobosuiteObject]:
 
 
 def _drawer_handles(m, d, label: str, base: str, root: str) -> list[RobosuiteObject]:
-    """Each drawer of a fixture (a body on a slide joint under it) as a handle part, "wooden cabinet top drawer
-    handle": the drawer's geoms that stand out beyond the fixture's closed front, along the way it opens."""
+    """Each drawer of a fixture (a body on a slide joint under it) as two parts: its handle ("wooden cabinet top
+    drawer handle": the drawer's geoms that stand out beyond the fixture's closed front, along the way it opens)
+    and the drawer itself, the rest ("wooden cabinet top drawer")."""
     import mujoco
 
     root_id = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, root)
@@ -171,6 +172,10 @@ def _drawer_handles(m, d, label: str, base: str, root: str) -> list[RobosuiteObj
         if handle:
             out.append(RobosuiteObject(f"{label} {level} drawer handle", f"handle of the {level} drawer of the {base}",
                                        m.body(b).name, geoms=handle, category="fixture"))
+            box = tuple(m.geom(g).name for g in range(m.ngeom)
+                        if m.geom_bodyid[g] == b and m.geom(g).name and m.geom(g).name not in handle)
+            out.append(RobosuiteObject(f"{label} {level} drawer", f"the {level} drawer of the {base}",
+                                       m.body(b).name, geoms=box, category="container"))
     return out
 
 

@@ -74,6 +74,7 @@ def robosuite_panda(wiper: bool = False) -> RobotDescription:
         # The wrist motors give 12 N m, and robosuite's hand has a large inertia box that MuJoCo's air drag
         # acts on: the wrist joints top out near 1.5 rad/s, so trajectories are planned slower there.
         max_velocity_rad_s=(2.175, 2.175, 2.175, 2.175, 1.0, 1.0, 1.0),
+        timeout_scale=1.5,
     )
 
 

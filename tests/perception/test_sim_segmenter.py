@@ -112,3 +112,9 @@ def test_copies_of_a_kind_ground_alike_but_numbered_parts_stay_apart():
     names = _instance_names({"bowl": "black bowl", "bowl 2": "black bowl", "pot handle 0": "one handle of the pot",
                              "pot handle 1": "the other handle of the pot"})
     assert names == {"bowl": "bowl", "bowl 2": "bowl", "pot handle 0": "pot handle 0", "pot handle 1": "pot handle 1"}
+
+
+def test_stacked_qualifiers_split_off():
+    assert split_qualifier("drawer middle layer handle") == ("middle", "drawer layer handle")
+    assert split_qualifier("the top drawer") == ("top", "drawer")
+    assert split_qualifier("bottom shelf") == ("bottom", "shelf")

@@ -74,3 +74,31 @@ def test_a_bowl_too_wide_to_span_is_taken_by_its_rim_and_set_down_centred():
     task = _task("libero_spatial_swap", "pick_up_the_black_bowl_next_to_the_plate_and_place_it_on_the_plate")
     out = run_reference_trial(task, 0, planner="rules", perception=PerceptionConfig("sim"))
     assert out.success, out.reason
+
+
+def test_cabinet_drawers_are_parts_whose_handles_face_the_way_the_drawer_opens():
+    """LIBERO's cabinet opens toward +y (not toward the robot): its drawer handles are parts, and the handle's
+    facing comes from where the handle sits on what it belongs to, as perception sees them."""
+    from spark_core.execution.primitives import PrimitiveLibrary
+    from spark_core.execution.primitives.articulated import handle_facing
+    from spark_core.execution.primitives.base import Ctx
+
+    w = SUITES["liberopro"]["libero_goal_swap:open_the_middle_drawer_of_the_cabinet"].make_world(0)
+    try:
+        assert {"wooden cabinet top drawer handle", "wooden cabinet middle drawer", "wooden cabinet bottom drawer"} \
+            <= set(w.scene.parts)
+        resolver = make_resolver(w, PerceptionConfig("sim"), 0)
+        lib = PrimitiveLibrary(w, resolver)
+        label = "drawer middle layer handle"  # the rules planner's phrase for "open the middle layer of the drawer"
+        handle = resolver.resolve(label)
+        assert abs(handle.position_m[2] - w.body_aabb("wooden_cabinet_1_cabinet_middle#wooden cabinet middle drawer handle")[0][2]) < 0.02
+        ctx = Ctx(w, "right", lib.motion["right"], {"keypoint_label": label}, {label: handle}, lib.memory["right"], resolver)
+        assert np.allclose(handle_facing(ctx, handle), [0.0, 1.0, 0.0], atol=1e-6)
+    finally:
+        w.close()
+
+
+def test_open_the_top_drawer_and_put_the_bowl_inside():
+    out = run_reference_trial(_task("libero_goal_swap", "open_the_top_drawer_and_put_the_bowl_inside"), 0,
+                              planner="rules", perception=PerceptionConfig("sim"))
+    assert out.success, out.reason

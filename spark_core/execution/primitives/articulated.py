@@ -12,21 +12,20 @@ from .gripper import grasp, open_gripper
 from .pick_place import grasp_object
 
 
-PULL_SPEED_M_S = 0.1
+PULL_SPEED_M_S = 0.15
 
 
 def handle_facing(ctx: Ctx, kp: Keypoint) -> np.ndarray:
     """The way a handle faces (unit, horizontal, world): away from the object it belongs to (a drawer handle from
     its drawer or cabinet), snapped to that object's sides; toward the robot (-x) when perception knows no such
     object. A drawer opens along it."""
-    whole = ctx.whole_of(kp.label)
-    if whole is not None:
-        d = kp.position_m[:2] - whole.position_m[:2]
-        if np.linalg.norm(d) > 0.02:
-            base = whole.yaw_rad or 0.0
-            sides = [base + k * np.pi / 2 for k in range(4)]
-            best = max(sides, key=lambda a: float(np.dot(d, [np.cos(a), np.sin(a)])))
-            return np.array([np.cos(best), np.sin(best), 0.0])
+    for whole in ctx.wholes_of(kp.label):
+        d = kp.position_m[:2] - whole.position_m[:2]  # a closed drawer, seen by its front only: 1-2 cm, still right
+        base = whole.yaw_rad or 0.0
+        sides = [np.array([np.cos(a), np.sin(a)]) for a in (base + k * np.pi / 2 for k in range(4))]
+        best = max(sides, key=lambda v: float(np.dot(d, v)))
+        if float(np.dot(d, best)) > 0.01:
+            return np.array([best[0], best[1], 0.0])
     return np.array([-1.0, 0.0, 0.0])
 
 

@@ -75,11 +75,16 @@ class Ctx:
             return None
 
     def whole_of(self, label: str) -> Keypoint | None:
-        """The object a part label belongs to ("hammer handle" -> "hammer", "drawer handle" -> "drawer"): the
-        longest leading words of the label that perception resolves to something bigger than the part, elsewhere
-        (not the part itself, nor a sibling part such as another drawer's handle)."""
+        """The object a part label belongs to ("hammer handle" -> "hammer", "drawer handle" -> "drawer"); see
+        `wholes_of`."""
+        return next(self.wholes_of(label), None)
+
+    def wholes_of(self, label: str):
+        """What a part label belongs to, innermost first ("cabinet top drawer handle" -> "cabinet top drawer",
+        then "cabinet top", "cabinet"): each leading part of the label that perception resolves to something
+        bigger than the part (not the part itself, nor a sibling part such as another drawer's handle)."""
         if self.resolver is None:
-            return None
+            return
         part = self.keypoints.get(label)
         words = label.split()
         for n in range(len(words) - 1, 0, -1):
@@ -87,10 +92,8 @@ class Ctx:
                 whole = self.resolver.resolve(" ".join(words[:n]))
             except (LabelNotFound, KeyError):
                 continue
-            if part is None or (np.linalg.norm(whole.position_m - part.position_m) > 0.02
-                                and float(np.max(whole.extent_m)) > float(np.max(part.extent_m)) + 0.01):
-                return whole
-        return None
+            if part is None or float(np.max(whole.extent_m)) > float(np.max(part.extent_m)) + 0.01:
+                yield whole
 
     # -- geometry -----------------------------------------------------------------------------------------------
     @property

@@ -29,6 +29,11 @@ class PrimitiveLibrary:
         self.motion = {a: ArmMotion(world, a, speed=speed, rng=np.random.default_rng(seed + i)) for i, a in enumerate(self.arms)}
         self.memory = {a: ArmMemory() for a in self.arms}
 
+    def timeout_scale(self, arm: str | None) -> float:
+        """How much longer than the grammar's timeouts this arm (both, for a two-arm skill) may take."""
+        arms = [arm] if arm in self.world.kinematics else list(self.arms)
+        return max(self.world.kinematics[a].robot.timeout_scale for a in arms)
+
     @staticmethod
     def implemented() -> frozenset[str]:
         return frozenset(IMPLEMENTATIONS)
