@@ -12,7 +12,7 @@ from .gripper import grasp, open_gripper
 from .pick_place import grasp_object
 
 
-PULL_SPEED_M_S = 0.15
+PULL_SPEED_M_S = 0.2
 
 
 def handle_facing(ctx: Ctx, kp: Keypoint) -> np.ndarray:
@@ -91,7 +91,7 @@ def _pull_held(ctx: Ctx, distance: float, what: str, facing: np.ndarray, R: np.n
     travelled at least 80 % of the distance and the handle came with it: seen again where the hand took it
     (when perception finds it there), else still pinched when the pull ended."""
     start = ctx.tcp.position_m.copy()
-    # slowly: a drawer's damping (LIBERO's: 50 N s/m) resists in proportion to speed, and the grip is friction
+    # not fast: a drawer's damping (LIBERO's: 50 N s/m) resists in proportion to speed, and the grip is friction
     watch = _PullWatch(ctx, start, facing)  # stops at the drawer's end stop: pulling on only slips
     ctx.motion.move_line(Pose(start + distance * facing, R), speed_m_s=PULL_SPEED_M_S, check=False, stop=watch)
     travelled = float(np.dot(ctx.tcp.position_m - start, facing))
