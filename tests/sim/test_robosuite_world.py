@@ -131,11 +131,14 @@ def test_handoff_of_a_short_handled_hammer_needs_no_recovery():
     assert out.success, out.reason
 
 
-def test_robosuite_arms_get_longer_primitive_timeouts_and_start_at_home(lift_world):
+def test_robosuite_arms_get_longer_primitive_timeouts_and_start_at_home():
     """robosuite's Panda wrist is slower than the real one the grammar's (paper) timeouts assume; and its home
     is where the env started it, so going home never sweeps somewhere else first."""
     from spark_core.execution.primitives import PrimitiveLibrary
 
-    assert PrimitiveLibrary(lift_world).timeout_scale("right") == 1.5
-    robot = lift_world.kinematics["right"].robot
-    assert np.allclose(robot.home_q_rad, lift_world.q("right"), atol=0.05)
+    w = TASKS["Lift"].make_world(3)
+    try:
+        assert PrimitiveLibrary(w).timeout_scale("right") == 1.5
+        assert np.allclose(w.kinematics["right"].robot.home_q_rad, w.q("right"), atol=0.02)
+    finally:
+        w.close()
