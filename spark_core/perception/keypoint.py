@@ -28,6 +28,13 @@ class Keypoint:
     detail: dict[str, Any] = field(default_factory=dict)
 
     @property
+    def own_extent_xy_m(self) -> list[float] | None:
+        """The object's own length along `yaw_rad` and width across it: the body's (privileged) or the seen top
+        face's; None when neither is known. The world-axis `extent_m` overstates a turned object and cannot tell
+        which side is long."""
+        return self.detail.get("body_extent_m") or self.detail.get("principal_extent_m")
+
+    @property
     def top_z_m(self) -> float:
         return float(self.position_m[2] + self.extent_m[2] / 2)
 

@@ -107,9 +107,7 @@ class Ctx:
         """Fingers close across the object's short side: yaw from its principal axis, else keep the current."""
         if kp.yaw_rad is None:
             return self.current_yaw()
-        # length along the yaw axis and width across it: the body's own (privileged) or the seen top face's; the
-        # world-axis box cannot tell which side is long once the object is turned
-        own = kp.detail.get("body_extent_m") or kp.detail.get("principal_extent_m")
+        own = kp.own_extent_xy_m
         longer_along_yaw = own[0] >= own[1] if own is not None else kp.extent_m[0] >= kp.extent_m[1]
         yaw = kp.yaw_rad if longer_along_yaw else kp.yaw_rad + np.pi / 2
         return wrap_grasp_yaw(yaw)

@@ -63,8 +63,8 @@ def _holds(ctx: Ctx, label: str) -> bool:
 
 @primitive("handoff")
 def handoff(ctx: Ctx) -> ActionOutcome:
-    """The giver holds the object (it picks it first if needed, near the end on its own side, so the receiver has
-    room) and brings it between the arms, the rest of the object pointing at the receiver; the receiver grasps it
+    """The giver holds the object (it picks it first if needed, just inside one end, so the receiver has room;
+    see `_near_end`) and brings it between the arms, the rest of the object pointing at the receiver; the receiver grasps it
     beside the giver's hand, as far along as the object allows; only once the receiver holds it does the giver
     let go."""
     a = ctx.args
@@ -159,9 +159,8 @@ def _near_end(giver: Ctx, kp: Keypoint, giver_base: np.ndarray) -> float:
 def _handles(kp: Keypoint) -> list[Keypoint]:
     """The two ends of the object's long axis (its handles), as small keypoints whose short side runs along it."""
     yaw = kp.yaw_rad or 0.0
-    # extents are world-axis-aligned: the object's own x axis is its long one if it lies along the longer side
-    # the object's own length and width (privileged), or its seen top face's along and across the yaw axis
-    own = kp.detail.get("body_extent_m") or kp.detail.get("principal_extent_m")
+    own = kp.own_extent_xy_m
+    # else, from the world-axis box: the object's own x axis is its long one if it lies along the longer side
     if own is not None:
         body_x_long = own[0] >= own[1]
         half = max(own[0], own[1]) / 2

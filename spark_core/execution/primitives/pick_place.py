@@ -62,8 +62,8 @@ def grasp_object(ctx: Ctx, kp: Keypoint, force: float = 50.0, strategy: str = "t
 
 
 def own_extent_xy(kp: Keypoint):
-    """The object's own length and width (privileged body extent, else the seen top face's), else its world box."""
-    return kp.detail.get("body_extent_m") or kp.detail.get("principal_extent_m") or kp.extent_m[:2]
+    """The object's own length and width when known, else its world box."""
+    return kp.own_extent_xy_m or kp.extent_m[:2]
 
 
 def _hand_yaw(rotation: np.ndarray) -> float:
