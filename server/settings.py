@@ -22,6 +22,11 @@ class Settings:
     viser_port: int = 0  # 0 = any free port
     rate_per_s: float = 20.0  # mutating calls per second per client, sustained
     rate_burst: float = 40.0
+    auth_failures_max: int = 10  # wrong credentials from one client within the window, then 429 until it passes
+    auth_failure_window_s: float = 60.0
+    # Proxies whose X-Forwarded-For names the real client (IPs or CIDRs). None by default: the header is ignored.
+    trusted_proxies: tuple[str, ...] = field(default_factory=tuple)
+    max_body_bytes: int = 1024 * 1024  # request bodies, streamed (chunked) ones included
 
     @classmethod
     def from_env(cls) -> "Settings":
@@ -32,7 +37,8 @@ class Settings:
             workers=int(e.get("SPARK_WORKERS", os.cpu_count() or cls.workers)),
             hang_timeout_s=float(e.get("SPARK_HANG_TIMEOUT_S", cls.hang_timeout_s)),
             api_token=e.get("SPARK_API_TOKEN") or None,
-            cors_origins=tuple(o for o in e.get("SPARK_CORS_ORIGINS", "").split(",") if o),
+            cors_origins=tuple(o.strip() for o in e.get("SPARK_CORS_ORIGINS", "").split(",") if o.strip()),
+            trusted_proxies=tuple(p.strip() for p in e.get("SPARK_TRUSTED_PROXIES", "").split(",") if p.strip()),
             viser=e.get("SPARK_VISER", "1") != "0", artifacts_dir=e.get("SPARK_ARTIFACTS_DIR", cls.artifacts_dir),
             exports_dir=e.get("SPARK_EXPORTS_DIR", cls.exports_dir), viser_port=int(e.get("SPARK_VISER_PORT", 0)),
         )

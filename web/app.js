@@ -1,13 +1,12 @@
 // SPARK console UI: hash-routed pages over the REST API and the per-trial event WebSocket.
 const $ = (sel, el = document) => el.querySelector(sel);
 const esc = (s) => String(s ?? "").replace(/[&<>"]/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;" }[c]));
-// Beyond loopback the server wants SPARK_API_TOKEN: open the console once with ?token=… and it is kept here.
-const urlToken = new URLSearchParams(location.search).get("token");
-if (urlToken) localStorage.setItem("spark_token", urlToken);
-const token = localStorage.getItem("spark_token");
-const wsUrl = (path) => `${location.protocol === "https:" ? "wss" : "ws"}://${location.host}${path}${token ? `${path.includes("?") ? "&" : "?"}token=${encodeURIComponent(token)}` : ""}`;
+// Beyond loopback the server wants SPARK_API_TOKEN: open the console once as /?token=… and the server swaps it
+// for an HttpOnly session cookie, which the browser sends with every request and websocket. No script holds it.
+localStorage.removeItem("spark_token"); // where earlier versions kept the token in the clear
+const wsUrl = (path) => `${location.protocol === "https:" ? "wss" : "ws"}://${location.host}${path}`;
 const api = async (path, opts = {}) => {
-  const headers = { "content-type": "application/json", ...(token ? { authorization: `Bearer ${token}` } : {}) };
+  const headers = { "content-type": "application/json" };
   const r = await fetch(path, { headers, ...opts });
   if (!r.ok) throw new Error((await r.json().catch(() => ({}))).detail || r.statusText);
   return r.status === 204 ? null : r.json();
@@ -173,8 +172,7 @@ async function trialPage(view, id) {
   draw();
   api("/api/viser").then((v) => {
     // Same origin: viser's client page from /viser/, its websocket relayed by the console at /viser.
-    const src = token ? `${v.path}?websocket=${encodeURIComponent(wsUrl("/viser"))}` : v.path;
-    $("#viser").innerHTML = v.enabled ? `<iframe id="viser-frame" src="${src}" width="100%" height="420" style="border:0"></iframe>`
+    $("#viser").innerHTML = v.enabled ? `<iframe id="viser-frame" src="${v.path}" width="100%" height="420" style="border:0"></iframe>`
       : "3D view disabled (SPARK_VISER=0)";
   }).catch(() => {});
   const ws = new WebSocket(wsUrl(`/api/trials/${id}/events`));

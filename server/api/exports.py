@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import shutil
 import uuid
 from pathlib import Path
@@ -26,18 +27,36 @@ def create_export(body: ExportCreate, request: Request) -> dict:
 
     if not body.trial_ids and not body.batch:
         raise HTTPException(422, "say what to export: trial_ids (a selection) or batch")
+    store = request.app.state.store
+    if body.trial_ids:  # a selection names trials that exist: a typo is an error, not a smaller dataset
+        known = set(store.trial_ids(ids=body.trial_ids))
+        unknown = list(dict.fromkeys(i for i in body.trial_ids if i not in known))
+        if unknown:
+            raise HTTPException(404, f"no trial {', '.join(map(repr, unknown[:20]))}"
+                                     + (f" (and {len(unknown) - 20} more)" if len(unknown) > 20 else ""))
+    if body.batch and store.get_batch(body.batch) is None:
+        raise HTTPException(404, f"no batch {body.batch!r}")
     export_id = f"export-{uuid.uuid4().hex[:10]}"
     root = Path(request.app.state.settings.exports_dir) / export_id
     flt = ExportFilter(trial_ids=tuple(body.trial_ids or ()), batch=body.batch, success_only=body.success_only)
     try:
-        report = export_lerobot(request.app.state.store, root / "dataset", flt)
+        report = export_lerobot(store, root / "dataset", flt)
     except ExportError as e:
         shutil.rmtree(root, ignore_errors=True)
-        raise HTTPException(422, str(e)) from None
+        raise HTTPException(422, _without_paths(str(e))) from None
     shutil.make_archive(str(root / export_id), "zip", root / "dataset")
+    # Where the server keeps files is its own business: the client gets the download URL, never a path.
     return {"id": export_id, "episodes": report.episodes, "frames": report.frames, "bytes": report.bytes_on_disk,
-            "skipped": report.skipped, "wall_time_s": report.wall_time_s, "path": str(root / "dataset"),
-            "download": f"/api/exports/{export_id}.zip"}
+            "skipped": [{**s, "reason": _without_paths(str(s.get("reason", "")))} for s in report.skipped],
+            "wall_time_s": report.wall_time_s, "download": f"/api/exports/{export_id}.zip"}
+
+
+_PATH = re.compile(r"(?<![\w.:/])/(?:[^\s'\"/]+/)+([^\s'\"/]+)")
+
+
+def _without_paths(text: str) -> str:
+    """Absolute file paths in a message reduced to their file names."""
+    return _PATH.sub(r"\1", text)
 
 
 @router.get("/{export_id}.zip")

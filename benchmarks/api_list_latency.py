@@ -1,0 +1,156 @@
+"""Console API latency over real HTTP: a uvicorn server (its own process) on a SQLite store of 10,000 trials.
+
+Measures sequential `GET /api/trials` (list) and `GET /api/trials/{id}` (get) p50/p99, then 200 list requests
+sent at once (target: every one answered within 1 s), and prints a Markdown table.
+
+    .venv/bin/python benchmarks/api_list_latency.py [--trials 10000] [--requests 200] [--concurrent 200]
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import os
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+from datetime import datetime, timedelta, timezone
+from pathlib import Path
+
+import httpx
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+
+
+def seed_store(url: str, n_trials: int, n_events: int, trajectory_rows: int) -> None:
+    """Trials shaped like real ones: a joint trajectory at the control rate, a plan, usage, events."""
+    from sqlalchemy import insert
+
+    from spark_core.trace.models import EventRow, TrialRow
+    from spark_core.trace.store import TraceStore
+
+    store = TraceStore(url)
+    t0 = datetime(2026, 1, 1, tzinfo=timezone.utc)
+    trajectory = [[0.01 * k, "right", [0.1 * j + 0.001 * k for j in range(7)], 0.04] for k in range(trajectory_rows)]
+    plan_tree = {"type": "sequence", "children": [{"type": "grasp", "params": {"object": "red_block"}}] * 6}
+    known = {c.name for c in TrialRow.__table__.columns}  # the schema evolves: seed only the columns it has
+    with store.engine.begin() as conn:
+        for start in range(0, n_trials, 1000):
+            ids = range(start, min(start + 1000, n_trials))
+            conn.execute(insert(TrialRow), [{k: v for k, v in row.items() if k in known} for row in [
+                {"id": f"t{i:06d}", "created_at": t0 + timedelta(seconds=i), "status": "done", "task": f"task{i % 14}",
+                 "instruction": f"put the red block on the blue block ({i})", "seed": i, "planner": "reference",
+                 "resolver": "sim", "protocol": {"planner": "reference", "segmenter": "sim", "privileged": True},
+                 "plan_text": "task: t\ntree: {primitive: wait}\n" * 20, "plan_tree": plan_tree,
+                 "outcome": "success" if i % 3 else "task_unmet", "success": bool(i % 3), "reason": "",
+                 "wall_time_s": float(i % 50), "sim_time_s": 5.0, "cost_usd": 0.0, "usage": {"calls": 0},
+                 "nodes": {"tree": {"duration_s": 5.0, "retries": 0}}, "trajectory": trajectory, "artifacts": [],
+                 "segmenter": "sim", "verdict": "success" if i % 3 else "task_unmet"}
+                for i in ids]])
+            conn.execute(insert(EventRow), [
+                {"trial_id": f"t{i:06d}", "seq": k, "t": 0.1 * k, "node_path": f"tree.children[{k}]",
+                 "kind": "succeeded", "detail": {}} for i in ids for k in range(n_events)])
+    store.engine.dispose()
+
+
+def free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def start_server(url: str, port: int) -> subprocess.Popen:
+    env = {**os.environ, "SPARK_STORE_URL": url, "SPARK_VISER": "0", "SPARK_WORKERS": "1", "PYTHONPATH": str(ROOT)}
+    cmd = [sys.executable, "-m", "uvicorn", "--factory", "server.app:create_app", "--host", "127.0.0.1",
+           "--port", str(port), "--log-level", "warning", "--no-access-log", "--no-proxy-headers"]
+    proc = subprocess.Popen(cmd, env=env, cwd=ROOT)
+    for _ in range(600):
+        try:
+            if httpx.get(f"http://127.0.0.1:{port}/api/health", timeout=1).status_code == 200:
+                return proc
+        except httpx.TransportError:
+            time.sleep(0.1)
+    proc.kill()
+    raise RuntimeError("the server did not come up within 60 s")
+
+
+def sequential(base: str, paths: list[str]) -> list[float]:
+    """Latency (ms) of each request in turn over one keep-alive connection."""
+    out = []
+    with httpx.Client(base_url=base, timeout=30) as c:
+        c.get(paths[0])  # warm-up: connection and first query
+        for p in paths:
+            t = time.perf_counter()
+            r = c.get(p)
+            out.append((time.perf_counter() - t) * 1000)
+            assert r.status_code == 200, (p, r.status_code, r.text[:200])
+    return out
+
+
+async def concurrent(base: str, path: str, n: int) -> list[float]:
+    """n requests sent at once on n connections; latency (ms) of each from the common start."""
+    limits = httpx.Limits(max_connections=n, max_keepalive_connections=n)
+    async with httpx.AsyncClient(base_url=base, timeout=60, limits=limits) as c:
+        await asyncio.gather(*(c.get("/api/health") for _ in range(n)))  # open the n connections first
+
+        async def one(t0: float) -> float:
+            r = await c.get(path)
+            assert r.status_code == 200, r.status_code
+            return (time.perf_counter() - t0) * 1000
+
+        t0 = time.perf_counter()
+        return list(await asyncio.gather(*(one(t0) for _ in range(n))))
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--trials", type=int, default=10_000)
+    ap.add_argument("--requests", type=int, default=200, help="sequential requests per kind")
+    ap.add_argument("--concurrent", type=int, default=200, help="list requests sent at once")
+    ap.add_argument("--events", type=int, default=10, help="events per trial")
+    ap.add_argument("--trajectory-rows", type=int, default=500, help="joint states per trial (5 s at 100 Hz)")
+    args = ap.parse_args(argv)
+
+    tmp = tempfile.mkdtemp(prefix="spark-api-latency-")
+    url = f"sqlite:///{tmp}/bench.db"
+    t = time.perf_counter()
+    seed_store(url, args.trials, args.events, args.trajectory_rows)
+    seed_s = time.perf_counter() - t
+    port = free_port()
+    proc = start_server(url, port)
+    base = f"http://127.0.0.1:{port}"
+    rng = np.random.default_rng(0)
+    try:
+        lists = sequential(base, ["/api/trials?limit=50"] * args.requests)
+        pages = sequential(base, [f"/api/trials?limit=50&offset={int(rng.integers(0, args.trials - 50))}"
+                                  for _ in range(args.requests)])
+        filtered = sequential(base, ["/api/trials?limit=50&task=task3&success=true"] * args.requests)
+        gets = sequential(base, [f"/api/trials/t{int(rng.integers(0, args.trials)):06d}" for _ in range(args.requests)])
+        burst = asyncio.run(concurrent(base, "/api/trials?limit=50", args.concurrent))
+    finally:
+        proc.terminate()
+        proc.wait(10)
+
+    def row(name: str, xs: list[float]) -> str:
+        return f"| {name} | {np.percentile(xs, 50):.1f} ms | {np.percentile(xs, 99):.1f} ms | {max(xs):.1f} ms |"
+
+    within = sum(x <= 1000 for x in burst)
+    print("| request | p50 | p99 | max |\n|---|---|---|---|")
+    print(row("list, newest 50", lists))
+    print(row("list, 50 at a random offset", pages))
+    print(row("list filtered by task and success", filtered))
+    print(row("get one trial with its events", gets))
+    print(row(f"{args.concurrent} concurrent lists (from the common start)", burst))
+    print(f"\n{within}/{len(burst)} concurrent list requests answered within 1 s. "
+          f"Store: {args.trials} trials ({args.trajectory_rows} trajectory rows, {args.events} events each), "
+          f"SQLite WAL, seeded in {seed_s:.0f} s; server: uvicorn in its own process on 127.0.0.1, httpx client; "
+          f"{args.requests} sequential requests per row over one keep-alive connection.")
+    return 0 if within == len(burst) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
