@@ -18,12 +18,12 @@ def create_app(settings: Settings | None = None) -> FastAPI:
 
     @asynccontextmanager
     async def lifespan(app: FastAPI):
-        from spark_core.trace import TraceStore
+        from spark_core import TraceStore
 
         from .runner import TrialRunner
 
         store = TraceStore(settings.store_url)
-        interrupted = store.interrupt_unfinished()
+        store.interrupt_unfinished()
         scene = None
         if settings.viser:
             from .viser_scene import ViserScene
@@ -32,7 +32,6 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         app.state.store, app.state.settings, app.state.scene = store, settings, scene
         app.state.runner = TrialRunner(store, settings.workers, scene, settings.artifacts_dir,
                                        settings.hang_timeout_s, settings.spawn_workers_at_start)
-        app.state.interrupted_at_start = interrupted
         yield
         app.state.runner.shutdown()
         if scene is not None:

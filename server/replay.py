@@ -16,7 +16,7 @@ class ReplayUnavailable(Exception):
 
 def start_replay(store, scene, trial_id: str, speed: float = 1.0) -> dict:
     """Start replaying on a thread; raises KeyError for an unknown trial, ReplayUnavailable with the reason."""
-    from spark_core.sim.tasks import TASKS
+    from spark_core import TASKS
 
     trial = store.get_trial(trial_id)
     if trial is None:
@@ -46,7 +46,7 @@ def start_replay(store, scene, trial_id: str, speed: float = 1.0) -> dict:
 def _play(scene, key: str, trial_id: str, world, states: list, keypoints: dict, speed: float) -> None:
     import mujoco
 
-    from spark_core.sim.geometry import body_poses, visual_geoms
+    from spark_core import body_poses, visual_geoms
 
     m = world.model
     d = mujoco.MjData(m)

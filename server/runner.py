@@ -11,15 +11,14 @@ from __future__ import annotations
 import queue
 import threading
 import time
-from dataclasses import asdict, dataclass, field
+from dataclasses import dataclass, field
 from typing import Callable
 
-from spark_core.execution import StepControl
-from spark_core.trace import TraceStore
+from spark_core import StepControl, TraceStore, TrialConfig, Verdict, check_task
 
-from .worker import TrialSpec, WorkerProcess
+from .worker import WorkerProcess
 
-__all__ = ["TrialRunner", "TrialSpec", "RemoteControl", "Live"]
+__all__ = ["TrialRunner", "RemoteControl", "Live"]
 
 
 class RemoteControl(StepControl):
@@ -69,7 +68,7 @@ class RemoteControl(StepControl):
 class Live:
     """A queued or running trial's handles."""
 
-    spec: TrialSpec
+    config: TrialConfig
     control: RemoteControl
     history: list[dict] = field(default_factory=list)  # every event so far
     subscribers: list[Callable[[dict], None]] = field(default_factory=list)
@@ -113,15 +112,17 @@ class TrialRunner:
             cb({"kind": "trial", "id": trial_id, "status": status, **extra})
 
     # -- operator -----------------------------------------------------------------------------------------------
-    def submit(self, trial_id: str, spec: TrialSpec, batch_id: str | None = None) -> None:
-        live = Live(spec, RemoteControl(spec.breakpoints))
-        if spec.start_paused:
+    def submit(self, trial_id: str, config: TrialConfig) -> None:
+        """Queue a checked config; its row is recorded at once (status queued)."""
+        live = Live(config, RemoteControl(config.breakpoints))
+        if config.start_paused:
             live.control.pause()  # stops before the first primitive: set breakpoints on the tree, then resume
         with self._lock:
             self.live[trial_id] = live
-        self.store.create_trial(trial_id, status="queued", task=spec.task, instruction=spec.instruction, seed=spec.seed,
-                                planner=spec.planner, resolver=spec.resolver, protocol=asdict(spec), batch_id=batch_id)
-        self._announce(trial_id, "queued", task=spec.task)
+        self.store.create_trial(trial_id, status="queued", task=config.task, instruction=config.instruction or check_task(config.task).instruction,
+                                seed=config.seed, planner=config.planner, segmenter=config.segmenter,
+                                protocol={"config": _config_record(config)}, batch_id=config.batch_id)
+        self._announce(trial_id, "queued", task=config.task)
         self.queue.put(trial_id)
 
     def cancel(self, trial_id: str) -> bool:
@@ -186,12 +187,13 @@ class TrialRunner:
             t0 = time.perf_counter()
             try:
                 if live.control.aborted:  # cancelled while queued: never starts
-                    self.store.update_trial(trial_id, status="done", outcome="aborted", reason="cancelled before it started")
+                    self.store.update_trial(trial_id, status="done", outcome="aborted", verdict=Verdict.ABORTED.value,
+                                            success=False, reason="cancelled before it started")
                     continue
                 worker = self._worker(i)
                 live.worker_pid = worker.pid
                 state = live.control.attach(lambda action, arg, w=worker, t=trial_id: w.send("control", t, action, arg))
-                worker.send("run", trial_id, live.spec, state)
+                worker.send("run", trial_id, live.config, state)
                 failure = self._pump(trial_id, live, worker)
                 if failure:
                     worker.kill()
@@ -204,7 +206,8 @@ class TrialRunner:
                     self.live.pop(trial_id, None)
                 self._fan_out(live, {"kind": "closed"})
                 final = self.store.get_trial(trial_id) or {}
-                self._announce(trial_id, final.get("status", "done"), success=final.get("success"))
+                self._announce(trial_id, final.get("status", "done"), success=final.get("success"),
+                               verdict=final.get("verdict"))
 
     def _worker(self, i: int) -> WorkerProcess:
         p = self.processes[i]
@@ -218,7 +221,7 @@ class TrialRunner:
         """Relay the worker's messages until the trial is done. Returns why the worker failed, or None."""
         last = time.monotonic()
         key, scene = trial_id, self.scene
-        draw = scene.sink(key, f"{trial_id} ({live.spec.task})") if scene is not None else None
+        draw = scene.sink(key, f"{trial_id} ({live.config.task})") if scene is not None else None
         while True:
             msg = worker.recv(0.5)
             if msg is None:
@@ -245,7 +248,7 @@ class TrialRunner:
                     what = d.get("primitive") or d.get("kind") or ""
                     scene.active(key, f"**Trial:** {trial_id}  \n**{payload['kind'].capitalize()}:** `{payload['node_path']}` {what}")
             elif kind == "status":
-                self._announce(trial_id, payload, task=live.spec.task)
+                self._announce(trial_id, payload, task=live.config.task)
             elif draw is not None:
                 draw(kind, payload)
 
@@ -257,4 +260,13 @@ class TrialRunner:
         if not trial.get("events") and live.history:
             self.store.add_events(trial_id, live.history)
         self.store.update_trial(trial_id, status="done", outcome="failure", success=False, failure="worker",
-                                reason=reason, wall_time_s=round(wall_s, 3))
+                                verdict=Verdict.CRASHED.value, reason=reason, wall_time_s=round(wall_s, 3))
+
+
+def _config_record(config: TrialConfig) -> dict:
+    """The submitted config as JSON (what the operator asked for, kept even if the worker never starts)."""
+    from dataclasses import asdict
+
+    out = asdict(config)
+    out["noise"] = config.noise.describe() if config.segmenter == "sim-noisy" else None
+    return out

@@ -10,7 +10,7 @@ from typing import Callable
 import mujoco
 import numpy as np
 
-from spark_core.sim.geometry import body_poses, visual_geoms
+from spark_core import body_poses, visual_geoms
 
 Sink = Callable[[str, object], None]  # (kind: scene | poses | markers | image, payload)
 
@@ -77,8 +77,8 @@ def annotated_view(resolver, width: int = 320) -> np.ndarray | None:
     """The first camera's latest frame with its detections and keypoints drawn, `width` pixels wide."""
     import cv2
 
-    from spark_core.perception import Keypoint
-    from spark_core.perception.annotate import annotate
+    from spark_core import Keypoint
+    from spark_core import annotate
 
     frames = dict(getattr(resolver, "frames", {}) or {})
     if not frames:

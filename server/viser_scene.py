@@ -13,7 +13,7 @@ import threading
 
 import numpy as np
 
-from spark_core.sim.geometry import VisualGeom
+from spark_core import VisualGeom
 
 
 class ViserScene:

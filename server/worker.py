@@ -2,10 +2,11 @@
 hang or a leak in one trial never takes the console down.
 
 Wire protocol (tuples over two one-way pipes):
-  console -> worker: ("run", trial_id, TrialSpec, control_state) | ("control", trial_id, action, arg) | ("stop",)
+  console -> worker: ("run", trial_id, TrialConfig, control_state) | ("control", trial_id, action, arg) | ("stop",)
   worker -> console: ("ready", pid) | ("status", trial_id, status) | ("event", trial_id, event_dict)
                      | ("scene" | "poses" | "markers" | "image", trial_id, payload) | ("done", trial_id)
-The worker writes the trial record itself (same store URL); the console only records what a dead worker could not.
+The worker runs the one trial pipeline (spark_core.run_trial) and writes the trial record itself (same store
+URL, events as they happen); the console only records what a dead worker could not.
 """
 
 from __future__ import annotations
@@ -16,26 +17,12 @@ import signal
 import threading
 import time
 import traceback
-from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any, Callable
 
+from spark_core import BaseSink, StepControl, TraceStore, TrialConfig, run_trial
+
 EOF_MSG = ("eof",)  # the worker's end of the pipe closed: it exited or was killed
-
-
-@dataclass(frozen=True)
-class TrialSpec:
-    task: str
-    instruction: str
-    planner: str = "reference"  # reference | rules | gemini | openai
-    resolver: str = "sim"
-    seed: int = 0
-    breakpoints: tuple[str, ...] = ()
-    model: str | None = None
-    base_url: str | None = None
-    start_paused: bool = False
-    capture: bool = False  # training-data frames (spark_core.sim.capture) for `spark export`
-    embodiment: str | None = None  # panda | ur10 | bimanual (default: the task's own)
 
 
 class WorkerProcess:
@@ -114,9 +101,6 @@ class WorkerProcess:
 def child_main(inbox, outbox, store_url: str, artifacts_dir: str, feed_hz: float) -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C belongs to the console, which stops us in order
     os.environ.setdefault("MUJOCO_GL", "egl")  # before mujoco is imported: cameras render headless
-    from spark_core.execution import StepControl
-    from spark_core.trace import TraceStore
-
     lock = threading.Lock()
 
     def send(*msg: Any) -> None:
@@ -144,14 +128,14 @@ def child_main(inbox, outbox, store_url: str, artifacts_dir: str, feed_hz: float
         except (EOFError, OSError):
             os._exit(0)  # the console died: its restart marks our trial interrupted, so stop writing now
         if msg[0] == "run":
-            _, trial_id, spec, state = msg
+            _, trial_id, config, state = msg
             control = StepControl(state["breakpoints"])
             if state["paused"]:
                 control.pause()
             if state["aborted"]:
                 control.abort()
             current.update(id=trial_id, control=control)
-            threading.Thread(target=_job, args=(trial_id, spec, control, store, send, Path(artifacts_dir), feed_hz),
+            threading.Thread(target=_job, args=(trial_id, config, control, store, send, Path(artifacts_dir), feed_hz),
                              name=f"trial-{trial_id}", daemon=True).start()
         elif msg[0] == "control" and msg[1] == current["id"]:
             _, _, action, arg = msg
@@ -164,109 +148,43 @@ def child_main(inbox, outbox, store_url: str, artifacts_dir: str, feed_hz: float
 def _warm_up() -> None:
     """Import the simulator and planners and load the text encoder now, so the first trial does not pay for it
     (and its 3D feed is not starved while it does)."""
-    import spark_core.bench.trial  # noqa: F401 - mujoco, pinocchio, perception, primitives
-    from spark_core.perception.text_encoder import SHARED_ENCODER
-    from spark_core.sim.tasks import BUILTIN  # noqa: F401
+    from spark_core import warm_up
 
-    SHARED_ENCODER.encode(["warm up"])
+    warm_up()
 
 
-def _job(trial_id: str, spec: TrialSpec, control, store, send: Callable, artifacts_dir: Path, feed_hz: float) -> None:
+class _PipeSink(BaseSink):
+    """Streams a trial to the console: its status, every event, and the live 3D feed (SceneFeed)."""
+
+    def __init__(self, trial_id: str, send: Callable, feed_hz: float):
+        self.trial_id, self.send, self.feed_hz = trial_id, send, feed_hz
+        self.feed = None
+
+    def on_start(self, ctx) -> None:
+        from .scene_feed import SceneFeed
+
+        self.send("status", self.trial_id, "running")
+        self.feed = SceneFeed(ctx.world, lambda kind, payload: self.send(kind, self.trial_id, payload), self.feed_hz,
+                              ctx.resolver).start()
+
+    def on_event(self, event) -> None:
+        self.send("event", self.trial_id, event.to_dict())
+
+    def on_finish(self, ctx, outcome) -> None:
+        if self.feed is not None:
+            self.feed.stop()
+
+
+def _job(trial_id: str, config: TrialConfig, control: StepControl, store: TraceStore, send: Callable,
+         artifacts_dir: Path, feed_hz: float) -> None:
+    from spark_core import StorePlanLibrary, StoreSink, Verdict
+
     try:
-        run_trial(trial_id, spec, control, store, send, artifacts_dir, feed_hz)
-    except Exception as e:  # noqa: BLE001 - a crashing trial is recorded, and the worker lives on
-        store.update_trial(trial_id, status="done", outcome="failure", success=False, failure="internal",
-                           reason=f"internal error: {type(e).__name__}: {e}",
-                           protocol={**asdict(spec), "worker_pid": os.getpid(),
-                                     "traceback": traceback.format_exc()[-4000:]})
+        sinks = [StoreSink(store, artifacts_dir, {"worker_pid": os.getpid()}), _PipeSink(trial_id, send, feed_hz)]
+        run_trial(config, sinks, control, trial_id=trial_id, library=StorePlanLibrary(store))
+    except Exception as e:  # noqa: BLE001 - a sink that failed (the store?): recorded if possible, the worker lives on
+        store.update_trial(trial_id, status="done", outcome="failure", success=False, verdict=Verdict.CRASHED.value,
+                           failure="internal", reason=f"internal error: {type(e).__name__}: {e}",
+                           protocol={"worker_pid": os.getpid(), "traceback": traceback.format_exc()[-4000:]})
     finally:
         send("done", trial_id)
-
-
-def run_trial(trial_id: str, spec: TrialSpec, control, store, send: Callable, artifacts_dir: Path,
-              feed_hz: float = 30.0) -> None:
-    """Plan (unless reference), execute and record one trial; events and the 3D feed go out through `send`."""
-    from spark_core.bench.trial import PerceptionConfig, make_resolver
-    from spark_core.execution import EventBus, Executor
-    from spark_core.execution.primitives import PrimitiveLibrary
-    from spark_core.grammar import parse_plan, plan_to_dict, to_yaml
-    from spark_core.planning import PlanRequest
-    from spark_core.sim.tasks import TASKS
-    from spark_core.sim.world import TrajectoryRecorder
-    from spark_core.trace.artifacts import detection_images
-    from spark_core.trace.record import record_trial
-
-    from .scene_feed import SceneFeed
-
-    if control.aborted:  # cancelled while queued: never starts
-        store.update_trial(trial_id, status="done", outcome="aborted", reason="cancelled before it started")
-        return
-    t0 = time.perf_counter()
-    store.update_trial(trial_id, status="running", protocol={**asdict(spec), "worker_pid": os.getpid()})
-    send("status", trial_id, "running")
-    bus = EventBus(trial_id)
-    bus.subscribe(lambda ev: send("event", trial_id, ev.to_dict()))
-    task = TASKS[spec.task]
-    world = task.make_world(spec.seed, spec.embodiment)
-    world.recorder = TrajectoryRecorder()
-    episode = None
-    if spec.capture:
-        from spark_core.sim.capture import EpisodeCapture
-
-        episode = EpisodeCapture(world, clock=bus.now)
-        bus.subscribe(episode.on_event)
-        world.monitors.append(episode)
-    feed = None
-    try:
-        resolver = make_resolver(world, PerceptionConfig(spec.resolver), spec.seed)
-        feed = SceneFeed(world, lambda kind, payload: send(kind, trial_id, payload), feed_hz, resolver).start()
-        record = dict(task=task.name, instruction=spec.instruction, seed=spec.seed, planner=spec.planner,
-                      resolver=spec.resolver, protocol={**asdict(spec), "worker_pid": os.getpid()})
-        cost, usage, plan, library, summary = 0.0, {}, None, None, ""
-        if spec.planner == "reference":
-            plan = parse_plan(task.reference_plan_text())
-        else:
-            from spark_core.planning.backends import make_planner
-            from spark_core.planning.llm import PlannerUnavailable
-            from spark_core.planning.observe import arm_bases, arm_tools, observe
-            from spark_core.trace.plan_library import StorePlanLibrary
-
-            try:
-                planner = make_planner(spec.planner, spec.model, spec.base_url)
-            except (PlannerUnavailable, ValueError) as e:
-                store.update_trial(trial_id, status="done", outcome="failure", success=False, failure="planner",
-                                   reason=f"planner {spec.planner!r} unavailable: {e}")
-                return
-            view = observe(spec.instruction, resolver)
-            summary = view.summary
-            library = StorePlanLibrary(store) if spec.planner != "rules" else None
-            examples = library.examples(spec.instruction) if library is not None else ()
-            result = planner.plan(PlanRequest(spec.instruction, view, examples, arm_bases(world), arm_tools(world)))
-            cost, usage, plan = result.cost_usd, asdict(result.usage), result.plan
-            if plan is None:
-                record_trial(store, trial_id, **record, plan=None, result=None, success=False,
-                             reason=f"no plan: {result.error}", cost_usd=cost, usage=usage,
-                             wall_time_s=round(time.perf_counter() - t0, 3))
-                return
-        store.update_trial(trial_id, plan_text=to_yaml(plan), plan_tree=plan_to_dict(plan))
-        ex = Executor(PrimitiveLibrary(world, resolver, seed=spec.seed), resolver, bus=bus, control=control,
-                      trial_id=trial_id)
-        trial = ex.run(plan)
-        world.settle(0.5)
-        success = bool(task.success(world)) and trial.outcome == "success"
-        artifacts = detection_images(resolver, artifacts_dir / trial_id)
-        if episode is not None:
-            from spark_core.trace.artifacts import capture_entries
-
-            world.monitors.remove(episode)
-            artifacts += capture_entries(episode, artifacts_dir / trial_id)
-        record_trial(store, trial_id, **record, plan=plan, result=trial, success=success,
-                     groundings=getattr(resolver, "groundings", []), trajectory=world.recorder.rows,
-                     scene_states=world.recorder.states, wall_time_s=round(time.perf_counter() - t0, 3),
-                     cost_usd=cost, usage=usage, artifacts=artifacts)
-        if success and library is not None:
-            library.add(spec.instruction, to_yaml(plan), summary, trial_id=trial_id)
-    finally:
-        if feed is not None:
-            feed.stop()
-        world.close()

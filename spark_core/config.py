@@ -1,6 +1,7 @@
 """User configuration: `spark.yaml` in the working directory, or the file named by SPARK_CONFIG.
 
-Keys (all optional): planner (rules|gemini|openai), model, base_url, resolver (privileged|sim|sim-noisy),
+Keys (all optional): planner (rules|gemini|openai), model, base_url, segmenter (a catalog segmenter:
+`spark catalog`),
 plan_library ('store' or a .jsonl path), prices ({model: [input_usd_per_mtok, output_usd_per_mtok]}). Command-line flags win.
 """
 
@@ -12,7 +13,7 @@ from pathlib import Path
 
 import yaml
 
-KEYS = ("planner", "model", "base_url", "resolver", "plan_library", "prices")
+KEYS = ("planner", "model", "base_url", "segmenter", "plan_library", "prices")
 
 
 @dataclass(frozen=True)
@@ -20,7 +21,7 @@ class Config:
     planner: str | None = None
     model: str | None = None
     base_url: str | None = None
-    resolver: str | None = None
+    segmenter: str | None = None
     plan_library: str | None = None
     prices: dict[str, tuple[float, float]] = field(default_factory=dict)
     source: str = ""

@@ -9,7 +9,7 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def spark(*args, stdin=None):
-    return subprocess.run([sys.executable, "-m", "spark_core.cli", *args], cwd=ROOT, capture_output=True, text=True,
+    return subprocess.run([sys.executable, "-m", "spark_cli", *args], cwd=ROOT, capture_output=True, text=True,
                           input=stdin, timeout=120)
 
 

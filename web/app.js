@@ -12,16 +12,24 @@ const api = async (path, opts = {}) => {
   return r.status === 204 ? null : r.json();
 };
 
+// Names and closed sets (planners, segmenters, embodiments, verdicts) come from the server's one catalog.
+let catalogCache = null;
+const catalog = async () => (catalogCache ??= await api("/api/catalog"));
+const options = (entries, label = (e) => e.name) => entries.map((e) => `<option value="${esc(e.name)}">${esc(label(e))}</option>`).join("");
+const segLabel = (s) => `${s.name}${s.privileged ? " (privileged)" : ""}`;
+
 async function dashboard(view) {
-  const tasks = await api("/api/tasks");
+  const cat = await catalog();
+  const tasks = cat.tasks;
   view.innerHTML = `
     <section><h3>New trial</h3>
       <form id="new-trial">
         <label>Task <select name="task">${tasks.map((t) => `<option value="${t.name}">${t.name}${t.suite === "builtin" ? "" : ` (${t.suite})`}</option>`).join("")}</select></label>
         <label>Instruction <input type="text" name="instruction" placeholder="default: the task's own"></label><br>
-        <label>Planner <select name="planner"><option>reference</option><option>rules</option><option>gemini</option><option>openai</option></select></label>
-        <label>Segmenter <select name="resolver"><option>sim</option><option>privileged</option><option>sim-noisy</option></select></label>
-        <label>Robot <select name="embodiment"><option value="">task default</option><option>panda</option><option>ur10</option><option>bimanual</option></select></label>
+        <label>Planner <select name="planner">${options(cat.planners)}</select></label>
+        <label>Model <input type="text" name="model" placeholder="planner default" style="width:10em"></label>
+        <label>Segmenter <select name="segmenter">${options(cat.segmenters, segLabel)}</select></label>
+        <label>Robot <select name="embodiment"><option value="">task default</option>${options(cat.embodiments)}</select></label>
         <label>Seed <input type="number" name="seed" value="0" min="0" style="width:5em"></label>
         <label><input type="checkbox" name="start_paused"> start paused</label>
         <label title="agentview + wrist video and per-frame labels, for LeRobot export"><input type="checkbox" name="capture"> record training data</label>
@@ -31,7 +39,8 @@ async function dashboard(view) {
       <form id="new-batch">
         <label>Tasks <select name="tasks" multiple size="4">${tasks.map((t) => `<option value="${t.name}">${t.name}</option>`).join("")}</select></label>
         <label>Trials per task <input type="number" name="trials" value="2" min="1" max="100" style="width:5em"></label>
-        <label>Segmenter <select name="resolver"><option>sim</option><option>privileged</option><option>sim-noisy</option></select></label>
+        <label>Planner <select name="planner">${options(cat.planners)}</select></label>
+        <label>Segmenter <select name="segmenter">${options(cat.segmenters, segLabel)}</select></label>
         <label><input type="checkbox" name="capture"> record training data</label>
         <button type="submit">Run batch</button> <span id="batch-error" class="fail"></span>
       </form></section>
@@ -39,17 +48,19 @@ async function dashboard(view) {
   $("#new-trial").onsubmit = async (e) => {
     e.preventDefault();
     const f = new FormData(e.target);
-    const body = { task: f.get("task"), planner: f.get("planner"), resolver: f.get("resolver"),
+    const body = { task: f.get("task"), planner: f.get("planner"), segmenter: f.get("segmenter"),
                    seed: Number(f.get("seed")), start_paused: f.get("start_paused") === "on", capture: f.get("capture") === "on" };
     if (f.get("instruction")) body.instruction = f.get("instruction");
     if (f.get("embodiment")) body.embodiment = f.get("embodiment");
+    if (f.get("model")) body.model = f.get("model");
     try { const r = await api("/api/trials", { method: "POST", body: JSON.stringify(body) }); location.hash = `#/trial/${r.id}`; }
     catch (err) { $("#form-error").textContent = err.message; }
   };
   $("#new-batch").onsubmit = async (e) => {
     e.preventDefault();
     const f = new FormData(e.target);
-    const body = { trials: Number(f.get("trials")), resolver: f.get("resolver"), capture: f.get("capture") === "on" };
+    const body = { trials: Number(f.get("trials")), planner: f.get("planner"), segmenter: f.get("segmenter"),
+                   capture: f.get("capture") === "on" };
     const chosen = f.getAll("tasks");
     if (chosen.length) body.tasks = chosen;
     try { const r = await api("/api/batches", { method: "POST", body: JSON.stringify(body) }); location.hash = `#/batch/${r.id}`; }
@@ -62,9 +73,9 @@ async function dashboard(view) {
 }
 
 function trialTable(items, selectable = false) {
-  return `<table><tr>${selectable ? "<th></th>" : ""}<th>trial</th><th>task</th><th>status</th><th>success</th><th>planner</th><th>wall s</th><th>cost $</th><th>instruction</th></tr>
+  return `<table><tr>${selectable ? "<th></th>" : ""}<th>trial</th><th>task</th><th>status</th><th>verdict</th><th>planner</th><th>segmenter</th><th>seed</th><th>wall s</th><th>cost $</th><th>instruction</th></tr>
     ${items.map((t) => `<tr>${selectable ? `<td><input type="checkbox" class="pick" value="${esc(t.id)}"></td>` : ""}<td><a href="#/trial/${t.id}">${esc(t.id)}</a></td><td>${esc(t.task)}</td><td>${esc(t.status)}</td>
-      <td class="${t.success ? "ok" : "fail"}">${t.success === null ? "" : t.success ? "yes" : "no"}</td><td>${esc(t.planner)}</td>
+      <td class="${t.success ? "ok" : "fail"}">${esc(t.verdict ?? "")}</td><td>${esc(t.planner)}</td><td>${esc(t.segmenter)}</td><td>${t.seed}</td>
       <td>${t.wall_time_s ?? ""}</td><td>${(t.cost_usd ?? 0).toFixed(4)}</td><td>${esc(t.instruction)}</td></tr>`).join("")}</table>`;
 }
 
@@ -81,8 +92,8 @@ async function history(view) {
   view.innerHTML = `<section><h3>History</h3>
     <form id="filters"><label>Search <input type="text" name="q"></label>
       <label>Status <select name="status"><option value="">any</option><option>done</option><option>running</option><option>queued</option><option>interrupted</option></select></label>
-      <label>Success <select name="success"><option value="">any</option><option value="true">yes</option><option value="false">no</option></select></label>
-      <label>Sort <select name="sort"><option>-created_at</option><option>created_at</option><option>-wall_time_s</option><option>-cost_usd</option><option>task</option></select></label>
+      <label>Verdict <select name="verdict"><option value="">any</option>${(await catalog()).verdict.map((v) => `<option>${esc(v)}</option>`).join("")}</select></label>
+      <label>Sort <select name="sort"><option>-created_at</option><option>created_at</option><option>-wall_time_s</option><option>-cost_usd</option><option>task</option><option>verdict</option><option>-seed</option></select></label>
       <button>Filter</button></form>
     <p><button id="export-selected">Export selected (LeRobot)</button> <label><input type="checkbox" id="export-failures"> include failures</label>
       <span id="export-result"></span></p><div id="rows"></div></section>`;
@@ -143,8 +154,8 @@ async function trialPage(view, id) {
   for (const a of ["pause", "step", "resume", "abort"]) $("#" + a).onclick = () => control(a);
   $("#replay").onclick = () => api(`/api/trials/${id}/replay`, { method: "POST" }).catch((e) => alert(e.message));
   const draw = () => {
-    $("#summary").innerHTML = `<p>${esc(trial.task)} · “${esc(trial.instruction)}” · planner ${esc(trial.planner)} · segmenter ${esc(trial.resolver)}
-      · status <b id="status">${esc(trial.status)}</b>${trial.success === null || trial.success === undefined ? "" : ` · <b class="${trial.success ? "ok" : "fail"}" id="verdict">${trial.success ? "success" : "failure"}</b>`}
+    $("#summary").innerHTML = `<p>${esc(trial.task)} · “${esc(trial.instruction)}” · planner ${esc(trial.planner)} · segmenter ${esc(trial.segmenter)}${trial.protocol?.privileged ? " (privileged)" : ""}
+      · status <b id="status">${esc(trial.status)}</b>${trial.verdict ? ` · <b class="${trial.success ? "ok" : "fail"}" id="verdict">${esc(trial.verdict)}</b>` : ""}
       ${trial.reason ? " · " + esc(trial.reason) : ""}</p>`;
     if (trial.plan_tree) $("#tree").innerHTML = `<ul>${renderTree(trial.plan_tree.tree, "tree", state)}</ul>`;
     $("#log").textContent = state.events.map((e) => `${(e.t ?? 0).toFixed(3)}  ${e.kind.padEnd(9)} ${e.node_path ?? ""} ${JSON.stringify(e.detail ?? {})}`).join("\n");

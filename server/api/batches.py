@@ -9,6 +9,12 @@ from fastapi import APIRouter, HTTPException, Request
 from fastapi.responses import PlainTextResponse
 from pydantic import BaseModel, Field
 
+from spark_core import PLANNERS, SEGMENTERS, wilson
+from spark_core import suites as catalog_suites
+
+from .models import MAX_SEED, TrialCreate
+from .trials import trial_config
+
 router = APIRouter(prefix="/api/batches", tags=["batches"])
 
 
@@ -17,64 +23,66 @@ class BatchTrial(BaseModel):
 
     task: str
     instruction: str | None = Field(None, max_length=2000, description="default: the task's own")
-    seed: int = Field(0, ge=0)
-    planner: str | None = Field(None, pattern="^(reference|rules|gemini|openai)$")
-    resolver: str | None = Field(None, pattern="^(privileged|sim|sim-noisy)$")
+    seed: int = Field(0, ge=0, le=MAX_SEED, strict=True)
+    planner: str | None = Field(None, json_schema_extra={"enum": list(PLANNERS)})
+    segmenter: str | None = Field(None, json_schema_extra={"enum": list(SEGMENTERS)})
 
 
 class BatchCreate(BaseModel):
-    suite: str = Field("builtin", description="task suite (builtin, bimanual)")
+    suite: str = Field("builtin", description="task suite (GET /api/catalog lists them)")
     specs: list[BatchTrial] | None = Field(None, max_length=2000,
                                            description="explicit trials (instead of tasks × trials from the suite)")
-    tasks: list[str] | None = Field(None, description="subset of the suite's tasks (default: all)")
-    trials: int = Field(1, ge=1, le=100, description="seeds per task")
-    seed: int = Field(0, ge=0)
-    planner: str = Field("reference", pattern="^(reference|rules|gemini|openai)$")
-    resolver: str = Field("sim", pattern="^(privileged|sim|sim-noisy)$")
+    tasks: list[str] | None = Field(None, max_length=2000, description="subset of the suite's tasks (default: all)")
+    trials: int = Field(1, ge=1, le=100, strict=True, description="seeds per task")
+    seed: int = Field(0, ge=0, le=MAX_SEED, strict=True)
+    planner: str = Field("reference", json_schema_extra={"enum": list(PLANNERS)})
+    model: str | None = Field(None, max_length=200)
+    segmenter: str = Field("sim", json_schema_extra={"enum": list(SEGMENTERS)})
     capture: bool = Field(False, description="record training-data frames for every trial (for LeRobot export)")
+
+
+MAX_BATCH = 2000
 
 
 @router.post("", status_code=202)
 def create_batch(body: BatchCreate, request: Request) -> dict:
-    from spark_core.sim.tasks import SUITES, TASKS
-
-    from ..runner import TrialSpec
-
-    if body.suite not in SUITES:
-        raise HTTPException(422, f"unknown suite {body.suite!r}; available: {', '.join(SUITES)}")
-    # named tasks may come from any suite; without names, the whole chosen suite runs
-    pool = TASKS if (body.tasks or body.specs) else SUITES[body.suite]
-    if body.specs is not None:
-        if not body.specs:
-            raise HTTPException(422, "specs is empty: give at least one trial, or leave it out to run the suite")
-        wanted = [sp.task for sp in body.specs]
-    else:
-        wanted = body.tasks or list(pool)
-    unknown = [t for t in dict.fromkeys(wanted) if t not in pool]
-    if unknown:
-        raise HTTPException(422, f"unknown task(s) {', '.join(unknown)}; {body.suite} tasks: {', '.join(pool)}")
-    no_plan = [t for t in dict.fromkeys(wanted) if not pool[t].has_reference_plan]
-    planners = [sp.planner or body.planner for sp in body.specs] if body.specs is not None else [body.planner]
-    if no_plan and "reference" in planners:
-        raise HTTPException(422, f"task(s) {', '.join(no_plan[:5])}{' ...' if len(no_plan) > 5 else ''} have no "
-                                 "reference plan: choose a planner (rules, gemini, openai)")
-    if body.specs is not None:
-        specs = [TrialSpec(sp.task, sp.instruction or pool[sp.task].instruction, sp.planner or body.planner,
-                           sp.resolver or body.resolver, sp.seed, capture=body.capture) for sp in body.specs]
-    else:
-        specs = [TrialSpec(task, pool[task].instruction, body.planner, body.resolver, body.seed + k,
-                           capture=body.capture) for task in wanted for k in range(body.trials)]
-    if len(specs) > 2000:
-        raise HTTPException(422, f"{len(specs)} trials is more than one batch may hold (2000)")
+    """Every trial is checked before anything is recorded: a batch is queued whole or not at all."""
+    suites = catalog_suites()
+    if body.suite not in suites:
+        raise HTTPException(422, f"unknown suite {body.suite!r}; available: {', '.join(suites)}")
+    n = len(body.specs) if body.specs is not None else len(body.tasks or suites[body.suite]) * body.trials
+    if n > MAX_BATCH:  # before expanding anything
+        raise HTTPException(422, f"{n} trials is more than one batch may hold ({MAX_BATCH})")
+    if body.specs is not None and not body.specs:
+        raise HTTPException(422, "specs is empty: give at least one trial, or leave it out to run the suite")
+    if body.seed + body.trials - 1 > MAX_SEED:
+        raise HTTPException(422, f"seed: seeds {body.seed}..{body.seed + body.trials - 1} go past {MAX_SEED}")
+    if body.specs is None and body.tasks is not None:
+        unknown = [t for t in dict.fromkeys(body.tasks) if t not in suites[body.suite]]
+        if unknown:
+            raise HTTPException(422, f"unknown task(s) {', '.join(unknown[:10])}; {body.suite} tasks: "
+                                     f"{', '.join(suites[body.suite])}")
     batch_id = f"batch-{uuid.uuid4().hex[:10]}"
+    if body.specs is not None:
+        wanted = [TrialCreate(task=sp.task, instruction=sp.instruction, seed=sp.seed, planner=sp.planner or body.planner,
+                              segmenter=sp.segmenter or body.segmenter, model=body.model, capture=body.capture)
+                  for sp in body.specs]
+    else:
+        wanted = [TrialCreate(task=task, seed=body.seed + k, planner=body.planner, segmenter=body.segmenter,
+                              model=body.model, capture=body.capture)
+                  for task in (body.tasks or suites[body.suite]) for k in range(body.trials)]
+    configs = []
+    for i, w in enumerate(wanted):
+        try:
+            configs.append(trial_config(w, batch_id))
+        except HTTPException as e:
+            where = f"specs[{i}]" if body.specs is not None else f"{w.task} seed {w.seed}"
+            raise HTTPException(422, f"{where}: {e.detail}") from None
     store, runner = request.app.state.store, request.app.state.runner
     store.create_batch(batch_id, body.model_dump())
-    ids = []
-    for n, spec in enumerate(specs):
-        trial_id = f"{batch_id}-{n:04d}-{spec.task}-{spec.seed}"
-        runner.submit(trial_id, spec, batch_id=batch_id)
-        ids.append(trial_id)
-    return {"id": batch_id, "trials": len(ids)}
+    for n, config in enumerate(configs):
+        runner.submit(f"{batch_id}-{n:04d}-{config.task}-{config.seed}", config)
+    return {"id": batch_id, "trials": len(configs)}
 
 
 @router.get("/{batch_id}")
@@ -82,7 +90,7 @@ def get_batch(batch_id: str, request: Request) -> dict:
     return _batch_with_results(request, batch_id)
 
 
-CSV_TRIAL_COLUMNS = ("id", "task", "seed", "instruction", "planner", "resolver", "status", "outcome", "success",
+CSV_TRIAL_COLUMNS = ("id", "task", "seed", "instruction", "planner", "segmenter", "status", "verdict", "success",
                      "failure", "failed_node", "reason", "wall_time_s", "sim_time_s", "cost_usd")
 
 
@@ -115,8 +123,6 @@ def _csv(rows: list[dict], columns: tuple[str, ...], filename: str) -> PlainText
 
 
 def _batch_with_results(request: Request, batch_id: str) -> dict:
-    from spark_core.bench.report import wilson
-
     batch = request.app.state.store.get_batch(batch_id)
     if batch is None:
         raise HTTPException(404, f"no batch {batch_id!r}")

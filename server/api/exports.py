@@ -23,7 +23,7 @@ class ExportCreate(BaseModel):
 
 @router.post("", status_code=201)
 def create_export(body: ExportCreate, request: Request) -> dict:
-    from spark_core.trace.lerobot import ExportError, ExportFilter, export_lerobot
+    from spark_core import ExportError, ExportFilter, export_lerobot
 
     if not body.trial_ids and not body.batch:
         raise HTTPException(422, "say what to export: trial_ids (a selection) or batch")

@@ -25,7 +25,7 @@ def version() -> dict:
 
 @router.get("/grammar")
 def grammar() -> dict:
-    from spark_core.grammar import REGISTRY, plan_json_schema
+    from spark_core import REGISTRY, plan_json_schema
 
     prims = [{"name": s.name, "tier": s.tier.value, "description": s.description, "arm": s.arm.value,
               "timeout_s": s.timeout_s, "postcondition": s.postcondition,
@@ -35,18 +35,25 @@ def grammar() -> dict:
     return {"primitives": prims, "json_schema": plan_json_schema()}
 
 
+@router.get("/catalog")
+def catalog() -> dict:
+    """Planners, segmenters (with their `privileged` flag), embodiments, suites, tasks, and the closed sets the
+    UI interprets (verdicts, node statuses, event kinds): the one list the CLI, the API and the UI share."""
+    from spark_core import catalog_json
+
+    return catalog_json()
+
+
 @router.get("/tasks")
 def tasks() -> list[dict]:
-    from spark_core.sim.tasks import SUITES
+    from spark_core import catalog_json
 
-    return [{"name": t.name, "instruction": t.instruction, "predicate": t.predicate,
-             "objects": [o.label for o in t.objects], "suite": suite, "embodiments": list(t.embodiments)}
-            for suite, tasks in SUITES.items() for t in tasks.values()]
+    return catalog_json()["tasks"]
 
 
 @router.post("/plans/validate", response_model=PlanValidation)
 def validate_plan(body: PlanText) -> PlanValidation:
-    from spark_core.grammar import plan_to_dict, to_yaml, validate
+    from spark_core import plan_to_dict, to_yaml, validate
 
     plan, issues = validate(body.text)
     if plan is None:

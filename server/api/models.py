@@ -4,21 +4,59 @@ from __future__ import annotations
 
 from typing import Any, Literal
 
-from pydantic import BaseModel, Field
+from pydantic import BaseModel, Field, field_validator
+
+from spark_core import (EMBODIMENTS, PLANNERS, SEGMENTERS, CatalogError, check_embodiment, check_planner,
+                        check_segmenter)
+
+MAX_SEED = 2**31 - 1  # a seed the simulators' RNGs take (np.random, robosuite, LIBERO init-state index)
+
+
+def _enum(names: Any) -> dict[str, Any]:
+    return {"enum": list(names)}
 
 
 class TrialCreate(BaseModel):
-    task: str = Field(description="builtin task whose scene to run in")
+    task: str = Field(description="task whose scene to run in (GET /api/catalog lists them)")
     instruction: str | None = Field(None, max_length=2000, description="default: the task's own instruction")
-    planner: Literal["reference", "rules", "gemini", "openai"] = "reference"
-    resolver: Literal["privileged", "sim", "sim-noisy"] = "sim"
-    seed: int = Field(0, ge=0, le=1_000_000)
+    planner: str = Field("reference", json_schema_extra=_enum(PLANNERS))
+    segmenter: str = Field("sim", json_schema_extra=_enum(SEGMENTERS),
+                           description="perception backend; GET /api/catalog says which are privileged")
+    seed: int = Field(0, ge=0, le=MAX_SEED, strict=True)
     breakpoints: list[str] = Field(default_factory=list, max_length=200, description="node paths to pause before")
-    model: str | None = None
-    base_url: str | None = None
+    model: str | None = Field(None, max_length=200)
+    base_url: str | None = Field(None, max_length=500)
+    plan: str | None = Field(None, max_length=256 * 1024, description="a plan to run as given (the planner is not called)")
     start_paused: bool = Field(False, description="pause before the first primitive")
     capture: bool = Field(False, description="record training-data frames (agentview + wrist video at 10 fps)")
-    embodiment: Literal["panda", "ur10", "bimanual"] | None = Field(None, description="robot set-up (default: the task's own)")
+    embodiment: str | None = Field(None, json_schema_extra=_enum(EMBODIMENTS),
+                                   description="robot set-up (default: the task's own)")
+    time_limit_s: float | None = Field(None, gt=0, le=3600, description="simulated seconds (default: the task's own)")
+    pacing: float | None = Field(None, ge=0.01, le=100, description="x real time (default: as fast as possible)")
+    recovery: bool = Field(True, description="recovery tiers 1-2 (2 retries per node)")
+    adaptive: bool = Field(True, description="adaptive prompts (label + 3 variants)")
+
+    @field_validator("planner")
+    @classmethod
+    def _planner(cls, v: str) -> str:
+        return _catalog(check_planner, v)
+
+    @field_validator("segmenter")
+    @classmethod
+    def _segmenter(cls, v: str) -> str:
+        return _catalog(check_segmenter, v)
+
+    @field_validator("embodiment")
+    @classmethod
+    def _embodiment(cls, v: str | None) -> str | None:
+        return None if v is None else _catalog(check_embodiment, v)
+
+
+def _catalog(check: Any, value: str) -> str:
+    try:
+        return check(value)
+    except CatalogError as e:
+        raise ValueError(str(e)) from None
 
 
 class TrialCreated(BaseModel):

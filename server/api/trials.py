@@ -7,6 +7,8 @@ import uuid
 
 from fastapi import APIRouter, HTTPException, Query, Request, WebSocket, WebSocketDisconnect
 
+from spark_core import TrialConfig, TrialConfigError
+
 from .auth import websocket_allowed
 from .models import Control, TrialCreate, TrialCreated, TrialPage
 
@@ -15,32 +17,38 @@ router = APIRouter(prefix="/api/trials", tags=["trials"])
 
 @router.post("", status_code=202, response_model=TrialCreated)
 def create_trial(body: TrialCreate, request: Request) -> TrialCreated:
-    from spark_core.sim.tasks import TASKS
-
-    from ..runner import TrialSpec
-
-    task = TASKS.get(body.task)
-    if task is None:
-        raise HTTPException(422, f"unknown task {body.task!r}; tasks: {', '.join(TASKS)}")
-    if body.planner == "reference" and not task.has_reference_plan:
-        raise HTTPException(422, f"task {body.task!r} has no reference plan: choose a planner (rules, gemini, openai)")
-    if body.embodiment and body.embodiment not in task.embodiments:
-        raise HTTPException(422, f"task {body.task!r} runs on {', '.join(task.embodiments)}, not {body.embodiment!r}")
+    config = trial_config(body)
     trial_id = f"{body.task}-{uuid.uuid4().hex[:10]}"
-    spec = TrialSpec(body.task, body.instruction or task.instruction, body.planner, body.resolver, body.seed,
-                     tuple(body.breakpoints), body.model, body.base_url, body.start_paused, body.capture,
-                     body.embodiment)
-    request.app.state.runner.submit(trial_id, spec)
+    request.app.state.runner.submit(trial_id, config)
     return TrialCreated(id=trial_id, status="queued")
+
+
+def trial_config(body: TrialCreate, batch_id: str | None = None) -> TrialConfig:
+    """The request as a checked TrialConfig; 422 naming the field and what was expected."""
+    capture = None
+    if body.capture:
+        from spark_core import CaptureConfig
+
+        capture = CaptureConfig()
+    config = TrialConfig(body.task, body.instruction, body.planner, body.model, body.base_url, body.plan,
+                         body.segmenter, embodiment=body.embodiment, seed=body.seed, recovery=body.recovery,
+                         adaptive=body.adaptive, capture=capture, time_limit_s=body.time_limit_s, pacing=body.pacing,
+                         breakpoints=tuple(body.breakpoints), start_paused=body.start_paused, batch_id=batch_id)
+    try:
+        return config.check()
+    except TrialConfigError as e:
+        raise HTTPException(422, str(e)) from None
 
 
 @router.get("", response_model=TrialPage)
 def list_trials(request: Request, status: str | None = None, task: str | None = None, success: bool | None = None,
+                verdict: str | None = Query(None, max_length=32), batch: str | None = Query(None, max_length=64),
                 q: str | None = Query(None, max_length=200), sort: str = "-created_at",
                 limit: int = Query(50, ge=1, le=500), offset: int = Query(0, ge=0)) -> TrialPage:
     try:
         total, items = request.app.state.store.list_trials(status=status, task=task, success=success, search=q,
-                                                           sort=sort, limit=limit, offset=offset)
+                                                           sort=sort, limit=limit, offset=offset, verdict=verdict,
+                                                           batch=batch)
     except ValueError as e:
         raise HTTPException(422, str(e)) from None
     return TrialPage(total=total, limit=limit, offset=offset, items=items)
@@ -111,7 +119,7 @@ def control(trial_id: str, body: Control, request: Request) -> dict:
 @router.websocket("/{trial_id}/events")
 async def events(websocket: WebSocket, trial_id: str) -> None:
     """Every event of the trial (history first), then live ones; closes when the trial ends."""
-    if not await websocket_allowed(websocket):
+    if not await websocket_allowed(websocket, trial_id=trial_id):
         return
     await websocket.accept()
     runner = websocket.app.state.runner

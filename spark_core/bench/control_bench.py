@@ -41,11 +41,11 @@ def ik_benchmark(n_targets: int = 200, restarts: int = 10, seed: int = 0) -> dic
 
 def speed_benchmark(task: str = "stack_three", seeds: int = 3, frames: int = 10) -> dict:
     from ..sim.tasks import BUILTIN
-    from .trial import run_reference_trial
+    from ..trial import TrialConfig, run_trial
 
     rtf = []
     for s in range(seeds):
-        out = run_reference_trial(BUILTIN[task], s)
+        out = run_trial(TrialConfig(task, segmenter="privileged-keypoints", seed=s))
         rtf.append(out.sim_time_s / out.wall_time_s)
     world = BUILTIN[task].make_world(0)
     world.render("agentview")  # warm-up: context creation

@@ -15,11 +15,12 @@ from .report import footer, pct
 def _record(job: tuple[str, int, str, str]) -> dict:
     from ..sim.capture import CaptureConfig
     from ..trace import TraceStore
-    from .trial import PerceptionConfig, run_reference_trial
+    from ..trace.sink import StoreSink
+    from ..trial import TrialConfig, run_trial
 
     task, seed, url, art = job
-    o = run_reference_trial(BUILTIN[task], seed, perception=PerceptionConfig("privileged"), store=TraceStore(url, migrate=False),
-                            capture=CaptureConfig(), artifacts_dir=art)
+    config = TrialConfig(task, segmenter="privileged-keypoints", seed=seed, capture=CaptureConfig())
+    o = run_trial(config, [StoreSink(TraceStore(url, migrate=False), art)])
     return {"task": task, "seed": seed, "success": o.success, "wall_time_s": o.wall_time_s, "sim_time_s": o.sim_time_s}
 
 
@@ -53,7 +54,7 @@ def section(r: dict, command: str) -> str:
                f"| LeRobot v3.0 (AV1 256×256 agentview + wrist, 10 fps) | {r['episodes']} | {r['frames']} | "
                f"{r['export_wall_s']:.1f} s | {mb:.1f} MB | {mb / max(r['episodes'], 1):.2f} MB |\n\n")
     return "\n".join(lines) + "\n" + summary + footer(
-        command, f"{r['trials']} builtin trials (tasks in turn, seeds 0..), reference plans, PRIVILEGED resolver, "
+        command, f"{r['trials']} builtin trials (tasks in turn, seeds 0..), reference plans, segmenter privileged-keypoints (PRIVILEGED: simulator state), "
                  f"capture on (agentview + wrist 256×256 at 10 fps of simulated time, no shadow maps, libsvtav1 crf 30), recorded on "
                  f"{r['workers']} local processes in {r['record_wall_s']:.0f} s; export = verified successes only "
                  f"({r['data_files']} data file(s), {r['video_files']} video file(s), videos concatenated by packet copy)")

@@ -6,14 +6,13 @@ from __future__ import annotations
 
 import time
 
-from ..execution import Executor
-from ..execution.primitives import PrimitiveLibrary
+from ..perception.factory import make_resolver
 from ..planning import PlanRequest
 from ..planning.observe import observe
 from ..planning.rules import RulesPlanner
 from ..sim.tasks import BUILTIN
+from ..trial import TrialConfig, run_trial
 from .report import footer, pct
-from .trial import PerceptionConfig, make_resolver
 
 PARAPHRASES: dict[str, list[str]] = {
     "lift_block": ["pick up the red block", "lift the red cube", "grab the crimson block", "pick the red block up",
@@ -64,23 +63,15 @@ def run(seed: int = 0) -> tuple[list[dict], list[dict]]:
     planner = RulesPlanner()
     rows, errors = [], []
     for task_name, instructions in PARAPHRASES.items():
-        task = BUILTIN[task_name]
         for instruction in instructions:
             t0 = time.perf_counter()
-            world = task.make_world(seed)
-            resolver = make_resolver(world, PerceptionConfig("sim"), seed)
-            result = planner.plan(PlanRequest(instruction, observe(instruction, resolver)))
-            success, outcome = False, result.error
-            if result.ok:
-                trial = Executor(PrimitiveLibrary(world, resolver, seed=seed), resolver).run(result.plan)
-                world.settle(0.5)
-                success, outcome = bool(task.success(world)), trial.outcome + (f": {trial.reason}" if trial.reason else "")
-            world.close()
-            rows.append({"task": task_name, "instruction": instruction, "planned": result.ok, "success": success,
-                         "outcome": outcome, "wall_time_s": round(time.perf_counter() - t0, 2)})
+            out = run_trial(TrialConfig(task_name, instruction, planner="rules", segmenter="sim", seed=seed))
+            outcome = out.verdict.value + (f": {out.reason}" if out.reason else "")
+            rows.append({"task": task_name, "instruction": instruction, "planned": out.verdict != "planner_error",
+                         "success": out.success, "outcome": outcome, "wall_time_s": round(time.perf_counter() - t0, 2)})
     for task_name, instruction in NONSENSE:
         world = BUILTIN[task_name].make_world(seed)
-        resolver = make_resolver(world, PerceptionConfig("sim"), seed)
+        resolver = make_resolver(world, "sim", seed)
         result = planner.plan(PlanRequest(instruction, observe(instruction, resolver)))
         world.close()
         errors.append({"task": task_name, "instruction": instruction, "refused": not result.ok, "error": result.error})
@@ -101,4 +92,5 @@ def section(rows: list[dict], errors: list[dict], command: str) -> str:
     return "\n".join(lines) + "\n\n" + footer(
         command, "planner: rules (offline, deterministic); it saw only what perception found for the phrases of the "
                  "instruction (no object dictionary); perception: sim segmenter (privileged masks), agentview+side, adaptive "
-                 "prompts; execution in the task's scene (seed 0), recovery tiers 1-2; success: the task's predicate")
+                 "prompts; execution in the task's scene (seed 0) through the trial pipeline, recovery tiers 1-2; success: the task's "
+                 "predicate within its time limit AND the behavior tree succeeded")

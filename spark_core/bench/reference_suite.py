@@ -1,45 +1,52 @@
-"""Reference plans on the builtin tasks with the privileged resolver: measures control and primitives alone."""
+"""A suite of trials through the one trial pipeline (`spark_core.trial.run_trial`), on the local process pool or
+Ray, with Markdown reports. Reference plans measure control and primitives; planners measure the whole loop."""
 
 from __future__ import annotations
 
 import statistics
+from dataclasses import replace
 from typing import Callable, Iterable
 
-from ..sim.tasks import TASKS
-from ..execution import RecoveryPolicy
+from ..trial import TrialConfig, TrialOutcome, run_trial
 from .report import footer, pct, wilson
-from .trial import PerceptionConfig, TrialOutcome, run_reference_trial
 
 
-def protocol(perception: PerceptionConfig, recovery: RecoveryPolicy, planner: str = "reference") -> str:
-    rec = "recovery off" if recovery.max_retries == 0 else f"recovery tiers 1-2 on ({recovery.max_retries} retries per node), replan off"
-    who = ("hand-written reference plan per task (no LLM; the planner saw nothing)" if planner == "reference" else
-           f"{planner} planner, one call per trial on the env's instruction; it received the instruction and what "
-           "perception found for the instruction's phrases (no object-name dictionary)")
-    return (f"planner: {who}; resolver: {perception.describe()}; {rec}; success: the task's predicate over simulator state")
+def protocol(config: TrialConfig) -> str:
+    """A suite's protocol in words, from its trial template (planner, segmenter and whether it is privileged,
+    cameras, adaptive prompts, recovery, success rule)."""
+    p = config.protocol(0.0)
+    seg = f"{p['segmenter']} ({'PRIVILEGED' if p['privileged'] else 'non-privileged'}: {p['segmenter_description']})"
+    if p["cameras"] != "none":
+        seg += f", cameras {p['cameras']} 640x480, adaptive prompts {'on (label + 3 variants)' if p['adaptive_prompts'] else 'off'}"
+    if p["noise"]:
+        seg += f", noise: {p['noise']}, misses independent per prompt and per view"
+    rec = "recovery tiers 1-2 on (2 retries per node), replan off" if config.recovery else "recovery off"
+    return (f"planner: {p['planner']}; segmenter: {seg}; {rec}; success: {p['success_rule']} "
+            "(the task's own time limit)")
 
 
-def _one(args: tuple) -> dict:
-    task, seed, perception, recovery, embodiment, store_url, batch_id, planner = args
-    store = None
+def _one(job: tuple[TrialConfig, str | None]) -> dict:
+    config, store_url = job
+    sinks = []
     if store_url:
         from ..trace import TraceStore
+        from ..trace.sink import StoreSink
 
-        store = TraceStore(store_url, migrate=False)  # the driver migrated it
-    return run_reference_trial(TASKS[task], seed, recovery=recovery, perception=perception, embodiment=embodiment,
-                               store=store, batch_id=batch_id, planner=planner).row()
+        sinks.append(StoreSink(TraceStore(store_url, migrate=False)))  # the driver migrated it
+    return run_trial(config, sinks).row()
 
 
 def run(tasks: Iterable[str], trials: int, seed: int = 0, workers: int = 1,
-        progress: Callable[[dict], None] | None = None, perception: PerceptionConfig = PerceptionConfig(),
-        recovery: RecoveryPolicy = RecoveryPolicy(), embodiment: str | None = None, executor: str = "local",
-        ray_address: str | None = None, store_url: str | None = None, planner: str = "reference") -> list[dict]:
-    """Every task x seed; `executor` local (process pool of `workers`) or ray (see bench.executors). With
-    `store_url` every trial is recorded in that trace store under one batch (watch it in the console)."""
+        progress: Callable[[dict], None] | None = None, template: TrialConfig | None = None,
+        executor: str = "local", ray_address: str | None = None, store_url: str | None = None) -> list[dict]:
+    """Every task x seed with `template`'s settings; `executor` local (process pool of `workers`) or ray (see
+    bench.executors). With `store_url` every trial is recorded in that trace store under one batch."""
     from .executors import run_jobs
 
-    batch_id = None
+    template = template or TrialConfig(task="", segmenter="privileged-keypoints")
     tasks = list(tasks)
+    batch_id = None
+    configs = [replace(template, task=t, seed=seed + k).check() for t in tasks for k in range(trials)]
     if store_url:
         import uuid
 
@@ -47,10 +54,10 @@ def run(tasks: Iterable[str], trials: int, seed: int = 0, workers: int = 1,
 
         batch_id = f"bench-{uuid.uuid4().hex[:10]}"
         TraceStore(store_url).create_batch(batch_id, {"suite": "bench", "tasks": tasks, "trials": trials, "seed": seed,
-                                                      "resolver": perception.resolver, "executor": executor})
-    jobs = [(t, seed + k, perception, recovery, embodiment, store_url, batch_id, planner)
-            for t in tasks for k in range(trials)]
-    return run_jobs(_one, jobs, executor, workers, ray_address, progress)
+                                                      "segmenter": template.segmenter, "planner": template.planner,
+                                                      "executor": executor})
+        configs = [replace(c, batch_id=batch_id) for c in configs]
+    return run_jobs(_one, [(c, store_url) for c in configs], executor, workers, ray_address, progress)
 
 
 def table(rows: list[dict]) -> str:
@@ -60,10 +67,10 @@ def table(rows: list[dict]) -> str:
         rs = [r for r in rows if r["task"] == task]
         k = sum(r["success"] for r in rs)
         lo, hi = wilson(k, len(rs))
-        fails = {}
+        fails: dict[str, int] = {}
         for r in rs:
             if not r["success"]:
-                key = r["failure"] or "predicate false"
+                key = r["verdict"] + (f" ({r['failure']})" if r["failure"] and r["verdict"] == "tree_failed" else "")
                 fails[key] = fails.get(key, 0) + 1
         lines.append(
             f"| {task} | {pct(k / len(rs))} | {pct(lo)} – {pct(hi)} | {len(rs)} | "
@@ -87,8 +94,7 @@ def phase_table(rows: list[dict]) -> str:
     return "\n".join(lines)
 
 
-def section(rows: list[dict], command: str, perception: PerceptionConfig, recovery: RecoveryPolicy,
-            executor: str = "local", planner: str = "reference") -> str:
+def section(rows: list[dict], command: str, template: TrialConfig, executor: str = "local") -> str:
     from ..sim.tasks import TASKS
     from .published import cell_table, comparison_table
 
@@ -98,12 +104,11 @@ def section(rows: list[dict], command: str, perception: PerceptionConfig, recove
     return (table(rows) + ("\n\nAgainst the published figures (different planner and perception: see protocol):\n\n"
                            + published if published else "")
             + "\n\nMedian wall time per phase:\n\n" + phase_table(rows) + "\n\n"
-            + footer(command, protocol(perception, recovery, planner) + seeds
-                     + f"; success predicates: {predicates}; a trial also fails past the task's horizon"))
+            + footer(command, protocol(template) + seeds
+                     + f"; success predicates: {predicates}"))
 
 
-def embodiment_section(rows_by_embodiment: dict[str, list[dict]], command: str, perception: PerceptionConfig,
-                       recovery: RecoveryPolicy) -> str:
+def embodiment_section(rows_by_embodiment: dict[str, list[dict]], command: str, template: TrialConfig) -> str:
     """One row per task, one column per embodiment: the same reference plan text on every robot."""
     embs = list(rows_by_embodiment)
     lines = ["| task | " + " | ".join(f"{e} success" for e in embs) + " | failures |",
@@ -117,7 +122,7 @@ def embodiment_section(rows_by_embodiment: dict[str, list[dict]], command: str, 
             cells.append(f"{pct(k / len(rs))} ({k}/{len(rs)})" if rs else "-")
             for r in rs:
                 if not r["success"]:
-                    fails.append(f"{e}: {r['failure'] or 'predicate false'}")
+                    fails.append(f"{e}: {r['verdict']}" + (f" ({r['failure']})" if r["failure"] else ""))
         counts = {f: fails.count(f) for f in dict.fromkeys(fails)}
         lines.append(f"| {task} | " + " | ".join(cells) + f" | {', '.join(f'{v}× {k}' for k, v in counts.items()) or '-'} |")
     totals = []
@@ -129,7 +134,7 @@ def embodiment_section(rows_by_embodiment: dict[str, list[dict]], command: str, 
     lines.append("| all tasks | " + " | ".join(totals) + " | |")
     n = max(len(r) for r in rows_by_embodiment.values()) // max(len(tasks), 1)
     return "\n".join(lines) + "\n\n" + footer(
-        command, protocol(perception, recovery) + f"; {n} seeds per task per embodiment; the same reference plan "
+        command, protocol(template) + f"; {n} seeds per task per embodiment; the same reference plan "
                  f"text on every embodiment (single-arm plans run on the 'right' arm); embodiments: "
                  + ", ".join(embs))
 

@@ -6,7 +6,6 @@ from __future__ import annotations
 import time
 
 from .report import footer
-from .trial import PerceptionConfig
 
 PLANNER = {"builtin": "reference", "capbench": "reference", "liberopro": "rules"}  # liberopro has no reference plans
 
@@ -21,17 +20,19 @@ def tasks_of(suite: str) -> list[str]:
     return names
 
 
-def run(trials: int = 2, workers: int = 2, resolver: str = "privileged", suites: tuple[str, ...] = ("builtin",)) -> dict:
+def run(trials: int = 2, workers: int = 2, segmenter: str = "privileged-keypoints",
+        suites: tuple[str, ...] = ("builtin",)) -> dict:
+    from ..trial import TrialConfig
     from . import reference_suite
 
-    out = {"trials_per_task": trials, "workers": workers, "resolver": resolver, "suites": {}}
+    out = {"trials_per_task": trials, "workers": workers, "segmenter": segmenter, "suites": {}}
     for suite in suites:
         tasks = tasks_of(suite)
         runs = {}
         for executor in ("local", "ray"):
             t0 = time.perf_counter()
-            rows = reference_suite.run(tasks, trials, 0, workers, None, PerceptionConfig(resolver), executor=executor,
-                                       planner=PLANNER.get(suite, "reference"))
+            template = TrialConfig("", planner=PLANNER.get(suite, "reference"), segmenter=segmenter)
+            rows = reference_suite.run(tasks, trials, 0, workers, None, template, executor=executor)
             wall = time.perf_counter() - t0
             runs[executor] = {"trials": len(rows), "successes": sum(r["success"] for r in rows), "wall_s": wall,
                               "per_hour": len(rows) / wall * 3600}
@@ -48,5 +49,5 @@ def section(r: dict, command: str) -> str:
     what = "; ".join(f"{suite}: {s['tasks']} tasks x {r['trials_per_task']} seeds, planner {s['planner']}"
                      + (" (one task per cell)" if suite == "liberopro" else "") for suite, s in r["suites"].items())
     return "\n".join(lines) + "\n\n" + footer(
-        command, f"{what}; resolver {r['resolver']}; Ray: a local cluster started by the command (start-up and "
+        command, f"{what}; segmenter {r['segmenter']}; Ray: a local cluster started by the command (start-up and "
                  "shutdown included); every trial builds its scene (robosuite/LIBERO env) afresh")

@@ -3,13 +3,26 @@
 from __future__ import annotations
 
 import asyncio
+import enum
 import itertools
 import threading
 import time
 from dataclasses import asdict, dataclass, field
 from typing import Any, AsyncIterator, Callable
 
-EVENT_KINDS = ("started", "succeeded", "failed", "retrying", "paused")
+
+
+class EventKind(enum.StrEnum):
+    """What happened to a node. Shared with the API schema (`GET /api/catalog`) and the UI."""
+
+    STARTED = "started"
+    SUCCEEDED = "succeeded"
+    FAILED = "failed"
+    RETRYING = "retrying"
+    PAUSED = "paused"
+
+
+EVENT_KINDS = tuple(k.value for k in EventKind)
 
 
 @dataclass(frozen=True)
@@ -56,11 +69,11 @@ class EventBus:
 
         return unsubscribe
 
-    def publish(self, node_path: str, kind: str, **detail: Any) -> Event:
+    def publish(self, node_path: str, kind: EventKind | str, **detail: Any) -> Event:
         if kind not in EVENT_KINDS:
-            raise ValueError(f"unknown event kind {kind!r}; expected one of {EVENT_KINDS}")
+            raise ValueError(f"unknown event kind {kind!r}; expected one of {', '.join(EVENT_KINDS)}")
         with self._lock:
-            ev = Event(self.trial_id, next(self._seq), self.now(), node_path, kind, detail, time.time())
+            ev = Event(self.trial_id, next(self._seq), self.now(), node_path, EventKind(kind).value, detail, time.time())
             self.history.append(ev)
             callbacks = list(self._callbacks)
             for loop, q in self._queues:

@@ -11,10 +11,10 @@ from ..grammar import Composite, CompositeType, Node, Plan, PrimitiveCall, walk
 from ..grammar.tree import child_path
 from ..perception import Keypoint, LabelNotFound
 from .control import Aborted, StepControl
-from .events import EventBus
+from .events import EventBus, EventKind
 from .protocols import ActionOutcome, Actuator, FailureKind, Resolver
 from .recovery import PERTURB, REDETECT, REPLAN, RecoveryPolicy
-from .result import NodeRecord, TrialResult
+from .result import NodeRecord, NodeStatus, TrialResult
 
 BOTH_ARMS = "both"
 # Label-binding moves that position the hand for the label-free primitives after them (grasp, release, ...).
@@ -106,7 +106,7 @@ class Executor:
                 if failure is None or not self._can_replan(replans):
                     break
                 replans += 1
-                self.bus.publish(prefix + "tree", "retrying", tier=REPLAN, attempt=replans, reason=failure.reason)
+                self.bus.publish(prefix + "tree", EventKind.RETRYING, tier=REPLAN, attempt=replans, reason=failure.reason)
                 new_plan = self.replanner(ReplanRequest(plan, failure))  # type: ignore[misc]
                 if new_plan is None:
                     break
@@ -118,8 +118,8 @@ class Executor:
         except Aborted as e:
             outcome, failure = "aborted", Failure(FailureKind.CONTROL, str(e), "aborted by the operator")
             for rec in self.records.values():
-                if rec.status in ("pending", "running"):
-                    rec.status = "aborted"
+                if rec.status in (NodeStatus.PENDING, NodeStatus.RUNNING):
+                    rec.status = NodeStatus.ABORTED.value
         finally:
             self.bus.close()
         return TrialResult(
@@ -146,21 +146,21 @@ class Executor:
 
     def _begin(self, path: str, **detail) -> NodeRecord:
         rec = self.records[path]
-        rec.status = "running"
+        rec.status = NodeStatus.RUNNING.value
         rec.started_t = self.bus.now()
-        self.bus.publish(path, "started", **detail)
+        self.bus.publish(path, EventKind.STARTED, **detail)
         return rec
 
     def _finish(self, rec: NodeRecord, failure: Failure | None, **detail) -> None:
         rec.finished_t = self.bus.now()
         if failure is None:
-            rec.status = "succeeded"
-            self.bus.publish(rec.path, "succeeded", **detail)
+            rec.status = NodeStatus.SUCCEEDED.value
+            self.bus.publish(rec.path, EventKind.SUCCEEDED, **detail)
         else:
-            rec.status = "failed"
+            rec.status = NodeStatus.FAILED.value
             rec.failure = failure.kind
             rec.reason = failure.reason
-            self.bus.publish(rec.path, "failed", failure=failure.kind.value, reason=failure.reason, **detail)
+            self.bus.publish(rec.path, EventKind.FAILED, failure=failure.kind.value, reason=failure.reason, **detail)
 
     def _run_node(self, node: Node, path: str, arm: str | None, barriers: _Barriers | None,
                   anchor: PrimitiveCall | None = None) -> tuple[Failure | None, float]:
@@ -212,7 +212,7 @@ class Executor:
                        anchor: PrimitiveCall | None) -> tuple[Failure | None, float]:
         spec = call.spec
         arm = BOTH_ARMS if spec.uses_both_arms else (arm or self.actuator.arms[0])
-        self.control.checkpoint(path, lambda p, why: self.bus.publish(p, "paused", reason=why))
+        self.control.checkpoint(path, lambda p, why: self.bus.publish(p, EventKind.PAUSED, reason=why))
         rec = self._begin(path, primitive=call.primitive, arm=arm)
         embodiment_error = self._embodiment_error(arm)
         if embodiment_error:
@@ -238,7 +238,7 @@ class Executor:
             if reanchor is not None:
                 action += f"+reapproach:{reanchor.primitive}"
             rec.recoveries.append(f"tier{tier}:{action}")
-            self.bus.publish(path, "retrying", attempt=rec.retries, tier=tier, action=action,
+            self.bus.publish(path, EventKind.RETRYING, attempt=rec.retries, tier=tier, action=action,
                              failure=(outcome.failure or FailureKind.CONTROL).value, reason=outcome.reason)
             rec.sim_time_s += self._recover(tier, call, arm, keypoints, reanchor)
             self.control.check_abort(path)

@@ -1,4 +1,5 @@
-"""The seams the executor runs against: how labels become keypoints and how primitives become motion."""
+"""The seams the executor runs against: how labels become keypoints (the Resolver protocol, defined in perception
+where planning sees it too) and how primitives become motion."""
 
 from __future__ import annotations
 
@@ -8,6 +9,9 @@ from typing import Any, Mapping, Protocol, runtime_checkable
 
 from ..grammar import PrimitiveCall
 from ..perception import Keypoint
+from ..perception.resolver_protocol import Resolver
+
+__all__ = ["ActionOutcome", "Actuator", "FailureKind", "Resolver"]
 
 
 class FailureKind(str, enum.Enum):
@@ -38,19 +42,6 @@ class ActionOutcome:
     @classmethod
     def fail(cls, reason: str, failure: FailureKind = FailureKind.CONTROL, sim_time_s: float = 0.0, **detail: Any) -> "ActionOutcome":
         return cls(False, sim_time_s, reason, failure, detail)
-
-
-@runtime_checkable
-class Resolver(Protocol):
-    """label -> Keypoint from the latest perception, at the moment a node runs."""
-
-    def resolve(self, label: str) -> Keypoint:
-        """Raises perception.LabelNotFound when the label has no single confident detection."""
-        ...
-
-    def refresh(self) -> None:
-        """Re-detect (new images, new masks) so the next resolve sees the current scene."""
-        ...
 
 
 @runtime_checkable

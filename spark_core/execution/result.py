@@ -2,11 +2,30 @@
 
 from __future__ import annotations
 
+import enum
 from dataclasses import asdict, dataclass, field
 from typing import Any
 
 from .events import Event
 from .protocols import FailureKind
+
+
+class NodeStatus(enum.StrEnum):
+    """A node's life cycle: pending -> running -> succeeded | failed | aborted. Shared with the API and UI."""
+
+    PENDING = "pending"
+    RUNNING = "running"
+    SUCCEEDED = "succeeded"
+    FAILED = "failed"
+    ABORTED = "aborted"
+
+
+class TreeStatus(enum.StrEnum):
+    """How the executor ended the whole tree (`TrialResult.outcome`)."""
+
+    SUCCESS = "success"
+    FAILURE = "failure"
+    ABORTED = "aborted"
 
 
 @dataclass
@@ -16,7 +35,7 @@ class NodeRecord:
     path: str
     kind: str  # primitive name or composite type
     arm: str | None = None
-    status: str = "pending"  # pending | running | succeeded | failed | aborted
+    status: str = NodeStatus.PENDING.value  # a NodeStatus value
     attempts: int = 0
     retries: int = 0
     started_t: float | None = None
@@ -42,7 +61,7 @@ class NodeRecord:
 @dataclass
 class TrialResult:
     trial_id: str
-    outcome: str  # success | failure | aborted
+    outcome: str  # a TreeStatus value
     failure: FailureKind | None
     failed_node: str | None
     reason: str

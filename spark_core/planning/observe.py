@@ -7,8 +7,8 @@ action needs, e.g. a drawer's handle) is handed to perception, and only what per
 from __future__ import annotations
 
 from ..perception import Keypoint, LabelNotFound
+from ..perception.resolver_protocol import Resolver
 from ..perception.summary import summarise
-from ..execution.protocols import Resolver
 from .protocol import SceneView
 from .rules.parse import ParseError, is_pronoun, parse_instruction
 
@@ -54,3 +54,15 @@ def arm_tools(world) -> dict[str, str]:
     """Arms that carry a tool fixed in place of fingers, and the tool: such an arm wipes but cannot grasp."""
     tools = {a: world.kinematics[a].robot.gripper.mounted_tool for a in world.arms}
     return {a: t for a, t in tools.items() if t}
+
+
+def annotated_view(view: SceneView, resolver: Resolver) -> SceneView:
+    """Multimodal planners also get the first camera's image with the detections drawn on it (when the
+    resolver looks through cameras at all)."""
+    frames = getattr(resolver, "frames", None)
+    if not frames:
+        return view
+    from ..perception.annotate import annotate
+
+    frame = next(iter(frames.values()))
+    return SceneView(view.keypoints, view.summary, annotate(frame, [], view.keypoints))

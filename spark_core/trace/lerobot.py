@@ -122,7 +122,7 @@ def export_lerobot(store: TraceStore, out_dir: str | Path, flt: ExportFilter = E
                 "spark/plan_text": trial["plan_text"], "spark/outcome": trial["outcome"],
                 "spark/success": bool(trial["success"]), "spark/failure": trial["failure"] or "",
                 "spark/failed_node": trial["failed_node"] or "", "spark/reason": trial["reason"] or "",
-                "spark/planner": trial["planner"], "spark/segmenter": trial["resolver"],
+                "spark/planner": trial["planner"], "spark/segmenter": trial["segmenter"],
                 "spark/protocol": json.dumps(trial["protocol"]), "spark/segments": json.dumps(ep["segments"])}
         episode_rows.append(row)
         index += n
@@ -145,7 +145,7 @@ def export_lerobot(store: TraceStore, out_dir: str | Path, flt: ExportFilter = E
                             "when the frame was taken, its node in the behavior tree, its object label) and "
                             "subtask_index; per episode: spark/* columns of meta/episodes",
                   "success_only": flt.success_only,
-                  "protocols": sorted({f"planner={ep['trial']['planner']}, segmenter={ep['trial']['resolver']}"
+                  "protocols": sorted({f"planner={ep['trial']['planner']}, segmenter={ep['trial']['segmenter']}"
                                        for ep in episodes})},
     }
     (out / "meta/info.json").write_text(json.dumps(info, indent=2))

@@ -28,12 +28,13 @@ class TrialRow(Base):
     task: Mapped[str] = mapped_column(String(128), default="", index=True)
     seed: Mapped[int] = mapped_column(Integer, default=0)
     planner: Mapped[str] = mapped_column(String(64), default="")
-    resolver: Mapped[str] = mapped_column(String(128), default="")
+    segmenter: Mapped[str] = mapped_column(String(128), default="")  # perception backend (catalog name)
     protocol: Mapped[dict] = mapped_column(JSON, default=dict)  # planner, segmenter (privileged or not), versions
     plan_text: Mapped[str] = mapped_column(Text, default="")
     plan_tree: Mapped[dict | None] = mapped_column(JSON, nullable=True)
     outcome: Mapped[str] = mapped_column(String(16), default="", index=True)  # success|failure|aborted
     success: Mapped[bool | None] = mapped_column(Boolean, nullable=True, index=True)
+    verdict: Mapped[str | None] = mapped_column(String(16), nullable=True, index=True)  # spark_core.trial.Verdict
     failure: Mapped[str | None] = mapped_column(String(32), nullable=True)
     failed_node: Mapped[str | None] = mapped_column(String(256), nullable=True)
     reason: Mapped[str] = mapped_column(Text, default="")

@@ -12,7 +12,8 @@ from sqlalchemy.orm import Session, selectinload, sessionmaker
 from .models import BatchRow, EventRow, GroundingRow, PlanLibraryRow, TrialRow
 
 MIGRATIONS_DIR = Path(__file__).resolve().parents[2] / "migrations"
-SORTABLE = {"created_at", "task", "outcome", "wall_time_s", "sim_time_s", "cost_usd", "status"}
+SORTABLE = {"created_at", "task", "outcome", "verdict", "seed", "planner", "segmenter", "wall_time_s", "sim_time_s",
+            "cost_usd", "status"}
 
 
 def alembic_config(url: str, connection=None):
@@ -87,7 +88,9 @@ class TraceStore:
         with self.Session.begin() as s:
             rows = s.scalars(select(TrialRow).where(TrialRow.status.in_(("queued", "running")))).all()
             for row in rows:
-                row.status, row.outcome, row.reason = "interrupted", "aborted", reason
+                never_started = row.status == "queued"
+                row.status, row.outcome, row.verdict = "interrupted", "aborted", "interrupted"
+                row.reason = "the server stopped before the trial started" if never_started else reason
             return len(rows)
 
     def create_batch(self, batch_id: str, spec: dict) -> None:
@@ -131,6 +134,10 @@ class TraceStore:
         with self.Session() as s:
             return s.scalar(select(TrialRow.scene_states).where(TrialRow.id == trial_id))
 
+    def has_trial(self, trial_id: str) -> bool:
+        with self.Session() as s:
+            return s.scalar(select(TrialRow.id).where(TrialRow.id == trial_id)) is not None
+
     def get_trial(self, trial_id: str) -> dict | None:
         with self.Session() as s:
             row = s.scalars(select(TrialRow).where(TrialRow.id == trial_id)
@@ -163,7 +170,7 @@ class TraceStore:
             return list(s.scalars(q.order_by(TrialRow.created_at, TrialRow.id)).all())
 
     def list_trials(self, *, status: str | None = None, task: str | None = None, success: bool | None = None,
-                    batch: str | None = None,
+                    batch: str | None = None, verdict: str | None = None,
                     search: str | None = None, sort: str = "-created_at", limit: int = 50, offset: int = 0) -> tuple[int, list[dict]]:
         """(total matching, one page of summaries). `sort` is a column name, '-' for descending."""
         key = sort.lstrip("-")
@@ -176,6 +183,8 @@ class TraceStore:
             where.append(TrialRow.task == task)
         if batch:
             where.append(TrialRow.batch_id == batch)
+        if verdict:
+            where.append(TrialRow.verdict == verdict)
         if success is not None:
             # Beside a task, test success on the task's rows: SQLite (no statistics) would otherwise walk the
             # 2-valued success index, ~10x the rows. ifnull() keeps the planner off that index.

@@ -4,7 +4,6 @@ branches run concurrently, a hand-over never leaves the object unsupported, and 
 import numpy as np
 import pytest
 
-from spark_core.bench.trial import PerceptionConfig, run_reference_trial
 from spark_core.control.ur10 import STROKE_M, ur10
 from spark_core.execution import Executor, FailureKind
 from spark_core.execution.primitives import PrimitiveLibrary
@@ -12,9 +11,7 @@ from spark_core.grammar import parse_plan
 from spark_core.perception.privileged import PrivilegedResolver
 from spark_core.sim.embodiments import EMBODIMENTS
 from spark_core.sim.tasks import BIMANUAL, BUILTIN, TASKS
-
-PRIVILEGED = PerceptionConfig("privileged")
-
+from spark_core.trial import TrialConfig, run_trial
 
 def _run(task: str, seed: int = 0, embodiment: str | None = None, plan: str | None = None, monitor=None):
     spec = TASKS[task]
@@ -134,12 +131,14 @@ def test_two_arm_skills_refuse_a_one_arm_robot():
 
 
 def test_embodiment_registry_and_task_fit():
-    assert set(EMBODIMENTS) == {"panda", "ur10", "bimanual"}
+    from spark_core.catalog import EMBODIMENTS as CATALOGUED
+
+    assert set(EMBODIMENTS) == {"panda", "ur10", "bimanual"} == set(CATALOGUED)
     with pytest.raises(ValueError, match="needs one of the embodiments bimanual"):
         BIMANUAL["lift_tray"].make_world(0, "panda")
 
 
 @pytest.mark.parametrize("task", list(BIMANUAL))
 def test_bimanual_tasks_succeed_with_reference_plans(task):
-    out = run_reference_trial(TASKS[task], 1, perception=PRIVILEGED)
+    out = run_trial(TrialConfig(task, segmenter="privileged-keypoints", seed=1))
     assert out.success, (out.failure, out.reason)

@@ -137,20 +137,20 @@ SAMPLE = ["lift_block", "stack_two", "open_drawer", "turn_on_stove"]
 @pytest.mark.parametrize("task", [t for t in BUILTIN if t in SAMPLE] + [
     pytest.param(t, marks=pytest.mark.slow) for t in BUILTIN if t not in SAMPLE])
 def test_reference_plan_solves_the_task(task):
-    from spark_core.bench.trial import run_reference_trial
+    from spark_core.trial import TrialConfig, run_trial
 
-    out = run_reference_trial(BUILTIN[task], seed=0)
-    assert out.success, f"{out.outcome}: {out.failed_node} {out.reason}"
+    out = run_trial(TrialConfig(task, segmenter="privileged-keypoints", seed=0))
+    assert out.success, f"{out.verdict}: {out.failed_node} {out.reason}"
     assert "privileged:sim-state" in out.protocol["resolver"]
 
 
 @pytest.mark.parametrize("task", ["stack_two", pytest.param("block_in_drawer", marks=pytest.mark.slow)])
 def test_reference_plan_through_cameras_and_the_sim_segmenter(task):
     """The full perception path: cameras -> sim masks -> depth lifting -> keypoints, re-resolved every node."""
-    from spark_core.bench.trial import PerceptionConfig, run_reference_trial
+    from spark_core.trial import TrialConfig, run_trial
 
-    out = run_reference_trial(BUILTIN[task], seed=1, perception=PerceptionConfig("sim"))
-    assert out.success, f"{out.outcome}: {out.failed_node} {out.reason}"
+    out = run_trial(TrialConfig(task, segmenter="sim", seed=1))
+    assert out.success, f"{out.verdict}: {out.failed_node} {out.reason}"
     assert "sim segmenter (privileged masks)" in out.protocol["resolver"]
 
 

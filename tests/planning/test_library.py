@@ -43,7 +43,7 @@ def test_config_file_selects_backends_and_prices(tmp_path, monkeypatch):
 
 
 def test_cli_takes_the_planner_from_the_config(tmp_path, monkeypatch, capsys):
-    from spark_core.cli import main
+    from spark_cli import main
 
     (tmp_path / "spark.yaml").write_text("planner: openai\n")
     monkeypatch.chdir(tmp_path)

@@ -190,7 +190,7 @@ def test_rules_variants_are_deterministic():
 
 
 def test_cli_plans_through_an_openai_compatible_server(capsys):
-    from spark_core.cli import main
+    from spark_cli import main
 
     with FakeLLM("openai") as fake:
         fake.script = [("ok", GOOD)]

@@ -110,7 +110,7 @@ def test_plans_type_check_and_round_trip():
 
 def test_rules_plan_executes_in_physics_through_perception():
     """perception (sim masks) -> rules plan -> execution on the MuJoCo world."""
-    from spark_core.bench.trial import PerceptionConfig, make_resolver
+    from spark_core.perception.factory import make_resolver
     from spark_core.execution import Executor
     from spark_core.execution.primitives import PrimitiveLibrary
     from spark_core.planning.observe import observe
@@ -118,7 +118,7 @@ def test_rules_plan_executes_in_physics_through_perception():
 
     task = BUILTIN["stack_two"]
     world = task.make_world(3)
-    resolver = make_resolver(world, PerceptionConfig("sim"), 3)
+    resolver = make_resolver(world, "sim", 3)
     instruction = "put the crimson cube on top of the navy cube"
     res = RulesPlanner().plan(PlanRequest(instruction, observe(instruction, resolver)))
     assert res.ok, res.error

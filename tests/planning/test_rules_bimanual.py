@@ -3,7 +3,7 @@ plan it writes runs for real on the two-arm cell through cameras and the sim seg
 
 import numpy as np
 
-from spark_core.bench.trial import PerceptionConfig, make_resolver
+from spark_core.perception.factory import make_resolver
 from spark_core.execution import Executor
 from spark_core.execution.primitives import PrimitiveLibrary
 from spark_core.grammar import Composite
@@ -42,7 +42,7 @@ def test_rules_bimanual_plan_runs_on_the_two_arm_cell_with_perception():
     task = BIMANUAL["sort_bimanual"]
     world = task.make_world(2)
     try:
-        resolver = make_resolver(world, PerceptionConfig("sim"), 2)
+        resolver = make_resolver(world, "sim", 2)
         result = RulesPlanner().plan(PlanRequest(task.instruction, observe(task.instruction, resolver), arms=arm_bases(world)))
         assert result.ok and "arm: left" in result.text and "arm: right" in result.text
         trial = Executor(PrimitiveLibrary(world, resolver, seed=2), resolver).run(result.plan)

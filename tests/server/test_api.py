@@ -50,7 +50,7 @@ def test_health_grammar_tasks_validate(client):
 
 
 def test_create_run_get_list_delete(client):
-    r = client.post("/api/trials", json={"task": "lift_block", "resolver": "privileged", "seed": 2})
+    r = client.post("/api/trials", json={"task": "lift_block", "segmenter": "privileged-keypoints", "seed": 2})
     assert r.status_code == 202 and r.json()["status"] == "queued"
     trial_id = r.json()["id"]
     trial = wait_done(client, trial_id)
@@ -65,7 +65,7 @@ def test_create_run_get_list_delete(client):
 
 
 def test_rules_planner_trial_and_planner_refusal(client):
-    ok = client.post("/api/trials", json={"task": "stack_two", "planner": "rules", "resolver": "sim",
+    ok = client.post("/api/trials", json={"task": "stack_two", "planner": "rules", "segmenter": "sim",
                                           "instruction": "put the crimson cube on top of the navy cube"}).json()
     refused = client.post("/api/trials", json={"task": "stack_two", "planner": "rules", "instruction": "sing a song"}).json()
     assert wait_done(client, ok["id"])["success"] is True
@@ -74,7 +74,7 @@ def test_rules_planner_trial_and_planner_refusal(client):
 
 
 def test_breakpoint_step_resume_and_live_events(client):
-    r = client.post("/api/trials", json={"task": "stack_two", "resolver": "privileged",
+    r = client.post("/api/trials", json={"task": "stack_two", "segmenter": "privileged-keypoints",
                                          "breakpoints": ["tree.children[1]"]}).json()
     trial_id = r["id"]
     with client.websocket_connect(f"/api/trials/{trial_id}/events") as ws:
@@ -132,7 +132,7 @@ def test_api_benchmark_runs_on_a_bulk_store():
 
 
 def test_twenty_submissions_with_two_workers_all_complete(client):
-    ids = [client.post("/api/trials", json={"task": "lift_block", "resolver": "privileged", "seed": i}).json()["id"]
+    ids = [client.post("/api/trials", json={"task": "lift_block", "segmenter": "privileged-keypoints", "seed": i}).json()["id"]
            for i in range(20)]
     queued = client.get("/api/trials", params={"limit": 500}).json()
     assert queued["total"] == 20  # every submission is recorded at once, before any runs
@@ -154,7 +154,7 @@ def test_mutating_calls_are_rate_limited(tmp_path):
 def test_detection_images_are_stored_with_their_hash(client):
     import hashlib
 
-    tid = client.post("/api/trials", json={"task": "stack_two", "resolver": "sim"}).json()["id"]
+    tid = client.post("/api/trials", json={"task": "stack_two", "segmenter": "sim"}).json()["id"]
     trial = wait_done(client, tid)
     arts = {a["camera"]: a for a in trial["artifacts"]}
     assert set(arts) == {"agentview", "side"}
@@ -165,7 +165,7 @@ def test_detection_images_are_stored_with_their_hash(client):
 
 
 def test_batch_progress_results_and_cancel(client):
-    r = client.post("/api/batches", json={"tasks": ["lift_block", "push_to_zone"], "trials": 2, "resolver": "privileged"})
+    r = client.post("/api/batches", json={"tasks": ["lift_block", "push_to_zone"], "trials": 2, "segmenter": "privileged-keypoints"})
     assert r.status_code == 202 and r.json()["trials"] == 4
     bid = r.json()["id"]
     b = wait_batch(client, bid, lambda b: b["status"] == "done")
@@ -173,7 +173,7 @@ def test_batch_progress_results_and_cancel(client):
     assert {row["task"]: (row["successes"], row["total"]) for row in b["results"]} == {"lift_block": (2, 2), "push_to_zone": (2, 2)}
     assert client.get("/api/trials", params={"batch": bid}).json()["total"] == 4
 
-    big = client.post("/api/batches", json={"tasks": ["stack_three"], "trials": 8, "resolver": "privileged"}).json()["id"]
+    big = client.post("/api/batches", json={"tasks": ["stack_three"], "trials": 8, "segmenter": "privileged-keypoints"}).json()["id"]
     cancel = client.post(f"/api/batches/{big}/cancel").json()
     assert cancel["cancelled"] >= 6  # with 2 workers most of the 8 were still queued
     b = wait_batch(client, big, lambda b: b["progress"]["done"] == 8)
@@ -185,7 +185,7 @@ def test_batch_progress_results_and_cancel(client):
 
 def test_dashboard_stream_announces_every_status_change(client):
     with client.websocket_connect("/api/events") as ws:
-        tid = client.post("/api/trials", json={"task": "lift_block", "resolver": "privileged"}).json()["id"]
+        tid = client.post("/api/trials", json={"task": "lift_block", "segmenter": "privileged-keypoints"}).json()["id"]
         seen = []
         while not seen or seen[-1][1] != "done":
             ev = ws.receive_json()
@@ -200,14 +200,14 @@ def test_a_crashing_trial_fails_with_its_reason_and_the_worker_lives_on(client):
     assert trial["success"] is False and trial["failure"] == "planner"
     assert trial["reason"] == "planner 'openai' unavailable: the openai planner needs --model (e.g. gpt-4.1, or the name your local server serves)"
     assert client.get("/api/health").json() == {"status": "ok"}
-    again = client.post("/api/trials", json={"task": "lift_block", "resolver": "privileged"}).json()["id"]
+    again = client.post("/api/trials", json={"task": "lift_block", "segmenter": "privileged-keypoints"}).json()["id"]
     assert wait_done(client, again)["success"] is True  # the same worker processes keep serving
 
 
 def test_batch_from_an_explicit_spec_list_exports_csv(client):
-    specs = [{"task": "lift_block", "seed": 3, "resolver": "privileged"},
-             {"task": "lift_block", "seed": 4, "instruction": "lift the red block", "resolver": "privileged"},
-             {"task": "push_to_zone", "seed": 1, "resolver": "privileged"}]
+    specs = [{"task": "lift_block", "seed": 3, "segmenter": "privileged-keypoints"},
+             {"task": "lift_block", "seed": 4, "instruction": "lift the red block", "segmenter": "privileged-keypoints"},
+             {"task": "push_to_zone", "seed": 1, "segmenter": "privileged-keypoints"}]
     bid = client.post("/api/batches", json={"specs": specs}).json()["id"]
     for _ in range(1200):
         b = client.get(f"/api/batches/{bid}").json()
@@ -233,8 +233,8 @@ def test_batch_from_an_explicit_spec_list_exports_csv(client):
 
 
 def test_trials_on_other_embodiments(client):
-    ur = client.post("/api/trials", json={"task": "stack_two", "resolver": "privileged", "embodiment": "ur10"}).json()["id"]
-    two = client.post("/api/trials", json={"task": "handover_bar", "resolver": "privileged"}).json()["id"]
+    ur = client.post("/api/trials", json={"task": "stack_two", "segmenter": "privileged-keypoints", "embodiment": "ur10"}).json()["id"]
+    two = client.post("/api/trials", json={"task": "handover_bar", "segmenter": "privileged-keypoints"}).json()["id"]
     bad = client.post("/api/trials", json={"task": "lift_tray", "embodiment": "ur10"})
     assert bad.status_code == 422 and "runs on bimanual" in bad.json()["detail"]
     done = wait_done(client, ur)
@@ -254,7 +254,7 @@ def test_a_suite_without_reference_plans_needs_a_planner(client):
 
 def test_a_capbench_batch_runs_in_the_console(client):
     pytest.importorskip("robosuite", reason="benchmark extras: make bench-deps")
-    r = client.post("/api/batches", json={"suite": "capbench", "tasks": ["Lift"], "trials": 2, "resolver": "privileged"})
+    r = client.post("/api/batches", json={"suite": "capbench", "tasks": ["Lift"], "trials": 2, "segmenter": "privileged-keypoints"})
     assert r.status_code == 202
     b = wait_batch(client, r.json()["id"], lambda b: b["status"] == "done")
     assert b["progress"] == {"done": 2, "total": 2}

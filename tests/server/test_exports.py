@@ -18,9 +18,9 @@ def test_batch_and_selection_export_as_lerobot_zip(tmp_path):
     settings = Settings(store_url=f"sqlite:///{tmp_path / 'e.db'}", workers=2, viser=False,
                         artifacts_dir=str(tmp_path / "art"), exports_dir=str(tmp_path / "exports"))
     with TestClient(create_app(settings)) as c:
-        bid = c.post("/api/batches", json={"tasks": ["lift_block"], "trials": 2, "resolver": "privileged",
+        bid = c.post("/api/batches", json={"tasks": ["lift_block"], "trials": 2, "segmenter": "privileged-keypoints",
                                            "capture": True}).json()["id"]
-        plain = c.post("/api/trials", json={"task": "lift_block", "resolver": "privileged"}).json()["id"]
+        plain = c.post("/api/trials", json={"task": "lift_block", "segmenter": "privileged-keypoints"}).json()["id"]
         for _ in range(1200):
             if c.get(f"/api/batches/{bid}").json()["status"] == "done":
                 break

@@ -29,7 +29,7 @@ def _app(tmp_path, **kw):
 
 def _paused_trial(c) -> dict:
     """A trial paused before its first primitive, i.e. mid-trial inside its worker process."""
-    tid = c.post("/api/trials", json={"task": "lift_block", "resolver": "privileged", "start_paused": True}).json()["id"]
+    tid = c.post("/api/trials", json={"task": "lift_block", "segmenter": "privileged-keypoints", "start_paused": True}).json()["id"]
     for _ in range(1200):
         t = c.get(f"/api/trials/{tid}").json()
         if any(e["kind"] == "paused" for e in t["events"]):
@@ -57,7 +57,7 @@ def test_killing_the_worker_fails_the_trial_with_the_reason_and_the_console_carr
         assert f"worker process {pid} died (killed by SIGKILL)" in done["reason"]
         assert ("tree.children[0]", "paused") in [(e["node_path"], e["kind"]) for e in done["events"]]  # kept
         assert c.get("/api/health").json() == {"status": "ok"}
-        nxt = c.post("/api/trials", json={"task": "lift_block", "resolver": "privileged"}).json()["id"]
+        nxt = c.post("/api/trials", json={"task": "lift_block", "segmenter": "privileged-keypoints"}).json()["id"]
         again = wait_done(c, nxt)
         assert again["success"] is True and again["protocol"]["worker_pid"] != pid  # a fresh process
 
@@ -71,7 +71,7 @@ def test_a_frozen_worker_is_killed_after_the_hang_timeout(tmp_path):
         done = wait_done(c, trial["id"], timeout=60)
         assert done["failure"] == "worker" and "stopped responding for 3 s and was killed" in done["reason"]
         assert not _alive(trial["worker_pid"])
-        nxt = c.post("/api/trials", json={"task": "lift_block", "resolver": "privileged"}).json()["id"]
+        nxt = c.post("/api/trials", json={"task": "lift_block", "segmenter": "privileged-keypoints"}).json()["id"]
         assert wait_done(c, nxt)["success"] is True
 
 
@@ -87,12 +87,12 @@ def test_an_exception_inside_the_worker_is_recorded_and_the_worker_lives_on(tmp_
         "TASKS['close_drawer'] = dataclasses.replace(TASKS['close_drawer'], setup=crash)\n")
     monkeypatch.setenv("PYTHONPATH", f"{plugin}{os.pathsep}{os.environ.get('PYTHONPATH', '')}")
     with TestClient(_app(tmp_path)) as c:
-        tid = c.post("/api/trials", json={"task": "close_drawer", "resolver": "privileged"}).json()["id"]
+        tid = c.post("/api/trials", json={"task": "close_drawer", "segmenter": "privileged-keypoints"}).json()["id"]
         trial = wait_done(c, tid)
         assert trial["success"] is False and trial["failure"] == "internal"
         assert "internal error: RuntimeError: simulated crash inside the trial" in trial["reason"]
         assert "Traceback" in trial["protocol"]["traceback"]
-        ok = c.post("/api/trials", json={"task": "lift_block", "resolver": "privileged"}).json()["id"]
+        ok = c.post("/api/trials", json={"task": "lift_block", "segmenter": "privileged-keypoints"}).json()["id"]
         done = wait_done(c, ok)
         assert done["success"] is True and done["protocol"]["worker_pid"] == trial["protocol"]["worker_pid"]
 
@@ -105,7 +105,7 @@ def _free_port() -> int:
 
 def _serve(port: int, db: Path, log: Path) -> subprocess.Popen:
     env = {**os.environ, "SPARK_VISER": "0", "SPARK_WORKERS": "1", "SPARK_ARTIFACTS_DIR": str(db.parent / "art")}
-    return subprocess.Popen([sys.executable, "-m", "spark_core.cli", "serve", "--port", str(port), "--store",
+    return subprocess.Popen([sys.executable, "-m", "spark_cli", "serve", "--port", str(port), "--store",
                              f"sqlite:///{db}"], cwd=ROOT, env=env, stdout=log.open("ab"), stderr=subprocess.STDOUT)
 
 
@@ -129,7 +129,7 @@ def test_restarting_the_server_process_mid_trial_marks_the_trial_interrupted(tmp
     proc = _serve(port, db, log)
     try:
         _wait_up(url, proc, log)
-        tid = httpx.post(url + "/api/trials", json={"task": "lift_block", "resolver": "privileged",
+        tid = httpx.post(url + "/api/trials", json={"task": "lift_block", "segmenter": "privileged-keypoints",
                                                     "start_paused": True}).json()["id"]
         for _ in range(1200):
             t = httpx.get(f"{url}/api/trials/{tid}").json()

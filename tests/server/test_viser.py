@@ -55,7 +55,7 @@ def test_trials_stream_into_the_view_which_is_relayed_from_the_console_origin_an
         page = c.get("/viser/")
         assert page.status_code == 200 and "<script" in page.text  # viser's own client, from our origin
         scene = c.app.state.scene
-        tid = c.post("/api/trials", json={"task": "lift_block", "resolver": "sim"}).json()["id"]
+        tid = c.post("/api/trials", json={"task": "lift_block", "segmenter": "sim"}).json()["id"]
         trial = wait_done(c, tid)
         assert trial["success"] is True
         assert c.get("/api/viser").json()["frames_published"] > 10 and scene.current == tid
@@ -99,7 +99,7 @@ def test_websockets_need_the_token_beyond_loopback(tmp_path):
 
 
 def test_frame_rate_benchmark_runs():
-    from server.bench_viser import run, section
+    from spark_cli.console_bench.viser import run, section
 
     r = run(task="lift_block", seeds=1)
     assert r["fps_mean"] > 0 and r["fps_min"] <= r["fps_mean"]

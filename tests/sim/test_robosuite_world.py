@@ -10,7 +10,7 @@ import pytest
 
 pytest.importorskip("robosuite", reason="benchmark extras: make bench-deps")
 
-from spark_core.bench.trial import PerceptionConfig, run_reference_trial  # noqa: E402
+from spark_core.trial import TrialConfig, Verdict, run_trial  # noqa: E402
 from spark_core.control.trajectory import JointTrajectory  # noqa: E402
 from spark_core.perception.privileged import PrivilegedResolver  # noqa: E402
 from spark_core.sim.capbench_envs import make_env  # noqa: E402
@@ -95,39 +95,35 @@ def test_a_part_made_of_geoms_is_its_own_keypoint_and_its_own_mask():
         w.close()
 
 
-def test_a_trial_past_the_horizon_fails():
-    task = dataclasses.replace(TASKS["Lift"], max_sim_s=1.0)
-    out = run_reference_trial(task, 0)
-    assert not out.success and "horizon" in out.reason
+def test_a_trial_past_its_time_limit_is_a_timeout_and_stops_there():
+    out = run_trial(TrialConfig("Lift", segmenter="privileged-keypoints", time_limit_s=1.0))
+    assert out.verdict is Verdict.TIMEOUT and out.task_success is False and "time limit" in out.reason
+    assert out.sim_time_s < 12.0  # aborted at the next node, not run to the end of the plan
 
 
 @pytest.mark.parametrize("task", list(SUITES["capbench"]))
 def test_every_capbench_task_runs_one_trial_to_an_outcome(task):
-    out = run_reference_trial(TASKS[task], 0)
-    assert out.outcome in ("success", "failure")
+    out = run_trial(TrialConfig(task, segmenter="privileged-keypoints"))
+    assert out.tree_status in ("success", "failure")
     assert out.sim_time_s > 0 and out.protocol["planner"].startswith("reference")
 
 
 def test_capbench_lift_through_cameras_and_the_sim_segmenter():
-    out = run_reference_trial(TASKS["Lift"], 1, perception=PerceptionConfig("sim", cameras=("agentview", "sideview")))
-    assert out.outcome in ("success", "failure")
+    out = run_trial(TrialConfig("Lift", segmenter="sim", cameras=("agentview", "sideview"), seed=1))
+    assert out.tree_status in ("success", "failure")
     assert out.phases_s["rendering"] > 0  # perception drew robosuite's cameras
 
 
 def test_place_over_puts_the_nut_around_the_peg():
     """place_over lines up the held nut's centre (not the hand) with the peg: without that the nut jams on top."""
-    from spark_core.execution import RecoveryPolicy
-
-    out = run_reference_trial(TASKS["NutAssemblySquare"], 0, recovery=RecoveryPolicy(max_retries=0))
+    out = run_trial(TrialConfig("NutAssemblySquare", segmenter="privileged-keypoints", recovery=False))
     assert out.success, out.reason
 
 
 def test_handoff_of_a_short_handled_hammer_needs_no_recovery():
     """Seed 10's handle is 10.4 cm: the giver takes it next to the heavy head, the receiver the free end, the
     hands leaning apart so their wrists clear each other."""
-    from spark_core.execution import RecoveryPolicy
-
-    out = run_reference_trial(TASKS["TwoArmHandover"], 10, recovery=RecoveryPolicy(max_retries=0))
+    out = run_trial(TrialConfig("TwoArmHandover", segmenter="privileged-keypoints", seed=10, recovery=False))
     assert out.success, out.reason
 
 

@@ -9,12 +9,11 @@ import numpy as np
 import pyarrow.parquet as pq
 import pytest
 
-from spark_core.bench.trial import PerceptionConfig, run_reference_trial
-from spark_core.grammar import parse_plan
 from spark_core.sim.capture import CaptureConfig
-from spark_core.sim.tasks import BUILTIN
 from spark_core.trace import TraceStore
 from spark_core.trace.lerobot import ExportError, ExportFilter, export_lerobot
+from spark_core.trace.sink import StoreSink
+from spark_core.trial import TrialConfig, run_trial
 
 FAILING = "task: miss\ntree: {type: sequence, children: [{primitive: pick, params: {keypoint_label: purple giraffe}}]}\n"
 
@@ -24,12 +23,12 @@ def recorded(tmp_path_factory):
     root = tmp_path_factory.mktemp("export")
     store = TraceStore(f"sqlite:///{root / 't.db'}")
     cfg = CaptureConfig(fps=10, width=128, height=128)
-    privileged = PerceptionConfig("privileged")
-    ok = [run_reference_trial(BUILTIN[t], s, perception=privileged, store=store, capture=cfg, artifacts_dir=root / "art")
+    sinks = [StoreSink(store, root / "art")]
+    ok = [run_trial(TrialConfig(t, segmenter="privileged-keypoints", seed=s, capture=cfg), sinks)
           for t, s in (("lift_block", 0), ("stack_two", 1))]
-    bad = run_reference_trial(BUILTIN["lift_block"], 2, plan=parse_plan(FAILING), perception=privileged, store=store,
-                              capture=cfg, artifacts_dir=root / "art")
-    run_reference_trial(BUILTIN["lift_block"], 3, perception=privileged, store=store)  # not captured
+    bad = run_trial(TrialConfig("lift_block", plan_text=FAILING, segmenter="privileged-keypoints", seed=2, capture=cfg),
+                    sinks)
+    run_trial(TrialConfig("lift_block", segmenter="privileged-keypoints", seed=3), sinks)  # not captured
     assert [o.success for o in ok] == [True, True] and bad.success is False
     return store, root
 

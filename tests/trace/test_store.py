@@ -31,11 +31,11 @@ def test_migrations_empty_to_head_down_and_up_again(tmp_path):
 
 @pytest.fixture(scope="module")
 def recorded(tmp_path_factory):
-    from spark_core.bench.trial import PerceptionConfig, run_reference_trial
-    from spark_core.sim.tasks import BUILTIN
+    from spark_core.trace.sink import StoreSink
+    from spark_core.trial import TrialConfig, run_trial
 
     store = TraceStore(f"sqlite:///{tmp_path_factory.mktemp('db') / 'trace.db'}")
-    out = run_reference_trial(BUILTIN["lift_block"], 0, perception=PerceptionConfig("sim"), store=store)
+    out = run_trial(TrialConfig("lift_block", segmenter="sim"), [StoreSink(store)])
     return store, out
 
 
@@ -45,11 +45,12 @@ def test_a_physics_trial_is_recorded_completely(recorded):
     assert total == 1
     trial = store.get_trial(rows[0]["id"])
     assert trial["status"] == "done" and trial["success"] is True and trial["outcome"] == "success"
+    assert trial["verdict"] == "success" and trial["segmenter"] == "sim"
     assert trial["task"] == "lift_block" and trial["plan_text"].startswith("task: pick up the red block")
     assert [(e["node_path"], e["kind"]) for e in trial["events"]] == [(e.node_path, e.kind) for e in out.result.events]
     assert trial["groundings"] and trial["groundings"][0]["label"] == "red block"
     assert "chosen" in trial["groundings"][0]["cameras"]["agentview"]
-    assert "privileged masks" in trial["protocol"]["resolver"]
+    assert trial["protocol"]["privileged"] is True and "ORACLE" in trial["protocol"]["segmenter_description"]
     traj = trial["trajectory"]
     assert len(traj) > 100 and abs(traj[1][0] - traj[0][0] - 0.01) < 1e-6 and len(traj[0][2]) == 7
     assert trial["nodes"]["tree.children[0]"]["kind"] == "pick"
@@ -82,14 +83,16 @@ def test_unfinished_trials_are_interrupted_not_lost(tmp_path):
     again = TraceStore(url)  # a restarted server
     assert again.interrupt_unfinished() == 2
     assert again.get_trial("a")["status"] == "interrupted" and "server stopped" in again.get_trial("a")["reason"]
+    assert {again.get_trial(t)["verdict"] for t in "ab"} == {"interrupted"}
+    assert "before the trial started" in again.get_trial("b")["reason"]  # queued: it never ran
     assert again.get_trial("c")["status"] == "done"
 
 
 def test_spark_run_records_and_spark_trials_lists(tmp_path, capsys):
-    from spark_core.cli import main
+    from spark_cli import main
 
     url = f"sqlite:///{tmp_path / 'cli.db'}"
-    assert main(["run", "lift_block", "--resolver", "privileged", "--store", url]) == 0
+    assert main(["run", "lift_block", "--segmenter", "privileged-keypoints", "--store", url]) == 0
     assert main(["trials", "--store", url]) == 0
     out = capsys.readouterr().out
     assert "1 trial(s)" in out and "lift_block" in out and "reference" in out

@@ -60,7 +60,7 @@ def shot(page, name):
 def test_submit_step_breakpoint_resume_and_history(server, page):
     page.goto(server + "/")
     page.select_option("select[name=task]", "stack_two")
-    page.select_option("select[name=resolver]", "sim")  # cameras + masks: the trial has detection images
+    page.select_option("select[name=segmenter]", "sim")  # cameras + masks: the trial has detection images
     page.check("input[name=start_paused]")
     page.click("button[type=submit]")
     page.wait_for_url("**/#/trial/stack_two-*")
@@ -129,7 +129,7 @@ def test_batch_from_the_form_shows_progress_and_results(server, page):
     page.wait_for_selector("#new-batch select[name=tasks]")
     page.select_option("#new-batch select[name=tasks]", ["lift_block", "push_to_zone"])
     page.fill("#new-batch input[name=trials]", "2")
-    page.select_option("#new-batch select[name=resolver]", "privileged")
+    page.select_option("#new-batch select[name=segmenter]", "privileged-keypoints")
     page.click("#new-batch button[type=submit]")
     page.wait_for_url("**/#/batch/batch-*")
     page.wait_for_selector("#batch-count:has-text('4 / 4 · done')", timeout=120_000)
@@ -151,7 +151,7 @@ def test_history_selection_exports_a_lerobot_dataset(server, page):
     import zipfile
 
     req = urllib.request.Request(server + "/api/trials", method="POST", headers={"content-type": "application/json"},
-                                 data=json.dumps({"task": "lift_block", "resolver": "privileged", "capture": True}).encode())
+                                 data=json.dumps({"task": "lift_block", "segmenter": "privileged-keypoints", "capture": True}).encode())
     tid = json.loads(urllib.request.urlopen(req).read())["id"]
     for _ in range(1200):
         if json.loads(urllib.request.urlopen(f"{server}/api/trials/{tid}").read())["status"] == "done":

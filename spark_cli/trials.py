@@ -32,7 +32,7 @@ def register(sub) -> None:
 
 def _cmd_trials(args: argparse.Namespace) -> int:
     """List recorded trials, or show one as JSON."""
-    from ..trace import TraceStore
+    from spark_core.trace import TraceStore
 
     store = TraceStore(args.store)
     if args.id:
@@ -45,8 +45,7 @@ def _cmd_trials(args: argparse.Namespace) -> int:
     total, rows = store.list_trials(task=args.task, limit=args.limit)
     print(f"{total} trial(s) in {args.store}; newest {len(rows)}:")
     for r in rows:
-        ok = {True: "ok  ", False: "FAIL", None: "-   "}[r["success"]]
-        print(f"  {r['created_at'][:19]}  {ok} {r['id']:<34} {r['task']:<16} {r['planner']:<9} {r['instruction'][:50]!r}")
+        print(f"  {r['created_at'][:19]}  {r['verdict'] or r['status']:<13} {r['id']:<34} {r['task']:<16} {r['planner']:<9} {r['instruction'][:50]!r}")
     return 0
 
 
@@ -61,9 +60,9 @@ def _date(text: str):
 
 def _cmd_export(args: argparse.Namespace) -> int:
     """Recorded trials (captured with frames) -> a LeRobot v3.0 dataset with SPARK's per-frame labels."""
-    from ..sim.tasks import BUILTIN
-    from ..trace import TraceStore
-    from ..trace.lerobot import ExportError, ExportFilter, export_lerobot
+    from spark_core.sim.tasks import BUILTIN
+    from spark_core.trace import TraceStore
+    from spark_core.trace.lerobot import ExportError, ExportFilter, export_lerobot
 
     tasks = tuple(args.task) or (tuple(BUILTIN) if args.suite == "builtin" else ())
     flt = ExportFilter(tasks=tasks, trial_ids=tuple(args.trial), batch=args.batch,

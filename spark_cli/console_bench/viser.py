@@ -10,11 +10,9 @@ from spark_core.bench.report import footer
 
 
 def run(task: str = "stack_three", seeds: int = 3) -> dict:
-    from spark_core.trace import TraceStore
-
-    from .runner import TrialRunner, TrialSpec
-    from .viser_scene import ViserScene
-    from spark_core.sim.tasks import BUILTIN
+    from server.runner import TrialRunner
+    from server.viser_scene import ViserScene
+    from spark_core import TraceStore, TrialConfig
 
     scene = ViserScene(rate_hz=30.0)
     rates = []
@@ -24,7 +22,7 @@ def run(task: str = "stack_three", seeds: int = 3) -> dict:
         try:
             for seed in range(seeds):
                 tid = f"viser-bench-{seed}"
-                runner.submit(tid, TrialSpec(task, BUILTIN[task].instruction, "reference", "sim", seed))
+                runner.submit(tid, TrialConfig(task, segmenter="sim", seed=seed).check())
                 while (store.get_trial(tid) or {}).get("status") == "queued":
                     time.sleep(0.005)
                 t0, k0 = time.perf_counter(), scene.ticks

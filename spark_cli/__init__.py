@@ -1,39 +1,39 @@
-"""The `spark` command: one module per command group (grammar, run, serve, trials, bench), each registering
-its subcommands here."""
+"""The `spark` command: one module per command group (grammar, catalog, run, serve, trials, bench), each
+registering its subcommands here. The one package that imports both the engine and the server."""
 
 from __future__ import annotations
 
 import argparse
 import sys
 
-from .. import __version__
-from . import bench, grammar, run, serve, trials
+from spark_core import __version__
+from . import bench, catalog, grammar, run, serve, trials
 
 
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="spark", description="SPARK: typed behavior trees over anchored keypoints.")
     p.add_argument("--version", action="version", version=f"spark {__version__}")
     sub = p.add_subparsers(dest="command", metavar="COMMAND")
-    for module in (grammar, run, serve, trials, bench):
+    for module in (grammar, catalog, run, serve, trials, bench):
         module.register(sub)
     return p
 
 
 def _apply_config(args: argparse.Namespace) -> None:
     """Settings from spark.yaml / SPARK_CONFIG fill in whatever the command line left unset."""
-    from ..config import load_config
+    from spark_core.config import load_config
 
     cfg = load_config()
-    for key in ("planner", "model", "base_url", "resolver", "plan_library"):
+    for key in ("planner", "model", "base_url", "segmenter", "plan_library"):
         if hasattr(args, key) and getattr(args, key) is None and getattr(cfg, key) is not None:
             setattr(args, key, getattr(cfg, key))
-    defaults = {"planner": "rules" if args.command == "plan" else "reference", "resolver": "sim",
+    defaults = {"planner": "rules" if args.command == "plan" else "reference", "segmenter": "sim",
                 "plan_library": "store"}
     for key, value in defaults.items():
         if hasattr(args, key) and getattr(args, key) is None:
             setattr(args, key, value)
     if cfg.prices:
-        from ..planning import pricing
+        from spark_core.planning import pricing
 
         pricing.PRICES_USD_PER_MTOK.update(cfg.prices)
 

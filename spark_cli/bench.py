@@ -5,31 +5,35 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+from dataclasses import replace
 from pathlib import Path
+
+from spark_core.catalog import EMBODIMENTS, PLANNERS, SEGMENTERS
 
 
 def register(sub) -> None:
     b = sub.add_parser("bench", help="run a benchmark and optionally write its section of BENCHMARKS.md")
     b.add_argument("suite", choices=["builtin", "bimanual", "capbench", "liberopro", "embodiments", "grounding", "paraphrases", "ik", "speed", "api", "latency",
                                      "viser", "export", "throughput"])
-    b.add_argument("--embodiment", help="robot set-up (panda, ur10, bimanual; default: the task's own)")
-    b.add_argument("--embodiments", nargs="+", default=["panda", "ur10", "bimanual"],
+    b.add_argument("--embodiment", choices=list(EMBODIMENTS), help="robot set-up (default: the task's own)")
+    b.add_argument("--embodiments", nargs="+", default=list(EMBODIMENTS), choices=list(EMBODIMENTS),
                    help="robot set-ups compared by the embodiments suite")
     b.add_argument("--trials", type=int, default=20, help="trials (seeds) per task")
     b.add_argument("--tasks", nargs="*", help="subset of task names")
     b.add_argument("--seed", type=int, default=0, help="first seed")
-    b.add_argument("--planner", default="reference", choices=["reference", "rules", "gemini", "openai"],
+    b.add_argument("--planner", default="reference", choices=list(PLANNERS),
                    help="reference (hand-written plans), or one planner call per trial (liberopro has no reference plans)")
-    b.add_argument("--resolver", "--segmenter", dest="resolver", default="privileged",
-                   choices=["privileged", "sim", "sim-noisy"],
-                   help="where keypoints come from: privileged (simulator state), or the sim / sim-noisy segmenter "
-                        "through the cameras (masks + depth)")
+    b.add_argument("--model", help="LLM model name for an LLM planner")
+    b.add_argument("--base-url", help="LLM endpoint for an LLM planner")
+    b.add_argument("--segmenter", default="privileged-keypoints", choices=list(SEGMENTERS),
+                   help="perception backend: privileged-keypoints (simulator state, no cameras), the sim / sim-noisy "
+                        "oracles through the cameras, or sam3 (`spark catalog` says which are privileged)")
     b.add_argument("--no-adaptive", action="store_true", help="one prompt per label (no adaptive self-consistency)")
     b.add_argument("--no-recovery", action="store_true", help="no retries (recovery tiers off)")
     b.add_argument("--miss-rate", type=float, default=0.2, help="sim-noisy detector miss rate")
-    b.add_argument("--cameras", nargs="+", help="cameras the resolver fuses (default: agentview side; robosuite "
+    b.add_argument("--cameras", nargs="+", help="cameras perception fuses (default: agentview side; robosuite "
                                                 "suites: agentview sideview)")
-    b.add_argument("--title", help="BENCHMARKS.md section title (default derived from the resolver)")
+    b.add_argument("--title", help="BENCHMARKS.md section title (default derived from the segmenter)")
     b.add_argument("--workers", type=int, default=1, help="worker processes (local pool) or CPUs (a local Ray cluster)")
     b.add_argument("--executor", choices=["local", "ray"], default="local",
                    help="local process pool, or Ray (a local cluster, or --ray-address for an existing one)")
@@ -46,29 +50,23 @@ def register(sub) -> None:
 
 def _simple_benches(args: argparse.Namespace) -> dict:
     """suite -> (BENCHMARKS.md title, run(), section(result, command)); imports stay lazy."""
-    from ..bench import control_bench
+    from spark_core.bench import control_bench
 
-    def server_bench(module: str):
-        import importlib
-
-        return importlib.import_module(f"server.{module}")
+    from .console_bench import api, latency, viser
 
     return {
         "ik": ("IK (Panda, pinocchio)", lambda: control_bench.ik_benchmark(args.targets), control_bench.ik_section),
         "speed": ("simulation speed", control_bench.speed_benchmark, control_bench.speed_section),
-        "api": ("console API latency", lambda: server_bench("bench_api").run(args.store_size),
-                lambda r, c: server_bench("bench_api").section(r, c)),
-        "latency": ("console event latency (executor to browser)", lambda: server_bench("bench_latency").run(),
-                    lambda r, c: server_bench("bench_latency").section(r, c)),
-        "viser": ("live 3D view frame rate", lambda: server_bench("bench_viser").run(),
-                  lambda r, c: server_bench("bench_viser").section(r, c)),
+        "api": ("console API latency", lambda: api.run(args.store_size), api.section),
+        "latency": ("console event latency (executor to browser)", latency.run, latency.section),
+        "viser": ("live 3D view frame rate", viser.run, viser.section),
         "export": ("training-data export (LeRobot)", lambda: _export_bench(args), _export_section),
         "throughput": ("batch throughput (local pool vs Ray)", lambda: _throughput(args), _throughput_section),
     }
 
 
 def _export_bench(args: argparse.Namespace) -> dict:
-    from ..bench import export_bench
+    from spark_core.bench import export_bench
 
     def progress(row: dict) -> None:
         print(f"{'ok  ' if row['success'] else 'FAIL'} {row['task']} seed {row['seed']} ({row['wall_time_s']:.1f} s)", flush=True)
@@ -77,26 +75,26 @@ def _export_bench(args: argparse.Namespace) -> dict:
 
 
 def _throughput(args: argparse.Namespace) -> dict:
-    from ..bench import throughput
+    from spark_core.bench import throughput
 
-    return throughput.run(args.trials, args.workers, args.resolver, tuple(args.suites))
+    return throughput.run(args.trials, args.workers, args.segmenter, tuple(args.suites))
 
 
 def _throughput_section(r: dict, command: str) -> str:
-    from ..bench import throughput
+    from spark_core.bench import throughput
 
     return throughput.section(r, command)
 
 
 def _export_section(r: dict, command: str) -> str:
-    from ..bench import export_bench
+    from spark_core.bench import export_bench
 
     return export_bench.section(r, command)
 
 
 def _cmd_bench(args: argparse.Namespace) -> int:
-    from ..bench import reference_suite
-    from ..bench.report import write_section
+    from spark_core.bench import reference_suite
+    from spark_core.bench.report import write_section
 
     command = "spark bench " + " ".join(sys.argv[2:]) if sys.argv[1:2] == ["bench"] else "spark bench " + args.suite
     simple = _simple_benches(args)  # suites whose result is one dict: print it, then its section
@@ -106,7 +104,7 @@ def _cmd_bench(args: argparse.Namespace) -> int:
         print(json.dumps(r, indent=2))
         body = section(r, command)
     elif args.suite == "paraphrases":
-        from ..bench import paraphrases
+        from spark_core.bench import paraphrases
 
         rows, errors = paraphrases.run(args.seed)
         for r in rows:
@@ -116,7 +114,7 @@ def _cmd_bench(args: argparse.Namespace) -> int:
         title, body = "rules planner on paraphrased instructions", paraphrases.section(rows, errors, command)
         print(body)
     elif args.suite == "grounding":
-        from ..bench import grounding
+        from spark_core.bench import grounding
 
         rows = grounding.run()
         for r in rows:
@@ -125,11 +123,9 @@ def _cmd_bench(args: argparse.Namespace) -> int:
         title, body = "perception grounding (sim segmenter)", grounding.section(rows, command)
         print(body)
     else:
-        from ..sim.tasks import SUITES
-
-        from ..bench.trial import PerceptionConfig
-        from ..execution import RecoveryPolicy
-        from ..perception.noisy_segmenter import NoiseModel
+        from spark_core.perception.noisy_segmenter import NoiseModel
+        from spark_core.sim.tasks import SUITES
+        from spark_core.trial import TrialConfig
 
         if args.suite == "liberopro" and args.planner == "reference":
             print("liberopro has no reference plans: pass --planner rules (offline) or an LLM planner", file=sys.stderr)
@@ -137,9 +133,10 @@ def _cmd_bench(args: argparse.Namespace) -> int:
         if args.suite == "embodiments" and args.planner != "reference":
             print("the embodiments suite compares reference plans: --planner reference", file=sys.stderr)
             return 2
-        perception = PerceptionConfig(args.resolver, not args.no_adaptive, NoiseModel(miss_rate=args.miss_rate),
-                                      tuple(args.cameras) if args.cameras else None)
-        recovery = RecoveryPolicy(max_retries=0) if args.no_recovery else RecoveryPolicy()
+        template = TrialConfig("", planner=args.planner, model=args.model, base_url=args.base_url,
+                               segmenter=args.segmenter, cameras=tuple(args.cameras) if args.cameras else None,
+                               noise=NoiseModel(miss_rate=args.miss_rate), recovery=not args.no_recovery,
+                               adaptive=not args.no_adaptive)
         suite = SUITES[args.suite if args.suite in ("bimanual", "capbench", "liberopro") else "builtin"]
         tasks = args.tasks or list(suite)
         unknown = [t for t in tasks if t not in suite]
@@ -151,26 +148,27 @@ def _cmd_bench(args: argparse.Namespace) -> int:
 
         def progress(row: dict) -> None:
             done[0] += 1
-            mark = "ok " if row["success"] else "FAIL"
+            mark = "ok " if row["success"] else row["verdict"]
             print(f"[{done[0]:>4}/{total}] {mark} {row['task']} seed {row['seed']} "
                   f"({row['sim_time_s']:.1f} s sim, {row['wall_time_s']:.2f} s wall) {row['reason'][:100]}", flush=True)
 
         if args.suite == "embodiments":
             total *= len(args.embodiments)
-            by_emb = {e: reference_suite.run(tasks, args.trials, args.seed, args.workers, progress, perception, recovery, e)
-                      for e in args.embodiments}
-            title = args.title or f"builtin reference plans on every embodiment ({args.resolver} resolver)"
-            body = reference_suite.embodiment_section(by_emb, command, perception, recovery)
+            by_emb = {e: reference_suite.run(tasks, args.trials, args.seed, args.workers, progress,
+                                             replace(template, embodiment=e)) for e in args.embodiments}
+            title = args.title or f"builtin reference plans on every embodiment ({args.segmenter} segmenter)"
+            body = reference_suite.embodiment_section(by_emb, command, template)
             print(body)
             rows = [dict(r, embodiment=e) for e, rs in by_emb.items() for r in rs]
         else:
-            rows = reference_suite.run(tasks, args.trials, args.seed, args.workers, progress, perception, recovery,
-                                       args.embodiment, args.executor, args.ray_address, args.store, args.planner)
+            template = replace(template, embodiment=args.embodiment)
+            rows = reference_suite.run(tasks, args.trials, args.seed, args.workers, progress, template,
+                                       args.executor, args.ray_address, args.store)
             print(reference_suite.table(rows))
             suffix = "" if args.embodiment in (None, "panda") else f", {args.embodiment}"
             plans = "reference plans" if args.planner == "reference" else f"{args.planner} planner"
-            title = args.title or f"{args.suite} {plans} ({args.resolver} resolver{suffix})"
-            body = reference_suite.section(rows, command, perception, recovery, args.executor, args.planner)
+            title = args.title or f"{args.suite} {plans} ({args.segmenter} segmenter{suffix})"
+            body = reference_suite.section(rows, command, template, args.executor)
         if args.json:
             Path(args.json).write_text(json.dumps(rows, indent=1))
     if args.write:

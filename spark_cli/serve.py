@@ -22,6 +22,7 @@ def _cmd_serve(args: argparse.Namespace) -> int:
     import uvicorn
 
     from server.app import create_app
+    from server.security.serving import uvicorn_options
     from server.settings import Settings
 
     from dataclasses import replace
@@ -34,5 +35,5 @@ def _cmd_serve(args: argparse.Namespace) -> int:
         return 2
     os.environ.setdefault("MUJOCO_GL", "egl")
     print(f"SPARK console API on http://{settings.host}:{settings.port} (docs at /docs); store {settings.store_url}")
-    uvicorn.run(create_app(settings), host=settings.host, port=settings.port, log_level="info")
+    uvicorn.run(create_app(settings), host=settings.host, port=settings.port, log_level="info", **uvicorn_options())
     return 0

@@ -20,8 +20,8 @@ def register(sub) -> None:
 
 
 def _cmd_grammar(args: argparse.Namespace) -> int:
-    from ..grammar import plan_json_schema
-    from ..grammar.reference import markdown, table
+    from spark_core.grammar import plan_json_schema
+    from spark_core.grammar.reference import markdown, table
 
     if args.format == "md":
         print(markdown())
@@ -33,7 +33,7 @@ def _cmd_grammar(args: argparse.Namespace) -> int:
 
 
 def _cmd_validate(args: argparse.Namespace) -> int:
-    from ..grammar import to_yaml, validate
+    from spark_core.grammar import to_yaml, validate
 
     status = 0
     for name in args.plans:

@@ -14,8 +14,8 @@ from spark_core.bench.report import footer
 def run(n_trials: int = 10_000, n_requests: int = 200) -> dict:
     from fastapi.testclient import TestClient
 
-    from .app import create_app
-    from .settings import Settings
+    from server.app import create_app
+    from server.settings import Settings
 
     from spark_core.trace.models import EventRow, TrialRow
     from spark_core.trace.store import TraceStore

@@ -20,8 +20,8 @@ def run(trials: int = 3) -> dict:
     import uvicorn
     from playwright.sync_api import sync_playwright
 
-    from .app import create_app
-    from .settings import Settings
+    from server.app import create_app
+    from server.settings import Settings
 
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
@@ -41,7 +41,7 @@ def run(trials: int = 3) -> dict:
             page.goto(base + "/api/health")
             for k in range(trials):
                 req = urllib.request.Request(base + "/api/trials", method="POST", headers={"content-type": "application/json"},
-                                             data=json.dumps({"task": "stack_two", "resolver": "privileged", "seed": k,
+                                             data=json.dumps({"task": "stack_two", "segmenter": "privileged-keypoints", "seed": k,
                                                               "start_paused": True}).encode())
                 trial_id = json.loads(urllib.request.urlopen(req).read())["id"]
                 got = page.evaluate("""async ([id, base]) => {

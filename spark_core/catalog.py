@@ -1,0 +1,142 @@
+"""The one catalog of what a trial can be made of: planners, segmenters (each with its `privileged` flag),
+embodiments, suites and tasks, plus the closed sets the API and UI interpret (verdicts, node statuses, event
+kinds). The CLI's choices, the API's validation, `GET /api/catalog` and the browser UI all read it; nothing
+lists these names by hand anywhere else."""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass
+from typing import Any
+
+
+@dataclass(frozen=True)
+class PlannerEntry:
+    name: str
+    description: str
+    offline: bool  # runs with no network and no key
+    needs_model: bool = False  # the caller must name a model
+    default_model: str | None = None
+
+
+@dataclass(frozen=True)
+class SegmenterEntry:
+    """A perception backend. `privileged` entries read simulator state (renderer ids, object names or poses):
+    every figure they produce says so. `cameras` is False for the source that skips cameras altogether."""
+
+    name: str
+    description: str
+    privileged: bool
+    cameras: bool = True
+    needs: str = ""  # what must be on this machine (a checkpoint), in words
+
+
+@dataclass(frozen=True)
+class EmbodimentEntry:
+    name: str
+    description: str
+    arms: tuple[str, ...]
+
+
+PLANNERS: dict[str, PlannerEntry] = {p.name: p for p in (
+    PlannerEntry("reference", "the task's hand-written reference plan (no planner call)", offline=True),
+    PlannerEntry("rules", "offline rules planner: parses the instruction, grounds its phrases in what perception "
+                          "found", offline=True),
+    PlannerEntry("gemini", "Google Gemini through google-genai (GEMINI_API_KEY)", offline=False,
+                 default_model="gemini-3.1-pro-preview"),
+    PlannerEntry("openai", "any OpenAI-compatible chat server (OPENAI_API_KEY)", offline=False, needs_model=True),
+)}
+
+SEGMENTERS: dict[str, SegmenterEntry] = {s.name: s for s in (
+    SegmenterEntry("sim", "ORACLE masks from the renderer's object ids; prompts grounded against the simulator's "
+                          "object names", privileged=True),
+    SegmenterEntry("sim-noisy", "the sim oracle with a seeded failure model (misses, erosion, confusion, depth "
+                                "noise)", privileged=True),
+    SegmenterEntry("sam3", "SAM3 (transformers Sam3Model) on RGB; depth and camera parameters lift masks to 3D",
+                   privileged=False, needs="a SAM3 checkpoint directory (SPARK_SAM3_MODEL)"),
+    SegmenterEntry("privileged-keypoints", "ground-truth keypoints from simulator state: no cameras, no "
+                                           "segmentation (measures control alone)", privileged=True, cameras=False),
+)}
+
+EMBODIMENTS: dict[str, EmbodimentEntry] = {e.name: e for e in (
+    EmbodimentEntry("panda", "one Franka Panda", ("right",)),
+    EmbodimentEntry("ur10", "one UR10 with a Robotiq-2F-85-like gripper", ("right",)),
+    EmbodimentEntry("bimanual", "two Pandas 0.6 m apart over one table", ("left", "right")),
+)}
+
+
+class CatalogError(ValueError):
+    """A name that is not in the catalog; the message lists what is."""
+
+
+def _check(kind: str, name: str, names: Any) -> str:
+    if name not in names:
+        raise CatalogError(f"unknown {kind} {name!r}; available: {', '.join(names)}")
+    return name
+
+
+def check_planner(name: str) -> str:
+    return _check("planner", name, PLANNERS)
+
+
+def check_segmenter(name: str) -> str:
+    return _check("segmenter", name, SEGMENTERS)
+
+
+def check_embodiment(name: str) -> str:
+    return _check("embodiment", name, EMBODIMENTS)
+
+
+def suites() -> dict[str, list[str]]:
+    """suite -> task names (imports the simulator lazily: the grammar-only CLI stays fast)."""
+    from .sim.tasks import SUITES
+
+    return {suite: list(tasks) for suite, tasks in SUITES.items()}
+
+
+def check_suite(name: str) -> str:
+    return _check("suite", name, suites())
+
+
+def check_task(name: str):
+    """The TaskSpec named `name`."""
+    from .sim.tasks import TASKS
+
+    _check("task", name, TASKS)
+    return TASKS[name]
+
+
+def task_entry(name: str) -> dict[str, Any]:
+    """What the console shows about a task: suite, instruction, success condition, embodiments, reference plan."""
+    task = check_task(name)
+    suite = next(s for s, names in suites().items() if name in names)
+    return {"name": name, "suite": suite, "instruction": task.instruction, "predicate": task.predicate,
+            "embodiments": list(task.embodiments), "has_reference_plan": task.has_reference_plan,
+            "max_sim_s": task.max_sim_s, "tags": list(task.tags), "objects": [o.label for o in task.objects]}
+
+
+def enums() -> dict[str, list[str]]:
+    """The closed sets the API schema and the UI interpret."""
+    from .execution import EventKind, NodeStatus, TreeStatus
+    from .trial_outcome import Verdict
+
+    return {"verdict": [v.value for v in Verdict], "node_status": [s.value for s in NodeStatus],
+            "event_kind": [k.value for k in EventKind], "tree_status": [s.value for s in TreeStatus]}
+
+
+def catalog_json(with_tasks: bool = True) -> dict[str, Any]:
+    """Everything above as plain JSON (for `GET /api/catalog` and `spark catalog`)."""
+    out: dict[str, Any] = {
+        "planners": [asdict(p) for p in PLANNERS.values()],
+        "segmenters": [asdict(s) for s in SEGMENTERS.values()],
+        "embodiments": [asdict(e) for e in EMBODIMENTS.values()],
+        "suites": suites(),
+        **enums(),
+    }
+    if with_tasks:
+        out["tasks"] = [task_entry(t) for names in out["suites"].values() for t in names]
+    return out
+
+
+__all__ = ["CatalogError", "EMBODIMENTS", "EmbodimentEntry", "PLANNERS", "PlannerEntry", "SEGMENTERS",
+           "SegmenterEntry", "catalog_json", "check_embodiment", "check_planner", "check_segmenter", "check_suite",
+           "check_task", "enums", "suites", "task_entry"]

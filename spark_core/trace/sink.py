@@ -1,0 +1,88 @@
+"""StoreSink: a trial's record in the trace store, written as the trial runs.
+
+The row is created (or taken over from the console's queue) when the trial starts, every event is written as
+it arrives (a crash keeps what happened so far), and the outcome, plan, per-node records, groundings,
+trajectory, scene states and artifact files are written when it ends.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+from ..execution import Event
+from ..grammar import Plan, plan_to_dict, to_yaml
+from ..trial import BaseSink, TrialContext, TrialOutcome
+from .store import TraceStore, _jsonable
+
+
+class StoreSink(BaseSink):
+    def __init__(self, store: TraceStore, artifacts_dir: str | Path = "var/artifacts", extra_protocol: dict | None = None):
+        self.store = store
+        self.artifacts_dir = Path(artifacts_dir)
+        self.extra_protocol = extra_protocol or {}
+        self._trial_id: str | None = None
+
+    @staticmethod
+    def _config_fields(config: Any) -> dict[str, Any]:
+        return dict(task=config.task, seed=config.seed, planner=config.planner, segmenter=config.segmenter,
+                    batch_id=config.batch_id)
+
+    def on_start(self, ctx: TrialContext) -> None:
+        self._trial_id = ctx.trial_id
+        fields = dict(self._config_fields(ctx.config), status="running", instruction=ctx.instruction,
+                      protocol=_jsonable({**ctx.protocol, **self.extra_protocol}))
+        if not self.store.has_trial(ctx.trial_id):
+            self.store.create_trial(ctx.trial_id, **fields)
+        else:
+            self.store.update_trial(ctx.trial_id, **fields)
+
+    def on_plan(self, ctx: TrialContext, plan: Plan | None, planning: dict[str, Any]) -> None:
+        if plan is not None:
+            self.store.update_trial(ctx.trial_id, plan_text=to_yaml(plan), plan_tree=_jsonable(plan_to_dict(plan)))
+
+    def on_event(self, event: Event) -> None:
+        if self._trial_id is not None:
+            self.store.add_events(self._trial_id, [event.to_dict()])
+
+    def on_finish(self, ctx: TrialContext | None, outcome: TrialOutcome) -> None:
+        result = outcome.result
+        fields: dict[str, Any] = dict(
+            status="done", verdict=outcome.verdict.value, success=outcome.success, instruction=outcome.instruction,
+            outcome=result.outcome if result is not None else ("aborted" if outcome.verdict == "aborted" else "failure"),
+            failure=outcome.failure, failed_node=outcome.failed_node, reason=outcome.reason,
+            wall_time_s=outcome.wall_time_s, sim_time_s=outcome.sim_time_s if result is not None else None,
+            cost_usd=outcome.cost_usd, usage=_jsonable(outcome.usage),
+            protocol=_jsonable({**outcome.protocol, **self.extra_protocol, "task_success": outcome.task_success,
+                                "tree_status": outcome.tree_status, "unmet": outcome.unmet}),
+        )
+        if result is not None:
+            fields["nodes"] = _jsonable({p: r.to_dict() for p, r in result.nodes.items()})
+        if ctx is not None:
+            world = ctx.world
+            rec = getattr(world, "recorder", None)
+            if rec is not None:
+                fields["trajectory"] = _jsonable(list(rec.rows))
+                fields["scene_states"] = _jsonable(list(rec.states)) or None
+            fields["artifacts"] = _jsonable(self._artifacts(ctx))
+        if not self.store.has_trial(outcome.trial_id):  # never started (cancelled while queued)
+            config = ctx.config if ctx is not None else None
+            self.store.create_trial(outcome.trial_id, task=outcome.task, seed=outcome.seed,
+                                    **({} if config is None else self._config_fields(config)), **fields)
+        else:
+            self.store.update_trial(outcome.trial_id, **fields)
+        if ctx is not None:
+            self.store.add_groundings(outcome.trial_id, getattr(ctx.resolver, "groundings", []))
+
+    def _artifacts(self, ctx: TrialContext) -> list[dict]:
+        from .artifacts import capture_entries, detection_images
+
+        directory = self.artifacts_dir / ctx.trial_id
+        out = detection_images(ctx.resolver, directory)
+        if ctx.episode is not None:
+            ctx.world.monitors.remove(ctx.episode)
+            out += capture_entries(ctx.episode, directory)
+        return out
+
+
+__all__ = ["StoreSink"]
