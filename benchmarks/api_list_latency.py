@@ -16,7 +16,7 @@ import subprocess
 import sys
 import tempfile
 import time
-from datetime import datetime, timedelta, timezone
+from datetime import UTC, datetime, timedelta
 from pathlib import Path
 
 import httpx
@@ -34,26 +34,62 @@ def seed_store(url: str, n_trials: int, n_events: int, trajectory_rows: int) -> 
     from spark_core.trace.store import TraceStore
 
     store = TraceStore(url)
-    t0 = datetime(2026, 1, 1, tzinfo=timezone.utc)
+    t0 = datetime(2026, 1, 1, tzinfo=UTC)
     trajectory = [[0.01 * k, "right", [0.1 * j + 0.001 * k for j in range(7)], 0.04] for k in range(trajectory_rows)]
     plan_tree = {"type": "sequence", "children": [{"type": "grasp", "params": {"object": "red_block"}}] * 6}
     known = {c.name for c in TrialRow.__table__.columns}  # the schema evolves: seed only the columns it has
     with store.engine.begin() as conn:
         for start in range(0, n_trials, 1000):
             ids = range(start, min(start + 1000, n_trials))
-            conn.execute(insert(TrialRow), [{k: v for k, v in row.items() if k in known} for row in [
-                {"id": f"t{i:06d}", "created_at": t0 + timedelta(seconds=i), "status": "done", "task": f"task{i % 14}",
-                 "instruction": f"put the red block on the blue block ({i})", "seed": i, "planner": "reference",
-                 "resolver": "sim", "protocol": {"planner": "reference", "segmenter": "sim", "privileged": True},
-                 "plan_text": "task: t\ntree: {primitive: wait}\n" * 20, "plan_tree": plan_tree,
-                 "outcome": "success" if i % 3 else "task_unmet", "success": bool(i % 3), "reason": "",
-                 "wall_time_s": float(i % 50), "sim_time_s": 5.0, "cost_usd": 0.0, "usage": {"calls": 0},
-                 "nodes": {"tree": {"duration_s": 5.0, "retries": 0}}, "trajectory": trajectory, "artifacts": [],
-                 "segmenter": "sim", "verdict": "success" if i % 3 else "task_unmet"}
-                for i in ids]])
-            conn.execute(insert(EventRow), [
-                {"trial_id": f"t{i:06d}", "seq": k, "t": 0.1 * k, "node_path": f"tree.children[{k}]",
-                 "kind": "succeeded", "detail": {}} for i in ids for k in range(n_events)])
+            conn.execute(
+                insert(TrialRow),
+                [
+                    {k: v for k, v in row.items() if k in known}
+                    for row in [
+                        {
+                            "id": f"t{i:06d}",
+                            "created_at": t0 + timedelta(seconds=i),
+                            "status": "done",
+                            "task": f"task{i % 14}",
+                            "instruction": f"put the red block on the blue block ({i})",
+                            "seed": i,
+                            "planner": "reference",
+                            "resolver": "sim",
+                            "protocol": {"planner": "reference", "segmenter": "sim", "privileged": True},
+                            "plan_text": "task: t\ntree: {primitive: wait}\n" * 20,
+                            "plan_tree": plan_tree,
+                            "outcome": "success" if i % 3 else "task_unmet",
+                            "success": bool(i % 3),
+                            "reason": "",
+                            "wall_time_s": float(i % 50),
+                            "sim_time_s": 5.0,
+                            "cost_usd": 0.0,
+                            "usage": {"calls": 0},
+                            "nodes": {"tree": {"duration_s": 5.0, "retries": 0}},
+                            "trajectory": trajectory,
+                            "artifacts": [],
+                            "segmenter": "sim",
+                            "verdict": "success" if i % 3 else "task_unmet",
+                        }
+                        for i in ids
+                    ]
+                ],
+            )
+            conn.execute(
+                insert(EventRow),
+                [
+                    {
+                        "trial_id": f"t{i:06d}",
+                        "seq": k,
+                        "t": 0.1 * k,
+                        "node_path": f"tree.children[{k}]",
+                        "kind": "succeeded",
+                        "detail": {},
+                    }
+                    for i in ids
+                    for k in range(n_events)
+                ],
+            )
     store.engine.dispose()
 
 
@@ -65,8 +101,21 @@ def free_port() -> int:
 
 def start_server(url: str, port: int) -> subprocess.Popen:
     env = {**os.environ, "SPARK_STORE_URL": url, "SPARK_VISER": "0", "SPARK_WORKERS": "1", "PYTHONPATH": str(ROOT)}
-    cmd = [sys.executable, "-m", "uvicorn", "--factory", "server.app:create_app", "--host", "127.0.0.1",
-           "--port", str(port), "--log-level", "warning", "--no-access-log", "--no-proxy-headers"]
+    cmd = [
+        sys.executable,
+        "-m",
+        "uvicorn",
+        "--factory",
+        "server.app:create_app",
+        "--host",
+        "127.0.0.1",
+        "--port",
+        str(port),
+        "--log-level",
+        "warning",
+        "--no-access-log",
+        "--no-proxy-headers",
+    ]
     proc = subprocess.Popen(cmd, env=env, cwd=ROOT)
     for _ in range(600):
         try:
@@ -133,8 +182,10 @@ def main(argv: list[str] | None = None) -> int:
     rng = np.random.default_rng(0)
     try:
         lists = sequential(base, ["/api/trials?limit=50"] * args.requests)
-        pages = sequential(base, [f"/api/trials?limit=50&offset={int(rng.integers(0, args.trials - 50))}"
-                                  for _ in range(args.requests)])
+        pages = sequential(
+            base,
+            [f"/api/trials?limit=50&offset={int(rng.integers(0, args.trials - 50))}" for _ in range(args.requests)],
+        )
         filtered = sequential(base, ["/api/trials?limit=50&task=task3&success=true"] * args.requests)
         gets = sequential(base, [f"/api/trials/t{int(rng.integers(0, args.trials)):06d}" for _ in range(args.requests)])
         burst = asyncio.run(concurrent(port, "/api/trials?limit=50", args.concurrent))
@@ -152,12 +203,14 @@ def main(argv: list[str] | None = None) -> int:
     print(row("list filtered by task and success", filtered))
     print(row("get one trial with its events", gets))
     print(row(f"{args.concurrent} concurrent lists (from the common start)", burst))
-    print(f"\n{within}/{len(burst)} concurrent list requests answered within 1 s. "
-          f"Store: {args.trials} trials ({args.trajectory_rows} trajectory rows, {args.events} events each), "
-          f"SQLite WAL, seeded in {seed_s:.0f} s; server: uvicorn in its own process on 127.0.0.1 (the defaults of "
-          f"`spark serve`: one process, sync routes in its thread pool); sequential rows: {args.requests} requests "
-          f"each over one keep-alive connection (httpx); concurrent row: {args.concurrent} connections opened "
-          f"first, then one request on each at once (asyncio streams).")
+    print(
+        f"\n{within}/{len(burst)} concurrent list requests answered within 1 s. "
+        f"Store: {args.trials} trials ({args.trajectory_rows} trajectory rows, {args.events} events each), "
+        f"SQLite WAL, seeded in {seed_s:.0f} s; server: uvicorn in its own process on 127.0.0.1 (the defaults of "
+        f"`spark serve`: one process, sync routes in its thread pool); sequential rows: {args.requests} requests "
+        f"each over one keep-alive connection (httpx); concurrent row: {args.concurrent} connections opened "
+        f"first, then one request on each at once (asyncio streams)."
+    )
     return 0 if within == len(burst) else 1
 
 

@@ -30,21 +30,33 @@ def create_app(settings: Settings | None = None) -> FastAPI:
 
             scene = ViserScene("127.0.0.1", settings.viser_port)  # loopback only: browsers come through /viser
         app.state.store, app.state.settings, app.state.scene = store, settings, scene
-        app.state.runner = TrialRunner(store, settings.workers, scene, settings.artifacts_dir,
-                                       settings.hang_timeout_s, settings.spawn_workers_at_start)
+        app.state.runner = TrialRunner(
+            store,
+            settings.workers,
+            scene,
+            settings.artifacts_dir,
+            settings.hang_timeout_s,
+            settings.spawn_workers_at_start,
+        )
         yield
         app.state.runner.shutdown()
         if scene is not None:
             scene.stop()
 
-    app = FastAPI(title="SPARK console", version="0.1.0", lifespan=lifespan,
-                  description="Typed behavior trees over anchored keypoints: trials, plans, grammar, live events.")
+    app = FastAPI(
+        title="SPARK console",
+        version="0.1.0",
+        lifespan=lifespan,
+        description="Typed behavior trees over anchored keypoints: trials, plans, grammar, live events.",
+    )
     # Every request and websocket passes the Guard (security/guard.py) before any route reads it; CORS, when
     # configured, wraps it so that refusals carry the CORS headers a listed origin needs to read them.
     app.add_middleware(Guard, settings=settings)
     install_log_redaction()
     if settings.cors_origins:
-        app.add_middleware(CORSMiddleware, allow_origins=list(settings.cors_origins), allow_methods=["*"], allow_headers=["*"])
+        app.add_middleware(
+            CORSMiddleware, allow_origins=list(settings.cors_origins), allow_methods=["*"], allow_headers=["*"]
+        )
 
     from .api import batches, exports, meta, trials, viser
 

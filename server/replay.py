@@ -25,8 +25,10 @@ def start_replay(store, scene, trial_id: str, speed: float = 1.0) -> dict:
         raise ReplayUnavailable(f"trial {trial_id!r} is {trial['status']}: replay needs a finished trial")
     states = store.scene_states(trial_id)
     if not states:
-        raise ReplayUnavailable(f"trial {trial_id!r} has no recorded scene states (recorded before replay existed, "
-                                f"or it ended before the robot moved)")
+        raise ReplayUnavailable(
+            f"trial {trial_id!r} has no recorded scene states (recorded before replay existed, "
+            f"or it ended before the robot moved)"
+        )
     task = TASKS.get(trial["task"])
     if task is None:
         raise ReplayUnavailable(f"trial {trial_id!r} ran task {trial['task']!r}, which this build does not have")
@@ -35,12 +37,23 @@ def start_replay(store, scene, trial_id: str, speed: float = 1.0) -> dict:
     world = task.make_world(trial["seed"])
     if len(states[0][1]) != world.model.nq:
         world.close()
-        raise ReplayUnavailable(f"trial {trial_id!r} was recorded with a different scene model "
-                                f"({len(states[0][1])} vs {world.model.nq} joint coordinates)")
-    threading.Thread(target=_play, args=(scene, key, trial_id, world, states, keypoints, speed),
-                     name=f"replay-{trial_id}", daemon=True).start()
-    return {"id": trial_id, "key": key, "states": len(states), "speed": speed,
-            "duration_s": round(states[-1][0] - states[0][0], 3)}
+        raise ReplayUnavailable(
+            f"trial {trial_id!r} was recorded with a different scene model "
+            f"({len(states[0][1])} vs {world.model.nq} joint coordinates)"
+        )
+    threading.Thread(
+        target=_play,
+        args=(scene, key, trial_id, world, states, keypoints, speed),
+        name=f"replay-{trial_id}",
+        daemon=True,
+    ).start()
+    return {
+        "id": trial_id,
+        "key": key,
+        "states": len(states),
+        "speed": speed,
+        "duration_s": round(states[-1][0] - states[0][0], 3),
+    }
 
 
 def _play(scene, key: str, trial_id: str, world, states: list, keypoints: dict, speed: float) -> None:

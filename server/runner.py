@@ -11,8 +11,8 @@ from __future__ import annotations
 import queue
 import threading
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
 
 from spark_core import StepControl, TraceStore, TrialConfig, Verdict, check_task
 
@@ -76,8 +76,15 @@ class Live:
 
 
 class TrialRunner:
-    def __init__(self, store: TraceStore, workers: int = 2, scene=None, artifacts_dir: str = "var/artifacts",
-                 hang_timeout_s: float = 120.0, spawn_at_start: bool = False):
+    def __init__(
+        self,
+        store: TraceStore,
+        workers: int = 2,
+        scene=None,
+        artifacts_dir: str = "var/artifacts",
+        hang_timeout_s: float = 120.0,
+        spawn_at_start: bool = False,
+    ):
         self.store = store
         self.artifacts_dir = artifacts_dir
         self.scene = scene  # ViserScene showing the most recently started trial, or None
@@ -88,8 +95,10 @@ class TrialRunner:
         self.processes: list[WorkerProcess | None] = [None] * workers
         self._lock = threading.Lock()
         self._closing = False
-        self.threads = [threading.Thread(target=self._slot, args=(i, spawn_at_start), name=f"trial-slot-{i}", daemon=True)
-                        for i in range(workers)]
+        self.threads = [
+            threading.Thread(target=self._slot, args=(i, spawn_at_start), name=f"trial-slot-{i}", daemon=True)
+            for i in range(workers)
+        ]
         for t in self.threads:
             t.start()
 
@@ -119,9 +128,17 @@ class TrialRunner:
             live.control.pause()  # stops before the first primitive: set breakpoints on the tree, then resume
         with self._lock:
             self.live[trial_id] = live
-        self.store.create_trial(trial_id, status="queued", task=config.task, instruction=config.instruction or check_task(config.task).instruction,
-                                seed=config.seed, planner=config.planner, segmenter=config.segmenter,
-                                protocol={"config": _config_record(config)}, batch_id=config.batch_id)
+        self.store.create_trial(
+            trial_id,
+            status="queued",
+            task=config.task,
+            instruction=config.instruction or check_task(config.task).instruction,
+            seed=config.seed,
+            planner=config.planner,
+            segmenter=config.segmenter,
+            protocol={"config": _config_record(config)},
+            batch_id=config.batch_id,
+        )
         self._announce(trial_id, "queued", task=config.task)
         self.queue.put(trial_id)
 
@@ -187,8 +204,14 @@ class TrialRunner:
             t0 = time.perf_counter()
             try:
                 if live.control.aborted:  # cancelled while queued: never starts
-                    self.store.update_trial(trial_id, status="done", outcome="aborted", verdict=Verdict.ABORTED.value,
-                                            success=False, reason="cancelled before it started")
+                    self.store.update_trial(
+                        trial_id,
+                        status="done",
+                        outcome="aborted",
+                        verdict=Verdict.ABORTED.value,
+                        success=False,
+                        reason="cancelled before it started",
+                    )
                     continue
                 worker = self._worker(i)
                 live.worker_pid = worker.pid
@@ -199,22 +222,28 @@ class TrialRunner:
                     worker.kill()
                     self.processes[i] = None
                     self._record_failure(trial_id, live, failure, time.perf_counter() - t0)
-            except Exception as e:  # noqa: BLE001 - e.g. a worker that cannot start: the trial fails, the slot lives
-                self._record_failure(trial_id, live, f"internal error: {type(e).__name__}: {e}", time.perf_counter() - t0)
+            except Exception as e:
+                self._record_failure(
+                    trial_id, live, f"internal error: {type(e).__name__}: {e}", time.perf_counter() - t0
+                )
             finally:
                 with self._lock:
                     self.live.pop(trial_id, None)
                 self._fan_out(live, {"kind": "closed"})
                 final = self.store.get_trial(trial_id) or {}
-                self._announce(trial_id, final.get("status", "done"), success=final.get("success"),
-                               verdict=final.get("verdict"))
+                self._announce(
+                    trial_id, final.get("status", "done"), success=final.get("success"), verdict=final.get("verdict")
+                )
 
     def _worker(self, i: int) -> WorkerProcess:
         p = self.processes[i]
         if p is None or not p.alive:
-            p = self.processes[i] = WorkerProcess(self.store.url, self.artifacts_dir,
-                                                  self.scene.rate_hz if self.scene else 30.0,
-                                                  cancelled=lambda: self._closing)
+            p = self.processes[i] = WorkerProcess(
+                self.store.url,
+                self.artifacts_dir,
+                self.scene.rate_hz if self.scene else 30.0,
+                cancelled=lambda: self._closing,
+            )
         return p
 
     def _pump(self, trial_id: str, live: Live, worker: WorkerProcess) -> str | None:
@@ -228,8 +257,9 @@ class TrialRunner:
                 if not worker.alive:
                     return f"worker process {worker.pid} died ({worker.death()}) while running the trial"
                 if time.monotonic() - last > self.hang_timeout_s:
-                    return (f"worker process {worker.pid} stopped responding for {self.hang_timeout_s:.0f} s "
-                            f"and was killed")
+                    return (
+                        f"worker process {worker.pid} stopped responding for {self.hang_timeout_s:.0f} s and was killed"
+                    )
                 continue
             last = time.monotonic()
             kind = msg[0]
@@ -246,7 +276,10 @@ class TrialRunner:
                 if scene is not None and payload.get("kind") in ("started", "paused"):
                     d = payload.get("detail", {})
                     what = d.get("primitive") or d.get("kind") or ""
-                    scene.active(key, f"**Trial:** {trial_id}  \n**{payload['kind'].capitalize()}:** `{payload['node_path']}` {what}")
+                    scene.active(
+                        key,
+                        f"**Trial:** {trial_id}  \n**{payload['kind'].capitalize()}:** `{payload['node_path']}` {what}",
+                    )
             elif kind == "status":
                 self._announce(trial_id, payload, task=live.config.task)
             elif draw is not None:
@@ -259,8 +292,16 @@ class TrialRunner:
             return  # the worker recorded its outcome before it went away
         if not trial.get("events") and live.history:
             self.store.add_events(trial_id, live.history)
-        self.store.update_trial(trial_id, status="done", outcome="failure", success=False, failure="worker",
-                                verdict=Verdict.CRASHED.value, reason=reason, wall_time_s=round(wall_s, 3))
+        self.store.update_trial(
+            trial_id,
+            status="done",
+            outcome="failure",
+            success=False,
+            failure="worker",
+            verdict=Verdict.CRASHED.value,
+            reason=reason,
+            wall_time_s=round(wall_s, 3),
+        )
 
 
 def _config_record(config: TrialConfig) -> dict:

@@ -5,7 +5,7 @@ ViserScene directly)."""
 from __future__ import annotations
 
 import threading
-from typing import Callable
+from collections.abc import Callable
 
 import mujoco
 import numpy as np
@@ -22,7 +22,7 @@ class SceneFeed:
         self._thread = threading.Thread(target=self._run, name="scene-feed", daemon=True)
         self._n_groundings = 0
 
-    def start(self) -> "SceneFeed":
+    def start(self) -> SceneFeed:
         self.sink("scene", visual_geoms(self.world.model))
         self._thread.start()
         return self
@@ -69,7 +69,7 @@ class SceneFeed:
             img = annotated_view(self.resolver)
             if img is not None:
                 self.sink("image", img)
-        except Exception:  # noqa: BLE001 - a frame replaced mid-read must not end the feed; the next look redraws
+        except Exception:
             pass
 
 
@@ -77,16 +77,18 @@ def annotated_view(resolver, width: int = 320) -> np.ndarray | None:
     """The first camera's latest frame with its detections and keypoints drawn, `width` pixels wide."""
     import cv2
 
-    from spark_core import Keypoint
-    from spark_core import annotate
+    from spark_core import Keypoint, annotate
 
     frames = dict(getattr(resolver, "frames", {}) or {})
     if not frames:
         return None
     camera, frame = next(iter(frames.items()))
     dets = list(getattr(resolver, "detections", {}).get(camera, {}).values())
-    kps = {g["label"]: Keypoint(g["label"], np.array(g["keypoint"]["position_m"]), np.array(g["keypoint"]["extent_m"]))
-           for g in getattr(resolver, "groundings", []) if g.get("keypoint")}
+    kps = {
+        g["label"]: Keypoint(g["label"], np.array(g["keypoint"]["position_m"]), np.array(g["keypoint"]["extent_m"]))
+        for g in getattr(resolver, "groundings", [])
+        if g.get("keypoint")
+    }
     img = annotate(frame, dets, kps)
     h = int(round(img.shape[0] * width / img.shape[1]))
     return cv2.resize(img, (width, h), interpolation=cv2.INTER_AREA)

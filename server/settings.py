@@ -29,18 +29,21 @@ class Settings:
     max_body_bytes: int = 1024 * 1024  # request bodies, streamed (chunked) ones included
 
     @classmethod
-    def from_env(cls) -> "Settings":
+    def from_env(cls) -> Settings:
         e = os.environ
         return cls(
-            host=e.get("SPARK_HOST", cls.host), port=int(e.get("SPARK_PORT", cls.port)),
+            host=e.get("SPARK_HOST", cls.host),
+            port=int(e.get("SPARK_PORT", cls.port)),
             store_url=e.get("SPARK_STORE_URL", cls.store_url),
             workers=int(e.get("SPARK_WORKERS", os.cpu_count() or cls.workers)),
             hang_timeout_s=float(e.get("SPARK_HANG_TIMEOUT_S", cls.hang_timeout_s)),
             api_token=e.get("SPARK_API_TOKEN") or None,
             cors_origins=tuple(o.strip() for o in e.get("SPARK_CORS_ORIGINS", "").split(",") if o.strip()),
             trusted_proxies=tuple(p.strip() for p in e.get("SPARK_TRUSTED_PROXIES", "").split(",") if p.strip()),
-            viser=e.get("SPARK_VISER", "1") != "0", artifacts_dir=e.get("SPARK_ARTIFACTS_DIR", cls.artifacts_dir),
-            exports_dir=e.get("SPARK_EXPORTS_DIR", cls.exports_dir), viser_port=int(e.get("SPARK_VISER_PORT", 0)),
+            viser=e.get("SPARK_VISER", "1") != "0",
+            artifacts_dir=e.get("SPARK_ARTIFACTS_DIR", cls.artifacts_dir),
+            exports_dir=e.get("SPARK_EXPORTS_DIR", cls.exports_dir),
+            viser_port=int(e.get("SPARK_VISER_PORT", 0)),
         )
 
     @property

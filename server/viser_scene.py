@@ -65,8 +65,9 @@ class ViserScene:
                     frame.position, frame.wxyz = xpos[b], xquat[b]
                 for arm, (p, q) in (targets or {}).items():
                     if arm not in self._targets:
-                        self._targets[arm] = self.server.scene.add_frame(f"/targets/{arm}", axes_length=0.08,
-                                                                         axes_radius=0.004)
+                        self._targets[arm] = self.server.scene.add_frame(
+                            f"/targets/{arm}", axes_length=0.08, axes_radius=0.004
+                        )
                     self._targets[arm].position, self._targets[arm].wxyz = p, q
             self.ticks += 1
 

@@ -17,8 +17,9 @@ import signal
 import threading
 import time
 import traceback
+from collections.abc import Callable
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 from spark_core import BaseSink, StepControl, TraceStore, TrialConfig, run_trial
 
@@ -28,13 +29,23 @@ EOF_MSG = ("eof",)  # the worker's end of the pipe closed: it exited or was kill
 class WorkerProcess:
     """The console's handle on one worker process."""
 
-    def __init__(self, store_url: str, artifacts_dir: str, feed_hz: float = 30.0, ready_timeout_s: float = 300.0,
-                 cancelled: Callable[[], bool] = lambda: False):
+    def __init__(
+        self,
+        store_url: str,
+        artifacts_dir: str,
+        feed_hz: float = 30.0,
+        ready_timeout_s: float = 300.0,
+        cancelled: Callable[[], bool] = lambda: False,
+    ):
         ctx = mp.get_context("spawn")  # never fork a threaded server
         child_inbox, self._to_child = ctx.Pipe(duplex=False)
         self._from_child, child_outbox = ctx.Pipe(duplex=False)
-        self.process = ctx.Process(target=child_main, name="spark-trial-worker", daemon=True,
-                                   args=(child_inbox, child_outbox, store_url, artifacts_dir, feed_hz))
+        self.process = ctx.Process(
+            target=child_main,
+            name="spark-trial-worker",
+            daemon=True,
+            args=(child_inbox, child_outbox, store_url, artifacts_dir, feed_hz),
+        )
         self.process.start()
         child_inbox.close()  # only the child holds these ends: its death closes the pipe (EOF here)
         child_outbox.close()
@@ -135,8 +146,12 @@ def child_main(inbox, outbox, store_url: str, artifacts_dir: str, feed_hz: float
             if state["aborted"]:
                 control.abort()
             current.update(id=trial_id, control=control)
-            threading.Thread(target=_job, args=(trial_id, config, control, store, send, Path(artifacts_dir), feed_hz),
-                             name=f"trial-{trial_id}", daemon=True).start()
+            threading.Thread(
+                target=_job,
+                args=(trial_id, config, control, store, send, Path(artifacts_dir), feed_hz),
+                name=f"trial-{trial_id}",
+                daemon=True,
+            ).start()
         elif msg[0] == "control" and msg[1] == current["id"]:
             _, _, action, arg = msg
             c = current["control"]
@@ -164,8 +179,9 @@ class _PipeSink(BaseSink):
         from .scene_feed import SceneFeed
 
         self.send("status", self.trial_id, "running")
-        self.feed = SceneFeed(ctx.world, lambda kind, payload: self.send(kind, self.trial_id, payload), self.feed_hz,
-                              ctx.resolver).start()
+        self.feed = SceneFeed(
+            ctx.world, lambda kind, payload: self.send(kind, self.trial_id, payload), self.feed_hz, ctx.resolver
+        ).start()
 
     def on_event(self, event) -> None:
         self.send("event", self.trial_id, event.to_dict())
@@ -175,16 +191,30 @@ class _PipeSink(BaseSink):
             self.feed.stop()
 
 
-def _job(trial_id: str, config: TrialConfig, control: StepControl, store: TraceStore, send: Callable,
-         artifacts_dir: Path, feed_hz: float) -> None:
+def _job(
+    trial_id: str,
+    config: TrialConfig,
+    control: StepControl,
+    store: TraceStore,
+    send: Callable,
+    artifacts_dir: Path,
+    feed_hz: float,
+) -> None:
     from spark_core import StorePlanLibrary, StoreSink, Verdict
 
     try:
         sinks = [StoreSink(store, artifacts_dir, {"worker_pid": os.getpid()}), _PipeSink(trial_id, send, feed_hz)]
         run_trial(config, sinks, control, trial_id=trial_id, library=StorePlanLibrary(store))
-    except Exception as e:  # noqa: BLE001 - a sink that failed (the store?): recorded if possible, the worker lives on
-        store.update_trial(trial_id, status="done", outcome="failure", success=False, verdict=Verdict.CRASHED.value,
-                           failure="internal", reason=f"internal error: {type(e).__name__}: {e}",
-                           protocol={"worker_pid": os.getpid(), "traceback": traceback.format_exc()[-4000:]})
+    except Exception as e:
+        store.update_trial(
+            trial_id,
+            status="done",
+            outcome="failure",
+            success=False,
+            verdict=Verdict.CRASHED.value,
+            failure="internal",
+            reason=f"internal error: {type(e).__name__}: {e}",
+            protocol={"worker_pid": os.getpid(), "traceback": traceback.format_exc()[-4000:]},
+        )
     finally:
         send("done", trial_id)

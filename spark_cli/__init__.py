@@ -7,6 +7,7 @@ import argparse
 import sys
 
 from spark_core import __version__
+
 from . import bench, catalog, grammar, run, serve, trials
 
 
@@ -27,8 +28,11 @@ def _apply_config(args: argparse.Namespace) -> None:
     for key in ("planner", "model", "base_url", "segmenter", "plan_library"):
         if hasattr(args, key) and getattr(args, key) is None and getattr(cfg, key) is not None:
             setattr(args, key, getattr(cfg, key))
-    defaults = {"planner": "rules" if args.command == "plan" else "reference", "segmenter": "sim",
-                "plan_library": "store"}
+    defaults = {
+        "planner": "rules" if args.command == "plan" else "reference",
+        "segmenter": "sim",
+        "plan_library": "store",
+    }
     for key, value in defaults.items():
         if hasattr(args, key) and getattr(args, key) is None:
             setattr(args, key, value)

@@ -13,34 +13,76 @@ from spark_core.catalog import EMBODIMENTS, PLANNERS, SEGMENTERS
 
 def register(sub) -> None:
     b = sub.add_parser("bench", help="run a benchmark and optionally write its section of BENCHMARKS.md")
-    b.add_argument("suite", choices=["builtin", "bimanual", "capbench", "liberopro", "embodiments", "grounding", "paraphrases", "ik", "speed", "api", "latency",
-                                     "viser", "export", "throughput"])
+    b.add_argument(
+        "suite",
+        choices=[
+            "builtin",
+            "bimanual",
+            "capbench",
+            "liberopro",
+            "embodiments",
+            "grounding",
+            "paraphrases",
+            "ik",
+            "speed",
+            "api",
+            "latency",
+            "viser",
+            "export",
+            "throughput",
+        ],
+    )
     b.add_argument("--embodiment", choices=list(EMBODIMENTS), help="robot set-up (default: the task's own)")
-    b.add_argument("--embodiments", nargs="+", default=list(EMBODIMENTS), choices=list(EMBODIMENTS),
-                   help="robot set-ups compared by the embodiments suite")
+    b.add_argument(
+        "--embodiments",
+        nargs="+",
+        default=list(EMBODIMENTS),
+        choices=list(EMBODIMENTS),
+        help="robot set-ups compared by the embodiments suite",
+    )
     b.add_argument("--trials", type=int, default=20, help="trials (seeds) per task")
     b.add_argument("--tasks", nargs="*", help="subset of task names")
     b.add_argument("--seed", type=int, default=0, help="first seed")
-    b.add_argument("--planner", default="reference", choices=list(PLANNERS),
-                   help="reference (hand-written plans), or one planner call per trial (liberopro has no reference plans)")
+    b.add_argument(
+        "--planner",
+        default="reference",
+        choices=list(PLANNERS),
+        help="reference (hand-written plans), or one planner call per trial (liberopro has no reference plans)",
+    )
     b.add_argument("--model", help="LLM model name for an LLM planner")
     b.add_argument("--base-url", help="LLM endpoint for an LLM planner")
-    b.add_argument("--segmenter", default="privileged-keypoints", choices=list(SEGMENTERS),
-                   help="perception backend: privileged-keypoints (simulator state, no cameras), the sim / sim-noisy "
-                        "oracles through the cameras, or sam3 (`spark catalog` says which are privileged)")
+    b.add_argument(
+        "--segmenter",
+        default="privileged-keypoints",
+        choices=list(SEGMENTERS),
+        help="perception backend: privileged-keypoints (simulator state, no cameras), the sim / sim-noisy "
+        "oracles through the cameras, or sam3 (`spark catalog` says which are privileged)",
+    )
     b.add_argument("--no-adaptive", action="store_true", help="one prompt per label (no adaptive self-consistency)")
     b.add_argument("--no-recovery", action="store_true", help="no retries (recovery tiers off)")
     b.add_argument("--miss-rate", type=float, default=0.2, help="sim-noisy detector miss rate")
-    b.add_argument("--cameras", nargs="+", help="cameras perception fuses (default: agentview side; robosuite "
-                                                "suites: agentview sideview)")
+    b.add_argument(
+        "--cameras",
+        nargs="+",
+        help="cameras perception fuses (default: agentview side; robosuite suites: agentview sideview)",
+    )
     b.add_argument("--title", help="BENCHMARKS.md section title (default derived from the segmenter)")
     b.add_argument("--workers", type=int, default=1, help="worker processes (local pool) or CPUs (a local Ray cluster)")
-    b.add_argument("--executor", choices=["local", "ray"], default="local",
-                   help="local process pool, or Ray (a local cluster, or --ray-address for an existing one)")
+    b.add_argument(
+        "--executor",
+        choices=["local", "ray"],
+        default="local",
+        help="local process pool, or Ray (a local cluster, or --ray-address for an existing one)",
+    )
     b.add_argument("--ray-address", help="existing Ray cluster, e.g. ray://head:10001 or auto")
     b.add_argument("--store", help="also record every trial in this trace store (SQLAlchemy URL) as one batch")
-    b.add_argument("--suites", nargs="+", default=["builtin"], choices=["builtin", "capbench", "liberopro"],
-                   help="suites the throughput bench measures")
+    b.add_argument(
+        "--suites",
+        nargs="+",
+        default=["builtin"],
+        choices=["builtin", "capbench", "liberopro"],
+        help="suites the throughput bench measures",
+    )
     b.add_argument("--targets", type=int, default=200, help="IK targets (ik suite)")
     b.add_argument("--store-size", type=int, default=10_000, help="trials in the trace store (api suite)")
     b.add_argument("--write", metavar="BENCHMARKS.md", help="replace this benchmark's section in the file")
@@ -69,7 +111,10 @@ def _export_bench(args: argparse.Namespace) -> dict:
     from spark_core.bench import export_bench
 
     def progress(row: dict) -> None:
-        print(f"{'ok  ' if row['success'] else 'FAIL'} {row['task']} seed {row['seed']} ({row['wall_time_s']:.1f} s)", flush=True)
+        print(
+            f"{'ok  ' if row['success'] else 'FAIL'} {row['task']} seed {row['seed']} ({row['wall_time_s']:.1f} s)",
+            flush=True,
+        )
 
     return export_bench.run(args.trials, args.workers, progress)
 
@@ -108,7 +153,9 @@ def _cmd_bench(args: argparse.Namespace) -> int:
 
         rows, errors = paraphrases.run(args.seed)
         for r in rows:
-            print(f"{'ok ' if r['success'] else 'FAIL'} {r['task']:<16} {r['instruction']!r} {'' if r['success'] else r['outcome']}")
+            print(
+                f"{'ok ' if r['success'] else 'FAIL'} {r['task']:<16} {r['instruction']!r} {'' if r['success'] else r['outcome']}"
+            )
         for e in errors:
             print(f"{'refused' if e['refused'] else 'PLANNED'} {e['instruction']!r}: {e['error']}")
         title, body = "rules planner on paraphrased instructions", paraphrases.section(rows, errors, command)
@@ -133,10 +180,17 @@ def _cmd_bench(args: argparse.Namespace) -> int:
         if args.suite == "embodiments" and args.planner != "reference":
             print("the embodiments suite compares reference plans: --planner reference", file=sys.stderr)
             return 2
-        template = TrialConfig("", planner=args.planner, model=args.model, base_url=args.base_url,
-                               segmenter=args.segmenter, cameras=tuple(args.cameras) if args.cameras else None,
-                               noise=NoiseModel(miss_rate=args.miss_rate), recovery=not args.no_recovery,
-                               adaptive=not args.no_adaptive)
+        template = TrialConfig(
+            "",
+            planner=args.planner,
+            model=args.model,
+            base_url=args.base_url,
+            segmenter=args.segmenter,
+            cameras=tuple(args.cameras) if args.cameras else None,
+            noise=NoiseModel(miss_rate=args.miss_rate),
+            recovery=not args.no_recovery,
+            adaptive=not args.no_adaptive,
+        )
         suite = SUITES[args.suite if args.suite in ("bimanual", "capbench", "liberopro") else "builtin"]
         tasks = args.tasks or list(suite)
         unknown = [t for t in tasks if t not in suite]
@@ -149,21 +203,37 @@ def _cmd_bench(args: argparse.Namespace) -> int:
         def progress(row: dict) -> None:
             done[0] += 1
             mark = "ok " if row["success"] else row["verdict"]
-            print(f"[{done[0]:>4}/{total}] {mark} {row['task']} seed {row['seed']} "
-                  f"({row['sim_time_s']:.1f} s sim, {row['wall_time_s']:.2f} s wall) {row['reason'][:100]}", flush=True)
+            print(
+                f"[{done[0]:>4}/{total}] {mark} {row['task']} seed {row['seed']} "
+                f"({row['sim_time_s']:.1f} s sim, {row['wall_time_s']:.2f} s wall) {row['reason'][:100]}",
+                flush=True,
+            )
 
         if args.suite == "embodiments":
             total *= len(args.embodiments)
-            by_emb = {e: reference_suite.run(tasks, args.trials, args.seed, args.workers, progress,
-                                             replace(template, embodiment=e)) for e in args.embodiments}
+            by_emb = {
+                e: reference_suite.run(
+                    tasks, args.trials, args.seed, args.workers, progress, replace(template, embodiment=e)
+                )
+                for e in args.embodiments
+            }
             title = args.title or f"builtin reference plans on every embodiment ({args.segmenter} segmenter)"
             body = reference_suite.embodiment_section(by_emb, command, template)
             print(body)
             rows = [dict(r, embodiment=e) for e, rs in by_emb.items() for r in rs]
         else:
             template = replace(template, embodiment=args.embodiment)
-            rows = reference_suite.run(tasks, args.trials, args.seed, args.workers, progress, template,
-                                       args.executor, args.ray_address, args.store)
+            rows = reference_suite.run(
+                tasks,
+                args.trials,
+                args.seed,
+                args.workers,
+                progress,
+                template,
+                args.executor,
+                args.ray_address,
+                args.store,
+            )
             print(reference_suite.table(rows))
             suffix = "" if args.embodiment in (None, "panda") else f", {args.embodiment}"
             plans = "reference plans" if args.planner == "reference" else f"{args.planner} planner"

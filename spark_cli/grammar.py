@@ -52,7 +52,9 @@ def _cmd_validate(args: argparse.Namespace) -> int:
                 print(f"  {issue}")
         else:
             n = len(plan.primitives())
-            print(f"{name}: ok - {plan.task!r}: {n} primitive{'s' if n != 1 else ''}, labels {', '.join(plan.labels()) or '-'}")
+            print(
+                f"{name}: ok - {plan.task!r}: {n} primitive{'s' if n != 1 else ''}, labels {', '.join(plan.labels()) or '-'}"
+            )
             if args.canonical:
                 print(to_yaml(plan))
     return status

@@ -14,30 +14,42 @@ def register(sub) -> None:
     r.add_argument("task", help="task name (`spark catalog` lists them)")
     r.add_argument("--seed", type=int, default=0)
     r.add_argument("--embodiment", choices=list(EMBODIMENTS), help="robot set-up (default: the task's own)")
-    r.add_argument("--capture", action="store_true",
-                   help="record training-data frames (state, action, agentview + wrist video) for `spark export`")
+    r.add_argument(
+        "--capture",
+        action="store_true",
+        help="record training-data frames (state, action, agentview + wrist video) for `spark export`",
+    )
     r.add_argument("--capture-fps", type=float, default=10.0, help="capture rate, frames per simulated second")
     r.add_argument("--capture-size", default="256x256", help="capture image size WxH (multiples of 8)")
     r.add_argument("--plan", help="plan file to run instead of the task's reference plan or a planner's")
     r.add_argument("--segmenter", choices=list(SEGMENTERS), help="perception backend (default: sim)")
-    r.add_argument("--planner", choices=list(PLANNERS),
-                   help="reference: the task's hand-written plan; otherwise plan the instruction from what perception saw")
+    r.add_argument(
+        "--planner",
+        choices=list(PLANNERS),
+        help="reference: the task's hand-written plan; otherwise plan the instruction from what perception saw",
+    )
     r.add_argument("--instruction", help="instruction for --planner (default: the task's own)")
     r.add_argument("--model", help="LLM model name (gemini default: gemini-3.1-pro-preview)")
     r.add_argument("--base-url", help="LLM endpoint (OpenAI-compatible server, or a Gemini proxy)")
     r.add_argument("--no-recovery", action="store_true", help="no retries (recovery tiers off)")
     r.add_argument("--no-adaptive", action="store_true", help="one prompt per label (no adaptive prompts)")
     r.add_argument("--time-limit", type=float, help="simulated seconds (default: the task's own)")
-    r.add_argument("--pacing", type=float, help="run at this factor of real time (1 = real time; default: as fast as possible)")
-    r.add_argument("--plan-library",
-                   help="where successful plans are kept and offered to LLM planners as few-shot examples: "
-                        "'store' (default: the trace store's plan_library table) or a .jsonl file")
+    r.add_argument(
+        "--pacing", type=float, help="run at this factor of real time (1 = real time; default: as fast as possible)"
+    )
+    r.add_argument(
+        "--plan-library",
+        help="where successful plans are kept and offered to LLM planners as few-shot examples: "
+        "'store' (default: the trace store's plan_library table) or a .jsonl file",
+    )
     r.add_argument("--no-plan-library", action="store_true", help="neither use nor grow the plan library")
     r.add_argument("--store", default="sqlite:///var/spark.db", help="trace store (SQLAlchemy URL)")
     r.add_argument("--no-store", action="store_true", help="do not record the trial")
     r.set_defaults(func=_cmd_run)
 
-    pl = sub.add_parser("plan", help="plan an instruction in a task's scene (perception + one planner call) and print the tree")
+    pl = sub.add_parser(
+        "plan", help="plan an instruction in a task's scene (perception + one planner call) and print the tree"
+    )
     pl.add_argument("instruction")
     pl.add_argument("--task", required=True, help="task whose scene to plan in")
     pl.add_argument("--seed", type=int, default=0)
@@ -57,8 +69,9 @@ def _library(args: argparse.Namespace):
     from spark_core.trace import TraceStore
     from spark_core.trace.plan_library import StorePlanLibrary
 
-    library = StorePlanLibrary(TraceStore(getattr(args, "store", None) or "sqlite:///var/spark.db"),
-                               enabled=not args.no_plan_library)
+    library = StorePlanLibrary(
+        TraceStore(getattr(args, "store", None) or "sqlite:///var/spark.db"), enabled=not args.no_plan_library
+    )
     legacy = Path("var/plan_library.jsonl")  # where the library lived before the store held it
     if library.enabled and legacy.exists():
         library.import_jsonl(legacy)  # idempotent: rows already in the store are skipped
@@ -104,8 +117,10 @@ def _cmd_plan(args: argparse.Namespace) -> int:
             print(f"  {issue}", file=sys.stderr)
     if result.usage.input_tokens:
         u = result.usage
-        print(f"usage: {u.input_tokens} in, {u.output_tokens} out, {u.reasoning_tokens} reasoning tokens; "
-              f"${result.cost_usd:.4f}; {result.latency_s:.1f} s")
+        print(
+            f"usage: {u.input_tokens} in, {u.output_tokens} out, {u.reasoning_tokens} reasoning tokens; "
+            f"${result.cost_usd:.4f}; {result.latency_s:.1f} s"
+        )
     return 0 if result.ok else 1
 
 
@@ -113,8 +128,11 @@ class _PrintSink:
     """Prints the plan and every event as it happens."""
 
     def on_start(self, ctx) -> None:
-        print(f"task {ctx.task.name!r}: {ctx.instruction!r} (seed {ctx.config.seed}); planner {ctx.config.planner}; "
-              f"segmenter {ctx.config.segmenter}{' (PRIVILEGED)' if ctx.protocol['privileged'] else ''}", flush=True)
+        print(
+            f"task {ctx.task.name!r}: {ctx.instruction!r} (seed {ctx.config.seed}); planner {ctx.config.planner}; "
+            f"segmenter {ctx.config.segmenter}{' (PRIVILEGED)' if ctx.protocol['privileged'] else ''}",
+            flush=True,
+        )
 
     def on_plan(self, ctx, plan, planning) -> None:
         if planning.get("scene_summary"):
@@ -162,10 +180,22 @@ def _cmd_run(args: argparse.Namespace) -> int:
         except ValueError as e:
             print(f"--capture-size / --capture-fps: {e}", file=sys.stderr)
             return 2
-    config = TrialConfig(args.task, args.instruction, args.planner, args.model, args.base_url, plan_text,
-                         args.segmenter, embodiment=args.embodiment, seed=args.seed, recovery=not args.no_recovery,
-                         adaptive=not args.no_adaptive, capture=capture, time_limit_s=args.time_limit,
-                         pacing=args.pacing)
+    config = TrialConfig(
+        args.task,
+        args.instruction,
+        args.planner,
+        args.model,
+        args.base_url,
+        plan_text,
+        args.segmenter,
+        embodiment=args.embodiment,
+        seed=args.seed,
+        recovery=not args.no_recovery,
+        adaptive=not args.no_adaptive,
+        capture=capture,
+        time_limit_s=args.time_limit,
+        pacing=args.pacing,
+    )
     try:
         config.check()
     except TrialConfigError as e:
@@ -181,14 +211,18 @@ def _cmd_run(args: argparse.Namespace) -> int:
     if not PLANNERS[config.planner].offline and plan_text is None:
         library = _library(args)
     out = run_trial(config, sinks, library=library)
-    print(f"verdict: {out.verdict.value}; task predicate: {_yes_no(out.task_success)} ({out.protocol.get('time_limit_s')} s "
-          f"limit); behavior tree: {out.tree_status or 'not run'}")
+    print(
+        f"verdict: {out.verdict.value}; task predicate: {_yes_no(out.task_success)} ({out.protocol.get('time_limit_s')} s "
+        f"limit); behavior tree: {out.tree_status or 'not run'}"
+    )
     if out.reason:
         print(f"reason: {out.reason}")
     if out.unmet:
         print(f"unmet condition: {out.unmet}")
-    print(f"{out.sim_time_s:.1f} s simulated in {out.wall_time_s:.2f} s wall; trial {out.trial_id}"
-          + ("" if args.no_store else f" recorded in {args.store}"))
+    print(
+        f"{out.sim_time_s:.1f} s simulated in {out.wall_time_s:.2f} s wall; trial {out.trial_id}"
+        + ("" if args.no_store else f" recorded in {args.store}")
+    )
     return 0 if out.success else 1
 
 

@@ -18,6 +18,7 @@ def register(sub) -> None:
 def _cmd_serve(args: argparse.Namespace) -> int:
     """The console's API server (uvicorn) on the offline defaults."""
     import os
+    from dataclasses import replace
 
     import uvicorn
 
@@ -25,13 +26,20 @@ def _cmd_serve(args: argparse.Namespace) -> int:
     from server.security.serving import uvicorn_options
     from server.settings import Settings
 
-    from dataclasses import replace
-
     base = Settings.from_env()
-    settings = replace(base, host=args.host or base.host, port=args.port or base.port, store_url=args.store or base.store_url,
-                       workers=args.workers or base.workers, spawn_workers_at_start=True)
+    settings = replace(
+        base,
+        host=args.host or base.host,
+        port=args.port or base.port,
+        store_url=args.store or base.store_url,
+        workers=args.workers or base.workers,
+        spawn_workers_at_start=True,
+    )
     if not settings.loopback and not settings.api_token:
-        print(f"refusing to serve on {settings.host} without SPARK_API_TOKEN (mutating calls would be open)", file=sys.stderr)
+        print(
+            f"refusing to serve on {settings.host} without SPARK_API_TOKEN (mutating calls would be open)",
+            file=sys.stderr,
+        )
         return 2
     os.environ.setdefault("MUJOCO_GL", "egl")
     print(f"SPARK console API on http://{settings.host}:{settings.port} (docs at /docs); store {settings.store_url}")

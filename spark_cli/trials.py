@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+from datetime import UTC
 
 
 def register(sub) -> None:
@@ -18,8 +19,11 @@ def register(sub) -> None:
     ex.add_argument("--batch", help="only this batch's trials")
     ex.add_argument("--since", type=_date, help="recorded on or after this date (YYYY-MM-DD)")
     ex.add_argument("--until", type=_date, help="recorded before this date (YYYY-MM-DD)")
-    ex.add_argument("--include-failures", action="store_true",
-                    help="also failed trials (default: verified successes only, i.e. clean demonstrations)")
+    ex.add_argument(
+        "--include-failures",
+        action="store_true",
+        help="also failed trials (default: verified successes only, i.e. clean demonstrations)",
+    )
     ex.set_defaults(func=_cmd_export)
 
     tr = sub.add_parser("trials", help="list recorded trials (or print one with --id)")
@@ -45,15 +49,17 @@ def _cmd_trials(args: argparse.Namespace) -> int:
     total, rows = store.list_trials(task=args.task, limit=args.limit)
     print(f"{total} trial(s) in {args.store}; newest {len(rows)}:")
     for r in rows:
-        print(f"  {r['created_at'][:19]}  {r['verdict'] or r['status']:<13} {r['id']:<34} {r['task']:<16} {r['planner']:<9} {r['instruction'][:50]!r}")
+        print(
+            f"  {r['created_at'][:19]}  {r['verdict'] or r['status']:<13} {r['id']:<34} {r['task']:<16} {r['planner']:<9} {r['instruction'][:50]!r}"
+        )
     return 0
 
 
 def _date(text: str):
-    from datetime import datetime, timezone
+    from datetime import datetime
 
     try:
-        return datetime.strptime(text, "%Y-%m-%d").replace(tzinfo=timezone.utc)
+        return datetime.strptime(text, "%Y-%m-%d").replace(tzinfo=UTC)
     except ValueError:
         raise argparse.ArgumentTypeError(f"expected a date YYYY-MM-DD, got {text!r}") from None
 
@@ -65,15 +71,23 @@ def _cmd_export(args: argparse.Namespace) -> int:
     from spark_core.trace.lerobot import ExportError, ExportFilter, export_lerobot
 
     tasks = tuple(args.task) or (tuple(BUILTIN) if args.suite == "builtin" else ())
-    flt = ExportFilter(tasks=tasks, trial_ids=tuple(args.trial), batch=args.batch,
-                       success_only=not args.include_failures, since=args.since, until=args.until)
+    flt = ExportFilter(
+        tasks=tasks,
+        trial_ids=tuple(args.trial),
+        batch=args.batch,
+        success_only=not args.include_failures,
+        since=args.since,
+        until=args.until,
+    )
     try:
         r = export_lerobot(TraceStore(args.store), args.out, flt)
     except ExportError as e:
         print(f"export failed: {e}", file=sys.stderr)
         return 1
-    print(f"{r.episodes} episodes, {r.frames} frames -> {r.out_dir} ({r.bytes_on_disk / 1e6:.1f} MB, "
-          f"{r.data_files} data file(s), {r.video_files} video file(s)) in {r.wall_time_s:.1f} s")
+    print(
+        f"{r.episodes} episodes, {r.frames} frames -> {r.out_dir} ({r.bytes_on_disk / 1e6:.1f} MB, "
+        f"{r.data_files} data file(s), {r.video_files} video file(s)) in {r.wall_time_s:.1f} s"
+    )
     for s in r.skipped:
         print(f"  skipped {s['id']}: {s['reason']}")
     return 0

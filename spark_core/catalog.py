@@ -37,31 +37,61 @@ class EmbodimentEntry:
     arms: tuple[str, ...]
 
 
-PLANNERS: dict[str, PlannerEntry] = {p.name: p for p in (
-    PlannerEntry("reference", "the task's hand-written reference plan (no planner call)", offline=True),
-    PlannerEntry("rules", "offline rules planner: parses the instruction, grounds its phrases in what perception "
-                          "found", offline=True),
-    PlannerEntry("gemini", "Google Gemini through google-genai (GEMINI_API_KEY)", offline=False,
-                 default_model="gemini-3.1-pro-preview"),
-    PlannerEntry("openai", "any OpenAI-compatible chat server (OPENAI_API_KEY)", offline=False, needs_model=True),
-)}
+PLANNERS: dict[str, PlannerEntry] = {
+    p.name: p
+    for p in (
+        PlannerEntry("reference", "the task's hand-written reference plan (no planner call)", offline=True),
+        PlannerEntry(
+            "rules",
+            "offline rules planner: parses the instruction, grounds its phrases in what perception found",
+            offline=True,
+        ),
+        PlannerEntry(
+            "gemini",
+            "Google Gemini through google-genai (GEMINI_API_KEY)",
+            offline=False,
+            default_model="gemini-3.1-pro-preview",
+        ),
+        PlannerEntry("openai", "any OpenAI-compatible chat server (OPENAI_API_KEY)", offline=False, needs_model=True),
+    )
+}
 
-SEGMENTERS: dict[str, SegmenterEntry] = {s.name: s for s in (
-    SegmenterEntry("sim", "ORACLE masks from the renderer's object ids; prompts grounded against the simulator's "
-                          "object names", privileged=True),
-    SegmenterEntry("sim-noisy", "the sim oracle with a seeded failure model (misses, erosion, confusion, depth "
-                                "noise)", privileged=True),
-    SegmenterEntry("sam3", "SAM3 (transformers Sam3Model) on RGB; depth and camera parameters lift masks to 3D",
-                   privileged=False, needs="a SAM3 checkpoint directory (SPARK_SAM3_MODEL)"),
-    SegmenterEntry("privileged-keypoints", "ground-truth keypoints from simulator state: no cameras, no "
-                                           "segmentation (measures control alone)", privileged=True, cameras=False),
-)}
+SEGMENTERS: dict[str, SegmenterEntry] = {
+    s.name: s
+    for s in (
+        SegmenterEntry(
+            "sim",
+            "ORACLE masks from the renderer's object ids; prompts grounded against the simulator's object names",
+            privileged=True,
+        ),
+        SegmenterEntry(
+            "sim-noisy",
+            "the sim oracle with a seeded failure model (misses, erosion, confusion, depth noise)",
+            privileged=True,
+        ),
+        SegmenterEntry(
+            "sam3",
+            "SAM3 (transformers Sam3Model) on RGB; depth and camera parameters lift masks to 3D",
+            privileged=False,
+            needs="a SAM3 checkpoint directory (SPARK_SAM3_MODEL)",
+        ),
+        SegmenterEntry(
+            "privileged-keypoints",
+            "ground-truth keypoints from simulator state: no cameras, no segmentation (measures control alone)",
+            privileged=True,
+            cameras=False,
+        ),
+    )
+}
 
-EMBODIMENTS: dict[str, EmbodimentEntry] = {e.name: e for e in (
-    EmbodimentEntry("panda", "one Franka Panda", ("right",)),
-    EmbodimentEntry("ur10", "one UR10 with a Robotiq-2F-85-like gripper", ("right",)),
-    EmbodimentEntry("bimanual", "two Pandas 0.6 m apart over one table", ("left", "right")),
-)}
+EMBODIMENTS: dict[str, EmbodimentEntry] = {
+    e.name: e
+    for e in (
+        EmbodimentEntry("panda", "one Franka Panda", ("right",)),
+        EmbodimentEntry("ur10", "one UR10 with a Robotiq-2F-85-like gripper", ("right",)),
+        EmbodimentEntry("bimanual", "two Pandas 0.6 m apart over one table", ("left", "right")),
+    )
+}
 
 
 class CatalogError(ValueError):
@@ -109,9 +139,17 @@ def task_entry(name: str) -> dict[str, Any]:
     """What the console shows about a task: suite, instruction, success condition, embodiments, reference plan."""
     task = check_task(name)
     suite = next(s for s, names in suites().items() if name in names)
-    return {"name": name, "suite": suite, "instruction": task.instruction, "predicate": task.predicate,
-            "embodiments": list(task.embodiments), "has_reference_plan": task.has_reference_plan,
-            "max_sim_s": task.max_sim_s, "tags": list(task.tags), "objects": [o.label for o in task.objects]}
+    return {
+        "name": name,
+        "suite": suite,
+        "instruction": task.instruction,
+        "predicate": task.predicate,
+        "embodiments": list(task.embodiments),
+        "has_reference_plan": task.has_reference_plan,
+        "max_sim_s": task.max_sim_s,
+        "tags": list(task.tags),
+        "objects": [o.label for o in task.objects],
+    }
 
 
 def enums() -> dict[str, list[str]]:
@@ -119,8 +157,12 @@ def enums() -> dict[str, list[str]]:
     from .execution import EventKind, NodeStatus, TreeStatus
     from .trial_outcome import Verdict
 
-    return {"verdict": [v.value for v in Verdict], "node_status": [s.value for s in NodeStatus],
-            "event_kind": [k.value for k in EventKind], "tree_status": [s.value for s in TreeStatus]}
+    return {
+        "verdict": [v.value for v in Verdict],
+        "node_status": [s.value for s in NodeStatus],
+        "event_kind": [k.value for k in EventKind],
+        "tree_status": [s.value for s in TreeStatus],
+    }
 
 
 def catalog_json(with_tasks: bool = True) -> dict[str, Any]:
@@ -137,6 +179,21 @@ def catalog_json(with_tasks: bool = True) -> dict[str, Any]:
     return out
 
 
-__all__ = ["CatalogError", "EMBODIMENTS", "EmbodimentEntry", "PLANNERS", "PlannerEntry", "SEGMENTERS",
-           "SegmenterEntry", "catalog_json", "check_embodiment", "check_planner", "check_segmenter", "check_suite",
-           "check_task", "enums", "suites", "task_entry"]
+__all__ = [
+    "CatalogError",
+    "EMBODIMENTS",
+    "EmbodimentEntry",
+    "PLANNERS",
+    "PlannerEntry",
+    "SEGMENTERS",
+    "SegmenterEntry",
+    "catalog_json",
+    "check_embodiment",
+    "check_planner",
+    "check_segmenter",
+    "check_suite",
+    "check_task",
+    "enums",
+    "suites",
+    "task_entry",
+]

@@ -10,8 +10,9 @@ from __future__ import annotations
 
 import time
 import traceback
+from collections.abc import Sequence
 from dataclasses import asdict, dataclass, field
-from typing import Any, Protocol, Sequence
+from typing import Any, Protocol
 
 from .catalog import PLANNERS, SEGMENTERS, check_embodiment, check_planner, check_segmenter, check_task
 from .execution import Event, EventBus, Executor, RecoveryPolicy, StepControl, TrialResult
@@ -60,15 +61,18 @@ class TrialConfig:
         except ValueError as e:
             raise TrialConfigError(str(e)) from None
         if self.embodiment is not None and self.embodiment not in task.embodiments:
-            raise TrialConfigError(f"embodiment: task {self.task!r} runs on {', '.join(task.embodiments)}, "
-                                   f"not {self.embodiment!r}")
+            raise TrialConfigError(
+                f"embodiment: task {self.task!r} runs on {', '.join(task.embodiments)}, not {self.embodiment!r}"
+            )
         if self.plan_text is not None:
             plan, issues = validate(self.plan_text)
             if plan is None:
                 raise TrialConfigError("plan_text: " + "; ".join(str(i) for i in issues))
         elif self.planner == "reference" and not task.has_reference_plan:
-            raise TrialConfigError(f"planner: task {self.task!r} has no reference plan; choose a planner "
-                                   f"({', '.join(p for p in PLANNERS if p != 'reference')}) or give a plan")
+            raise TrialConfigError(
+                f"planner: task {self.task!r} has no reference plan; choose a planner "
+                f"({', '.join(p for p in PLANNERS if p != 'reference')}) or give a plan"
+            )
         if PLANNERS[self.planner].needs_model and not self.model:
             raise TrialConfigError(f"model: the {self.planner} planner needs a model name")
         if self.time_limit_s is not None and not 0 < self.time_limit_s <= 3600:
@@ -80,16 +84,25 @@ class TrialConfig:
     def protocol(self, time_limit_s: float) -> dict[str, Any]:
         """The trial's protocol in words: what every figure and record names."""
         seg = SEGMENTERS[self.segmenter]
-        planner = ("given plan" if self.plan_text is not None else
-                   PLANNERS[self.planner].description if PLANNERS[self.planner].offline else
-                   f"{self.planner} ({self.model or PLANNERS[self.planner].default_model}); one call; it saw the "
-                   "instruction, what perception found for its phrases and the annotated image")
+        planner = (
+            "given plan"
+            if self.plan_text is not None
+            else PLANNERS[self.planner].description
+            if PLANNERS[self.planner].offline
+            else f"{self.planner} ({self.model or PLANNERS[self.planner].default_model}); one call; it saw the "
+            "instruction, what perception found for its phrases and the annotated image"
+        )
         return {
-            "planner": planner, "segmenter": self.segmenter, "privileged": seg.privileged,
+            "planner": planner,
+            "segmenter": self.segmenter,
+            "privileged": seg.privileged,
             "segmenter_description": seg.description,
             "cameras": "none" if not seg.cameras else ("+".join(self.cameras) if self.cameras else "scene default"),
-            "adaptive_prompts": self.adaptive and seg.cameras, "recovery": "tiers 1-2, 2 retries" if self.recovery else "off",
-            "embodiment": self.embodiment, "seed": self.seed, "time_limit_s": time_limit_s,
+            "adaptive_prompts": self.adaptive and seg.cameras,
+            "recovery": "tiers 1-2, 2 retries" if self.recovery else "off",
+            "embodiment": self.embodiment,
+            "seed": self.seed,
+            "time_limit_s": time_limit_s,
             "pacing": f"{self.pacing:g}x real time" if self.pacing else "as fast as possible",
             "noise": self.noise.describe() if self.segmenter == "sim-noisy" else None,
             "success_rule": "the task's predicate within the time limit AND the behavior tree succeeded",
@@ -173,8 +186,17 @@ def phase_split(setup_s: float, run_s: float, world: Any, perception_s: float, p
     render, sim = world.wall_s["rendering"], world.wall_s["simulation"]
     perception = max(perception_s - render, 0.0)
     execution = max(run_s - render - sim - perception - planning_s, 0.0)
-    return {k: round(v, 4) for k, v in (("setup", setup_s), ("perception", perception), ("rendering", render),
-                                        ("planning", planning_s), ("simulation", sim), ("execution", execution))}
+    return {
+        k: round(v, 4)
+        for k, v in (
+            ("setup", setup_s),
+            ("perception", perception),
+            ("rendering", render),
+            ("planning", planning_s),
+            ("simulation", sim),
+            ("execution", execution),
+        )
+    }
 
 
 def _plan(ctx: TrialContext, library: Any) -> tuple[Plan | None, dict[str, Any]]:
@@ -194,23 +216,41 @@ def _plan(ctx: TrialContext, library: Any) -> tuple[Plan | None, dict[str, Any]]
     try:
         planner = make_planner(cfg.planner, cfg.model, cfg.base_url)
     except ValueError as e:  # PlannerUnavailable is a ValueError: a missing key or server
-        return None, {"source": cfg.planner, "error": f"planner {cfg.planner!r} unavailable: {e}",
-                      "latency_s": time.perf_counter() - t0}
+        return None, {
+            "source": cfg.planner,
+            "error": f"planner {cfg.planner!r} unavailable: {e}",
+            "latency_s": time.perf_counter() - t0,
+        }
     view = observe(ctx.instruction, ctx.resolver)
     llm = not PLANNERS[cfg.planner].offline
     if llm:
         view = annotated_view(view, ctx.resolver)
     examples = library.examples(ctx.instruction) if (llm and library is not None) else ()
     result = planner.plan(PlanRequest(ctx.instruction, view, examples, arm_bases(ctx.world), arm_tools(ctx.world)))
-    info = {"source": cfg.planner, "model": result.detail.get("model"), "text": result.text, "error": result.error,
-            "issues": [str(i) for i in result.issues], "understood": result.detail.get("understood"),
-            "cost_usd": result.cost_usd, "usage": asdict(result.usage), "scene_summary": view.summary,
-            "latency_s": time.perf_counter() - t0, "examples": len(examples)}
+    info = {
+        "source": cfg.planner,
+        "model": result.detail.get("model"),
+        "text": result.text,
+        "error": result.error,
+        "issues": [str(i) for i in result.issues],
+        "understood": result.detail.get("understood"),
+        "cost_usd": result.cost_usd,
+        "usage": asdict(result.usage),
+        "scene_summary": view.summary,
+        "latency_s": time.perf_counter() - t0,
+        "examples": len(examples),
+    }
     return result.plan, info
 
 
-def run_trial(config: TrialConfig, sinks: Sequence[TrialSink] = (), control: StepControl | None = None, *,
-              trial_id: str | None = None, library: Any = None) -> TrialOutcome:
+def run_trial(
+    config: TrialConfig,
+    sinks: Sequence[TrialSink] = (),
+    control: StepControl | None = None,
+    *,
+    trial_id: str | None = None,
+    library: Any = None,
+) -> TrialOutcome:
     """Run one trial end to end and return its outcome; never raises for what happens inside the trial (an
     internal error is the `crashed` verdict, recorded by the sinks). `library`: a plan library whose examples
     LLM planners see and which keeps this trial's plan if it succeeds. Raises TrialConfigError for a bad config."""
@@ -225,12 +265,26 @@ def run_trial(config: TrialConfig, sinks: Sequence[TrialSink] = (), control: Ste
     t0 = time.perf_counter()
     time_limit_s = config.time_limit_s or task.max_sim_s
     protocol = config.protocol(time_limit_s)
-    base = dict(trial_id=trial_id, task=task.name, seed=config.seed,
-                instruction=config.instruction or task.instruction, protocol=protocol)
+    base = dict(
+        trial_id=trial_id,
+        task=task.name,
+        seed=config.seed,
+        instruction=config.instruction or task.instruction,
+        protocol=protocol,
+    )
     if control.aborted:  # cancelled while queued: never starts
-        outcome = TrialOutcome(**base, verdict=Verdict.ABORTED, task_success=None, tree_status=None, failure=None,
-                               failed_node=None, reason="cancelled before it started", unmet=None, sim_time_s=0.0,
-                               wall_time_s=0.0)
+        outcome = TrialOutcome(
+            **base,
+            verdict=Verdict.ABORTED,
+            task_success=None,
+            tree_status=None,
+            failure=None,
+            failed_node=None,
+            reason="cancelled before it started",
+            unmet=None,
+            sim_time_s=0.0,
+            wall_time_s=0.0,
+        )
         for sink in sinks:
             sink.on_finish(None, outcome)
         return outcome
@@ -238,10 +292,19 @@ def run_trial(config: TrialConfig, sinks: Sequence[TrialSink] = (), control: Ste
     try:
         ctx = _start(config, task, trial_id, protocol, sinks)
         outcome = _run(ctx, sinks, control, library, time_limit_s, t0)
-    except Exception as e:  # noqa: BLE001 - a crashing trial is a verdict, recorded like any other
-        outcome = TrialOutcome(**base, verdict=Verdict.CRASHED, task_success=None, tree_status=None,
-                               failure="internal", failed_node=None, reason=f"internal error: {type(e).__name__}: {e}",
-                               unmet=None, sim_time_s=0.0, wall_time_s=round(time.perf_counter() - t0, 3))
+    except Exception as e:
+        outcome = TrialOutcome(
+            **base,
+            verdict=Verdict.CRASHED,
+            task_success=None,
+            tree_status=None,
+            failure="internal",
+            failed_node=None,
+            reason=f"internal error: {type(e).__name__}: {e}",
+            unmet=None,
+            sim_time_s=0.0,
+            wall_time_s=round(time.perf_counter() - t0, 3),
+        )
         outcome.protocol = {**protocol, "traceback": traceback.format_exc()[-4000:]}
         if ctx is not None:
             outcome.instruction = ctx.instruction
@@ -256,8 +319,9 @@ def run_trial(config: TrialConfig, sinks: Sequence[TrialSink] = (), control: Ste
     return outcome
 
 
-def _start(config: TrialConfig, task: Any, trial_id: str, protocol: dict[str, Any],
-           sinks: Sequence[TrialSink]) -> TrialContext:
+def _start(
+    config: TrialConfig, task: Any, trial_id: str, protocol: dict[str, Any], sinks: Sequence[TrialSink]
+) -> TrialContext:
     from .perception.factory import make_resolver
     from .sim.world import TrajectoryRecorder
 
@@ -267,8 +331,11 @@ def _start(config: TrialConfig, task: Any, trial_id: str, protocol: dict[str, An
     try:
         world.recorder = TrajectoryRecorder()
         bus = EventBus(trial_id)
-        resolver = TimedResolver(make_resolver(world, config.segmenter, config.seed, config.cameras, config.adaptive,
-                                               config.noise, config.sam3_model))
+        resolver = TimedResolver(
+            make_resolver(
+                world, config.segmenter, config.seed, config.cameras, config.adaptive, config.noise, config.sam3_model
+            )
+        )
         instruction = config.instruction or getattr(world, "instruction", task.instruction)  # LIBERO: the env's
         ctx = TrialContext(trial_id, config, task, instruction, world, resolver, bus, protocol)
         if config.capture is not None:
@@ -287,8 +354,9 @@ def _start(config: TrialConfig, task: Any, trial_id: str, protocol: dict[str, An
         raise
 
 
-def _run(ctx: TrialContext, sinks: Sequence[TrialSink], control: StepControl, library: Any, time_limit_s: float,
-         t0: float) -> TrialOutcome:
+def _run(
+    ctx: TrialContext, sinks: Sequence[TrialSink], control: StepControl, library: Any, time_limit_s: float, t0: float
+) -> TrialOutcome:
     from .execution.primitives import PrimitiveLibrary
     from .sim.pacing import Pacer, SimTimeLimit
 
@@ -309,8 +377,14 @@ def _run(ctx: TrialContext, sinks: Sequence[TrialSink], control: StepControl, li
         world.monitors.extend(monitors)
         try:
             recovery = RecoveryPolicy() if cfg.recovery else RecoveryPolicy(max_retries=0)
-            executor = Executor(PrimitiveLibrary(world, ctx.resolver, seed=cfg.seed), ctx.resolver,
-                                recovery=recovery, bus=ctx.bus, control=control, trial_id=ctx.trial_id)
+            executor = Executor(
+                PrimitiveLibrary(world, ctx.resolver, seed=cfg.seed),
+                ctx.resolver,
+                recovery=recovery,
+                bus=ctx.bus,
+                control=control,
+                trial_id=ctx.trial_id,
+            )
             result = executor.run(plan)
         finally:
             for m in monitors:
@@ -323,37 +397,65 @@ def _run(ctx: TrialContext, sinks: Sequence[TrialSink], control: StepControl, li
     predicate = bool(task.success(world)) if result is not None else None
     task_success = None if predicate is None else (predicate and not timed_out)
     tree_status = result.outcome if result is not None else None
-    verdict = judge(planned=plan is not None, aborted=tree_status == "aborted" and not limit.expired,
-                    timed_out=timed_out, tree_status=tree_status, task_success=task_success)
+    verdict = judge(
+        planned=plan is not None,
+        aborted=tree_status == "aborted" and not limit.expired,
+        timed_out=timed_out,
+        tree_status=tree_status,
+        task_success=task_success,
+    )
     reason = _reason(verdict, result, planning, used_s, time_limit_s, task)
     referee = getattr(world, "referee", None)  # a task's own bookkeeping (robosuite Wipe's markers)
     if referee is not None and result is not None:
         reason = "; ".join(x for x in (reason, referee.summary) if x)
-    failure = (result.failure.value if result is not None and result.failure else
-               "planner" if verdict is Verdict.PLANNER_ERROR else "timeout" if verdict is Verdict.TIMEOUT else None)
+    failure = (
+        result.failure.value
+        if result is not None and result.failure
+        else "planner"
+        if verdict is Verdict.PLANNER_ERROR
+        else "timeout"
+        if verdict is Verdict.TIMEOUT
+        else None
+    )
     recorder = world.recorder
     return TrialOutcome(
-        trial_id=ctx.trial_id, task=task.name, seed=cfg.seed, instruction=ctx.instruction, verdict=verdict,
-        task_success=task_success, tree_status=tree_status, failure=failure,
-        failed_node=result.failed_node if result is not None else None, reason=reason,
+        trial_id=ctx.trial_id,
+        task=task.name,
+        seed=cfg.seed,
+        instruction=ctx.instruction,
+        verdict=verdict,
+        task_success=task_success,
+        tree_status=tree_status,
+        failure=failure,
+        failed_node=result.failed_node if result is not None else None,
+        reason=reason,
         unmet=task.predicate if verdict in (Verdict.TASK_UNMET, Verdict.TIMEOUT) and not predicate else None,
-        sim_time_s=round(world.sim_time_s, 3), wall_time_s=round(time.perf_counter() - t0, 3),
-        protocol={**ctx.protocol, "planning": {k: v for k, v in planning.items() if k not in ("text", "scene_summary")}},
+        sim_time_s=round(world.sim_time_s, 3),
+        wall_time_s=round(time.perf_counter() - t0, 3),
+        protocol={
+            **ctx.protocol,
+            "planning": {k: v for k, v in planning.items() if k not in ("text", "scene_summary")},
+        },
         retries=sum(r.retries for r in result.nodes.values()) if result is not None else 0,
-        events=len(ctx.bus.history), trajectory_len=len(recorder.rows) if recorder is not None else 0,
-        cost_usd=float(planning.get("cost_usd", 0.0)), usage=planning.get("usage", {}),
+        events=len(ctx.bus.history),
+        trajectory_len=len(recorder.rows) if recorder is not None else 0,
+        cost_usd=float(planning.get("cost_usd", 0.0)),
+        usage=planning.get("usage", {}),
         plan_text=to_yaml(plan) if plan is not None else "",
         phases_s=phase_split(t_run - t0, t_end - t_run, world, ctx.resolver.wall_s, planning_s),
         result=result,
     )
 
 
-def _reason(verdict: Verdict, result: TrialResult | None, planning: dict[str, Any], used_s: float,
-            limit_s: float, task: Any) -> str:
+def _reason(
+    verdict: Verdict, result: TrialResult | None, planning: dict[str, Any], used_s: float, limit_s: float, task: Any
+) -> str:
     """The outcome in words, for the operator."""
     if verdict is Verdict.PLANNER_ERROR:
         issues = planning.get("issues") or []
-        return f"no plan: {planning.get('error') or 'the planner wrote none'}" + (f" ({'; '.join(issues[:5])})" if issues else "")
+        return f"no plan: {planning.get('error') or 'the planner wrote none'}" + (
+            f" ({'; '.join(issues[:5])})" if issues else ""
+        )
     if verdict is Verdict.TIMEOUT:
         return f"past the task's time limit: {used_s:.1f} s of simulated time, limit {limit_s:.0f} s"
     if verdict is Verdict.TASK_UNMET:
@@ -361,5 +463,15 @@ def _reason(verdict: Verdict, result: TrialResult | None, planning: dict[str, An
     return result.reason if result is not None else ""
 
 
-__all__ = ["BaseSink", "TimedResolver", "TrialConfig", "TrialConfigError", "TrialContext", "TrialOutcome", "TrialSink",
-           "Verdict", "phase_split", "run_trial"]
+__all__ = [
+    "BaseSink",
+    "TimedResolver",
+    "TrialConfig",
+    "TrialConfigError",
+    "TrialContext",
+    "TrialOutcome",
+    "TrialSink",
+    "Verdict",
+    "phase_split",
+    "run_trial",
+]

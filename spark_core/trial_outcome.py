@@ -62,7 +62,9 @@ class TrialOutcome:
         return out
 
 
-def judge(*, planned: bool, aborted: bool, timed_out: bool, tree_status: str | None, task_success: bool | None) -> Verdict:
+def judge(
+    *, planned: bool, aborted: bool, timed_out: bool, tree_status: str | None, task_success: bool | None
+) -> Verdict:
     """The one success rule. Order matters: an operator's abort and the time limit end the trial whatever
     the tree and the predicate say at that moment."""
     if not planned:

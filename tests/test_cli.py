@@ -9,8 +9,9 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def spark(*args, stdin=None):
-    return subprocess.run([sys.executable, "-m", "spark_cli", *args], cwd=ROOT, capture_output=True, text=True,
-                          input=stdin, timeout=120)
+    return subprocess.run(
+        [sys.executable, "-m", "spark_cli", *args], cwd=ROOT, capture_output=True, text=True, input=stdin, timeout=120
+    )
 
 
 def test_help_lists_commands():
@@ -27,7 +28,9 @@ def test_validate_examples_ok():
 
 def test_validate_lists_every_error_and_exits_1(tmp_path):
     bad = tmp_path / "bad.yaml"
-    bad.write_text("task: t\ntree:\n  type: sequence\n  children:\n    - {primitive: grasp, params: {force: high}}\n    - {primitive: grap}\n")
+    bad.write_text(
+        "task: t\ntree:\n  type: sequence\n  children:\n    - {primitive: grasp, params: {force: high}}\n    - {primitive: grap}\n"
+    )
     out = spark("validate", str(bad))
     assert out.returncode == 1
     assert 'tree.children[0].params.force: expected number in [0, 140], got "high"' in out.stdout

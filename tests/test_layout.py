@@ -35,9 +35,11 @@ def _files(package: str) -> list[Path]:
 def test_the_engine_never_imports_the_server_or_the_cli():
     for path in _files("spark_core"):
         for module, _ in _imports(path):
-            assert not module.split(".")[0] in ("server", "spark_cli"), f"{path}: imports {module}"
+            assert module.split(".")[0] not in ("server", "spark_cli"), f"{path}: imports {module}"
         text = path.read_text(encoding="utf-8")
-        assert not re.search(r"import_module\(\s*f?[\"'](server|spark_cli)", text), f"{path} loads the server dynamically"
+        assert not re.search(r"import_module\(\s*f?[\"'](server|spark_cli)", text), (
+            f"{path} loads the server dynamically"
+        )
 
 
 def test_planning_and_perception_do_not_import_execution():
@@ -96,11 +98,26 @@ def test_the_api_serves_the_catalog_the_cli_offers(tmp_path):
         schema = c.get("/openapi.json").json()["components"]["schemas"]["TrialCreate"]["properties"]
     assert served == json.loads(json.dumps(catalog_json()))
     assert {s["name"]: s["privileged"] for s in served["segmenters"]} == {
-        "sim": True, "sim-noisy": True, "sam3": False, "privileged-keypoints": True}
-    assert served["verdict"] == ["success", "task_unmet", "tree_failed", "planner_error", "aborted", "timeout",
-                                 "interrupted", "crashed"]
+        "sim": True,
+        "sim-noisy": True,
+        "sam3": False,
+        "privileged-keypoints": True,
+    }
+    assert served["verdict"] == [
+        "success",
+        "task_unmet",
+        "tree_failed",
+        "planner_error",
+        "aborted",
+        "timeout",
+        "interrupted",
+        "crashed",
+    ]
     assert bad.status_code == 422 and "unknown segmenter 'oracle'" in bad.text
     assert schema["segmenter"]["enum"] == [s["name"] for s in served["segmenters"]]
-    run = next(a for a in build_parser()._subparsers._group_actions[0].choices["run"]._actions  # noqa: SLF001
-               if a.dest == "segmenter")
+    run = next(
+        a
+        for a in build_parser()._subparsers._group_actions[0].choices["run"]._actions
+        if a.dest == "segmenter"
+    )
     assert list(run.choices) == schema["segmenter"]["enum"]

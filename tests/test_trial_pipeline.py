@@ -46,8 +46,9 @@ def test_one_config_gives_the_same_verdict_events_and_trajectory_through_all_fou
     seen = {}
 
     url = f"sqlite:///{tmp_path / 'console.db'}"  # 1. the console's worker process
-    with TestClient(create_app(Settings(store_url=url, workers=1, viser=False,
-                                        artifacts_dir=str(tmp_path / "art")))) as c:
+    with TestClient(
+        create_app(Settings(store_url=url, workers=1, viser=False, artifacts_dir=str(tmp_path / "art")))
+    ) as c:
         tid = c.post("/api/trials", json={"task": "lift_block", "segmenter": "sim", "seed": 2}).json()["id"]
         t0 = time.monotonic()
         while c.get(f"/api/trials/{tid}").json()["status"] not in ("done", "interrupted"):
@@ -62,11 +63,14 @@ def test_one_config_gives_the_same_verdict_events_and_trajectory_through_all_fou
 
     for executor in ("local", "ray"):  # 3. and 4. spark bench's local pool, and Ray
         url = f"sqlite:///{tmp_path / f'{executor}.db'}"
-        (row,) = reference_suite.run(["lift_block"], 1, seed=2, workers=2, template=config, executor=executor,
-                                     store_url=url)
+        (row,) = reference_suite.run(
+            ["lift_block"], 1, seed=2, workers=2, template=config, executor=executor, store_url=url
+        )
         store = TraceStore(url)
         seen[executor] = store.get_trial(store.trial_ids()[0])
-        assert row["verdict"] == seen[executor]["verdict"] and row["trajectory_len"] == len(seen[executor]["trajectory"])
+        assert row["verdict"] == seen[executor]["verdict"] and row["trajectory_len"] == len(
+            seen[executor]["trajectory"]
+        )
 
     prints = {caller: _fingerprint(t) for caller, t in seen.items()}
     assert prints["console"][0] == "success" and len(prints["console"][1]) >= 4 and prints["console"][2] > 100
@@ -121,14 +125,20 @@ def test_an_abort_before_start_and_a_crash_are_verdicts_not_exceptions(monkeypat
     assert "traceback" in out.protocol
 
 
-@pytest.mark.parametrize("changes,message", [
-    ({"task": "unicorn_dance"}, "unknown task 'unicorn_dance'"),
-    ({"segmenter": "privileged"}, "unknown segmenter 'privileged'; available: sim, sim-noisy, sam3, privileged-keypoints"),
-    ({"planner": "openai"}, "model: the openai planner needs a model name"),
-    ({"embodiment": "bimanual"}, "embodiment: task 'lift_block' runs on panda, ur10"),
-    ({"plan_text": "task: t\ntree: {primitive: grasp, params: {force: high}}"}, "plan_text: tree.params.force"),
-    ({"time_limit_s": -1.0}, "time_limit_s: expected (0, 3600]"),
-])
+@pytest.mark.parametrize(
+    "changes,message",
+    [
+        ({"task": "unicorn_dance"}, "unknown task 'unicorn_dance'"),
+        (
+            {"segmenter": "privileged"},
+            "unknown segmenter 'privileged'; available: sim, sim-noisy, sam3, privileged-keypoints",
+        ),
+        ({"planner": "openai"}, "model: the openai planner needs a model name"),
+        ({"embodiment": "bimanual"}, "embodiment: task 'lift_block' runs on panda, ur10"),
+        ({"plan_text": "task: t\ntree: {primitive: grasp, params: {force: high}}"}, "plan_text: tree.params.force"),
+        ({"time_limit_s": -1.0}, "time_limit_s: expected (0, 3600]"),
+    ],
+)
 def test_a_bad_config_is_refused_before_anything_runs_naming_the_field(changes, message):
     from dataclasses import replace
 

@@ -30,8 +30,9 @@ class BatchTrial(BaseModel):
 
 class BatchCreate(BaseModel):
     suite: str = Field("builtin", description="task suite (GET /api/catalog lists them)")
-    specs: list[BatchTrial] | None = Field(None, max_length=2000,
-                                           description="explicit trials (instead of tasks × trials from the suite)")
+    specs: list[BatchTrial] | None = Field(
+        None, max_length=2000, description="explicit trials (instead of tasks × trials from the suite)"
+    )
     tasks: list[str] | None = Field(None, max_length=2000, description="subset of the suite's tasks (default: all)")
     trials: int = Field(1, ge=1, le=100, strict=True, description="seeds per task")
     seed: int = Field(0, ge=0, le=MAX_SEED, strict=True)
@@ -60,17 +61,36 @@ def create_batch(body: BatchCreate, request: Request) -> dict:
     if body.specs is None and body.tasks is not None:
         unknown = [t for t in dict.fromkeys(body.tasks) if t not in suites[body.suite]]
         if unknown:
-            raise HTTPException(422, f"unknown task(s) {', '.join(unknown[:10])}; {body.suite} tasks: "
-                                     f"{', '.join(suites[body.suite])}")
+            raise HTTPException(
+                422, f"unknown task(s) {', '.join(unknown[:10])}; {body.suite} tasks: {', '.join(suites[body.suite])}"
+            )
     batch_id = f"batch-{uuid.uuid4().hex[:10]}"
     if body.specs is not None:
-        wanted = [TrialCreate(task=sp.task, instruction=sp.instruction, seed=sp.seed, planner=sp.planner or body.planner,
-                              segmenter=sp.segmenter or body.segmenter, model=body.model, capture=body.capture)
-                  for sp in body.specs]
+        wanted = [
+            TrialCreate(
+                task=sp.task,
+                instruction=sp.instruction,
+                seed=sp.seed,
+                planner=sp.planner or body.planner,
+                segmenter=sp.segmenter or body.segmenter,
+                model=body.model,
+                capture=body.capture,
+            )
+            for sp in body.specs
+        ]
     else:
-        wanted = [TrialCreate(task=task, seed=body.seed + k, planner=body.planner, segmenter=body.segmenter,
-                              model=body.model, capture=body.capture)
-                  for task in (body.tasks or suites[body.suite]) for k in range(body.trials)]
+        wanted = [
+            TrialCreate(
+                task=task,
+                seed=body.seed + k,
+                planner=body.planner,
+                segmenter=body.segmenter,
+                model=body.model,
+                capture=body.capture,
+            )
+            for task in (body.tasks or suites[body.suite])
+            for k in range(body.trials)
+        ]
     configs = []
     for i, w in enumerate(wanted):
         try:
@@ -90,17 +110,44 @@ def get_batch(batch_id: str, request: Request) -> dict:
     return _batch_with_results(request, batch_id)
 
 
-CSV_TRIAL_COLUMNS = ("id", "task", "seed", "instruction", "planner", "segmenter", "status", "verdict", "success",
-                     "failure", "failed_node", "reason", "wall_time_s", "sim_time_s", "cost_usd")
+CSV_TRIAL_COLUMNS = (
+    "id",
+    "task",
+    "seed",
+    "instruction",
+    "planner",
+    "segmenter",
+    "status",
+    "verdict",
+    "success",
+    "failure",
+    "failed_node",
+    "reason",
+    "wall_time_s",
+    "sim_time_s",
+    "cost_usd",
+)
 
 
 @router.get("/{batch_id}/results.csv", response_class=PlainTextResponse)
 def batch_results_csv(batch_id: str, request: Request) -> PlainTextResponse:
     """The per-task result table (success rate with its Wilson 95 % interval) as CSV."""
     b = _batch_with_results(request, batch_id)
-    rows = [{"task": r["task"], "done": r["done"], "total": r["total"], "successes": r["successes"],
-             "success_rate": r["success_rate"], "ci95_low": r["ci95"][0], "ci95_high": r["ci95"][1]} for r in b["results"]]
-    return _csv(rows, ("task", "done", "total", "successes", "success_rate", "ci95_low", "ci95_high"), f"{batch_id}-results.csv")
+    rows = [
+        {
+            "task": r["task"],
+            "done": r["done"],
+            "total": r["total"],
+            "successes": r["successes"],
+            "success_rate": r["success_rate"],
+            "ci95_low": r["ci95"][0],
+            "ci95_high": r["ci95"][1],
+        }
+        for r in b["results"]
+    ]
+    return _csv(
+        rows, ("task", "done", "total", "successes", "success_rate", "ci95_low", "ci95_high"), f"{batch_id}-results.csv"
+    )
 
 
 @router.get("/{batch_id}/trials.csv", response_class=PlainTextResponse)
@@ -118,8 +165,9 @@ def _csv(rows: list[dict], columns: tuple[str, ...], filename: str) -> PlainText
     w = csv.DictWriter(buf, fieldnames=columns, extrasaction="ignore", lineterminator="\n")
     w.writeheader()
     w.writerows(rows)
-    return PlainTextResponse(buf.getvalue(), media_type="text/csv",
-                             headers={"content-disposition": f'attachment; filename="{filename}"'})
+    return PlainTextResponse(
+        buf.getvalue(), media_type="text/csv", headers={"content-disposition": f'attachment; filename="{filename}"'}
+    )
 
 
 def _batch_with_results(request: Request, batch_id: str) -> dict:
@@ -133,8 +181,16 @@ def _batch_with_results(request: Request, batch_id: str) -> dict:
         rs = [t for t in done if t["task"] == task]
         k = sum(bool(t["success"]) for t in rs)
         lo, hi = wilson(k, len(rs))
-        table.append({"task": task, "done": len(rs), "total": sum(t["task"] == task for t in trials), "successes": k,
-                      "success_rate": k / len(rs) if rs else None, "ci95": [lo, hi]})
+        table.append(
+            {
+                "task": task,
+                "done": len(rs),
+                "total": sum(t["task"] == task for t in trials),
+                "successes": k,
+                "success_rate": k / len(rs) if rs else None,
+                "ci95": [lo, hi],
+            }
+        )
     status = batch["status"] if batch["status"] == "cancelled" or len(done) < len(trials) else "done"
     return {**batch, "status": status, "progress": {"done": len(done), "total": len(trials)}, "results": table}
 

@@ -32,8 +32,11 @@ def create_export(body: ExportCreate, request: Request) -> dict:
         known = set(store.trial_ids(ids=body.trial_ids))
         unknown = list(dict.fromkeys(i for i in body.trial_ids if i not in known))
         if unknown:
-            raise HTTPException(404, f"no trial {', '.join(map(repr, unknown[:20]))}"
-                                     + (f" (and {len(unknown) - 20} more)" if len(unknown) > 20 else ""))
+            raise HTTPException(
+                404,
+                f"no trial {', '.join(map(repr, unknown[:20]))}"
+                + (f" (and {len(unknown) - 20} more)" if len(unknown) > 20 else ""),
+            )
     if body.batch and store.get_batch(body.batch) is None:
         raise HTTPException(404, f"no batch {body.batch!r}")
     export_id = f"export-{uuid.uuid4().hex[:10]}"
@@ -46,9 +49,15 @@ def create_export(body: ExportCreate, request: Request) -> dict:
         raise HTTPException(422, _without_paths(str(e))) from None
     shutil.make_archive(str(root / export_id), "zip", root / "dataset")
     # Where the server keeps files is its own business: the client gets the download URL, never a path.
-    return {"id": export_id, "episodes": report.episodes, "frames": report.frames, "bytes": report.bytes_on_disk,
-            "skipped": [{**s, "reason": _without_paths(str(s.get("reason", "")))} for s in report.skipped],
-            "wall_time_s": report.wall_time_s, "download": f"/api/exports/{export_id}.zip"}
+    return {
+        "id": export_id,
+        "episodes": report.episodes,
+        "frames": report.frames,
+        "bytes": report.bytes_on_disk,
+        "skipped": [{**s, "reason": _without_paths(str(s.get("reason", "")))} for s in report.skipped],
+        "wall_time_s": report.wall_time_s,
+        "download": f"/api/exports/{export_id}.zip",
+    }
 
 
 _PATH = re.compile(r"(?<![\w.:/])/(?:[^\s'\"/]+/)+([^\s'\"/]+)")

@@ -27,11 +27,30 @@ def version() -> dict:
 def grammar() -> dict:
     from spark_core import REGISTRY, plan_json_schema
 
-    prims = [{"name": s.name, "tier": s.tier.value, "description": s.description, "arm": s.arm.value,
-              "timeout_s": s.timeout_s, "postcondition": s.postcondition,
-              "slots": [{"name": x.name, "type": x.type.value, "required": x.required, "default": x.default,
-                         "unit": x.unit, "min": x.minimum, "max": x.maximum, "values": list(x.values)} for x in s.slots]}
-             for s in REGISTRY]
+    prims = [
+        {
+            "name": s.name,
+            "tier": s.tier.value,
+            "description": s.description,
+            "arm": s.arm.value,
+            "timeout_s": s.timeout_s,
+            "postcondition": s.postcondition,
+            "slots": [
+                {
+                    "name": x.name,
+                    "type": x.type.value,
+                    "required": x.required,
+                    "default": x.default,
+                    "unit": x.unit,
+                    "min": x.minimum,
+                    "max": x.maximum,
+                    "values": list(x.values),
+                }
+                for x in s.slots
+            ],
+        }
+        for s in REGISTRY
+    ]
     return {"primitives": prims, "json_schema": plan_json_schema()}
 
 

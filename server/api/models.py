@@ -6,8 +6,7 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, Field, field_validator
 
-from spark_core import (EMBODIMENTS, PLANNERS, SEGMENTERS, CatalogError, check_embodiment, check_planner,
-                        check_segmenter)
+from spark_core import EMBODIMENTS, PLANNERS, SEGMENTERS, CatalogError, check_embodiment, check_planner, check_segmenter
 
 MAX_SEED = 2**31 - 1  # a seed the simulators' RNGs take (np.random, robosuite, LIBERO init-state index)
 
@@ -20,17 +19,23 @@ class TrialCreate(BaseModel):
     task: str = Field(description="task whose scene to run in (GET /api/catalog lists them)")
     instruction: str | None = Field(None, max_length=2000, description="default: the task's own instruction")
     planner: str = Field("reference", json_schema_extra=_enum(PLANNERS))
-    segmenter: str = Field("sim", json_schema_extra=_enum(SEGMENTERS),
-                           description="perception backend; GET /api/catalog says which are privileged")
+    segmenter: str = Field(
+        "sim",
+        json_schema_extra=_enum(SEGMENTERS),
+        description="perception backend; GET /api/catalog says which are privileged",
+    )
     seed: int = Field(0, ge=0, le=MAX_SEED, strict=True)
     breakpoints: list[str] = Field(default_factory=list, max_length=200, description="node paths to pause before")
     model: str | None = Field(None, max_length=200)
     base_url: str | None = Field(None, max_length=500)
-    plan: str | None = Field(None, max_length=256 * 1024, description="a plan to run as given (the planner is not called)")
+    plan: str | None = Field(
+        None, max_length=256 * 1024, description="a plan to run as given (the planner is not called)"
+    )
     start_paused: bool = Field(False, description="pause before the first primitive")
     capture: bool = Field(False, description="record training-data frames (agentview + wrist video at 10 fps)")
-    embodiment: str | None = Field(None, json_schema_extra=_enum(EMBODIMENTS),
-                                   description="robot set-up (default: the task's own)")
+    embodiment: str | None = Field(
+        None, json_schema_extra=_enum(EMBODIMENTS), description="robot set-up (default: the task's own)"
+    )
     time_limit_s: float | None = Field(None, gt=0, le=3600, description="simulated seconds (default: the task's own)")
     pacing: float | None = Field(None, ge=0.01, le=100, description="x real time (default: as fast as possible)")
     recovery: bool = Field(True, description="recovery tiers 1-2 (2 retries per node)")

@@ -30,10 +30,25 @@ def trial_config(body: TrialCreate, batch_id: str | None = None) -> TrialConfig:
         from spark_core import CaptureConfig
 
         capture = CaptureConfig()
-    config = TrialConfig(body.task, body.instruction, body.planner, body.model, body.base_url, body.plan,
-                         body.segmenter, embodiment=body.embodiment, seed=body.seed, recovery=body.recovery,
-                         adaptive=body.adaptive, capture=capture, time_limit_s=body.time_limit_s, pacing=body.pacing,
-                         breakpoints=tuple(body.breakpoints), start_paused=body.start_paused, batch_id=batch_id)
+    config = TrialConfig(
+        body.task,
+        body.instruction,
+        body.planner,
+        body.model,
+        body.base_url,
+        body.plan,
+        body.segmenter,
+        embodiment=body.embodiment,
+        seed=body.seed,
+        recovery=body.recovery,
+        adaptive=body.adaptive,
+        capture=capture,
+        time_limit_s=body.time_limit_s,
+        pacing=body.pacing,
+        breakpoints=tuple(body.breakpoints),
+        start_paused=body.start_paused,
+        batch_id=batch_id,
+    )
     try:
         return config.check()
     except TrialConfigError as e:
@@ -41,14 +56,30 @@ def trial_config(body: TrialCreate, batch_id: str | None = None) -> TrialConfig:
 
 
 @router.get("", response_model=TrialPage)
-def list_trials(request: Request, status: str | None = None, task: str | None = None, success: bool | None = None,
-                verdict: str | None = Query(None, max_length=32), batch: str | None = Query(None, max_length=64),
-                q: str | None = Query(None, max_length=200), sort: str = "-created_at",
-                limit: int = Query(50, ge=1, le=500), offset: int = Query(0, ge=0)) -> TrialPage:
+def list_trials(
+    request: Request,
+    status: str | None = None,
+    task: str | None = None,
+    success: bool | None = None,
+    verdict: str | None = Query(None, max_length=32),
+    batch: str | None = Query(None, max_length=64),
+    q: str | None = Query(None, max_length=200),
+    sort: str = "-created_at",
+    limit: int = Query(50, ge=1, le=500),
+    offset: int = Query(0, ge=0),
+) -> TrialPage:
     try:
-        total, items = request.app.state.store.list_trials(status=status, task=task, success=success, search=q,
-                                                           sort=sort, limit=limit, offset=offset, verdict=verdict,
-                                                           batch=batch)
+        total, items = request.app.state.store.list_trials(
+            status=status,
+            task=task,
+            success=success,
+            search=q,
+            sort=sort,
+            limit=limit,
+            offset=offset,
+            verdict=verdict,
+            batch=batch,
+        )
     except ValueError as e:
         raise HTTPException(422, str(e)) from None
     return TrialPage(total=total, limit=limit, offset=offset, items=items)

@@ -20,8 +20,14 @@ def viser_view(request: Request) -> dict:
     scene = request.app.state.scene
     if scene is None:
         return {"enabled": False}
-    return {"enabled": True, "path": "/viser/", "port": scene.port, "rate_hz": scene.rate_hz,
-            "frames_published": scene.ticks, "showing": scene.current}
+    return {
+        "enabled": True,
+        "path": "/viser/",
+        "port": scene.port,
+        "rate_hz": scene.rate_hz,
+        "frames_published": scene.ticks,
+        "showing": scene.current,
+    }
 
 
 @router.get("/viser/", include_in_schema=False)
@@ -47,8 +53,9 @@ async def viser_relay(websocket: WebSocket) -> None:
         await websocket.close(code=1013, reason="the 3D view is off")
         return
     offered = list(websocket.scope.get("subprotocols", []))
-    async with connect(f"ws://127.0.0.1:{scene.port}", subprotocols=offered or None, max_size=None,
-                       compression=None) as upstream:
+    async with connect(
+        f"ws://127.0.0.1:{scene.port}", subprotocols=offered or None, max_size=None, compression=None
+    ) as upstream:
         await websocket.accept(subprotocol=upstream.subprotocol)
 
         async def to_browser() -> None:

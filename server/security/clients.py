@@ -28,7 +28,7 @@ def parse_networks(proxies: Iterable[str]) -> tuple[Network, ...]:
 def _host(hop: str) -> str:
     """'1.2.3.4:80' -> '1.2.3.4', '[::1]:80' -> '::1'; anything else as is."""
     if hop.startswith("[") and "]" in hop:
-        return hop[1:hop.index("]")]
+        return hop[1 : hop.index("]")]
     return hop.rsplit(":", 1)[0] if hop.count(":") == 1 else hop
 
 

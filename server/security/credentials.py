@@ -35,8 +35,9 @@ def valid(headers: Headers, token: str | None) -> bool:
 
 def login_token(query_string: bytes) -> str | None:
     """The `token` a browser brings in the URL, if any."""
-    return next((v for k, v in parse_qsl(query_string.decode("latin-1"), keep_blank_values=True) if k == LOGIN_PARAM),
-                None)
+    return next(
+        (v for k, v in parse_qsl(query_string.decode("latin-1"), keep_blank_values=True) if k == LOGIN_PARAM), None
+    )
 
 
 def clean_location(path: str, query_string: bytes) -> str:

@@ -63,23 +63,35 @@ class Guard:
         wait_s = self.failures.retry_after_s(client)
         if wait_s > 0:
             seconds = math.ceil(wait_s)
-            raise Refusal(429, f"too many failed authentication attempts from this client: retry in {seconds} s",
-                          [(b"retry-after", str(seconds).encode())])
+            raise Refusal(
+                429,
+                f"too many failed authentication attempts from this client: retry in {seconds} s",
+                [(b"retry-after", str(seconds).encode())],
+            )
 
     def _check_caller(self, scope: Scope, headers: Headers) -> None:
         if not origin_allowed(headers, self.settings.cors_origins):
-            raise Refusal(403, f"cross-origin request refused: Origin {headers.get('origin')!r} is not this console "
-                               "(list trusted origins in SPARK_CORS_ORIGINS)")
+            raise Refusal(
+                403,
+                f"cross-origin request refused: Origin {headers.get('origin')!r} is not this console "
+                "(list trusted origins in SPARK_CORS_ORIGINS)",
+            )
         client = client_address(scope, self.trusted)
         if self.auth_needed:
             self._blocked(client)
             if not credentials.valid(headers, self.settings.api_token):
                 self.failures.fail(client)
-                raise Refusal(401, "authentication required: send Authorization: Bearer <SPARK_API_TOKEN> "
-                                   "(browsers: open the console once as /?token=<SPARK_API_TOKEN>)")
+                raise Refusal(
+                    401,
+                    "authentication required: send Authorization: Bearer <SPARK_API_TOKEN> "
+                    "(browsers: open the console once as /?token=<SPARK_API_TOKEN>)",
+                )
         if scope["type"] == "http" and not self.bucket.allow(client):
-            raise Refusal(429, f"too many requests: at most {self.settings.rate_per_s:g}/s (bursts of "
-                               f"{self.settings.rate_burst:g}) mutating calls per client")
+            raise Refusal(
+                429,
+                f"too many requests: at most {self.settings.rate_per_s:g}/s (bursts of "
+                f"{self.settings.rate_burst:g}) mutating calls per client",
+            )
         if scope["type"] == "http" and _has_body(headers) and not json_content_type(headers):
             raise Refusal(415, "send the request body as JSON (Content-Type: application/json)")
 
@@ -94,9 +106,18 @@ class Guard:
                 self.failures.fail(client)
                 raise Refusal(401, "wrong token: open the console as /?token=<SPARK_API_TOKEN>")
             extra.append((b"set-cookie", credentials.session_cookie(token, scope.get("scheme") == "https").encode()))
-        await send({"type": "http.response.start", "status": 303,
-                    "headers": [(b"location", location.encode("latin-1")), (b"cache-control", b"no-store"),
-                                (b"content-length", b"0"), *extra]})
+        await send(
+            {
+                "type": "http.response.start",
+                "status": 303,
+                "headers": [
+                    (b"location", location.encode("latin-1")),
+                    (b"cache-control", b"no-store"),
+                    (b"content-length", b"0"),
+                    *extra,
+                ],
+            }
+        )
         await send({"type": "http.response.body", "body": b""})
 
     async def _bounded_body(self, scope: Scope, headers: Headers, receive: Receive) -> Receive:

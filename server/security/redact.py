@@ -9,8 +9,10 @@ import re
 _PATTERNS = [  # order matters: `Bearer x` before `authorization: ...`, so no part of a value survives
     (re.compile(r"(?i)([?&;](?:token|access_token|api_key|apikey|key|password|secret)=)[^&\s\"']*"), r"\1[redacted]"),
     (re.compile(r"(?i)\b(bearer|basic)\s+[A-Za-z0-9._~+/=-]+"), r"\1 [redacted]"),
-    (re.compile(r"(?i)\b(authorization|x-goog-api-key|x-api-key|api-key|cookie)([\"']?\s*[:=]\s*[\"']?)[^\s\"',}]+"),
-     r"\1\2[redacted]"),
+    (
+        re.compile(r"(?i)\b(authorization|x-goog-api-key|x-api-key|api-key|cookie)([\"']?\s*[:=]\s*[\"']?)[^\s\"',}]+"),
+        r"\1\2[redacted]",
+    ),
     (re.compile(r"spark_session=[^;\s\"',]+"), "spark_session=[redacted]"),
 ]
 LOGGERS = ("uvicorn", "uvicorn.access", "uvicorn.error", "httpx", "httpcore", "websockets")

@@ -36,15 +36,23 @@ def run(trials: int = 3) -> dict:
     latencies: list[float] = []
     try:
         with sync_playwright() as p:
-            browser = p.chromium.launch(executable_path=chromium, args=["--no-sandbox", "--disable-background-networking"])
+            browser = p.chromium.launch(
+                executable_path=chromium, args=["--no-sandbox", "--disable-background-networking"]
+            )
             page = browser.new_page()
             page.goto(base + "/api/health")
             for k in range(trials):
-                req = urllib.request.Request(base + "/api/trials", method="POST", headers={"content-type": "application/json"},
-                                             data=json.dumps({"task": "stack_two", "segmenter": "privileged-keypoints", "seed": k,
-                                                              "start_paused": True}).encode())
+                req = urllib.request.Request(
+                    base + "/api/trials",
+                    method="POST",
+                    headers={"content-type": "application/json"},
+                    data=json.dumps(
+                        {"task": "stack_two", "segmenter": "privileged-keypoints", "seed": k, "start_paused": True}
+                    ).encode(),
+                )
                 trial_id = json.loads(urllib.request.urlopen(req).read())["id"]
-                got = page.evaluate("""async ([id, base]) => {
+                got = page.evaluate(
+                    """async ([id, base]) => {
                     const lat = [];
                     await new Promise((done) => {
                       const ws = new WebSocket(base.replace('http', 'ws') + `/api/trials/${id}/events`);
@@ -54,17 +62,29 @@ def run(trials: int = 3) -> dict:
                         if (ev.kind === 'closed') { done(); return; }
                         if (ev.kind !== 'paused' && ev.wall_s) lat.push(Date.now() / 1000 - ev.wall_s); };
                     });
-                    return lat; }""", [trial_id, base])
+                    return lat; }""",
+                    [trial_id, base],
+                )
                 latencies += got[2:]  # the first events (tree start, the pause) predate the socket
             browser.close()
     finally:
         server.should_exit = True
     ms = np.array(latencies) * 1000
-    return {"events": int(len(ms)), "p50_ms": float(np.median(ms)), "p99_ms": float(np.percentile(ms, 99)), "trials": trials}
+    return {
+        "events": int(len(ms)),
+        "p50_ms": float(np.median(ms)),
+        "p99_ms": float(np.percentile(ms, 99)),
+        "trials": trials,
+    }
 
 
 def section(r: dict, command: str) -> str:
-    return (f"| events | p50 | p99 |\n|---|---|---|\n| {r['events']} | {r['p50_ms']:.1f} ms | {r['p99_ms']:.1f} ms |\n\n"
-            + footer(command, f"executor event published in the trial worker process -> pipe -> console -> WebSocket -> headless chromium "
-                              f"(Debian chromium-headless-shell, same machine clock); stack_two reference plan, privileged "
-                              f"resolver, {r['trials']} trials; events replayed from history at connect are excluded"))
+    return (
+        f"| events | p50 | p99 |\n|---|---|---|\n| {r['events']} | {r['p50_ms']:.1f} ms | {r['p99_ms']:.1f} ms |\n\n"
+        + footer(
+            command,
+            f"executor event published in the trial worker process -> pipe -> console -> WebSocket -> headless chromium "
+            f"(Debian chromium-headless-shell, same machine clock); stack_two reference plan, privileged "
+            f"resolver, {r['trials']} trials; events replayed from history at connect are excluded",
+        )
+    )

@@ -39,9 +39,14 @@ def run(task: str = "stack_three", seeds: int = 3) -> dict:
 
 
 def section(r: dict, command: str) -> str:
-    return (f"| view | target | mean | worst trial |\n|---|---|---|---|\n"
-            f"| viser scene (robot links, objects, table, target pose) during {r['task']} | {r['target_hz']:.0f} Hz | "
-            f"{r['fps_mean']:.1f} Hz | {r['fps_min']:.1f} Hz |\n\n"
-            + footer(command, f"pose updates drawn per second of wall time while the trial runs (sim segmenter); the "
-                              f"trial runs in a worker process and streams poses to the console over a pipe; "
-                              f"{r['seeds']} seeds; viser coalesces updates for slow clients"))
+    return (
+        f"| view | target | mean | worst trial |\n|---|---|---|---|\n"
+        f"| viser scene (robot links, objects, table, target pose) during {r['task']} | {r['target_hz']:.0f} Hz | "
+        f"{r['fps_mean']:.1f} Hz | {r['fps_min']:.1f} Hz |\n\n"
+        + footer(
+            command,
+            f"pose updates drawn per second of wall time while the trial runs (sim segmenter); the "
+            f"trial runs in a worker process and streams poses to the console over a pipe; "
+            f"{r['seeds']} seeds; viser coalesces updates for slow clients",
+        )
+    )

@@ -35,8 +35,15 @@ def ik_benchmark(n_targets: int = 200, restarts: int = 10, seed: int = 0) -> dic
             pass
         times.append(time.perf_counter() - t0)
     times_ms = np.array(times) * 1000
-    return {"targets": n_targets, "solved": solved, "rate": solved / n_targets, "median_ms": float(np.median(times_ms)),
-            "p99_ms": float(np.percentile(times_ms, 99)), "first_try": used.count(0), "restarts": restarts}
+    return {
+        "targets": n_targets,
+        "solved": solved,
+        "rate": solved / n_targets,
+        "median_ms": float(np.median(times_ms)),
+        "p99_ms": float(np.percentile(times_ms, 99)),
+        "first_try": used.count(0),
+        "restarts": restarts,
+    }
 
 
 def speed_benchmark(task: str = "stack_three", seeds: int = 3, frames: int = 10) -> dict:
@@ -55,22 +62,37 @@ def speed_benchmark(task: str = "stack_three", seeds: int = 3, frames: int = 10)
         world.render("agentview", 640, 480)
         cost.append(time.perf_counter() - t0)
     world.close()
-    return {"task": task, "rtf_median": statistics.median(rtf), "rtf_min": min(rtf), "frame_ms_median": 1000 * statistics.median(cost)}
+    return {
+        "task": task,
+        "rtf_median": statistics.median(rtf),
+        "rtf_min": min(rtf),
+        "frame_ms_median": 1000 * statistics.median(cost),
+    }
 
 
 def ik_section(r: dict, command: str) -> str:
-    return (f"| targets | solved (≤ {r['restarts']} restarts) | solved from the seed alone | median solve | p99 solve |\n"
-            f"|---|---|---|---|---|\n| {r['targets']} | {pct(r['rate'])} | {pct(r['first_try'] / r['targets'])} | "
-            f"{r['median_ms']:.2f} ms | {r['p99_ms']:.2f} ms |\n\n"
-            + footer(command, "Panda (example-robot-data URDF) in pinocchio, damped least squares, full 6-D pose targets "
-                              "from FK of uniform random joint configurations 0.05 rad inside the limits, TCP above the "
-                              "table and > 15 cm from the base axis; every solve seeded from home"))
+    return (
+        f"| targets | solved (≤ {r['restarts']} restarts) | solved from the seed alone | median solve | p99 solve |\n"
+        f"|---|---|---|---|---|\n| {r['targets']} | {pct(r['rate'])} | {pct(r['first_try'] / r['targets'])} | "
+        f"{r['median_ms']:.2f} ms | {r['p99_ms']:.2f} ms |\n\n"
+        + footer(
+            command,
+            "Panda (example-robot-data URDF) in pinocchio, damped least squares, full 6-D pose targets "
+            "from FK of uniform random joint configurations 0.05 rad inside the limits, TCP above the "
+            "table and > 15 cm from the base axis; every solve seeded from home",
+        )
+    )
 
 
 def speed_section(r: dict, command: str) -> str:
-    return (f"| measure | value |\n|---|---|\n"
-            f"| real-time factor, {r['task']} reference plan, no rendering (median of seeds) | {r['rtf_median']:.1f}× |\n"
-            f"| real-time factor, worst seed | {r['rtf_min']:.1f}× |\n"
-            f"| one 640×480 RGB + depth + segmentation frame (agentview, EGL on CPU) | {r['frame_ms_median']:.0f} ms |\n\n"
-            + footer(command, "MuJoCo 3.3.7, 2 ms physics step, 10 ms control period, one process on one core; "
-                              "privileged resolver, so no rendering inside the trial"))
+    return (
+        f"| measure | value |\n|---|---|\n"
+        f"| real-time factor, {r['task']} reference plan, no rendering (median of seeds) | {r['rtf_median']:.1f}× |\n"
+        f"| real-time factor, worst seed | {r['rtf_min']:.1f}× |\n"
+        f"| one 640×480 RGB + depth + segmentation frame (agentview, EGL on CPU) | {r['frame_ms_median']:.0f} ms |\n\n"
+        + footer(
+            command,
+            "MuJoCo 3.3.7, 2 ms physics step, 10 ms control period, one process on one core; "
+            "privileged resolver, so no rendering inside the trial",
+        )
+    )

@@ -5,14 +5,21 @@ completion order to `progress`; the returned list is in job order."""
 from __future__ import annotations
 
 import os
+from collections.abc import Callable, Sequence
 from concurrent.futures import ProcessPoolExecutor, as_completed
-from typing import Any, Callable, Sequence
+from typing import Any
 
 EXECUTORS = ("local", "ray")
 
 
-def run_jobs(fn: Callable[[Any], dict], jobs: Sequence[Any], executor: str = "local", workers: int = 1,
-             ray_address: str | None = None, progress: Callable[[dict], None] | None = None) -> list[dict]:
+def run_jobs(
+    fn: Callable[[Any], dict],
+    jobs: Sequence[Any],
+    executor: str = "local",
+    workers: int = 1,
+    ray_address: str | None = None,
+    progress: Callable[[dict], None] | None = None,
+) -> list[dict]:
     """`fn(job) -> row` for every job. `fn` must be a module-level function (it is pickled to the workers)."""
     if executor not in EXECUTORS:
         raise ValueError(f"unknown executor {executor!r}; available: {', '.join(EXECUTORS)}")
@@ -40,14 +47,22 @@ def _run_ray(fn, jobs, workers: int, address: str | None, done: Callable[[int, d
     try:
         import ray
     except ImportError:
-        raise RuntimeError("the ray executor needs the `ray` package: make install (it is pinned in requirements.lock)") from None
+        raise RuntimeError(
+            "the ray executor needs the `ray` package: make install (it is pinned in requirements.lock)"
+        ) from None
     started = not ray.is_initialized()
     if started:
         # A local cluster sized to `workers` CPUs, or join an existing one. Workers inherit this environment
         # (MUJOCO_GL, HF_HUB_OFFLINE) so rendering and the offline text model work there too.
         env = {k: v for k, v in os.environ.items() if k in ("MUJOCO_GL", "HF_HUB_OFFLINE", "PYTHONPATH")}
-        ray.init(address=address, num_cpus=None if address else max(workers, 1), include_dashboard=False,
-                 log_to_driver=False, configure_logging=False, runtime_env={"env_vars": env})
+        ray.init(
+            address=address,
+            num_cpus=None if address else max(workers, 1),
+            include_dashboard=False,
+            log_to_driver=False,
+            configure_logging=False,
+            runtime_env={"env_vars": env},
+        )
     try:
         remote = ray.remote(num_cpus=1, max_retries=1)(fn)
         pending = {remote.remote(job): i for i, job in enumerate(jobs)}

@@ -19,9 +19,16 @@ from ..sim.tasks import BUILTIN
 from ..sim.world import MujocoWorld
 from .report import footer, pct
 
-COLOR_WORDS = {"red": ["crimson", "scarlet", "red"], "blue": ["navy", "blue", "azure"], "green": ["emerald", "green", "lime"],
-               "yellow": ["golden", "yellow", "lemon"], "white": ["white", "ivory", "white"], "grey": ["gray", "silver", "grey"],
-               "brown": ["brown", "wooden", "tan"], "black": ["black", "dark", "ebony"]}
+COLOR_WORDS = {
+    "red": ["crimson", "scarlet", "red"],
+    "blue": ["navy", "blue", "azure"],
+    "green": ["emerald", "green", "lime"],
+    "yellow": ["golden", "yellow", "lemon"],
+    "white": ["white", "ivory", "white"],
+    "grey": ["gray", "silver", "grey"],
+    "brown": ["brown", "wooden", "tan"],
+    "black": ["black", "dark", "ebony"],
+}
 KIND_PHRASES = {
     "block": ["{c} cube", "small {c} block", "the {c} wooden cube", "{c} box"],
     "plate": ["dinner plate", "the flat round plate", "{c} ceramic plate", "the plate"],
@@ -34,17 +41,33 @@ KIND_PHRASES = {
     "cabinet": ["wooden cabinet", "the cupboard", "{c} cabinet", "the cabinet with a drawer"],
     "stove": ["the stove", "electric cooktop", "{c} stove", "the burner plate"],
 }
-PART_PHRASES = {"cabinet drawer handle": ["drawer handle", "the handle of the drawer", "metal drawer pull"],
-                "cabinet drawer": ["the drawer", "sliding drawer", "cabinet drawer"],
-                "stove knob": ["stove knob", "the control knob", "white dial on the stove"]}
-SCENES = ["stack_three", "block_on_plate", "block_in_bowl", "block_in_basket", "block_in_drawer", "turn_on_stove", "pour_beads",
-          "push_to_zone", "scrub_plate", "sort_two"]
+PART_PHRASES = {
+    "cabinet drawer handle": ["drawer handle", "the handle of the drawer", "metal drawer pull"],
+    "cabinet drawer": ["the drawer", "sliding drawer", "cabinet drawer"],
+    "stove knob": ["stove knob", "the control knob", "white dial on the stove"],
+}
+SCENES = [
+    "stack_three",
+    "block_on_plate",
+    "block_in_bowl",
+    "block_in_basket",
+    "block_in_drawer",
+    "turn_on_stove",
+    "pour_beads",
+    "push_to_zone",
+    "scrub_plate",
+    "sort_two",
+]
 
 
 def _duplicates_world() -> MujocoWorld:
-    reqs = [O("black bowl 1", "bowl", "black", (0.55, 0.6), (0.18, 0.24)), O("black bowl 2", "bowl", "black", (0.55, 0.6), (-0.24, -0.18)),
-            O("red mug 1", "mug", "red", (0.38, 0.4), (0.12, 0.16)), O("red mug 2", "mug", "red", (0.38, 0.4), (-0.16, -0.12)),
-            O("plate", "plate", "white", (0.72, 0.75), (-0.03, 0.03))]
+    reqs = [
+        O("black bowl 1", "bowl", "black", (0.55, 0.6), (0.18, 0.24)),
+        O("black bowl 2", "bowl", "black", (0.55, 0.6), (-0.24, -0.18)),
+        O("red mug 1", "mug", "red", (0.38, 0.4), (0.12, 0.16)),
+        O("red mug 2", "mug", "red", (0.38, 0.4), (-0.16, -0.12)),
+        O("plate", "plate", "white", (0.72, 0.75), (-0.03, 0.03)),
+    ]
     w = MujocoWorld(build_scene({"right": (panda(), np.eye(4))}, reqs, seed=0))
     w.settle(0.2)
     return w
@@ -66,10 +89,18 @@ def prompt_set(world: MujocoWorld) -> list[tuple[str, str]]:
 
 
 def qualifier_prompts() -> list[tuple[str, str]]:
-    return [("the left black bowl", "black bowl 1"), ("the right black bowl", "black bowl 2"), ("the left bowl", "black bowl 1"),
-            ("the right bowl", "black bowl 2"), ("the left mug", "red mug 1"), ("the right mug", "red mug 2"),
-            ("the left red cup", "red mug 1"), ("the right red cup", "red mug 2"), ("the rightmost bowl", "black bowl 2"),
-            ("the leftmost mug", "red mug 1")]
+    return [
+        ("the left black bowl", "black bowl 1"),
+        ("the right black bowl", "black bowl 2"),
+        ("the left bowl", "black bowl 1"),
+        ("the right bowl", "black bowl 2"),
+        ("the left mug", "red mug 1"),
+        ("the right mug", "red mug 2"),
+        ("the left red cup", "red mug 1"),
+        ("the right red cup", "red mug 2"),
+        ("the rightmost bowl", "black bowl 2"),
+        ("the leftmost mug", "red mug 1"),
+    ]
 
 
 def evaluate(world: MujocoWorld, prompts: list[tuple[str, str]]) -> list[dict]:
@@ -107,10 +138,15 @@ def run() -> list[dict]:
 
 
 def section(rows: list[dict], command: str) -> str:
-    lines = ["| prompt group | prompts | correct | keypoint error median | keypoint error p95 |", "|---|---|---|---|---|"]
-    groups = {"paraphrases (colour, shape, material, parts)": [r for r in rows if r["scene"] != "two bowls, two mugs"],
-              "spatial qualifiers (duplicate instances)": [r for r in rows if r["scene"] == "two bowls, two mugs"],
-              "all": rows}
+    lines = [
+        "| prompt group | prompts | correct | keypoint error median | keypoint error p95 |",
+        "|---|---|---|---|---|",
+    ]
+    groups = {
+        "paraphrases (colour, shape, material, parts)": [r for r in rows if r["scene"] != "two bowls, two mugs"],
+        "spatial qualifiers (duplicate instances)": [r for r in rows if r["scene"] == "two bowls, two mugs"],
+        "all": rows,
+    }
     for name, rs in groups.items():
         errs = [r["keypoint_error_m"] for r in rs if r["keypoint_error_m"] is not None]
         med = f"{100 * np.median(errs):.2f} cm" if errs else "-"
@@ -120,8 +156,15 @@ def section(rows: list[dict], command: str) -> str:
     body = "\n".join(lines)
     if misses:
         body += "\n\nMisses: " + "; ".join(misses)
-    return body + "\n\n" + footer(command, "segmenter `sim` (PRIVILEGED masks from the renderer's object ids; text grounded with "
-                                  "all-MiniLM-L6-v2 over each object's label and description after colour-synonym "
-                                  "normalisation, head-noun bonus 0.08, colour-mismatch penalty 0.15, threshold 0.33, margin 0.07); "
-                                  "grounded in agentview and side together, keypoints fused from both; error against the true "
-                                  "object centre (simulator AABB); builtin scenes at seed 0 plus a duplicates scene")
+    return (
+        body
+        + "\n\n"
+        + footer(
+            command,
+            "segmenter `sim` (PRIVILEGED masks from the renderer's object ids; text grounded with "
+            "all-MiniLM-L6-v2 over each object's label and description after colour-synonym "
+            "normalisation, head-noun bonus 0.08, colour-mismatch penalty 0.15, threshold 0.33, margin 0.07); "
+            "grounded in agentview and side together, keypoints fused from both; error against the true "
+            "object centre (simulator AABB); builtin scenes at seed 0 plus a duplicates scene",
+        )
+    )

@@ -26,15 +26,21 @@ def comparison_table(rows: list[dict]) -> str:
         rs = [r for r in rows if r["task"] == t]
         ours = sum(r["success"] for r in rs) / len(rs)
         pub = PUBLISHED[t]
-        lines.append(f"| {t} | {pct(ours)} | {pub['SPARK'] + ' %' if pub['SPARK'] else '-'} | "
-                     f"{pub['CaP-X'] + ' %' if pub['CaP-X'] else '-'} |")
+        lines.append(
+            f"| {t} | {pct(ours)} | {pub['SPARK'] + ' %' if pub['SPARK'] else '-'} | "
+            f"{pub['CaP-X'] + ' %' if pub['CaP-X'] else '-'} |"
+        )
     return "\n".join(lines)
 
 
 # LIBERO-PRO (SPARK paper, success %): per suite, position perturbation (the `_swap` cells) and task perturbation.
 LIBEROPRO_CELLS: dict[str, str] = {
-    "libero_object_swap": "43.4", "libero_object_task": "36.4", "libero_goal_swap": "40.0",
-    "libero_goal_task": "14.0", "libero_spatial_swap": "56.0", "libero_spatial_task": "72.4",
+    "libero_object_swap": "43.4",
+    "libero_object_task": "36.4",
+    "libero_goal_swap": "40.0",
+    "libero_goal_task": "14.0",
+    "libero_spatial_swap": "56.0",
+    "libero_spatial_task": "72.4",
 }
 LIBEROPRO_MEAN = "43.7"
 

@@ -4,8 +4,8 @@ Ray, with Markdown reports. Reference plans measure control and primitives; plan
 from __future__ import annotations
 
 import statistics
+from collections.abc import Callable, Iterable
 from dataclasses import replace
-from typing import Callable, Iterable
 
 from ..trial import TrialConfig, TrialOutcome, run_trial
 from .report import footer, pct, wilson
@@ -21,8 +21,7 @@ def protocol(config: TrialConfig) -> str:
     if p["noise"]:
         seg += f", noise: {p['noise']}, misses independent per prompt and per view"
     rec = "recovery tiers 1-2 on (2 retries per node), replan off" if config.recovery else "recovery off"
-    return (f"planner: {p['planner']}; segmenter: {seg}; {rec}; success: {p['success_rule']} "
-            "(the task's own time limit)")
+    return f"planner: {p['planner']}; segmenter: {seg}; {rec}; success: {p['success_rule']} (the task's own time limit)"
 
 
 def _one(job: tuple[TrialConfig, str | None]) -> dict:
@@ -36,9 +35,17 @@ def _one(job: tuple[TrialConfig, str | None]) -> dict:
     return run_trial(config, sinks).row()
 
 
-def run(tasks: Iterable[str], trials: int, seed: int = 0, workers: int = 1,
-        progress: Callable[[dict], None] | None = None, template: TrialConfig | None = None,
-        executor: str = "local", ray_address: str | None = None, store_url: str | None = None) -> list[dict]:
+def run(
+    tasks: Iterable[str],
+    trials: int,
+    seed: int = 0,
+    workers: int = 1,
+    progress: Callable[[dict], None] | None = None,
+    template: TrialConfig | None = None,
+    executor: str = "local",
+    ray_address: str | None = None,
+    store_url: str | None = None,
+) -> list[dict]:
     """Every task x seed with `template`'s settings; `executor` local (process pool of `workers`) or ray (see
     bench.executors). With `store_url` every trial is recorded in that trace store under one batch."""
     from .executors import run_jobs
@@ -53,16 +60,27 @@ def run(tasks: Iterable[str], trials: int, seed: int = 0, workers: int = 1,
         from ..trace import TraceStore
 
         batch_id = f"bench-{uuid.uuid4().hex[:10]}"
-        TraceStore(store_url).create_batch(batch_id, {"suite": "bench", "tasks": tasks, "trials": trials, "seed": seed,
-                                                      "segmenter": template.segmenter, "planner": template.planner,
-                                                      "executor": executor})
+        TraceStore(store_url).create_batch(
+            batch_id,
+            {
+                "suite": "bench",
+                "tasks": tasks,
+                "trials": trials,
+                "seed": seed,
+                "segmenter": template.segmenter,
+                "planner": template.planner,
+                "executor": executor,
+            },
+        )
         configs = [replace(c, batch_id=batch_id) for c in configs]
     return run_jobs(_one, [(c, store_url) for c in configs], executor, workers, ray_address, progress)
 
 
 def table(rows: list[dict]) -> str:
-    lines = ["| task | success | 95 % CI | trials | median sim time | median wall time | failures |",
-             "|---|---|---|---|---|---|---|"]
+    lines = [
+        "| task | success | 95 % CI | trials | median sim time | median wall time | failures |",
+        "|---|---|---|---|---|---|---|",
+    ]
     for task in dict.fromkeys(r["task"] for r in rows):
         rs = [r for r in rows if r["task"] == task]
         k = sum(r["success"] for r in rs)
@@ -75,7 +93,8 @@ def table(rows: list[dict]) -> str:
         lines.append(
             f"| {task} | {pct(k / len(rs))} | {pct(lo)} – {pct(hi)} | {len(rs)} | "
             f"{statistics.median(r['sim_time_s'] for r in rs):.1f} s | {statistics.median(r['wall_time_s'] for r in rs):.2f} s | "
-            f"{', '.join(f'{v}× {k}' for k, v in sorted(fails.items())) or '-'} |")
+            f"{', '.join(f'{v}× {k}' for k, v in sorted(fails.items())) or '-'} |"
+        )
     total = sum(r["success"] for r in rows)
     lines.append(f"| **all** | {pct(total / len(rows))} | | {len(rows)} | | | |")
     return "\n".join(lines)
@@ -90,7 +109,11 @@ def phase_table(rows: list[dict]) -> str:
     for task in dict.fromkeys(r["task"] for r in rows):
         rs = [r["phases_s"] for r in rows if r["task"] == task and r.get("phases_s")]
         if rs:
-            lines.append(f"| {task} | " + " | ".join(f"{statistics.median(p.get(k, 0.0) for p in rs):.2f} s" for k in PHASES) + " |")
+            lines.append(
+                f"| {task} | "
+                + " | ".join(f"{statistics.median(p.get(k, 0.0) for p in rs):.2f} s" for k in PHASES)
+                + " |"
+            )
     return "\n".join(lines)
 
 
@@ -101,18 +124,27 @@ def section(rows: list[dict], command: str, template: TrialConfig, executor: str
     seeds = f"; seeds {min(r['seed'] for r in rows)}–{max(r['seed'] for r in rows)}; executor: {executor}"
     predicates = "; ".join(f"{t}: {TASKS[t].predicate}" for t in dict.fromkeys(r["task"] for r in rows) if t in TASKS)
     published = comparison_table(rows) or cell_table(rows)
-    return (table(rows) + ("\n\nAgainst the published figures (different planner and perception: see protocol):\n\n"
-                           + published if published else "")
-            + "\n\nMedian wall time per phase:\n\n" + phase_table(rows) + "\n\n"
-            + footer(command, protocol(template) + seeds
-                     + f"; success predicates: {predicates}"))
+    return (
+        table(rows)
+        + (
+            "\n\nAgainst the published figures (different planner and perception: see protocol):\n\n" + published
+            if published
+            else ""
+        )
+        + "\n\nMedian wall time per phase:\n\n"
+        + phase_table(rows)
+        + "\n\n"
+        + footer(command, protocol(template) + seeds + f"; success predicates: {predicates}")
+    )
 
 
 def embodiment_section(rows_by_embodiment: dict[str, list[dict]], command: str, template: TrialConfig) -> str:
     """One row per task, one column per embodiment: the same reference plan text on every robot."""
     embs = list(rows_by_embodiment)
-    lines = ["| task | " + " | ".join(f"{e} success" for e in embs) + " | failures |",
-             "|---|" + "---|" * len(embs) + "---|"]
+    lines = [
+        "| task | " + " | ".join(f"{e} success" for e in embs) + " | failures |",
+        "|---|" + "---|" * len(embs) + "---|",
+    ]
     tasks = list(dict.fromkeys(r["task"] for rows in rows_by_embodiment.values() for r in rows))
     for task in tasks:
         cells, fails = [], []
@@ -124,7 +156,9 @@ def embodiment_section(rows_by_embodiment: dict[str, list[dict]], command: str, 
                 if not r["success"]:
                     fails.append(f"{e}: {r['verdict']}" + (f" ({r['failure']})" if r["failure"] else ""))
         counts = {f: fails.count(f) for f in dict.fromkeys(fails)}
-        lines.append(f"| {task} | " + " | ".join(cells) + f" | {', '.join(f'{v}× {k}' for k, v in counts.items()) or '-'} |")
+        lines.append(
+            f"| {task} | " + " | ".join(cells) + f" | {', '.join(f'{v}× {k}' for k, v in counts.items()) or '-'} |"
+        )
     totals = []
     for e in embs:
         rs = rows_by_embodiment[e]
@@ -133,10 +167,15 @@ def embodiment_section(rows_by_embodiment: dict[str, list[dict]], command: str, 
         totals.append(f"**{pct(k / len(rs))}** ({pct(lo)} – {pct(hi)})")
     lines.append("| all tasks | " + " | ".join(totals) + " | |")
     n = max(len(r) for r in rows_by_embodiment.values()) // max(len(tasks), 1)
-    return "\n".join(lines) + "\n\n" + footer(
-        command, protocol(template) + f"; {n} seeds per task per embodiment; the same reference plan "
-                 f"text on every embodiment (single-arm plans run on the 'right' arm); embodiments: "
-                 + ", ".join(embs))
+    return (
+        "\n".join(lines)
+        + "\n\n"
+        + footer(
+            command,
+            protocol(template) + f"; {n} seeds per task per embodiment; the same reference plan "
+            f"text on every embodiment (single-arm plans run on the 'right' arm); embodiments: " + ", ".join(embs),
+        )
+    )
 
 
 __all__ = ["run", "section", "table", "phase_table", "embodiment_section", "TrialOutcome"]

@@ -39,7 +39,11 @@ def machine() -> str:
 
 def write_section(path: Path, title: str, body: str) -> None:
     """Replace (or append) the `## title` section of a Markdown file; other sections are left untouched."""
-    text = path.read_text() if path.exists() else "# Benchmarks\n\nEvery figure here is written by the command shown under it.\n"
+    text = (
+        path.read_text()
+        if path.exists()
+        else "# Benchmarks\n\nEvery figure here is written by the command shown under it.\n"
+    )
     section = f"## {title}\n\n{body.strip()}\n"
     pattern = re.compile(rf"^## {re.escape(title)}\n.*?(?=^## |\Z)", re.S | re.M)
     if pattern.search(text):

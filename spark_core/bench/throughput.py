@@ -16,12 +16,15 @@ def tasks_of(suite: str) -> list[str]:
 
     names = list(SUITES[suite])
     if suite == "liberopro":
-        return [next(n for n in names if n.startswith(cell + ":")) for cell in dict.fromkeys(n.split(":")[0] for n in names)]
+        return [
+            next(n for n in names if n.startswith(cell + ":")) for cell in dict.fromkeys(n.split(":")[0] for n in names)
+        ]
     return names
 
 
-def run(trials: int = 2, workers: int = 2, segmenter: str = "privileged-keypoints",
-        suites: tuple[str, ...] = ("builtin",)) -> dict:
+def run(
+    trials: int = 2, workers: int = 2, segmenter: str = "privileged-keypoints", suites: tuple[str, ...] = ("builtin",)
+) -> dict:
     from ..trial import TrialConfig
     from . import reference_suite
 
@@ -34,8 +37,12 @@ def run(trials: int = 2, workers: int = 2, segmenter: str = "privileged-keypoint
             template = TrialConfig("", planner=PLANNER.get(suite, "reference"), segmenter=segmenter)
             rows = reference_suite.run(tasks, trials, 0, workers, None, template, executor=executor)
             wall = time.perf_counter() - t0
-            runs[executor] = {"trials": len(rows), "successes": sum(r["success"] for r in rows), "wall_s": wall,
-                              "per_hour": len(rows) / wall * 3600}
+            runs[executor] = {
+                "trials": len(rows),
+                "successes": sum(r["success"] for r in rows),
+                "wall_s": wall,
+                "per_hour": len(rows) / wall * 3600,
+            }
         out["suites"][suite] = {"tasks": len(tasks), "planner": PLANNER.get(suite, "reference"), "runs": runs}
     return out
 
@@ -44,10 +51,21 @@ def section(r: dict, command: str) -> str:
     lines = ["| suite | executor | trials | success | wall time | trials per hour |", "|---|---|---|---|---|---|"]
     for suite, s in r["suites"].items():
         for name, x in s["runs"].items():
-            lines.append(f"| {suite} | {name} ({r['workers']} workers) | {x['trials']} | "
-                         f"{100 * x['successes'] / x['trials']:.1f} % | {x['wall_s']:.0f} s | {x['per_hour']:.0f} |")
-    what = "; ".join(f"{suite}: {s['tasks']} tasks x {r['trials_per_task']} seeds, planner {s['planner']}"
-                     + (" (one task per cell)" if suite == "liberopro" else "") for suite, s in r["suites"].items())
-    return "\n".join(lines) + "\n\n" + footer(
-        command, f"{what}; segmenter {r['segmenter']}; Ray: a local cluster started by the command (start-up and "
-                 "shutdown included); every trial builds its scene (robosuite/LIBERO env) afresh")
+            lines.append(
+                f"| {suite} | {name} ({r['workers']} workers) | {x['trials']} | "
+                f"{100 * x['successes'] / x['trials']:.1f} % | {x['wall_s']:.0f} s | {x['per_hour']:.0f} |"
+            )
+    what = "; ".join(
+        f"{suite}: {s['tasks']} tasks x {r['trials_per_task']} seeds, planner {s['planner']}"
+        + (" (one task per cell)" if suite == "liberopro" else "")
+        for suite, s in r["suites"].items()
+    )
+    return (
+        "\n".join(lines)
+        + "\n\n"
+        + footer(
+            command,
+            f"{what}; segmenter {r['segmenter']}; Ray: a local cluster started by the command (start-up and "
+            "shutdown included); every trial builds its scene (robosuite/LIBERO env) afresh",
+        )
+    )

@@ -7,6 +7,16 @@ from .robot import GripperSpec, RobotDescription
 from .trajectory import JointTrajectory, Limits, chain_joint_waypoints, line_trajectory
 
 __all__ = [
-    "ArmKinematics", "GripperSpec", "IKResult", "JointTrajectory", "Limits", "Pose", "RobotDescription", "Unreachable",
-    "chain_joint_waypoints", "line_trajectory", "solve_ik", "top_down_rotation",
+    "ArmKinematics",
+    "GripperSpec",
+    "IKResult",
+    "JointTrajectory",
+    "Limits",
+    "Pose",
+    "RobotDescription",
+    "Unreachable",
+    "chain_joint_waypoints",
+    "line_trajectory",
+    "solve_ik",
+    "top_down_rotation",
 ]

@@ -56,7 +56,7 @@ def solve_ik(
             q = np.clip(q_seed + rng.normal(0.0, 0.3 * attempt, kin.nq), lo, hi)
         else:
             q = rng.uniform(lo, hi)
-        for it in range(max_iter):
+        for _it in range(max_iter):
             total_iter += 1
             T = kin._tcp_se3(q)
             e_pos = p_target - T.translation

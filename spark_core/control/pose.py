@@ -12,7 +12,7 @@ class Pose:
     position_m: np.ndarray
     rotation: np.ndarray  # 3x3, columns are the frame's axes expressed in the world frame
 
-    def translated(self, delta_m) -> "Pose":
+    def translated(self, delta_m) -> Pose:
         return Pose(self.position_m + np.asarray(delta_m, float), self.rotation)
 
 

@@ -35,7 +35,7 @@ class Limits:
     acceleration: np.ndarray  # rad/s^2
     jerk: np.ndarray  # rad/s^3
 
-    def scaled(self, factor: float) -> "Limits":
+    def scaled(self, factor: float) -> Limits:
         return Limits(self.velocity * factor, self.acceleration * factor, self.jerk * factor)
 
 
@@ -65,8 +65,9 @@ def _via_velocities(points: list[np.ndarray], lim: Limits) -> list[np.ndarray]:
     return vs
 
 
-def chain_joint_waypoints(waypoints: list[np.ndarray], lim: Limits, dt_s: float = 0.01,
-                          q0_velocity: np.ndarray | None = None) -> JointTrajectory:
+def chain_joint_waypoints(
+    waypoints: list[np.ndarray], lim: Limits, dt_s: float = 0.01, q0_velocity: np.ndarray | None = None
+) -> JointTrajectory:
     """One smooth trajectory through joint waypoints (the first is the current configuration)."""
     points = [np.asarray(w, float) for w in waypoints]
     vias = _via_velocities(points, lim)

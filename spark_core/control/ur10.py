@@ -58,8 +58,14 @@ def ur10() -> RobotDescription:
         mesh_dir=root / "meshes/ur10/collision",
         base_link="base_link",
         tcp_frame="ur_tcp",
-        arm_joints=("shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint", "wrist_1_joint", "wrist_2_joint",
-                    "wrist_3_joint"),
+        arm_joints=(
+            "shoulder_pan_joint",
+            "shoulder_lift_joint",
+            "elbow_joint",
+            "wrist_1_joint",
+            "wrist_2_joint",
+            "wrist_3_joint",
+        ),
         home_q_rad=np.array(HOME_Q_RAD),
         gripper=GripperSpec(("ur_finger_joint1", "ur_finger_joint2"), max_width_m=STROKE_M, closed_empty_width_m=0.004),
         kp=(9000.0, 9000.0, 6000.0, 2500.0, 2500.0, 2000.0),
@@ -67,8 +73,14 @@ def ur10() -> RobotDescription:
         reach_m=1.3,
         extra_urdf=GRIPPER_URDF,
         # one configuration family: base turned at most half a turn, shoulder above the base plane, elbow up
-        ik_limits_rad=((-np.pi, np.pi), (-np.pi, 0.0), (0.0, np.pi), (-2 * np.pi, 2 * np.pi), (-2 * np.pi, 2 * np.pi),
-                       (-2 * np.pi, 2 * np.pi)),
+        ik_limits_rad=(
+            (-np.pi, np.pi),
+            (-np.pi, 0.0),
+            (0.0, np.pi),
+            (-2 * np.pi, 2 * np.pi),
+            (-2 * np.pi, 2 * np.pi),
+            (-2 * np.pi, 2 * np.pi),
+        ),
         collision_links=("ur_gripper_base", "ur_left_finger", "ur_right_finger", "wrist_3_link", "wrist_2_link"),
     )
 

@@ -7,9 +7,9 @@ import enum
 import itertools
 import threading
 import time
+from collections.abc import AsyncIterator, Callable
 from dataclasses import asdict, dataclass, field
-from typing import Any, AsyncIterator, Callable
-
+from typing import Any
 
 
 class EventKind(enum.StrEnum):
@@ -73,7 +73,9 @@ class EventBus:
         if kind not in EVENT_KINDS:
             raise ValueError(f"unknown event kind {kind!r}; expected one of {', '.join(EVENT_KINDS)}")
         with self._lock:
-            ev = Event(self.trial_id, next(self._seq), self.now(), node_path, EventKind(kind).value, detail, time.time())
+            ev = Event(
+                self.trial_id, next(self._seq), self.now(), node_path, EventKind(kind).value, detail, time.time()
+            )
             self.history.append(ev)
             callbacks = list(self._callbacks)
             for loop, q in self._queues:

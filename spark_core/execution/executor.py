@@ -4,8 +4,8 @@ concurrent arm branches, step-through control, and a complete event trail."""
 from __future__ import annotations
 
 import threading
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from typing import Callable, Mapping
 
 from ..grammar import Composite, CompositeType, Node, Plan, PrimitiveCall, walk
 from ..grammar.tree import child_path
@@ -106,13 +106,17 @@ class Executor:
                 if failure is None or not self._can_replan(replans):
                     break
                 replans += 1
-                self.bus.publish(prefix + "tree", EventKind.RETRYING, tier=REPLAN, attempt=replans, reason=failure.reason)
+                self.bus.publish(
+                    prefix + "tree", EventKind.RETRYING, tier=REPLAN, attempt=replans, reason=failure.reason
+                )
                 new_plan = self.replanner(ReplanRequest(plan, failure))  # type: ignore[misc]
                 if new_plan is None:
                     break
                 plan, prefix = new_plan, f"replan[{replans}]."
             if failure is None and self.success_check is not None and not self.success_check():
-                failure = Failure(FailureKind.PLANNER, "tree", "every node succeeded but the task's success predicate is false")
+                failure = Failure(
+                    FailureKind.PLANNER, "tree", "every node succeeded but the task's success predicate is false"
+                )
             if failure is not None:
                 outcome = "failure"
         except Aborted as e:
@@ -162,8 +166,9 @@ class Executor:
             rec.reason = failure.reason
             self.bus.publish(rec.path, EventKind.FAILED, failure=failure.kind.value, reason=failure.reason, **detail)
 
-    def _run_node(self, node: Node, path: str, arm: str | None, barriers: _Barriers | None,
-                  anchor: PrimitiveCall | None = None) -> tuple[Failure | None, float]:
+    def _run_node(
+        self, node: Node, path: str, arm: str | None, barriers: _Barriers | None, anchor: PrimitiveCall | None = None
+    ) -> tuple[Failure | None, float]:
         arm = node.arm or arm
         if isinstance(node, PrimitiveCall):
             return self._run_primitive(node, path, arm, barriers, anchor)
@@ -192,11 +197,14 @@ class Executor:
                 results[i] = self._run_node(child, child_path(path, i), arm, barriers)
                 if results[i][0] is not None:  # type: ignore[index]
                     barriers.abort_all()
-            except BaseException as e:  # noqa: BLE001 - re-raised in the joining thread
+            except BaseException as e:
                 results[i] = e
                 barriers.abort_all()
 
-        threads = [threading.Thread(target=branch, args=(i, c), name=f"{path}[{i}]", daemon=True) for i, c in enumerate(node.children)]
+        threads = [
+            threading.Thread(target=branch, args=(i, c), name=f"{path}[{i}]", daemon=True)
+            for i, c in enumerate(node.children)
+        ]
         for t in threads:
             t.start()
         for t in threads:
@@ -208,8 +216,9 @@ class Executor:
         return (failures[0] if failures else None), max(r[1] for r in results)  # type: ignore[index]
 
     # -- primitives --------------------------------------------------------------------------------------------
-    def _run_primitive(self, call: PrimitiveCall, path: str, arm: str | None, barriers: _Barriers | None,
-                       anchor: PrimitiveCall | None) -> tuple[Failure | None, float]:
+    def _run_primitive(
+        self, call: PrimitiveCall, path: str, arm: str | None, barriers: _Barriers | None, anchor: PrimitiveCall | None
+    ) -> tuple[Failure | None, float]:
         spec = call.spec
         arm = BOTH_ARMS if spec.uses_both_arms else (arm or self.actuator.arms[0])
         self.control.checkpoint(path, lambda p, why: self.bus.publish(p, EventKind.PAUSED, reason=why))
@@ -238,8 +247,15 @@ class Executor:
             if reanchor is not None:
                 action += f"+reapproach:{reanchor.primitive}"
             rec.recoveries.append(f"tier{tier}:{action}")
-            self.bus.publish(path, EventKind.RETRYING, attempt=rec.retries, tier=tier, action=action,
-                             failure=(outcome.failure or FailureKind.CONTROL).value, reason=outcome.reason)
+            self.bus.publish(
+                path,
+                EventKind.RETRYING,
+                attempt=rec.retries,
+                tier=tier,
+                action=action,
+                failure=(outcome.failure or FailureKind.CONTROL).value,
+                reason=outcome.reason,
+            )
             rec.sim_time_s += self._recover(tier, call, arm, keypoints, reanchor)
             self.control.check_abort(path)
 
@@ -251,15 +267,18 @@ class Executor:
             return f"arm {arm!r} does not exist on this embodiment (arms: {', '.join(arms)})"
         return ""
 
-    def _attempt(self, call: PrimitiveCall, arm: str, barriers: _Barriers | None,
-                 previous: Mapping[str, Keypoint]) -> tuple[ActionOutcome, dict[str, Keypoint]]:
+    def _attempt(
+        self, call: PrimitiveCall, arm: str, barriers: _Barriers | None, previous: Mapping[str, Keypoint]
+    ) -> tuple[ActionOutcome, dict[str, Keypoint]]:
         spec = call.spec
         if call.primitive == "sync_barrier":
             return self._sync(call, barriers), dict(previous)
         if call.primitive == "redetect":
             self.resolver.refresh()
         if call.primitive == "replan":
-            return ActionOutcome.fail("a replan node needs tier-3 recovery enabled with a planner", FailureKind.PLANNER), {}
+            return ActionOutcome.fail(
+                "a replan node needs tier-3 recovery enabled with a planner", FailureKind.PLANNER
+            ), {}
         keypoints: dict[str, Keypoint] = {}
         try:
             for label in call.labels:  # late binding: resolve NOW, from the latest perception
@@ -274,7 +293,8 @@ class Executor:
         if outcome.sim_time_s > timeout_s + 1e-9:
             outcome = ActionOutcome.fail(
                 f"{call.primitive} exceeded its timeout of {timeout_s:g} s (took {outcome.sim_time_s:.2f} s)",
-                FailureKind.TIMEOUT, outcome.sim_time_s,
+                FailureKind.TIMEOUT,
+                outcome.sim_time_s,
             )
         return outcome, keypoints
 
@@ -285,11 +305,19 @@ class Executor:
         try:
             barriers.get(name).wait(timeout=call.spec.timeout_s)  # wall seconds: branches are threads
         except threading.BrokenBarrierError:
-            return ActionOutcome.fail(f"sync_barrier {name!r}: another branch failed or never arrived", FailureKind.CONTROL)
+            return ActionOutcome.fail(
+                f"sync_barrier {name!r}: another branch failed or never arrived", FailureKind.CONTROL
+            )
         return ActionOutcome.success(0.0)
 
-    def _recover(self, tier: int, call: PrimitiveCall, arm: str, keypoints: Mapping[str, Keypoint],
-                 reanchor: PrimitiveCall | None = None) -> float:
+    def _recover(
+        self,
+        tier: int,
+        call: PrimitiveCall,
+        arm: str,
+        keypoints: Mapping[str, Keypoint],
+        reanchor: PrimitiveCall | None = None,
+    ) -> float:
         """Run a recovery action; returns its simulated seconds. Its own failure is not fatal: the retry decides."""
         if tier == PERTURB and call.spec.perturbation:
             perturb = PrimitiveCall(call.spec.perturbation)

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import threading
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 
@@ -25,8 +25,11 @@ class ArmMotion:
         self.arm = arm
         self.kin = world.kinematics[arm]
         desc = self.kin.robot
-        self.limits = Limits(np.array(desc.max_velocity_rad_s), np.full(len(desc.arm_joints), desc.max_acceleration_rad_s2),
-                             np.full(len(desc.arm_joints), desc.max_jerk_rad_s3)).scaled(speed)
+        self.limits = Limits(
+            np.array(desc.max_velocity_rad_s),
+            np.full(len(desc.arm_joints), desc.max_acceleration_rad_s2),
+            np.full(len(desc.arm_joints), desc.max_jerk_rad_s3),
+        ).scaled(speed)
         self.rng = rng or np.random.default_rng(0)
         self.clearance_m = ARM_CLEARANCE_M  # cooperative primitives (handoff, two-handed lift) lower it
 
@@ -43,8 +46,10 @@ class ArmMotion:
             d = np.linalg.norm(tcp_path_m - (a + t[:, None] * ab), axis=1)
             k = int(np.argmin(d))
             if d[k] < self.clearance_m:
-                return (f"the {self.arm} arm's path would pass {100 * d[k]:.0f} cm from the {other} arm's hand "
-                        f"(keeps {100 * self.clearance_m:.0f} cm): refused before moving")
+                return (
+                    f"the {self.arm} arm's path would pass {100 * d[k]:.0f} cm from the {other} arm's hand "
+                    f"(keeps {100 * self.clearance_m:.0f} cm): refused before moving"
+                )
         return None
 
     def _guard(self, q_path: np.ndarray) -> ActionOutcome | None:
@@ -66,8 +71,13 @@ class ArmMotion:
     def ik(self, pose: Pose, seed: np.ndarray | None = None, what: str = "target") -> np.ndarray:
         return solve_ik(self.kin, pose, self.world.q(self.arm) if seed is None else seed, rng=self.rng, what=what).q
 
-    def move_to(self, pose: Pose | list[Pose], what: str = "target", settle_s: float = 0.05,
-                reconfigure_via: np.ndarray | None = None) -> ActionOutcome:
+    def move_to(
+        self,
+        pose: Pose | list[Pose],
+        what: str = "target",
+        settle_s: float = 0.05,
+        reconfigure_via: np.ndarray | None = None,
+    ) -> ActionOutcome:
         """Joint-space move through one or more TCP poses (one smooth chained trajectory).
 
         `reconfigure_via` (m, world frame): when reaching the first pose needs a large joint change (> 1.5 rad on
@@ -102,8 +112,9 @@ class ArmMotion:
             return ActionOutcome.fail(f"joints {err:.3f} rad from the {what}", FailureKind.CONTROL, res.sim_time_s)
         return ActionOutcome.success(res.sim_time_s)
 
-    def plan_line(self, target: Pose, q_start: np.ndarray | None = None, start: Pose | None = None,
-                  what: str = "line target") -> np.ndarray:
+    def plan_line(
+        self, target: Pose, q_start: np.ndarray | None = None, start: Pose | None = None, what: str = "line target"
+    ) -> np.ndarray:
         """Joint path (dense IK, 1 cm / 3 deg steps) for a straight TCP line; raises Unreachable."""
         q = self.world.q(self.arm) if q_start is None else np.asarray(q_start, float)
         start = start or self.kin.fk(q)
@@ -113,19 +124,29 @@ class ArmMotion:
         path = [q]
         for k in range(1, n + 1):
             s = k / n
-            pose = Pose(start.position_m + s * (target.position_m - start.position_m), _slerp(start.rotation, target.rotation, s))
+            pose = Pose(
+                start.position_m + s * (target.position_m - start.position_m),
+                _slerp(start.rotation, target.rotation, s),
+            )
             try:
                 q = solve_ik(self.kin, pose, q, restarts=0, tol_m=5e-4, tol_rad=5e-3, rng=self.rng, what=what).q
             except Unreachable:
-                raise Unreachable(f"the straight line to the {what} leaves the workspace or joint limits "
-                                  f"{100 * s:.0f} % of the way") from None
+                raise Unreachable(
+                    f"the straight line to the {what} leaves the workspace or joint limits {100 * s:.0f} % of the way"
+                ) from None
             if np.max(np.abs(q - path[-1])) > 0.5:
                 raise Unreachable(f"the straight line to the {what} needs a joint flip (singularity or limit)")
             path.append(q)
         return np.array(path)
 
-    def move_line(self, target: Pose, speed_m_s: float = 0.25, stop: Callable[[], bool] | None = None,
-                  what: str = "line target", check: bool = True) -> ActionOutcome:
+    def move_line(
+        self,
+        target: Pose,
+        speed_m_s: float = 0.25,
+        stop: Callable[[], bool] | None = None,
+        what: str = "line target",
+        check: bool = True,
+    ) -> ActionOutcome:
         """Straight-line TCP motion (dense IK, min-jerk timing). `stop()` ends it early (contact-aware moves)."""
         start = self.world.tcp_pose(self.arm)
         dist = float(np.linalg.norm(target.position_m - start.position_m))
@@ -146,8 +167,11 @@ class ArmMotion:
     def _check(self, target: Pose, sim_s: float, what: str) -> ActionOutcome:
         err = float(np.linalg.norm(self.world.tcp_pose(self.arm).position_m - target.position_m))
         if err > POSITION_TOL_M:
-            return ActionOutcome.fail(f"TCP {err * 100:.1f} cm from the {what} (tolerance 1 cm): blocked or dragged",
-                                      FailureKind.CONTROL, sim_s)
+            return ActionOutcome.fail(
+                f"TCP {err * 100:.1f} cm from the {what} (tolerance 1 cm): blocked or dragged",
+                FailureKind.CONTROL,
+                sim_s,
+            )
         return ActionOutcome.success(sim_s)
 
 

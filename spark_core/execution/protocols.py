@@ -4,8 +4,9 @@ where planning sees it too) and how primitives become motion."""
 from __future__ import annotations
 
 import enum
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any, Mapping, Protocol, runtime_checkable
+from typing import Any, Protocol, runtime_checkable
 
 from ..grammar import PrimitiveCall
 from ..perception import Keypoint
@@ -14,7 +15,7 @@ from ..perception.resolver_protocol import Resolver
 __all__ = ["ActionOutcome", "Actuator", "FailureKind", "Resolver"]
 
 
-class FailureKind(str, enum.Enum):
+class FailureKind(enum.StrEnum):
     """Which module a failure is attributed to."""
 
     PLANNER = "planner"
@@ -36,11 +37,13 @@ class ActionOutcome:
     detail: dict[str, Any] = field(default_factory=dict)
 
     @classmethod
-    def success(cls, sim_time_s: float, **detail: Any) -> "ActionOutcome":
+    def success(cls, sim_time_s: float, **detail: Any) -> ActionOutcome:
         return cls(True, sim_time_s, "", None, detail)
 
     @classmethod
-    def fail(cls, reason: str, failure: FailureKind = FailureKind.CONTROL, sim_time_s: float = 0.0, **detail: Any) -> "ActionOutcome":
+    def fail(
+        cls, reason: str, failure: FailureKind = FailureKind.CONTROL, sim_time_s: float = 0.0, **detail: Any
+    ) -> ActionOutcome:
         return cls(False, sim_time_s, reason, failure, detail)
 
 
@@ -54,5 +57,6 @@ class Actuator(Protocol):
 
     arms: tuple[str, ...]
 
-    def perform(self, call: PrimitiveCall, keypoints: Mapping[str, Keypoint], arm: str, timeout_s: float) -> ActionOutcome:
-        ...
+    def perform(
+        self, call: PrimitiveCall, keypoints: Mapping[str, Keypoint], arm: str, timeout_s: float
+    ) -> ActionOutcome: ...

@@ -6,7 +6,8 @@ ground-truth object state is NOT part of it.
 
 from __future__ import annotations
 
-from typing import Callable, Protocol, runtime_checkable
+from collections.abc import Callable
+from typing import Protocol, runtime_checkable
 
 import numpy as np
 
@@ -37,7 +38,9 @@ class World(Protocol):
         """External contact force (N) on the hand and the object it holds (a wrist F/T sensor)."""
         ...
 
-    def execute(self, arm: str, traj: JointTrajectory, stop: Callable[[], bool] | None = None, settle_s: float = 0.1): ...
+    def execute(
+        self, arm: str, traj: JointTrajectory, stop: Callable[[], bool] | None = None, settle_s: float = 0.1
+    ): ...
 
     def set_gripper(self, arm: str, width_m: float, force_n: float, duration_s: float = 0.6) -> float: ...
 

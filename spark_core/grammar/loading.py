@@ -17,9 +17,7 @@ from .errors import PlanError, PlanIssue
 MAX_PLAN_BYTES = 256 * 1024
 MAX_NESTING = 64  # YAML/JSON container depth; real plans are < 10 deep
 _FENCE = re.compile(r"```[ \t]*([A-Za-z0-9_+-]*)[ \t]*\r?\n(.*?)```", re.DOTALL)
-_STANDARD_TAGS = {
-    "tag:yaml.org,2002:" + t for t in ("str", "int", "float", "bool", "null", "map", "seq")
-}
+_STANDARD_TAGS = {"tag:yaml.org,2002:" + t for t in ("str", "int", "float", "bool", "null", "map", "seq")}
 
 
 def _fail(path: str, message: str) -> PlanError:
@@ -42,7 +40,10 @@ class _PlanLoader(yaml.SafeLoader):
         if tag not in (None, "!") and tag not in _STANDARD_TAGS:
             raise _fail("text", f"line {ev.start_mark.line + 1}: YAML tag {tag!r} is not allowed in plans")
         if getattr(ev, "anchor", None) is not None:
-            raise _fail("text", f"line {ev.start_mark.line + 1}: YAML anchors and aliases (&{ev.anchor}) are not allowed in plans")
+            raise _fail(
+                "text",
+                f"line {ev.start_mark.line + 1}: YAML anchors and aliases (&{ev.anchor}) are not allowed in plans",
+            )
         nested = isinstance(ev, (yaml.MappingStartEvent, yaml.SequenceStartEvent))
         if nested:
             self._depth += 1
@@ -112,7 +113,7 @@ def load_text(text: str) -> Any:
         except (json.JSONDecodeError, RecursionError):
             pass  # not strict JSON: YAML flow syntax may still read it
     try:
-        return yaml.load(body, Loader=_PlanLoader)  # noqa: S506 - _PlanLoader is a hardened SafeLoader
+        return yaml.load(body, Loader=_PlanLoader)
     except PlanError:
         raise
     except yaml.MarkedYAMLError as e:

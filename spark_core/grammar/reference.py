@@ -41,7 +41,12 @@ def markdown(registry: Registry = REGISTRY) -> str:
     ]
     for tier in Tier:
         specs = registry.by_tier(tier)
-        lines += [f"## {tier.value} ({len(specs)})", "", "| primitive | slots | arm | timeout | post-condition | description |", "|---|---|---|---|---|---|"]
+        lines += [
+            f"## {tier.value} ({len(specs)})",
+            "",
+            "| primitive | slots | arm | timeout | post-condition | description |",
+            "|---|---|---|---|---|---|",
+        ]
         for spec in specs:
             slots = "<br>".join(_slot_detail(s) for s in spec.slots) or "none"
             lines.append(
@@ -54,6 +59,6 @@ def markdown(registry: Registry = REGISTRY) -> str:
 def table(registry: Registry = REGISTRY) -> str:
     width = max(len(s.name) for s in registry)
     return "\n".join(
-        f"{spec.tier.value:<9} {spec.name:<{width}} {signature(spec)[len(spec.name):]:<70} {spec.timeout_s:>4g}s"
+        f"{spec.tier.value:<9} {spec.name:<{width}} {signature(spec)[len(spec.name) :]:<70} {spec.timeout_s:>4g}s"
         for spec in registry
     )

@@ -46,5 +46,6 @@ _Dumper.add_representer(str, _represent_str)
 
 def to_yaml(plan: Plan) -> str:
     """Canonical YAML: keys in a fixed order, params in registry slot order, only explicit params."""
-    return yaml.dump(plan_to_dict(plan), Dumper=_Dumper, sort_keys=False, default_flow_style=False,
-                     allow_unicode=True, width=120)
+    return yaml.dump(
+        plan_to_dict(plan), Dumper=_Dumper, sort_keys=False, default_flow_style=False, allow_unicode=True, width=120
+    )

@@ -8,14 +8,14 @@ from dataclasses import dataclass, field
 from typing import Any
 
 
-class Tier(str, enum.Enum):
+class Tier(enum.StrEnum):
     BASE = "base"
     SKILL = "skill"
     RECOVERY = "recovery"
     BIMANUAL = "bimanual"
 
 
-class ArmUse(str, enum.Enum):
+class ArmUse(enum.StrEnum):
     """Whether a primitive takes an `arm: left|right` tag."""
 
     NONE = "none"
@@ -23,7 +23,7 @@ class ArmUse(str, enum.Enum):
     REQUIRED = "required"
 
 
-class SlotType(str, enum.Enum):
+class SlotType(enum.StrEnum):
     LABEL = "label"  # an object label, resolved to a 3D keypoint when the node runs
     NUMBER = "number"
     INTEGER = "integer"
@@ -69,7 +69,7 @@ class SlotSpec:
         """True when `value` is valid for this slot (type and range)."""
         t = self.type
         if t is SlotType.LABEL:
-            return isinstance(value, str) and 0 < len(value.strip()) and len(value) <= MAX_LABEL_CHARS
+            return isinstance(value, str) and len(value.strip()) > 0 and len(value) <= MAX_LABEL_CHARS
         if t is SlotType.STRING:
             return isinstance(value, str) and len(value) <= 10_000
         if t is SlotType.BOOL:

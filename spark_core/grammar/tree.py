@@ -3,14 +3,15 @@
 from __future__ import annotations
 
 import enum
+from collections.abc import Iterator
 from dataclasses import dataclass, field
-from typing import Any, Iterator, Union
+from typing import Any, Union
 
 from .registry import REGISTRY
 from .spec import PrimitiveSpec
 
 
-class CompositeType(str, enum.Enum):
+class CompositeType(enum.StrEnum):
     SEQUENCE = "sequence"  # children in order; fails at the first failing child
     PARALLEL = "parallel"  # arm-tagged branches run concurrently, joined at an implicit barrier
     FALLBACK = "fallback"  # children in order until one succeeds
@@ -43,7 +44,7 @@ class PrimitiveCall:
 @dataclass(frozen=True)
 class Composite:
     type: CompositeType
-    children: tuple["Node", ...]
+    children: tuple[Node, ...]
     arm: str | None = None
 
 

@@ -81,7 +81,9 @@ class _Checker:
     def composite(self, raw: dict, path: str, depth: int, scope_arm: str | None, arm: str | None) -> Node | None:
         for key in raw:
             if key not in _COMPOSITE_KEYS:
-                self.err(f"{path}.{key}", f"unknown key for a composite node{_did_you_mean(str(key), list(_COMPOSITE_KEYS))}")
+                self.err(
+                    f"{path}.{key}", f"unknown key for a composite node{_did_you_mean(str(key), list(_COMPOSITE_KEYS))}"
+                )
         kinds = [c.value for c in CompositeType]
         t = raw["type"]
         if t not in kinds:
@@ -122,7 +124,10 @@ class _Checker:
             else:
                 (a,) = arms
                 if a in seen:
-                    self.err(f"{cpath}.arm", f"arm {a!r} already runs branch children[{seen[a]}]; parallel branches need distinct arms")
+                    self.err(
+                        f"{cpath}.arm",
+                        f"arm {a!r} already runs branch children[{seen[a]}]; parallel branches need distinct arms",
+                    )
                 else:
                     seen[a] = i
         if scope_arm is not None and len(nodes) > 1:
@@ -131,7 +136,9 @@ class _Checker:
     def primitive(self, raw: dict, path: str, arm: str | None, explicit_arm: str | None) -> PrimitiveCall | None:
         for key in raw:
             if key not in _PRIMITIVE_KEYS:
-                self.err(f"{path}.{key}", f"unknown key for a primitive node{_did_you_mean(str(key), list(_PRIMITIVE_KEYS))}")
+                self.err(
+                    f"{path}.{key}", f"unknown key for a primitive node{_did_you_mean(str(key), list(_PRIMITIVE_KEYS))}"
+                )
         name = raw["primitive"]
         if not isinstance(name, str):
             self.err(f"{path}.primitive", f"expected a primitive name, got {show(name)}")
@@ -189,7 +196,10 @@ class _Checker:
             return None
         for key in data:
             if key not in _TOP_KEYS:
-                self.err(str(key), f"unknown top-level key{_did_you_mean(str(key), list(_TOP_KEYS))}; a plan has task and tree")
+                self.err(
+                    str(key),
+                    f"unknown top-level key{_did_you_mean(str(key), list(_TOP_KEYS))}; a plan has task and tree",
+                )
         task = data.get("task")
         if task is None:
             self.err("task", "missing required key: a one-line task description")

@@ -8,5 +8,14 @@ from .resolver import PerceptionResolver
 from .segmenter import Segmenter
 from .sim_segmenter import SimSegmenter
 
-__all__ = ["CameraFrame", "Detection", "Keypoint", "LabelNotFound", "NoiseModel", "PerceptionResolver", "Segmenter",
-           "SimNoisySegmenter", "SimSegmenter"]
+__all__ = [
+    "CameraFrame",
+    "Detection",
+    "Keypoint",
+    "LabelNotFound",
+    "NoiseModel",
+    "PerceptionResolver",
+    "Segmenter",
+    "SimNoisySegmenter",
+    "SimSegmenter",
+]

@@ -32,12 +32,17 @@ class PromptSelection:
         return self.detection.prompt if self.detection else None
 
     def to_dict(self) -> dict:
-        return {"label": self.label, "chosen": self.chosen_prompt,
-                "candidates": [c.__dict__ for c in self.candidates]}
+        return {"label": self.label, "chosen": self.chosen_prompt, "candidates": [c.__dict__ for c in self.candidates]}
 
 
-def select_prompt(segmenter: Segmenter, frame: CameraFrame, label: str, variants: list[str],
-                  confident: float = CONFIDENT, keep_apart: frozenset[str] = frozenset()) -> PromptSelection:
+def select_prompt(
+    segmenter: Segmenter,
+    frame: CameraFrame,
+    label: str,
+    variants: list[str],
+    confident: float = CONFIDENT,
+    keep_apart: frozenset[str] = frozenset(),
+) -> PromptSelection:
     """Segment with the label and its variants in one call (split masks of one object merged first, except for
     prompts in `keep_apart`); keep the best single confident detection."""
     prompts = list(dict.fromkeys([label, *variants]))
@@ -62,6 +67,8 @@ def select_prompt(segmenter: Segmenter, frame: CameraFrame, label: str, variants
     if not singles:
         return PromptSelection(label, None, tuple(candidates))
     chosen = max(singles, key=lambda d: d.score)
-    candidates = [PromptCandidate(c.prompt, c.n_detections, c.best_score, "chosen" if c.prompt == chosen.prompt else c.verdict)
-                  for c in candidates]
+    candidates = [
+        PromptCandidate(c.prompt, c.n_detections, c.best_score, "chosen" if c.prompt == chosen.prompt else c.verdict)
+        for c in candidates
+    ]
     return PromptSelection(label, chosen.with_label(label), tuple(candidates))

@@ -39,5 +39,5 @@ class Detection:
         vs, us = np.nonzero(self.mask)
         return (int(us.min()), int(vs.min()), int(us.max()), int(vs.max())) if len(us) else (0, 0, -1, -1)
 
-    def with_label(self, label: str) -> "Detection":
+    def with_label(self, label: str) -> Detection:
         return Detection(label, self.prompt, self.mask, self.score, self.camera, self.privileged, dict(self.detail))

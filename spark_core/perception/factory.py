@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from typing import Any, Sequence
+from collections.abc import Sequence
+from typing import Any
 
 from .noisy_segmenter import NoiseModel, SimNoisySegmenter
 from .privileged import PrivilegedResolver
@@ -12,8 +13,9 @@ from .sim_segmenter import SimSegmenter
 DEFAULT_CAMERAS = ("agentview", "side")
 
 
-def make_segmenter(name: str, world: Any, seed: int = 0, noise: NoiseModel = NoiseModel(),
-                   sam3_model: str | None = None):
+def make_segmenter(
+    name: str, world: Any, seed: int = 0, noise: NoiseModel = NoiseModel(), sam3_model: str | None = None
+):
     """The named camera segmenter. `sim` and `sim-noisy` are oracles (the scene's object catalog); `sam3`
     reads RGB only (its checkpoint from `sam3_model` or SPARK_SAM3_MODEL; a clear error when it is absent)."""
     if name == "sim":
@@ -27,8 +29,15 @@ def make_segmenter(name: str, world: Any, seed: int = 0, noise: NoiseModel = Noi
     raise ValueError(f"no camera segmenter {name!r}")
 
 
-def make_resolver(world: Any, segmenter: str, seed: int = 0, cameras: Sequence[str] | None = None,
-                  adaptive: bool = True, noise: NoiseModel = NoiseModel(), sam3_model: str | None = None):
+def make_resolver(
+    world: Any,
+    segmenter: str,
+    seed: int = 0,
+    cameras: Sequence[str] | None = None,
+    adaptive: bool = True,
+    noise: NoiseModel = NoiseModel(),
+    sam3_model: str | None = None,
+):
     """label -> keypoint for one trial: the privileged-keypoints source, or cameras + the named segmenter.
     `cameras` None means the scene's own perception cameras."""
     if segmenter == "privileged-keypoints":
@@ -37,5 +46,6 @@ def make_resolver(world: Any, segmenter: str, seed: int = 0, cameras: Sequence[s
     missing = [c for c in cams if c not in world.scene.cameras]
     if missing:
         raise ValueError(f"camera(s) {', '.join(missing)} not in this scene; it has {', '.join(world.scene.cameras)}")
-    return PerceptionResolver(world, make_segmenter(segmenter, world, seed, noise, sam3_model), cameras=cams,
-                              adaptive=adaptive)
+    return PerceptionResolver(
+        world, make_segmenter(segmenter, world, seed, noise, sam3_model), cameras=cams, adaptive=adaptive
+    )

@@ -38,4 +38,7 @@ class CameraFrame:
         """(N, 3) world points -> (N, 2) pixel coordinates (u, v)."""
         T = np.linalg.inv(self.T_world_camera)
         pc = np.asarray(points_world, float) @ T[:3, :3].T + T[:3, 3]
-        return np.stack([self.K[0, 0] * pc[:, 0] / pc[:, 2] + self.K[0, 2], self.K[1, 1] * pc[:, 1] / pc[:, 2] + self.K[1, 2]], axis=1)
+        return np.stack(
+            [self.K[0, 0] * pc[:, 0] / pc[:, 2] + self.K[0, 2], self.K[1, 1] * pc[:, 1] / pc[:, 2] + self.K[1, 2]],
+            axis=1,
+        )

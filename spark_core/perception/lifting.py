@@ -63,12 +63,22 @@ def keypoint_from_points(label: str, evidence: list[PointEvidence], source: str)
     extent_xy = np.array([max(w, h), min(w, h)]) if len(top) >= 5 else extent[:2]
     centre = np.array([centre_xy[0], centre_xy[1], (lo[2] + hi[2]) / 2])
     best = max(evidence, key=lambda e: e.detection.score)
-    return Keypoint(label, centre, extent, None if yaw is None else float(yaw), source, float(best.detection.score),
-                    {"surface_point_m": [round(float(x), 4) for x in best.surface_point],
-                     "principal_extent_m": [round(float(x), 4) for x in extent_xy],
-                     "cameras": sorted({e.detection.camera for e in evidence}),
-                     "prompt": best.detection.prompt, "n_points": int(len(pts)),
-                     "footprint_xy_m": _footprint(top[:, :2] if len(top) >= 5 else pts[:, :2])})
+    return Keypoint(
+        label,
+        centre,
+        extent,
+        None if yaw is None else float(yaw),
+        source,
+        float(best.detection.score),
+        {
+            "surface_point_m": [round(float(x), 4) for x in best.surface_point],
+            "principal_extent_m": [round(float(x), 4) for x in extent_xy],
+            "cameras": sorted({e.detection.camera for e in evidence}),
+            "prompt": best.detection.prompt,
+            "n_points": int(len(pts)),
+            "footprint_xy_m": _footprint(top[:, :2] if len(top) >= 5 else pts[:, :2]),
+        },
+    )
 
 
 def _footprint(xy: np.ndarray) -> list[list[float]]:
@@ -77,7 +87,9 @@ def _footprint(xy: np.ndarray) -> list[list[float]]:
     return [[round(float(x), 3), round(float(y), 3)] for x, y in (cells + 0.5) * FOOTPRINT_CELL_M]
 
 
-def merge_duplicates(dets: list[Detection], radius_px: float = 30.0, keep_apart: frozenset[str] = frozenset()) -> list[Detection]:
+def merge_duplicates(
+    dets: list[Detection], radius_px: float = 30.0, keep_apart: frozenset[str] = frozenset()
+) -> list[Detection]:
     """Detections of the same label whose mask centroids are within `radius_px` are one object (union mask).
     Labels in `keep_apart` are never merged (two objects that must stay distinct)."""
     out: list[Detection] = []
@@ -87,8 +99,15 @@ def merge_duplicates(dets: list[Detection], radius_px: float = 30.0, keep_apart:
                 if kept.label == det.label and kept.camera == det.camera:
                     du = np.subtract(kept.centroid_px, det.centroid_px)
                     if float(np.hypot(*du)) <= radius_px:
-                        out[i] = Detection(kept.label, kept.prompt, kept.mask | det.mask, kept.score, kept.camera,
-                                           kept.privileged, {**kept.detail, "merged": kept.detail.get("merged", 1) + 1})
+                        out[i] = Detection(
+                            kept.label,
+                            kept.prompt,
+                            kept.mask | det.mask,
+                            kept.score,
+                            kept.camera,
+                            kept.privileged,
+                            {**kept.detail, "merged": kept.detail.get("merged", 1) + 1},
+                        )
                         break
             else:
                 out.append(det)
@@ -104,5 +123,5 @@ def wrist_self_occlusion(shape: tuple[int, int], band: float = 0.2) -> np.ndarra
     m = np.zeros((h, w), bool)
     k = int(band * w)
     m[:, :k] = True
-    m[:, w - k:] = True
+    m[:, w - k :] = True
     return m

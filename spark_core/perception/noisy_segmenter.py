@@ -3,8 +3,8 @@ prompting under controlled perception error. Still privileged underneath (masks 
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Sequence
 
 import cv2
 import numpy as np
@@ -22,8 +22,10 @@ class NoiseModel:
     depth_noise_m: float = 0.0  # std of Gaussian noise added to depth before lifting
 
     def describe(self) -> str:
-        return (f"miss {self.miss_rate:.0%}, erode {self.erode_px} px, confusion {self.confusion_rate:.0%}, "
-                f"depth noise {self.depth_noise_m * 1000:.0f} mm")
+        return (
+            f"miss {self.miss_rate:.0%}, erode {self.erode_px} px, confusion {self.confusion_rate:.0%}, "
+            f"depth noise {self.depth_noise_m * 1000:.0f} mm"
+        )
 
 
 class SimNoisySegmenter:
@@ -40,8 +42,16 @@ class SimNoisySegmenter:
         if self.noise.depth_noise_m <= 0:
             return frame
         depth = frame.depth_m + self.rng.normal(0.0, self.noise.depth_noise_m, frame.depth_m.shape).astype(np.float32)
-        return CameraFrame(frame.camera, frame.rgb, depth, frame.K, frame.T_world_camera, frame.sim_time_s,
-                           frame.object_ids, frame.labels)
+        return CameraFrame(
+            frame.camera,
+            frame.rgb,
+            depth,
+            frame.K,
+            frame.T_world_camera,
+            frame.sim_time_s,
+            frame.object_ids,
+            frame.labels,
+        )
 
     def segment(self, frame: CameraFrame, prompts: Sequence[str]) -> list[Detection]:
         out = []

@@ -7,11 +7,25 @@ import re
 # qualifier -> (world axis index, sign): the chosen instance maximises sign * coordinate.
 # World frame: x forward (away from the robot), y left (robot's view).
 QUALIFIERS: dict[str, tuple[int, float]] = {
-    "left": (1, 1.0), "leftmost": (1, 1.0), "right": (1, -1.0), "rightmost": (1, -1.0),
-    "front": (0, -1.0), "nearest": (0, -1.0), "closest": (0, -1.0), "near": (0, -1.0),
-    "back": (0, 1.0), "far": (0, 1.0), "farthest": (0, 1.0), "furthest": (0, 1.0), "rear": (0, 1.0),
+    "left": (1, 1.0),
+    "leftmost": (1, 1.0),
+    "right": (1, -1.0),
+    "rightmost": (1, -1.0),
+    "front": (0, -1.0),
+    "nearest": (0, -1.0),
+    "closest": (0, -1.0),
+    "near": (0, -1.0),
+    "back": (0, 1.0),
+    "far": (0, 1.0),
+    "farthest": (0, 1.0),
+    "furthest": (0, 1.0),
+    "rear": (0, 1.0),
     # stacked instances (a cabinet's drawers, their handles): sign 0 = the middle one
-    "top": (2, 1.0), "upper": (2, 1.0), "bottom": (2, -1.0), "lower": (2, -1.0), "middle": (2, 0.0),
+    "top": (2, 1.0),
+    "upper": (2, 1.0),
+    "bottom": (2, -1.0),
+    "lower": (2, -1.0),
+    "middle": (2, 0.0),
 }
 _ARTICLES = re.compile(r"\b(the|a|an|one|of|to|robot|from)\b", re.I)
 
@@ -21,7 +35,7 @@ def split_qualifier(prompt: str) -> tuple[str | None, str]:
     words = prompt.lower().replace("-", " ").split()
     for i, w in enumerate(words):
         if w in QUALIFIERS:
-            rest = " ".join(words[:i] + words[i + 1:])
+            rest = " ".join(words[:i] + words[i + 1 :])
             core = _ARTICLES.sub(" ", rest).split()
             return w, " ".join(core) if core else rest
     return None, prompt
@@ -30,8 +44,9 @@ def split_qualifier(prompt: str) -> tuple[str | None, str]:
 # Relations to another object ("the bowl next to the plate", "the bowl between the plate and the ramekin"):
 # the chosen instance is the one whose centroid is nearest (in the table plane) to the anchor(s).
 RELATIONS = ("between", "next to", "beside", "near", "by", "on top of", "on", "in", "inside", "at", "from")
-_RELATION = re.compile(r"^(.+?)\s+(" + "|".join(re.escape(r) for r in sorted(RELATIONS, key=len, reverse=True))
-                       + r")\s+(.+)$")
+_RELATION = re.compile(
+    r"^(.+?)\s+(" + "|".join(re.escape(r) for r in sorted(RELATIONS, key=len, reverse=True)) + r")\s+(.+)$"
+)
 
 
 def split_relation(prompt: str) -> tuple[str, str | None, list[str]]:

@@ -7,7 +7,7 @@ executor's tier-2 recovery calls it after retracting).
 
 from __future__ import annotations
 
-from typing import Callable, Sequence
+from collections.abc import Callable, Sequence
 
 import numpy as np
 
@@ -23,9 +23,16 @@ FUSE_AGREEMENT_M = 0.05
 
 
 class PerceptionResolver:
-    def __init__(self, world, segmenter: Segmenter, cameras: Sequence[str] = ("agentview", "side"),
-                 adaptive: bool = True, k_variants: int = 3, variants: Callable[[str], list[str]] | None = None,
-                 size: tuple[int, int] = (640, 480)):
+    def __init__(
+        self,
+        world,
+        segmenter: Segmenter,
+        cameras: Sequence[str] = ("agentview", "side"),
+        adaptive: bool = True,
+        k_variants: int = 3,
+        variants: Callable[[str], list[str]] | None = None,
+        size: tuple[int, int] = (640, 480),
+    ):
         self.world = world
         self.segmenter = segmenter
         self.cameras = tuple(cameras)
@@ -92,4 +99,6 @@ def _agreeing(evidence: list[PointEvidence]) -> list[PointEvidence]:
         return evidence
     best = max(evidence, key=lambda e: e.detection.score)
     centre = np.median(best.points_world, axis=0)
-    return [e for e in evidence if np.linalg.norm(np.median(e.points_world, axis=0)[:2] - centre[:2]) < FUSE_AGREEMENT_M]
+    return [
+        e for e in evidence if np.linalg.norm(np.median(e.points_world, axis=0)[:2] - centre[:2]) < FUSE_AGREEMENT_M
+    ]

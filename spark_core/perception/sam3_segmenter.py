@@ -7,8 +7,8 @@ downloaded at run time. One image encoding is reused for every prompt of a call.
 from __future__ import annotations
 
 import os
+from collections.abc import Sequence
 from pathlib import Path
-from typing import Sequence
 
 import cv2
 import numpy as np
@@ -29,14 +29,16 @@ def locate_checkpoint(model: str | os.PathLike) -> Path:
     path = Path(model).expanduser()
     if path.is_dir():
         if not (path / "config.json").exists():
-            raise Sam3WeightsMissing(f"{path} exists but has no config.json: it is not a SAM3 checkpoint directory "
-                                     "(expected config.json, model.safetensors and the tokenizer files)")
+            raise Sam3WeightsMissing(
+                f"{path} exists but has no config.json: it is not a SAM3 checkpoint directory "
+                "(expected config.json, model.safetensors and the tokenizer files)"
+            )
         return path
     try:
         from huggingface_hub import snapshot_download
 
         return Path(snapshot_download(str(model), local_files_only=True))
-    except Exception:  # noqa: BLE001 - any cache miss means the same thing to the operator
+    except Exception:
         raise Sam3WeightsMissing(
             f"SAM3 weights not found: {str(model)!r} is neither a local directory nor in the Hugging Face cache "
             f"({os.environ.get('HF_HOME', '~/.cache/huggingface')}). This machine cannot download them. On a machine "
@@ -51,8 +53,14 @@ class Sam3Segmenter:
     name = "sam3"
     privileged = False
 
-    def __init__(self, model: str | os.PathLike | None = None, device: str | None = None,
-                 score_threshold: float = 0.5, mask_threshold: float = 0.5, max_detections: int = 10):
+    def __init__(
+        self,
+        model: str | os.PathLike | None = None,
+        device: str | None = None,
+        score_threshold: float = 0.5,
+        mask_threshold: float = 0.5,
+        max_detections: int = 10,
+    ):
         import torch
         from transformers import AutoTokenizer, Sam3Model
 
@@ -69,7 +77,10 @@ class Sam3Segmenter:
         """uint8 HxWx3 -> (1, 3, S, S) float tensor: bilinear resize to the model's square input, mean = std = 0.5."""
         import torch
 
-        img = cv2.resize(rgb, (self.image_size, self.image_size), interpolation=cv2.INTER_LINEAR).astype(np.float32) / 255.0
+        img = (
+            cv2.resize(rgb, (self.image_size, self.image_size), interpolation=cv2.INTER_LINEAR).astype(np.float32)
+            / 255.0
+        )
         img = (img - 0.5) / 0.5
         return torch.from_numpy(img.transpose(2, 0, 1)[None].copy()).to(self.device)
 
@@ -79,14 +90,18 @@ class Sam3Segmenter:
         if not prompts:
             return []
         h, w = frame.shape
-        tokens = self.tokenizer(list(prompts), padding="max_length", max_length=TEXT_TOKENS, truncation=True,
-                                return_tensors="pt")
+        tokens = self.tokenizer(
+            list(prompts), padding="max_length", max_length=TEXT_TOKENS, truncation=True, return_tensors="pt"
+        )
         out: list[Detection] = []
         with torch.no_grad():
             vision = self.model.get_vision_features(pixel_values=self.preprocess(frame.rgb))  # once per image
             for i, prompt in enumerate(prompts):
-                res = self.model(vision_embeds=vision, input_ids=tokens["input_ids"][i:i + 1].to(self.device),
-                                 attention_mask=tokens["attention_mask"][i:i + 1].to(self.device))
+                res = self.model(
+                    vision_embeds=vision,
+                    input_ids=tokens["input_ids"][i : i + 1].to(self.device),
+                    attention_mask=tokens["attention_mask"][i : i + 1].to(self.device),
+                )
                 scores = (torch.sigmoid(res.pred_logits[0]) * torch.sigmoid(res.presence_logits[0])).cpu().numpy()
                 masks = torch.sigmoid(res.pred_masks[0]).cpu().numpy()
                 boxes = res.pred_boxes[0].cpu().numpy()
@@ -97,6 +112,15 @@ class Sam3Segmenter:
                     if not mask.any():
                         continue
                     x0, y0, x1, y1 = (boxes[q] * [w, h, w, h]).tolist()
-                    out.append(Detection(prompt, prompt, mask, float(scores[q]), frame.camera, False,
-                                         {"box_xyxy_px": [round(x0, 1), round(y0, 1), round(x1, 1), round(y1, 1)], "query": int(q)}))
+                    out.append(
+                        Detection(
+                            prompt,
+                            prompt,
+                            mask,
+                            float(scores[q]),
+                            frame.camera,
+                            False,
+                            {"box_xyxy_px": [round(x0, 1), round(y0, 1), round(x1, 1), round(y1, 1)], "query": int(q)},
+                        )
+                    )
         return out

@@ -4,7 +4,7 @@ grounded to scene objects by sentence similarity over each object's label and de
 from __future__ import annotations
 
 import re
-from typing import Mapping, Sequence
+from collections.abc import Mapping, Sequence
 
 import numpy as np
 
@@ -13,7 +13,6 @@ from .detection import Detection
 from .frame import CameraFrame
 from .qualifiers import QUALIFIERS, split_qualifier, split_relation
 from .text_encoder import SHARED_ENCODER, TextEncoder
-
 
 HEAD_NOUN_BONUS = 0.08
 COLOUR_MISMATCH_PENALTY = 0.15
@@ -35,8 +34,13 @@ class SimSegmenter:
     name = "sim"
     privileged = True
 
-    def __init__(self, catalog: Mapping[str, str], threshold: float = 0.33, margin: float = 0.07,
-                 encoder: TextEncoder | None = None):
+    def __init__(
+        self,
+        catalog: Mapping[str, str],
+        threshold: float = 0.33,
+        margin: float = 0.07,
+        encoder: TextEncoder | None = None,
+    ):
         self.catalog = dict(catalog)  # object label -> description
         self.threshold = threshold
         self.margin = margin
@@ -72,7 +76,9 @@ class SimSegmenter:
 
     def segment(self, frame: CameraFrame, prompts: Sequence[str]) -> list[Detection]:
         if frame.object_ids is None:
-            raise ValueError("the sim segmenter needs per-pixel object ids: this frame has none (not from the simulator)")
+            raise ValueError(
+                "the sim segmenter needs per-pixel object ids: this frame has none (not from the simulator)"
+            )
         visible = {frame.labels[i]: i for i in np.unique(frame.object_ids) if i and i in frame.labels}
         out: list[Detection] = []
         for prompt in prompts:
@@ -88,34 +94,57 @@ class SimSegmenter:
             # drawer does not turn a "drawer" prompt into a detection of the cabinet that hides it.
             best = max(sims.values())
             chosen = [k for k, v in sims.items() if v >= self.threshold and v >= best - self.margin and k in visible]
-            dets = [Detection(prompt, prompt, frame.object_ids == visible[k], calibrated_score(sims[k], self.threshold),
-                              frame.camera, True, {"object": k, "cosine": round(sims[k], 4)}) for k in chosen]
+            dets = [
+                Detection(
+                    prompt,
+                    prompt,
+                    frame.object_ids == visible[k],
+                    calibrated_score(sims[k], self.threshold),
+                    frame.camera,
+                    True,
+                    {"object": k, "cosine": round(sims[k], 4)},
+                )
+                for k in chosen
+            ]
             if qualifier and len(dets) > 1:
                 dets = [pick_by_qualifier(dets, frame, qualifier)]
             out.extend(dets)
         return out
 
-    def _related(self, frame: CameraFrame, prompt: str, head: str, anchors: list[str],
-                 negated: bool = False) -> list[Detection]:
+    def _related(
+        self, frame: CameraFrame, prompt: str, head: str, anchors: list[str], negated: bool = False
+    ) -> list[Detection]:
         """Instances of `head`; when several, the one nearest the anchor objects (their midpoint for "between"),
         or the farthest when negated ("not between")."""
         dets = self.segment(frame, [head])
         found = []
         for a in anchors:
-            cands = [d for d in self.segment(frame, [a]) if d.detail.get("object") not in {x.detail.get("object") for x in dets}]
+            cands = [
+                d
+                for d in self.segment(frame, [a])
+                if d.detail.get("object") not in {x.detail.get("object") for x in dets}
+            ]
             if cands:
                 found.append(_centroid_xy(max(cands, key=lambda d: d.score), frame))
         if len(dets) > 1 and not found and any(w in a for a in anchors for w in ("center", "centre", "middle")):
             # "from the table center": the middle of everything on the table in this view
             ids = [i for i in np.unique(frame.object_ids) if i]
-            found = [np.mean([_centroid_xy(Detection("", "", frame.object_ids == i, 1.0, frame.camera), frame)
-                              for i in ids], axis=0)]
+            found = [
+                np.mean(
+                    [_centroid_xy(Detection("", "", frame.object_ids == i, 1.0, frame.camera), frame) for i in ids],
+                    axis=0,
+                )
+            ]
         if len(dets) > 1 and found:
             target = np.mean(found, axis=0)
             pick = max if negated else min
             dets = [pick(dets, key=lambda d: float(np.linalg.norm(_centroid_xy(d, frame) - target)))]
-        return [Detection(prompt, prompt, d.mask, d.score, d.camera, d.privileged, {**d.detail, "relation_anchors": anchors})
-                for d in dets]
+        return [
+            Detection(
+                prompt, prompt, d.mask, d.score, d.camera, d.privileged, {**d.detail, "relation_anchors": anchors}
+            )
+            for d in dets
+        ]
 
 
 def _instance_names(catalog: Mapping[str, str]) -> dict[str, str]:

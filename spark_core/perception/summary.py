@@ -21,7 +21,12 @@ def relations(kps: dict[str, Keypoint]) -> list[tuple[str, ...]]:
         inside_xy = bool(np.all(np.abs(A.position_m[:2] - B.position_m[:2]) < b_half))
         if inside_xy and abs(a_lo - b_hi) < 0.015 and A.extent_m[2] > 0:
             out.append(("on", a, b))
-        elif inside_xy and a_lo < b_hi - 0.015 and B.extent_m[2] > A.extent_m[2] * 0.5 and a_lo >= B.position_m[2] - B.extent_m[2] / 2 - 0.01:
+        elif (
+            inside_xy
+            and a_lo < b_hi - 0.015
+            and B.extent_m[2] > A.extent_m[2] * 0.5
+            and a_lo >= B.position_m[2] - B.extent_m[2] / 2 - 0.01
+        ):
             out.append(("in", a, b))
     for a, b in combinations(kps, 2):
         d = float(np.linalg.norm(kps[a].position_m[:2] - kps[b].position_m[:2]))
@@ -47,5 +52,9 @@ def summarise(kps: dict[str, Keypoint]) -> str:
     if rels:
         lines.append("relations:")
         for r in rels:
-            lines.append(f"- {r[1]} is between {r[2]} and {r[3]}" if r[0] == "between" else f"- {r[1]} {r[0].replace('_', ' ')} {r[2]}")
+            lines.append(
+                f"- {r[1]} is between {r[2]} and {r[3]}"
+                if r[0] == "between"
+                else f"- {r[1]} {r[0].replace('_', ' ')} {r[2]}"
+            )
     return "\n".join(lines)

@@ -14,8 +14,13 @@ DEFAULT_MODEL = "gemini-3.1-pro-preview"
 class GeminiPlanner:
     name = "gemini"
 
-    def __init__(self, model: str = DEFAULT_MODEL, api_key: str | None = None, base_url: str | None = None,
-                 settings: LLMSettings | None = None):
+    def __init__(
+        self,
+        model: str = DEFAULT_MODEL,
+        api_key: str | None = None,
+        base_url: str | None = None,
+        settings: LLMSettings | None = None,
+    ):
         from google import genai
         from google.genai import types
 
@@ -25,8 +30,11 @@ class GeminiPlanner:
         self.settings = settings or LLMSettings(model)
         self.types = types
         self.errors = genai.errors
-        http = types.HttpOptions(base_url=base_url, timeout=int(self.settings.timeout_s * 1000),
-                                 retry_options=types.HttpRetryOptions(attempts=1))  # retries are ours: bounded, reported
+        http = types.HttpOptions(
+            base_url=base_url,
+            timeout=int(self.settings.timeout_s * 1000),
+            retry_options=types.HttpRetryOptions(attempts=1),
+        )  # retries are ours: bounded, reported
         self.client = genai.Client(api_key=key, http_options=http)
 
     def plan(self, request: PlanRequest) -> PlanResult:
@@ -45,22 +53,28 @@ class GeminiPlanner:
                 parts.append(t.Part.from_bytes(data=image, mime_type="image/png"))
             contents.append(t.Content(role="user" if turn.role == "user" else "model", parts=parts))
         config = t.GenerateContentConfig(
-            system_instruction=system, temperature=self.settings.temperature,
-            max_output_tokens=self.settings.max_output_tokens, response_mime_type="application/json",
-            response_json_schema=schema or response_schema())
+            system_instruction=system,
+            temperature=self.settings.temperature,
+            max_output_tokens=self.settings.max_output_tokens,
+            response_mime_type="application/json",
+            response_json_schema=schema or response_schema(),
+        )
         try:
             resp = self.client.models.generate_content(model=self.settings.model, contents=contents, config=config)
         except self.errors.APIError as e:
             if e.code == 429 or (e.code or 0) >= 500:
                 raise TransientError(f"HTTP {e.code} from Gemini: {e.message or e.status}") from None
             raise PlannerUnavailable(f"HTTP {e.code} from Gemini: {e.message or e.status}") from None
-        except Exception as e:  # noqa: BLE001 - transport errors (timeouts, refused connections) from httpx
+        except Exception as e:
             if "timeout" in type(e).__name__.lower() or "timed out" in str(e).lower():
                 raise TransientError(f"Gemini did not answer within {self.settings.timeout_s:g} s") from None
             if "connect" in type(e).__name__.lower():
                 raise TransientError(f"cannot reach Gemini: {e}") from None
             raise
         meta = resp.usage_metadata
-        usage = Usage(getattr(meta, "prompt_token_count", 0) or 0, getattr(meta, "candidates_token_count", 0) or 0,
-                      getattr(meta, "thoughts_token_count", 0) or 0)
+        usage = Usage(
+            getattr(meta, "prompt_token_count", 0) or 0,
+            getattr(meta, "candidates_token_count", 0) or 0,
+            getattr(meta, "thoughts_token_count", 0) or 0,
+        )
         return CallOutcome(resp.text or "", usage)

@@ -34,8 +34,17 @@ class PlanLibrary:
         with self._lock:
             self.path.parent.mkdir(parents=True, exist_ok=True)
             with self.path.open("a") as f:
-                f.write(json.dumps({"instruction": instruction, "plan": plan_yaml, "scene_summary": scene_summary,
-                                    "t": time.time()}) + "\n")
+                f.write(
+                    json.dumps(
+                        {
+                            "instruction": instruction,
+                            "plan": plan_yaml,
+                            "scene_summary": scene_summary,
+                            "t": time.time(),
+                        }
+                    )
+                    + "\n"
+                )
 
     def examples(self, instruction: str, k: int = 2) -> tuple[tuple[str, str], ...]:
         """The k stored (instruction, plan) pairs whose instructions are most similar to `instruction`."""

@@ -5,8 +5,8 @@ from __future__ import annotations
 
 import json
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
 
 import cv2
 import numpy as np
@@ -60,8 +60,12 @@ def png_bytes(image: np.ndarray) -> bytes:
     return buf.tobytes()
 
 
-def plan_with_llm(backend: str, settings: LLMSettings, request: PlanRequest,
-                  call: Callable[[str, list[Turn], bytes | None], CallOutcome]) -> PlanResult:
+def plan_with_llm(
+    backend: str,
+    settings: LLMSettings,
+    request: PlanRequest,
+    call: Callable[[str, list[Turn], bytes | None], CallOutcome],
+) -> PlanResult:
     """Drive `call(system, turns, image_png)` through retries and repair; `call` raises TransientError or
     PlannerUnavailable for failures."""
     t0 = time.perf_counter()
@@ -74,22 +78,45 @@ def plan_with_llm(backend: str, settings: LLMSettings, request: PlanRequest,
         try:
             out = _with_retries(settings, lambda: call(system, turns, image))
         except (TransientError, PlannerUnavailable) as e:
-            return PlanResult(backend, texts[-1] if texts else "", None, error=f"{backend} planner failed: {e}",
-                              usage=total, cost_usd=cost_usd(settings.model, total, settings.prices),
-                              latency_s=time.perf_counter() - t0, detail={"model": settings.model, "rounds": round_})
-        total = Usage(total.input_tokens + out.usage.input_tokens, total.output_tokens + out.usage.output_tokens,
-                      total.reasoning_tokens + out.usage.reasoning_tokens)
+            return PlanResult(
+                backend,
+                texts[-1] if texts else "",
+                None,
+                error=f"{backend} planner failed: {e}",
+                usage=total,
+                cost_usd=cost_usd(settings.model, total, settings.prices),
+                latency_s=time.perf_counter() - t0,
+                detail={"model": settings.model, "rounds": round_},
+            )
+        total = Usage(
+            total.input_tokens + out.usage.input_tokens,
+            total.output_tokens + out.usage.output_tokens,
+            total.reasoning_tokens + out.usage.reasoning_tokens,
+        )
         texts.append(out.text)
         plan, issues = validate(out.text)
         if plan is not None:
-            return PlanResult(backend, out.text, plan, usage=total, cost_usd=cost_usd(settings.model, total, settings.prices),
-                              latency_s=time.perf_counter() - t0,
-                              detail={"model": settings.model, "rounds": round_ + 1, "attempts": texts})
+            return PlanResult(
+                backend,
+                out.text,
+                plan,
+                usage=total,
+                cost_usd=cost_usd(settings.model, total, settings.prices),
+                latency_s=time.perf_counter() - t0,
+                detail={"model": settings.model, "rounds": round_ + 1, "attempts": texts},
+            )
         turns += [Turn("model", out.text), Turn("user", repair_prompt([str(i) for i in issues]))]
-    return PlanResult(backend, texts[-1], None, issues=issues,
-                      error=f"the {backend} plan did not type-check after {settings.repair_rounds} repair round(s)",
-                      usage=total, cost_usd=cost_usd(settings.model, total, settings.prices),
-                      latency_s=time.perf_counter() - t0, detail={"model": settings.model, "attempts": texts})
+    return PlanResult(
+        backend,
+        texts[-1],
+        None,
+        issues=issues,
+        error=f"the {backend} plan did not type-check after {settings.repair_rounds} repair round(s)",
+        usage=total,
+        cost_usd=cost_usd(settings.model, total, settings.prices),
+        latency_s=time.perf_counter() - t0,
+        detail={"model": settings.model, "attempts": texts},
+    )
 
 
 def _with_retries(settings: LLMSettings, fn: Callable[[], CallOutcome]) -> CallOutcome:
@@ -105,17 +132,25 @@ def _with_retries(settings: LLMSettings, fn: Callable[[], CallOutcome]) -> CallO
     raise AssertionError("unreachable")
 
 
-VARIANTS_SYSTEM = ("You help an open-vocabulary object detector. For each object label, give {k} alternative short "
-                   "text prompts that describe the same object by colour, shape or material. Answer with a JSON object "
-                   "mapping each label to a list of {k} strings, and nothing else.")
+VARIANTS_SYSTEM = (
+    "You help an open-vocabulary object detector. For each object label, give {k} alternative short "
+    "text prompts that describe the same object by colour, shape or material. Answer with a JSON object "
+    "mapping each label to a list of {k} strings, and nothing else."
+)
 
 
-def variants_with_llm(settings: LLMSettings, labels: list[str], k: int,
-                      call: Callable[..., CallOutcome]) -> dict[str, list[str]]:
+def variants_with_llm(
+    settings: LLMSettings, labels: list[str], k: int, call: Callable[..., CallOutcome]
+) -> dict[str, list[str]]:
     """One call; labels the model skipped or mangled get no variants (perception then uses the label alone)."""
-    schema = {"type": "object", "properties": {label: {"type": "array", "items": {"type": "string"}} for label in labels},
-              "required": list(labels)}
-    out = _with_retries(settings, lambda: call(VARIANTS_SYSTEM.format(k=k), [Turn("user", json.dumps(labels))], None, schema))
+    schema = {
+        "type": "object",
+        "properties": {label: {"type": "array", "items": {"type": "string"}} for label in labels},
+        "required": list(labels),
+    }
+    out = _with_retries(
+        settings, lambda: call(VARIANTS_SYSTEM.format(k=k), [Turn("user", json.dumps(labels))], None, schema)
+    )
     try:
         data = json.loads(unfence(out.text))
     except json.JSONDecodeError:

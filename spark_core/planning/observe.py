@@ -46,8 +46,10 @@ def observe(instruction: str, resolver: Resolver, extra: list[str] = ()) -> Scen
 
 def arm_bases(world) -> dict[str, tuple[float, float]]:
     """Where each arm stands (base x, y in the world, m): what a planner needs to share work between arms."""
-    return {a: (float(world.kinematics[a].T_world_base[0, 3]), float(world.kinematics[a].T_world_base[1, 3]))
-            for a in world.arms}
+    return {
+        a: (float(world.kinematics[a].T_world_base[0, 3]), float(world.kinematics[a].T_world_base[1, 3]))
+        for a in world.arms
+    }
 
 
 def arm_tools(world) -> dict[str, str]:

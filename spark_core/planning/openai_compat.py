@@ -14,14 +14,17 @@ from .protocol import PlanRequest, PlanResult, Usage
 class OpenAIPlanner:
     name = "openai"
 
-    def __init__(self, model: str, base_url: str | None = None, api_key: str | None = None,
-                 settings: LLMSettings | None = None):
+    def __init__(
+        self, model: str, base_url: str | None = None, api_key: str | None = None, settings: LLMSettings | None = None
+    ):
         import openai
 
         key = api_key or os.environ.get("OPENAI_API_KEY") or ("not-needed" if base_url else None)
         if key is None:
-            raise PlannerUnavailable("the openai planner needs OPENAI_API_KEY, or --base-url of a local "
-                                     "OpenAI-compatible server (Ollama, vLLM, llama.cpp)")
+            raise PlannerUnavailable(
+                "the openai planner needs OPENAI_API_KEY, or --base-url of a local "
+                "OpenAI-compatible server (Ollama, vLLM, llama.cpp)"
+            )
         self.settings = settings or LLMSettings(model)
         self.openai = openai
         self.client = openai.OpenAI(api_key=key, base_url=base_url, timeout=self.settings.timeout_s, max_retries=0)
@@ -44,14 +47,21 @@ class OpenAIPlanner:
         o = self.openai
         try:
             resp = self.client.chat.completions.create(
-                model=self.settings.model, messages=messages, temperature=self.settings.temperature,
+                model=self.settings.model,
+                messages=messages,
+                temperature=self.settings.temperature,
                 max_tokens=self.settings.max_output_tokens,
-                response_format={"type": "json_schema",
-                                 "json_schema": {"name": "spark_output", "schema": schema or response_schema()}})
+                response_format={
+                    "type": "json_schema",
+                    "json_schema": {"name": "spark_output", "schema": schema or response_schema()},
+                },
+            )
         except (o.RateLimitError, o.InternalServerError) as e:
             raise TransientError(f"HTTP {e.status_code} from {self.client.base_url}: {_message(e)}") from None
         except o.APITimeoutError:
-            raise TransientError(f"{self.client.base_url} did not answer within {self.settings.timeout_s:g} s") from None
+            raise TransientError(
+                f"{self.client.base_url} did not answer within {self.settings.timeout_s:g} s"
+            ) from None
         except o.APIConnectionError as e:
             raise TransientError(f"cannot reach {self.client.base_url}: {e}") from None
         except o.APIStatusError as e:

@@ -33,9 +33,9 @@ def grammar_listing(registry: Registry = REGISTRY) -> str:
 def system_prompt(registry: Registry = REGISTRY) -> str:
     return (
         "You are the planner of a robot manipulation system. Write ONE behavior tree that accomplishes the task.\n"
-        "Answer with a JSON object {\"task\": <one line>, \"tree\": <node>} and nothing else. A node is either\n"
-        "{\"type\": \"sequence\"|\"fallback\"|\"parallel\", \"children\": [nodes], \"arm\"?: \"left\"|\"right\"} or\n"
-        "{\"primitive\": <name>, \"params\": {<slot>: <value>}, \"arm\"?: \"left\"|\"right\"}. Slots marked * are required;\n"
+        'Answer with a JSON object {"task": <one line>, "tree": <node>} and nothing else. A node is either\n'
+        '{"type": "sequence"|"fallback"|"parallel", "children": [nodes], "arm"?: "left"|"right"} or\n'
+        '{"primitive": <name>, "params": {<slot>: <value>}, "arm"?: "left"|"right"}. Slots marked * are required;\n'
         "others default to the value shown.\n\n" + grammar_listing(registry) + "\n\n" + GUIDANCE
     )
 
@@ -45,9 +45,12 @@ def user_prompt(request: PlanRequest) -> str:
     for instruction, plan_text in request.examples:
         parts.append(f"Example task: {instruction}\nExample plan:\n{plan_text.strip()}\n")
     if request.arms:
-        arms = [f"{a} (base at x={x:.2f} m, y={y:.2f} m" + (f"; carries a mounted {request.tools[a]} and has no fingers"
-                                                           if a in request.tools else "") + ")"
-                for a, (x, y) in sorted(request.arms.items())]
+        arms = [
+            f"{a} (base at x={x:.2f} m, y={y:.2f} m"
+            + (f"; carries a mounted {request.tools[a]} and has no fingers" if a in request.tools else "")
+            + ")"
+            for a, (x, y) in sorted(request.arms.items())
+        ]
         parts.append("The robot's arms: " + "; ".join(arms))
     parts.append("What perception sees now:\n" + (request.scene.summary or "(nothing reported)"))
     parts.append(f"Task: {request.instruction.strip()}")
@@ -55,8 +58,11 @@ def user_prompt(request: PlanRequest) -> str:
 
 
 def repair_prompt(errors: list[str]) -> str:
-    return ("That plan does not type-check. Errors (path: problem):\n" + "\n".join(f"- {e}" for e in errors)
-            + "\nReturn the corrected plan as the same JSON object, and nothing else.")
+    return (
+        "That plan does not type-check. Errors (path: problem):\n"
+        + "\n".join(f"- {e}" for e in errors)
+        + "\nReturn the corrected plan as the same JSON object, and nothing else."
+    )
 
 
 def response_schema() -> dict:

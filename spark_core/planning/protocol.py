@@ -28,7 +28,9 @@ class PlanRequest:
     examples: tuple[tuple[str, str], ...] = ()  # (instruction, plan YAML) few-shot pairs from the plan library
     arms: dict[str, tuple[float, float]] = field(default_factory=dict)  # arm -> base (x, y) in the world, m;
     # with two arms a planner may write arm-tagged parallel branches
-    tools: dict[str, str] = field(default_factory=dict)  # arm -> the tool fixed to it in place of fingers (a wiping pad)
+    tools: dict[str, str] = field(
+        default_factory=dict
+    )  # arm -> the tool fixed to it in place of fingers (a wiping pad)
 
 
 @dataclass(frozen=True)

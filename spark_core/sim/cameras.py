@@ -30,7 +30,7 @@ def label_table(world) -> tuple[dict[int, str], np.ndarray]:
     labels = {i: label for i, (label, _) in enumerate(named, start=1)}
     body_to_obj = np.zeros(m.nbody, dtype=np.int32)
     depth = {}
-    for i, (label, body) in enumerate(named, start=1):
+    for i, (_label, body) in enumerate(named, start=1):
         if body in part_geoms:
             continue
         root = m.body(body).id
@@ -40,7 +40,7 @@ def label_table(world) -> tuple[dict[int, str], np.ndarray]:
                 depth[b] = d
                 body_to_obj[b] = i
     geom_to_obj = body_to_obj[m.geom_bodyid]
-    for i, (label, body) in enumerate(named, start=1):
+    for i, (_label, body) in enumerate(named, start=1):
         if body in part_geoms:
             geom_to_obj[sorted(part_geoms[body])] = i
     return labels, geom_to_obj

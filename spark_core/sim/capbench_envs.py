@@ -9,8 +9,9 @@ before the reset.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any, Callable
+from typing import Any
 
 import numpy as np
 
@@ -34,9 +35,18 @@ class CapEnv:
 def _wide_stack_sampler() -> dict[str, Any]:
     from robosuite.utils.placement_samplers import UniformRandomSampler
 
-    return {"placement_initializer": UniformRandomSampler(
-        name="ObjectSampler", x_range=[-0.18, 0.18], y_range=[-0.12, 0.12], rotation=None,
-        ensure_object_boundary_in_range=False, ensure_valid_placement=True, reference_pos=(0, 0, 0.8), z_offset=0.01)}
+    return {
+        "placement_initializer": UniformRandomSampler(
+            name="ObjectSampler",
+            x_range=[-0.18, 0.18],
+            y_range=[-0.12, 0.12],
+            rotation=None,
+            ensure_object_boundary_in_range=False,
+            ensure_valid_placement=True,
+            reference_pos=(0, 0, 0.8),
+            z_offset=0.01,
+        )
+    }
 
 
 def _cube_restack_class():
@@ -48,14 +58,17 @@ def _cube_restack_class():
     class CubeRestack(Stack):
         def _load_model(self):
             super()._load_model()
-            green = BoxObject(name="cubeB", size_min=[0.02] * 3, size_max=[0.02] * 3, rgba=[0, 1, 0, 1],
-                              material=self.cubeB.material)
+            green = BoxObject(
+                name="cubeB", size_min=[0.02] * 3, size_max=[0.02] * 3, rgba=[0, 1, 0, 1], material=self.cubeB.material
+            )
             self.cubeB = green
             self.placement_initializer.reset()
             self.placement_initializer.add_objects([self.cubeA, self.cubeB])
-            self.model = ManipulationTask(mujoco_arena=self.model.mujoco_arena,
-                                          mujoco_robots=[r.robot_model for r in self.robots],
-                                          mujoco_objects=[self.cubeA, self.cubeB])
+            self.model = ManipulationTask(
+                mujoco_arena=self.model.mujoco_arena,
+                mujoco_robots=[r.robot_model for r in self.robots],
+                mujoco_objects=[self.cubeA, self.cubeB],
+            )
 
         def _reset_internal(self):
             super()._reset_internal()
@@ -104,7 +117,9 @@ class WipeReferee:
         if env.check_contact(env.robots[0].robot_model):
             self.ended = f"the arm touched the table at t={world.sim_time_s:.2f} s (robosuite ends the episode)"
         elif env.robots[0].check_q_limits():
-            self.ended = f"a joint came within 0.1 rad of its limit at t={world.sim_time_s:.2f} s (robosuite ends the episode)"
+            self.ended = (
+                f"a joint came within 0.1 rad of its limit at t={world.sim_time_s:.2f} s (robosuite ends the episode)"
+            )
 
     @property
     def summary(self) -> str:
@@ -116,9 +131,17 @@ def make_env(name: str, seed: int):
     """Build and reset the env for `seed` (deterministic: same seed, same start state)."""
     suite = require_robosuite()
     spec = ENVS[name]
-    kwargs = dict(has_renderer=False, has_offscreen_renderer=False, use_camera_obs=False, use_object_obs=True,
-                  control_freq=ROBOSUITE_CONTROL_HZ, horizon=spec.horizon_steps, ignore_done=True, hard_reset=False,
-                  robots=list(spec.robots) if len(spec.robots) > 1 else spec.robots[0])
+    kwargs = dict(
+        has_renderer=False,
+        has_offscreen_renderer=False,
+        use_camera_obs=False,
+        use_object_obs=True,
+        control_freq=ROBOSUITE_CONTROL_HZ,
+        horizon=spec.horizon_steps,
+        ignore_done=True,
+        hard_reset=False,
+        robots=list(spec.robots) if len(spec.robots) > 1 else spec.robots[0],
+    )
     if len(spec.robots) > 1:
         kwargs["env_configuration"] = "single-arm-opposed"
     kwargs.update(spec.kwargs() if spec.kwargs else {})

@@ -9,9 +9,9 @@ from __future__ import annotations
 
 import threading
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Callable
 
 import mujoco
 import numpy as np
@@ -30,7 +30,9 @@ class CaptureConfig:
         if not 1.0 <= self.fps <= 100.0:
             raise ValueError(f"capture fps must be in [1, 100] (the control rate), got {self.fps}")
         if not (16 <= self.width <= 1920 and 16 <= self.height <= 1080) or self.width % 8 or self.height % 8:
-            raise ValueError(f"capture size must be multiples of 8 within 16..1920 x 16..1080, got {self.width}x{self.height}")
+            raise ValueError(
+                f"capture size must be multiples of 8 within 16..1920 x 16..1080, got {self.width}x{self.height}"
+            )
 
 
 @dataclass
@@ -87,8 +89,18 @@ class EpisodeCapture:
             vel += list(w.qd(arm))
             ee += [*pose.position_m, *quat]
             action += [*w.joint_command(arm), w.gripper_command_m(arm)]
-        self.rows.append({"t_s": w.sim_time_s, "clock_s": clock_s, "state": state, "velocity": vel, "ee_pose": ee,
-                          "action": action, "node_path": ";".join(paths), "primitive": ";".join(prims)})
+        self.rows.append(
+            {
+                "t_s": w.sim_time_s,
+                "clock_s": clock_s,
+                "state": state,
+                "velocity": vel,
+                "ee_pose": ee,
+                "action": action,
+                "node_path": ";".join(paths),
+                "primitive": ";".join(prims),
+            }
+        )
         for key, cam in self.cameras.items():
             self.images[key].append(w.on_render_thread(self._draw, cam))
         self._k += 1
@@ -125,17 +137,31 @@ class EpisodeCapture:
             self.world.on_render_thread(self._renderer.close)
             self._renderer = None
         n = len(self.rows)
-        arrays = {k: np.asarray([r[k] for r in self.rows], np.float32).reshape(n, -1)
-                  for k in ("state", "velocity", "ee_pose", "action")}
-        meta = {"fps": self.config.fps, "width": self.config.width, "height": self.config.height,
-                "vcodec": self.config.vcodec, "shadows": self.config.shadows, "cameras": self.cameras, "arms": list(self.arms), "names": self.names(),
-                "image_stats": {k: _image_stats(v) for k, v in self.images.items()}}
+        arrays = {
+            k: np.asarray([r[k] for r in self.rows], np.float32).reshape(n, -1)
+            for k in ("state", "velocity", "ee_pose", "action")
+        }
+        meta = {
+            "fps": self.config.fps,
+            "width": self.config.width,
+            "height": self.config.height,
+            "vcodec": self.config.vcodec,
+            "shadows": self.config.shadows,
+            "cameras": self.cameras,
+            "arms": list(self.arms),
+            "names": self.names(),
+            "image_stats": {k: _image_stats(v) for k, v in self.images.items()},
+        }
         npz = directory / "episode.npz"
-        np.savez_compressed(npz, t_s=np.asarray([r["t_s"] for r in self.rows], np.float64),
-                            clock_s=np.asarray([r["clock_s"] for r in self.rows], np.float64),
-                            node_path=np.asarray([r["node_path"] for r in self.rows], dtype=str),
-                            primitive=np.asarray([r["primitive"] for r in self.rows], dtype=str),
-                            meta=np.asarray(json.dumps(meta)), **arrays)
+        np.savez_compressed(
+            npz,
+            t_s=np.asarray([r["t_s"] for r in self.rows], np.float64),
+            clock_s=np.asarray([r["clock_s"] for r in self.rows], np.float64),
+            node_path=np.asarray([r["node_path"] for r in self.rows], dtype=str),
+            primitive=np.asarray([r["primitive"] for r in self.rows], dtype=str),
+            meta=np.asarray(json.dumps(meta)),
+            **arrays,
+        )
         out = [(npz, {"kind": "episode", "frames": n, "fps": self.config.fps})]
         for key, frames in self.images.items():
             path = directory / f"video-{key}.mp4"

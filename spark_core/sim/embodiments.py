@@ -3,7 +3,7 @@ the same on every one (only the robot descriptions and base poses differ)."""
 
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 

@@ -21,9 +21,13 @@ class VisualGeom:
     faces: np.ndarray | None = None
 
 
-_KINDS = {mujoco.mjtGeom.mjGEOM_BOX: "box", mujoco.mjtGeom.mjGEOM_SPHERE: "sphere",
-          mujoco.mjtGeom.mjGEOM_CYLINDER: "cylinder", mujoco.mjtGeom.mjGEOM_CAPSULE: "cylinder",
-          mujoco.mjtGeom.mjGEOM_MESH: "mesh"}
+_KINDS = {
+    mujoco.mjtGeom.mjGEOM_BOX: "box",
+    mujoco.mjtGeom.mjGEOM_SPHERE: "sphere",
+    mujoco.mjtGeom.mjGEOM_CYLINDER: "cylinder",
+    mujoco.mjtGeom.mjGEOM_CAPSULE: "cylinder",
+    mujoco.mjtGeom.mjGEOM_MESH: "mesh",
+}
 
 
 def visual_geoms(m: mujoco.MjModel) -> list[VisualGeom]:
@@ -44,9 +48,19 @@ def visual_geoms(m: mujoco.MjModel) -> list[VisualGeom]:
         else:
             mid = m.geom_dataid[g]
             v0, nv, f0, nf = m.mesh_vertadr[mid], m.mesh_vertnum[mid], m.mesh_faceadr[mid], m.mesh_facenum[mid]
-            verts, faces = m.mesh_vert[v0:v0 + nv].copy(), m.mesh_face[f0:f0 + nf].copy()
-        out.append(VisualGeom(int(m.geom_bodyid[g]), kind, tuple(int(255 * c) for c in m.geom_rgba[g][:3]),
-                              m.geom_pos[g].copy(), m.geom_quat[g].copy(), np.array(size, float), verts, faces))
+            verts, faces = m.mesh_vert[v0 : v0 + nv].copy(), m.mesh_face[f0 : f0 + nf].copy()
+        out.append(
+            VisualGeom(
+                int(m.geom_bodyid[g]),
+                kind,
+                tuple(int(255 * c) for c in m.geom_rgba[g][:3]),
+                m.geom_pos[g].copy(),
+                m.geom_quat[g].copy(),
+                np.array(size, float),
+                verts,
+                faces,
+            )
+        )
     return out
 
 

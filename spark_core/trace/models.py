@@ -2,14 +2,14 @@
 
 from __future__ import annotations
 
-from datetime import datetime, timezone
+from datetime import UTC, datetime
 
 from sqlalchemy import JSON, Boolean, DateTime, Float, ForeignKey, Integer, String, Text
 from sqlalchemy.orm import DeclarativeBase, Mapped, mapped_column, relationship
 
 
 def utcnow() -> datetime:
-    return datetime.now(timezone.utc)
+    return datetime.now(UTC)
 
 
 class Base(DeclarativeBase):
@@ -49,10 +49,12 @@ class TrialRow(Base):
     # [(t_s, qpos)] every 40 ms of simulated time: enough to replay the trial in the 3D view. Loaded on demand.
     scene_states: Mapped[list | None] = mapped_column(JSON, nullable=True, deferred=True)
 
-    events: Mapped[list["EventRow"]] = relationship(back_populates="trial", cascade="all, delete-orphan",
-                                                    order_by="EventRow.seq")
-    groundings: Mapped[list["GroundingRow"]] = relationship(back_populates="trial", cascade="all, delete-orphan",
-                                                            order_by="GroundingRow.id")
+    events: Mapped[list[EventRow]] = relationship(
+        back_populates="trial", cascade="all, delete-orphan", order_by="EventRow.seq"
+    )
+    groundings: Mapped[list[GroundingRow]] = relationship(
+        back_populates="trial", cascade="all, delete-orphan", order_by="GroundingRow.id"
+    )
 
 
 class EventRow(Base):

@@ -17,7 +17,9 @@ from .store import TraceStore, _jsonable
 
 
 class StoreSink(BaseSink):
-    def __init__(self, store: TraceStore, artifacts_dir: str | Path = "var/artifacts", extra_protocol: dict | None = None):
+    def __init__(
+        self, store: TraceStore, artifacts_dir: str | Path = "var/artifacts", extra_protocol: dict | None = None
+    ):
         self.store = store
         self.artifacts_dir = Path(artifacts_dir)
         self.extra_protocol = extra_protocol or {}
@@ -25,13 +27,22 @@ class StoreSink(BaseSink):
 
     @staticmethod
     def _config_fields(config: Any) -> dict[str, Any]:
-        return dict(task=config.task, seed=config.seed, planner=config.planner, segmenter=config.segmenter,
-                    batch_id=config.batch_id)
+        return dict(
+            task=config.task,
+            seed=config.seed,
+            planner=config.planner,
+            segmenter=config.segmenter,
+            batch_id=config.batch_id,
+        )
 
     def on_start(self, ctx: TrialContext) -> None:
         self._trial_id = ctx.trial_id
-        fields = dict(self._config_fields(ctx.config), status="running", instruction=ctx.instruction,
-                      protocol=_jsonable({**ctx.protocol, **self.extra_protocol}))
+        fields = dict(
+            self._config_fields(ctx.config),
+            status="running",
+            instruction=ctx.instruction,
+            protocol=_jsonable({**ctx.protocol, **self.extra_protocol}),
+        )
         if not self.store.has_trial(ctx.trial_id):
             self.store.create_trial(ctx.trial_id, **fields)
         else:
@@ -48,13 +59,29 @@ class StoreSink(BaseSink):
     def on_finish(self, ctx: TrialContext | None, outcome: TrialOutcome) -> None:
         result = outcome.result
         fields: dict[str, Any] = dict(
-            status="done", verdict=outcome.verdict.value, success=outcome.success, instruction=outcome.instruction,
-            outcome=result.outcome if result is not None else ("aborted" if outcome.verdict == "aborted" else "failure"),
-            failure=outcome.failure, failed_node=outcome.failed_node, reason=outcome.reason,
-            wall_time_s=outcome.wall_time_s, sim_time_s=outcome.sim_time_s if result is not None else None,
-            cost_usd=outcome.cost_usd, usage=_jsonable(outcome.usage),
-            protocol=_jsonable({**outcome.protocol, **self.extra_protocol, "task_success": outcome.task_success,
-                                "tree_status": outcome.tree_status, "unmet": outcome.unmet}),
+            status="done",
+            verdict=outcome.verdict.value,
+            success=outcome.success,
+            instruction=outcome.instruction,
+            outcome=result.outcome
+            if result is not None
+            else ("aborted" if outcome.verdict == "aborted" else "failure"),
+            failure=outcome.failure,
+            failed_node=outcome.failed_node,
+            reason=outcome.reason,
+            wall_time_s=outcome.wall_time_s,
+            sim_time_s=outcome.sim_time_s if result is not None else None,
+            cost_usd=outcome.cost_usd,
+            usage=_jsonable(outcome.usage),
+            protocol=_jsonable(
+                {
+                    **outcome.protocol,
+                    **self.extra_protocol,
+                    "task_success": outcome.task_success,
+                    "tree_status": outcome.tree_status,
+                    "unmet": outcome.unmet,
+                }
+            ),
         )
         if result is not None:
             fields["nodes"] = _jsonable({p: r.to_dict() for p, r in result.nodes.items()})
@@ -67,8 +94,13 @@ class StoreSink(BaseSink):
             fields["artifacts"] = _jsonable(self._artifacts(ctx))
         if not self.store.has_trial(outcome.trial_id):  # never started (cancelled while queued)
             config = ctx.config if ctx is not None else None
-            self.store.create_trial(outcome.trial_id, task=outcome.task, seed=outcome.seed,
-                                    **({} if config is None else self._config_fields(config)), **fields)
+            self.store.create_trial(
+                outcome.trial_id,
+                task=outcome.task,
+                seed=outcome.seed,
+                **({} if config is None else self._config_fields(config)),
+                **fields,
+            )
         else:
             self.store.update_trial(outcome.trial_id, **fields)
         if ctx is not None:

@@ -3,17 +3,29 @@
 from __future__ import annotations
 
 import threading
+from collections.abc import Iterable
 from pathlib import Path
-from typing import Any, Iterable
+from typing import Any
 
 from sqlalchemy import create_engine, delete, event, func, or_, select
-from sqlalchemy.orm import Session, selectinload, sessionmaker
+from sqlalchemy.orm import selectinload, sessionmaker
 
 from .models import BatchRow, EventRow, GroundingRow, PlanLibraryRow, TrialRow
 
 MIGRATIONS_DIR = Path(__file__).resolve().parents[2] / "migrations"
-SORTABLE = {"created_at", "task", "outcome", "verdict", "seed", "planner", "segmenter", "wall_time_s", "sim_time_s",
-            "cost_usd", "status"}
+SORTABLE = {
+    "created_at",
+    "task",
+    "outcome",
+    "verdict",
+    "seed",
+    "planner",
+    "segmenter",
+    "wall_time_s",
+    "sim_time_s",
+    "cost_usd",
+    "status",
+}
 
 
 def alembic_config(url: str, connection=None):
@@ -32,7 +44,7 @@ class TraceStore:
 
     def __init__(self, url: str = "sqlite:///var/spark.db", migrate: bool = True):
         if url.startswith("sqlite:///") and not url.startswith("sqlite:///:memory:"):
-            Path(url[len("sqlite:///"):]).parent.mkdir(parents=True, exist_ok=True)
+            Path(url[len("sqlite:///") :]).parent.mkdir(parents=True, exist_ok=True)
         self.url = url
         self.engine = create_engine(url, connect_args={"check_same_thread": False} if url.startswith("sqlite") else {})
         if url.startswith("sqlite"):
@@ -70,8 +82,17 @@ class TraceStore:
 
     def add_events(self, trial_id: str, events: Iterable[dict]) -> None:
         with self.Session.begin() as s:
-            s.add_all(EventRow(trial_id=trial_id, seq=e["seq"], t=e["t"], node_path=e["node_path"], kind=e["kind"],
-                               detail=_jsonable(e.get("detail", {}))) for e in events)
+            s.add_all(
+                EventRow(
+                    trial_id=trial_id,
+                    seq=e["seq"],
+                    t=e["t"],
+                    node_path=e["node_path"],
+                    kind=e["kind"],
+                    detail=_jsonable(e.get("detail", {})),
+                )
+                for e in events
+            )
 
     def add_groundings(self, trial_id: str, groundings: Iterable[dict]) -> None:
         with self.Session.begin() as s:
@@ -110,23 +131,43 @@ class TraceStore:
             row = s.get(BatchRow, batch_id)
             if row is None:
                 return None
-            trials = s.scalars(select(TrialRow).where(TrialRow.batch_id == batch_id).order_by(TrialRow.task, TrialRow.seed)).all()
+            trials = s.scalars(
+                select(TrialRow).where(TrialRow.batch_id == batch_id).order_by(TrialRow.task, TrialRow.seed)
+            ).all()
             items = [_row_dict(t, summary=True) for t in trials]
-        return {"id": row.id, "status": row.status, "spec": row.spec,
-                "created_at": row.created_at.isoformat() if row.created_at else None, "trials": items}
+        return {
+            "id": row.id,
+            "status": row.status,
+            "spec": row.spec,
+            "created_at": row.created_at.isoformat() if row.created_at else None,
+            "trials": items,
+        }
 
     # -- plan library -------------------------------------------------------------------------------------------
-    def add_library_plan(self, instruction: str, plan_text: str, scene_summary: str = "", trial_id: str | None = None) -> None:
+    def add_library_plan(
+        self, instruction: str, plan_text: str, scene_summary: str = "", trial_id: str | None = None
+    ) -> None:
         with self.Session.begin() as s:
-            s.add(PlanLibraryRow(instruction=instruction, plan_text=plan_text, scene_summary=scene_summary,
-                                 trial_id=trial_id))
+            s.add(
+                PlanLibraryRow(
+                    instruction=instruction, plan_text=plan_text, scene_summary=scene_summary, trial_id=trial_id
+                )
+            )
 
     def library_plans(self) -> list[dict]:
         """Oldest first: {instruction, plan, scene_summary, trial_id, t}."""
         with self.Session() as s:
             rows = s.scalars(select(PlanLibraryRow).order_by(PlanLibraryRow.id)).all()
-            return [{"instruction": r.instruction, "plan": r.plan_text, "scene_summary": r.scene_summary,
-                     "trial_id": r.trial_id, "t": r.created_at.timestamp() if r.created_at else None} for r in rows]
+            return [
+                {
+                    "instruction": r.instruction,
+                    "plan": r.plan_text,
+                    "scene_summary": r.scene_summary,
+                    "trial_id": r.trial_id,
+                    "t": r.created_at.timestamp() if r.created_at else None,
+                }
+                for r in rows
+            ]
 
     # -- reads --------------------------------------------------------------------------------------------------
     def scene_states(self, trial_id: str) -> list | None:
@@ -140,18 +181,24 @@ class TraceStore:
 
     def get_trial(self, trial_id: str) -> dict | None:
         with self.Session() as s:
-            row = s.scalars(select(TrialRow).where(TrialRow.id == trial_id)
-                            .options(selectinload(TrialRow.events), selectinload(TrialRow.groundings))).first()
+            row = s.scalars(
+                select(TrialRow)
+                .where(TrialRow.id == trial_id)
+                .options(selectinload(TrialRow.events), selectinload(TrialRow.groundings))
+            ).first()
             if row is None:
                 return None
             out = _row_dict(row)
-            out["events"] = [{"seq": e.seq, "t": e.t, "node_path": e.node_path, "kind": e.kind, "detail": e.detail}
-                             for e in row.events]
+            out["events"] = [
+                {"seq": e.seq, "t": e.t, "node_path": e.node_path, "kind": e.kind, "detail": e.detail}
+                for e in row.events
+            ]
             out["groundings"] = [g.record for g in row.groundings]
             return out
 
-    def trial_ids(self, *, tasks=(), ids=(), batch: str | None = None, success: bool | None = None,
-                  since=None, until=None) -> list[str]:
+    def trial_ids(
+        self, *, tasks=(), ids=(), batch: str | None = None, success: bool | None = None, since=None, until=None
+    ) -> list[str]:
         """Ids of trials matching every given filter, oldest first (export, batch tools)."""
         q = select(TrialRow.id)
         if tasks:
@@ -169,9 +216,19 @@ class TraceStore:
         with self.Session() as s:
             return list(s.scalars(q.order_by(TrialRow.created_at, TrialRow.id)).all())
 
-    def list_trials(self, *, status: str | None = None, task: str | None = None, success: bool | None = None,
-                    batch: str | None = None, verdict: str | None = None,
-                    search: str | None = None, sort: str = "-created_at", limit: int = 50, offset: int = 0) -> tuple[int, list[dict]]:
+    def list_trials(
+        self,
+        *,
+        status: str | None = None,
+        task: str | None = None,
+        success: bool | None = None,
+        batch: str | None = None,
+        verdict: str | None = None,
+        search: str | None = None,
+        sort: str = "-created_at",
+        limit: int = 50,
+        offset: int = 0,
+    ) -> tuple[int, list[dict]]:
         """(total matching, one page of summaries). `sort` is a column name, '-' for descending."""
         key = sort.lstrip("-")
         if key not in SORTABLE:

@@ -14,8 +14,14 @@ def test_segmenter_is_the_one_name_and_its_choices_are_the_catalogs():
         assert build_parser().parse_args(["run", "lift_block", "--segmenter", name]).segmenter == name
 
 
-@pytest.mark.parametrize("argv", [["bench", "capbench", "--resolver", "sim"], ["run", "lift_block", "--resolver", "sim"],
-                                  ["run", "lift_block", "--segmenter", "privileged"]])
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["bench", "capbench", "--resolver", "sim"],
+        ["run", "lift_block", "--resolver", "sim"],
+        ["run", "lift_block", "--segmenter", "privileged"],
+    ],
+)
 def test_old_names_are_refused(argv, capsys):
     with pytest.raises(SystemExit):
         build_parser().parse_args(argv)

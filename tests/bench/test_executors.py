@@ -16,14 +16,23 @@ def test_executor_runs_trials_to_an_outcome_in_job_order(executor, workers, tmp_
 
     seen = []
     url = f"sqlite:///{tmp_path / 'bench.db'}"
-    rows = reference_suite.run(["lift_block", "push_to_zone"], 1, seed=3, workers=workers, progress=seen.append,
-                               template=PRIVILEGED, executor=executor, store_url=url)
+    rows = reference_suite.run(
+        ["lift_block", "push_to_zone"],
+        1,
+        seed=3,
+        workers=workers,
+        progress=seen.append,
+        template=PRIVILEGED,
+        executor=executor,
+        store_url=url,
+    )
     store = TraceStore(url)
     recorded = [store.get_trial(i) for i in store.trial_ids()]
     (batch_id,) = {t["batch_id"] for t in recorded}  # one batch, which the console's batch page can show
     assert len(store.get_batch(batch_id)["trials"]) == 2 and all(t["events"] for t in recorded)
     assert sorted((t["task"], t["seed"], t["success"]) for t in recorded) == sorted(
-        (r["task"], r["seed"], r["success"]) for r in rows)
+        (r["task"], r["seed"], r["success"]) for r in rows
+    )
     assert [(r["task"], r["seed"]) for r in rows] == [("lift_block", 3), ("push_to_zone", 3)]
     assert len(seen) == 2 and all(r["tree_status"] in ("success", "failure") for r in rows)
     for r in rows:

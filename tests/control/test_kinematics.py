@@ -54,5 +54,7 @@ def test_ik_reaches_random_targets_within_limits():
 def test_unreachable_target_names_the_target():
     kin = ArmKinematics(panda())
     with pytest.raises(Unreachable, match=r"for grasp pose at \(2\.000, 0\.000, 0\.300\) m") as info:
-        solve_ik(kin, Pose(np.array([2.0, 0.0, 0.3]), top_down_rotation()), panda().home_q_rad, restarts=2, what="grasp pose")
+        solve_ik(
+            kin, Pose(np.array([2.0, 0.0, 0.3]), top_down_rotation()), panda().home_q_rad, restarts=2, what="grasp pose"
+        )
     assert "closest" in str(info.value)

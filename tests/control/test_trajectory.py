@@ -23,7 +23,10 @@ def test_aligned_via_point_keeps_moving():
     traj = chain_joint_waypoints(pts, LIM)
     i = int(np.argmin(np.linalg.norm(traj.q_rad - pts[1], axis=1)))
     assert np.linalg.norm(traj.qd_rad_s[i]) > 0.2  # did not stop at the via point
-    stop_and_go = chain_joint_waypoints([pts[0], pts[1]], LIM).duration_s + chain_joint_waypoints([pts[1], pts[2]], LIM).duration_s
+    stop_and_go = (
+        chain_joint_waypoints([pts[0], pts[1]], LIM).duration_s
+        + chain_joint_waypoints([pts[1], pts[2]], LIM).duration_s
+    )
     assert traj.duration_s < stop_and_go
 
 

@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import threading
 import time
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Mapping
 
 import numpy as np
 
@@ -46,8 +46,14 @@ class KinematicWorld:
         self._inject: dict[str, list[Injection]] = {}
         self._lock = threading.RLock()
 
-    def inject(self, primitive: str, n: int = 1, failure: FailureKind = FailureKind.CONTROL,
-               reason: str = "injected failure", sim_time_s: float = 0.1) -> None:
+    def inject(
+        self,
+        primitive: str,
+        n: int = 1,
+        failure: FailureKind = FailureKind.CONTROL,
+        reason: str = "injected failure",
+        sim_time_s: float = 0.1,
+    ) -> None:
         self._inject.setdefault(primitive, []).extend(Injection(failure, reason, sim_time_s) for _ in range(n))
 
     def move_object(self, label: str, xyz) -> None:
@@ -55,7 +61,9 @@ class KinematicWorld:
             self.objects[label] = np.asarray(xyz, float)
 
     # -- Actuator ----------------------------------------------------------------------------------------------
-    def perform(self, call: PrimitiveCall, keypoints: Mapping[str, Keypoint], arm: str, timeout_s: float) -> ActionOutcome:
+    def perform(
+        self, call: PrimitiveCall, keypoints: Mapping[str, Keypoint], arm: str, timeout_s: float
+    ) -> ActionOutcome:
         with self._lock:
             self.log.append((arm, call.primitive, dict(call.args)))
             queue = self._inject.get(call.primitive)
@@ -78,7 +86,9 @@ class KinematicWorld:
 
     def _kp(self, keypoints: Mapping[str, Keypoint], label: str) -> Keypoint | ActionOutcome:
         if label in self.unreachable:
-            return ActionOutcome.fail(f"IK found no solution for {label!r} within joint limits", FailureKind.KINEMATIC_LIMIT)
+            return ActionOutcome.fail(
+                f"IK found no solution for {label!r} within joint limits", FailureKind.KINEMATIC_LIMIT
+            )
         return keypoints[label]
 
     def _do_move_to_keypoint(self, a, keypoints, arm):
@@ -106,7 +116,9 @@ class KinematicWorld:
 
     def _do_grasp(self, a, keypoints, arm):
         held = {h for h in self.held.values() if h}
-        near = [k for k, p in self.objects.items() if k not in held and np.linalg.norm(p - self.tcp[arm]) <= GRASP_RADIUS_M]
+        near = [
+            k for k, p in self.objects.items() if k not in held and np.linalg.norm(p - self.tcp[arm]) <= GRASP_RADIUS_M
+        ]
         if not near:
             return ActionOutcome.fail("gripper closed on nothing: finger gap at the closed-empty width", sim_time_s=0.5)
         self.held[arm] = near[0]
@@ -127,13 +139,17 @@ class KinematicWorld:
         return ActionOutcome.success(0.5)
 
     def _do_pick(self, a, keypoints, arm):
-        out = self._do_move_to_keypoint({"keypoint_label": a["keypoint_label"], "offset_x": 0, "offset_y": 0, "offset_z": 0}, keypoints, arm)
+        out = self._do_move_to_keypoint(
+            {"keypoint_label": a["keypoint_label"], "offset_x": 0, "offset_y": 0, "offset_z": 0}, keypoints, arm
+        )
         if not out.ok:
             return out
         g = self._do_grasp(a, keypoints, arm)
         if not g.ok:
             return ActionOutcome.fail(g.reason, sim_time_s=out.sim_time_s + g.sim_time_s)
-        return ActionOutcome.success(out.sim_time_s + g.sim_time_s + self._go(arm, self.tcp[arm] + np.array([0, 0, a["lift_height"]])))
+        return ActionOutcome.success(
+            out.sim_time_s + g.sim_time_s + self._go(arm, self.tcp[arm] + np.array([0, 0, a["lift_height"]]))
+        )
 
     _do_pick_with_arm = _do_pick
 

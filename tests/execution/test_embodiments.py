@@ -13,6 +13,7 @@ from spark_core.sim.embodiments import EMBODIMENTS
 from spark_core.sim.tasks import BIMANUAL, BUILTIN, TASKS
 from spark_core.trial import TrialConfig, run_trial
 
+
 def _run(task: str, seed: int = 0, embodiment: str | None = None, plan: str | None = None, monitor=None):
     spec = TASKS[task]
     world = spec.make_world(seed, embodiment)
@@ -56,7 +57,11 @@ def test_parallel_arm_branches_overlap_in_time():
         assert result.outcome == "success" and BIMANUAL["sort_bimanual"].success(world)
         spans = {}
         for ev in result.events:
-            if ev.kind in ("started", "succeeded") and ev.detail.get("primitive", "x") and ev.node_path.count("children") == 3:
+            if (
+                ev.kind in ("started", "succeeded")
+                and ev.detail.get("primitive", "x")
+                and ev.node_path.count("children") == 3
+            ):
                 spans.setdefault(ev.node_path, {})[ev.kind] = ev.t
         left = [v for p, v in spans.items() if p.startswith("tree.children[0].children[0]")]
         right = [v for p, v in spans.items() if p.startswith("tree.children[0].children[1]")]
@@ -125,7 +130,9 @@ def test_a_colliding_plan_fails_cleanly_without_the_arms_touching():
 
 
 def test_two_arm_skills_refuse_a_one_arm_robot():
-    world, result = _run("lift_block", plan="task: t\ntree: {primitive: bimanual_lift, params: {keypoint_label: red block}}")
+    world, result = _run(
+        "lift_block", plan="task: t\ntree: {primitive: bimanual_lift, params: {keypoint_label: red block}}"
+    )
     world.close()
     assert result.outcome == "failure" and "two arms" in result.reason
 

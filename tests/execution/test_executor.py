@@ -39,10 +39,14 @@ def test_event_sequence_of_a_clean_run_is_exact():
     assert result.outcome == "success" and result.failure is None
     assert trail(result) == [
         ("tree", "started"),
-        ("tree.children[0]", "started"), ("tree.children[0]", "succeeded"),
-        ("tree.children[1]", "started"), ("tree.children[1]", "succeeded"),
-        ("tree.children[2]", "started"), ("tree.children[2]", "succeeded"),
-        ("tree.children[3]", "started"), ("tree.children[3]", "succeeded"),
+        ("tree.children[0]", "started"),
+        ("tree.children[0]", "succeeded"),
+        ("tree.children[1]", "started"),
+        ("tree.children[1]", "succeeded"),
+        ("tree.children[2]", "started"),
+        ("tree.children[2]", "succeeded"),
+        ("tree.children[3]", "started"),
+        ("tree.children[3]", "succeeded"),
         ("tree", "succeeded"),
     ]
     ts = [e.t for e in result.events]
@@ -62,13 +66,22 @@ def test_recovery_tiers_fire_in_order_then_fail_closed_after_two_retries():
     assert result.failure is FailureKind.CONTROL and result.failed_node == "tree.children[1]"
     retrying = [e.detail for e in result.events if e.kind == "retrying"]
     assert [(d["attempt"], d["tier"], d["action"]) for d in retrying] == [
-        (1, 1, "grasp_perturb"), (2, 2, "retract+redetect+reapproach:move_to_keypoint")]
+        (1, 1, "grasp_perturb"),
+        (2, 2, "retract+redetect+reapproach:move_to_keypoint"),
+    ]
     grasp = result.nodes["tree.children[1]"]
     assert grasp.attempts == 3 and grasp.retries == 2 and grasp.status == "failed"
     assert grasp.recoveries == ["tier1:grasp_perturb", "tier2:retract+redetect+reapproach:move_to_keypoint"]
     # what the robot did, in order: grasp, perturb, grasp, open + retract 10 cm, re-approach the re-detected cube, grasp
-    assert [p for _, p, _ in world.log[1:]] == ["grasp", "grasp_perturb", "grasp", "release", "move_relative",
-                                                "move_to_keypoint", "grasp"]
+    assert [p for _, p, _ in world.log[1:]] == [
+        "grasp",
+        "grasp_perturb",
+        "grasp",
+        "release",
+        "move_relative",
+        "move_to_keypoint",
+        "grasp",
+    ]
     assert world.log[5][2]["dz"] == pytest.approx(0.10)
     assert resolver.refreshes == 1
     assert trail(result)[-2:] == [("tree.children[1]", "failed"), ("tree", "failed")]
@@ -125,7 +138,9 @@ def test_kinematic_limit_and_perception_attribution():
 def test_late_binding_redetect_finds_the_moved_object():
     """The cube moves after perception ran; the stale grasp fails; tier 2 re-detects and the retry succeeds."""
     world, resolver, ex = make()
-    ex.bus.subscribe(lambda e: e.node_path == "tree" and e.kind == "started" and world.move_object("cube", [0.6, -0.1, 0.02]))
+    ex.bus.subscribe(
+        lambda e: e.node_path == "tree" and e.kind == "started" and world.move_object("cube", [0.6, -0.1, 0.02])
+    )
     result = ex.run(parse_plan(PICK_PLACE))
     assert result.outcome == "success"
     first, *rest = [pos for label, pos in resolver.resolved if label == "cube"]
@@ -136,7 +151,9 @@ def test_late_binding_redetect_finds_the_moved_object():
 
 def test_late_binding_in_a_skill_resolves_at_retry_time():
     world, resolver, ex = make()
-    ex.bus.subscribe(lambda e: e.node_path == "tree" and e.kind == "started" and world.move_object("cube", [0.6, -0.1, 0.02]))
+    ex.bus.subscribe(
+        lambda e: e.node_path == "tree" and e.kind == "started" and world.move_object("cube", [0.6, -0.1, 0.02])
+    )
     result = ex.run(parse_plan("task: t\ntree: {primitive: pick, params: {keypoint_label: cube}}"))
     assert result.outcome == "success" and world.held["right"] == "cube"
     # tier 1 perturbs in place (perception still stale, fails again); tier 2 re-detects and the pick succeeds

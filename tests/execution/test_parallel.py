@@ -6,7 +6,12 @@ from spark_core.execution import Executor, FailureKind
 from spark_core.grammar import parse_plan
 from tests.doubles.kinematic_world import KinematicResolver, KinematicWorld
 
-OBJECTS = {"fork": [0.5, 0.2, 0.01], "spoon": [0.5, -0.2, 0.01], "left tray": [0.3, 0.35, 0.01], "right tray": [0.3, -0.35, 0.01]}
+OBJECTS = {
+    "fork": [0.5, 0.2, 0.01],
+    "spoon": [0.5, -0.2, 0.01],
+    "left tray": [0.3, 0.35, 0.01],
+    "right tray": [0.3, -0.35, 0.01],
+}
 
 SORT = """
 task: sort fork and spoon
@@ -92,7 +97,9 @@ def test_failing_branch_releases_the_other_barrier_and_fails_the_parallel():
     assert result.failed_node == "tree.children[0].children[0].children[0]"
     right_sync = result.nodes["tree.children[0].children[1].children[1]"]
     assert right_sync.status == "failed" and "another branch failed" in right_sync.reason
-    assert world.held["right"] == "spoon" and result.nodes["tree.children[0].children[1].children[2]"].status == "pending"
+    assert (
+        world.held["right"] == "spoon" and result.nodes["tree.children[0].children[1].children[2]"].status == "pending"
+    )
     assert result.nodes["tree.children[0]"].status == "failed"
     assert result.nodes["tree.children[1]"].status == "pending"
 
@@ -100,7 +107,8 @@ def test_failing_branch_releases_the_other_barrier_and_fails_the_parallel():
 def test_both_arm_primitive_needs_two_arms():
     world = KinematicWorld(OBJECTS)  # one arm
     result = Executor(world, KinematicResolver(world)).run(
-        parse_plan("task: t\ntree: {primitive: bimanual_lift, params: {keypoint_label: fork}}"))
+        parse_plan("task: t\ntree: {primitive: bimanual_lift, params: {keypoint_label: fork}}")
+    )
     assert result.failure is FailureKind.PLANNER and "needs two arms" in result.reason
 
 

@@ -29,7 +29,11 @@ HOSTILE = [
     ("python-name-tag", "task: x\ntree: !!python/name:os.system {}", "tag"),
     ("custom-tag", "task: !secret x\ntree: {primitive: wait}", "tag"),
     ("nul-byte", "task: x\x00\ntree: {primitive: wait}", "NUL character"),
-    ("deep-valid-tree", "task: x\ntree: " + '{"type": "sequence", "children": [' * 28 + '{"primitive": "wait"}' + "]}" * 28, "nested deeper than"),
+    (
+        "deep-valid-tree",
+        "task: x\ntree: " + '{"type": "sequence", "children": [' * 28 + '{"primitive": "wait"}' + "]}" * 28,
+        "nested deeper than",
+    ),
 ]
 
 
@@ -44,6 +48,8 @@ def test_hostile_input_rejected_fast(text, fragment):
 
 
 def test_wide_plan_many_nodes_rejected():
-    text = '{"task": "x", "tree": {"type": "sequence", "children": [' + ",".join(['{"primitive": "wait"}'] * 3000) + "]}}"
+    text = (
+        '{"task": "x", "tree": {"type": "sequence", "children": [' + ",".join(['{"primitive": "wait"}'] * 3000) + "]}}"
+    )
     with pytest.raises(PlanError, match="more than 2000 nodes"):
         parse_plan(text)

@@ -13,12 +13,24 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_tiers_and_counts():
-    assert [s.name for s in REGISTRY.by_tier(Tier.BASE)] == ["move_to_keypoint", "move_relative", "grasp", "release", "wait"]
+    assert [s.name for s in REGISTRY.by_tier(Tier.BASE)] == [
+        "move_to_keypoint",
+        "move_relative",
+        "grasp",
+        "release",
+        "wait",
+    ]
     assert len(REGISTRY) - 5 >= 30
     assert len(REGISTRY.by_tier(Tier.SKILL)) >= 24
     assert {s.name for s in REGISTRY.by_tier(Tier.RECOVERY)} == {"wiggle", "grasp_perturb", "redetect", "replan"}
     assert {s.name for s in REGISTRY.by_tier(Tier.BIMANUAL)} == {
-        "pick_with_arm", "place_with_arm", "move_to_keypoint_arm", "handoff", "sync_barrier", "bimanual_lift"}
+        "pick_with_arm",
+        "place_with_arm",
+        "move_to_keypoint_arm",
+        "handoff",
+        "sync_barrier",
+        "bimanual_lift",
+    }
 
 
 @pytest.mark.parametrize(
@@ -51,8 +63,19 @@ def test_paper_signatures(name, required, defaults):
     assert {"n_cycles", "scrub_radius_m", "pattern"} <= {s.name for s in REGISTRY["constrained_scrub"].slots}
 
 
-@pytest.mark.parametrize("name,timeout", [("move_to_keypoint", 4), ("move_relative", 2), ("grasp", 1), ("release", 1),
-                                          ("insert", 6), ("push_object", 4), ("open_drawer", 5), ("wipe", 10)])
+@pytest.mark.parametrize(
+    "name,timeout",
+    [
+        ("move_to_keypoint", 4),
+        ("move_relative", 2),
+        ("grasp", 1),
+        ("release", 1),
+        ("insert", 6),
+        ("push_object", 4),
+        ("open_drawer", 5),
+        ("wipe", 10),
+    ],
+)
 def test_paper_timeouts(name, timeout):
     assert REGISTRY[name].timeout_s == timeout
 

@@ -7,7 +7,9 @@ from hypothesis import strategies as st
 
 from spark_core.grammar import REGISTRY, ArmUse, SlotType, parse_plan, plan_to_dict, to_yaml
 
-_label = st.text(st.characters(codec="utf-8", exclude_categories=("Cs", "Cc")), min_size=1, max_size=30).filter(lambda s: s.strip())
+_label = st.text(st.characters(codec="utf-8", exclude_categories=("Cs", "Cc")), min_size=1, max_size=30).filter(
+    lambda s: s.strip()
+)
 
 
 def _value(slot):
@@ -36,9 +38,7 @@ def primitive_node(draw, arm_scope=None):
     if spec.name == "handoff":
         params["to_arm"] = "right" if params["from_arm"] == "left" else "left"
     node = {"primitive": spec.name}
-    if spec.arm is ArmUse.REQUIRED and arm_scope is None:
-        node["arm"] = draw(st.sampled_from(["left", "right"]))
-    elif spec.arm is not ArmUse.NONE and arm_scope is None and draw(st.booleans()):
+    if spec.arm is ArmUse.REQUIRED and arm_scope is None or spec.arm is not ArmUse.NONE and arm_scope is None and draw(st.booleans()):
         node["arm"] = draw(st.sampled_from(["left", "right"]))
     elif arm_scope is not None and spec.arm is not ArmUse.NONE and draw(st.booleans()):
         node["arm"] = arm_scope
@@ -56,8 +56,13 @@ def tree(arm_scope=None, depth=0):
     options = [leaf, composite]
     if arm_scope is None:
         branches = st.tuples(tree("left", depth + 1), tree("right", depth + 1)).map(
-            lambda lr: {"type": "parallel", "children": [{"type": "sequence", "arm": "left", "children": [lr[0]]},
-                                                         {"type": "sequence", "arm": "right", "children": [lr[1]]}]}
+            lambda lr: {
+                "type": "parallel",
+                "children": [
+                    {"type": "sequence", "arm": "left", "children": [lr[0]]},
+                    {"type": "sequence", "arm": "right", "children": [lr[1]]},
+                ],
+            }
         )
         options.append(branches)
     return st.one_of(options)

@@ -27,8 +27,19 @@ REFERENCE = parse_plan(YAML_TEXT)
         "\ufeff" + YAML_TEXT,
         YAML_TEXT.encode("utf-8"),
     ],
-    ids=["yaml", "json", "fenced-yaml-with-prose", "fenced-json", "bare-fence", "json-holding-yaml", "json-wrapper",
-         "nested-wrapper", "quoted-yaml", "bom", "bytes"],
+    ids=[
+        "yaml",
+        "json",
+        "fenced-yaml-with-prose",
+        "fenced-json",
+        "bare-fence",
+        "json-holding-yaml",
+        "json-wrapper",
+        "nested-wrapper",
+        "quoted-yaml",
+        "bom",
+        "bytes",
+    ],
 )
 def test_wrapped_formats_parse_to_the_same_plan(text):
     assert parse_plan(text) == REFERENCE

@@ -40,12 +40,20 @@ def test_block_centre_from_depth_is_within_a_centimetre(world):
 
 def test_yaw_of_an_elongated_object_and_unstable_for_a_cube():
     from spark_core.control.panda import panda
-    from spark_core.sim.scene import ObjectRequest as O, build_scene
+    from spark_core.sim.scene import ObjectRequest as O
+    from spark_core.sim.scene import build_scene
     from spark_core.sim.world import MujocoWorld
 
-    w = MujocoWorld(build_scene({"right": (panda(), np.eye(4))},
-                                [O("brush", "brush", "blue", (0.5, 0.5), (0.0, 0.0), yaw=(0.6, 0.6)),
-                                 O("cube", "block", "red", (0.45, 0.45), (-0.25, -0.25))], seed=0))
+    w = MujocoWorld(
+        build_scene(
+            {"right": (panda(), np.eye(4))},
+            [
+                O("brush", "brush", "blue", (0.5, 0.5), (0.0, 0.0), yaw=(0.6, 0.6)),
+                O("cube", "block", "red", (0.45, 0.45), (-0.25, -0.25)),
+            ],
+            seed=0,
+        )
+    )
     w.settle(0.2)
     seg = SimSegmenter(w.scene.catalog())
     frames = [w.render("agentview"), w.render("side")]
@@ -105,9 +113,13 @@ def test_resolver_late_binding_and_clear_misses(world):
 
 def test_relations_from_geometry():
     kp = lambda p, e: Keypoint("x", np.array(p, float), np.array(e, float))
-    kps = {"plate": kp([0.5, 0, 0.008], [0.18, 0.18, 0.016]), "cube": kp([0.5, 0, 0.036], [0.04, 0.04, 0.04]),
-           "bowl": kp([0.5, 0.3, 0.025], [0.15, 0.15, 0.05]), "ball": kp([0.5, 0.3, 0.02], [0.02, 0.02, 0.02]),
-           "mug": kp([0.5, 0.15, 0.045], [0.07, 0.07, 0.09])}
+    kps = {
+        "plate": kp([0.5, 0, 0.008], [0.18, 0.18, 0.016]),
+        "cube": kp([0.5, 0, 0.036], [0.04, 0.04, 0.04]),
+        "bowl": kp([0.5, 0.3, 0.025], [0.15, 0.15, 0.05]),
+        "ball": kp([0.5, 0.3, 0.02], [0.02, 0.02, 0.02]),
+        "mug": kp([0.5, 0.15, 0.045], [0.07, 0.07, 0.09]),
+    }
     rels = relations(kps)
     assert ("on", "cube", "plate") in rels and ("in", "ball", "bowl") in rels
     assert ("between", "mug", "plate", "bowl") in rels or ("between", "mug", "cube", "bowl") in rels

@@ -14,9 +14,14 @@ from spark_core.sim.world import MujocoWorld
 
 @pytest.fixture(scope="module")
 def scene():
-    reqs = [O("red block", "block", "red", (0.4, 0.45), (-0.25, -0.2)), O("blue block", "block", "blue", (0.4, 0.45), (0.2, 0.25)),
-            O("black bowl 1", "bowl", "black", (0.58, 0.62), (0.18, 0.22)), O("black bowl 2", "bowl", "black", (0.58, 0.62), (-0.22, -0.18)),
-            O("plate", "plate", "white", (0.5, 0.55), (-0.03, 0.03)), O("mug", "mug", "red", (0.7, 0.72), (-0.02, 0.02))]
+    reqs = [
+        O("red block", "block", "red", (0.4, 0.45), (-0.25, -0.2)),
+        O("blue block", "block", "blue", (0.4, 0.45), (0.2, 0.25)),
+        O("black bowl 1", "bowl", "black", (0.58, 0.62), (0.18, 0.22)),
+        O("black bowl 2", "bowl", "black", (0.58, 0.62), (-0.22, -0.18)),
+        O("plate", "plate", "white", (0.5, 0.55), (-0.03, 0.03)),
+        O("mug", "mug", "red", (0.7, 0.72), (-0.02, 0.02)),
+    ]
     w = MujocoWorld(build_scene({"right": (panda(), np.eye(4))}, reqs, seed=0))
     w.settle(0.2)
     seg = SimSegmenter(w.scene.catalog())
@@ -28,10 +33,17 @@ def objects(dets):
     return sorted(d.detail["object"] for d in dets)
 
 
-@pytest.mark.parametrize("prompt,expected", [
-    ("red block", ["red block"]), ("crimson cube", ["red block"]), ("blue cube", ["blue block"]),
-    ("dinner plate", ["plate"]), ("coffee cup", ["mug"]), ("white ceramic plate", ["plate"]),
-])
+@pytest.mark.parametrize(
+    "prompt,expected",
+    [
+        ("red block", ["red block"]),
+        ("crimson cube", ["red block"]),
+        ("blue cube", ["blue block"]),
+        ("dinner plate", ["plate"]),
+        ("coffee cup", ["mug"]),
+        ("white ceramic plate", ["plate"]),
+    ],
+)
 def test_prompt_grounds_to_one_object(scene, prompt, expected):
     w, seg, frame = scene
     dets = seg.segment(frame, [prompt])
@@ -46,7 +58,9 @@ def test_two_matching_instances_give_two_detections(scene):
     assert objects(seg.segment(frame, ["black bowl"])) == ["black bowl 1", "black bowl 2"]
 
 
-@pytest.mark.parametrize("prompt,expected", [("the left black bowl", "black bowl 1"), ("the right bowl", "black bowl 2")])
+@pytest.mark.parametrize(
+    "prompt,expected", [("the left black bowl", "black bowl 1"), ("the right bowl", "black bowl 2")]
+)
 def test_spatial_qualifier_picks_the_instance(scene, prompt, expected):
     w, seg, frame = scene
     assert objects(seg.segment(frame, [prompt])) == [expected]  # bowl 1 is at +y: the robot's left
@@ -95,7 +109,11 @@ def test_noisy_erosion_confusion_and_depth(scene):
 def test_split_relation():
     from spark_core.perception.qualifiers import split_relation
 
-    assert split_relation("black bowl between the plate and the ramekin") == ("black bowl", "between", ["plate", "ramekin"])
+    assert split_relation("black bowl between the plate and the ramekin") == (
+        "black bowl",
+        "between",
+        ["plate", "ramekin"],
+    )
     assert split_relation("bowl next to the cookie box") == ("bowl", "next to", ["cookie box"])
     assert split_relation("red block") == ("red block", None, [])
 
@@ -109,8 +127,14 @@ def test_split_relation_negated():
 def test_copies_of_a_kind_ground_alike_but_numbered_parts_stay_apart():
     from spark_core.perception.sim_segmenter import _instance_names
 
-    names = _instance_names({"bowl": "black bowl", "bowl 2": "black bowl", "pot handle 0": "one handle of the pot",
-                             "pot handle 1": "the other handle of the pot"})
+    names = _instance_names(
+        {
+            "bowl": "black bowl",
+            "bowl 2": "black bowl",
+            "pot handle 0": "one handle of the pot",
+            "pot handle 1": "the other handle of the pot",
+        }
+    )
     assert names == {"bowl": "bowl", "bowl 2": "bowl", "pot handle 0": "pot handle 0", "pot handle 1": "pot handle 1"}
 
 

@@ -3,6 +3,7 @@ completions) wire formats, recording every request. Test-only."""
 
 from __future__ import annotations
 
+import contextlib
 import json
 import threading
 import time
@@ -23,7 +24,7 @@ class FakeLLM:
             def log_message(self, *args):  # keep test output clean
                 pass
 
-            def do_POST(self):  # noqa: N802 - http.server API
+            def do_POST(self):
                 body = json.loads(self.rfile.read(int(self.headers.get("Content-Length", 0))) or b"{}")
                 fake.requests.append({"path": self.path, "headers": dict(self.headers), "body": body})
                 entry = fake.script.pop(0) if fake.script else ("status", 500)
@@ -43,10 +44,8 @@ class FakeLLM:
                 self.send_header("Content-Type", "application/json")
                 self.send_header("Content-Length", str(len(data)))
                 self.end_headers()
-                try:
+                with contextlib.suppress(BrokenPipeError):
                     self.wfile.write(data)
-                except BrokenPipeError:
-                    pass
 
         self.server = ThreadingHTTPServer(("127.0.0.1", 0), Handler)
         self.thread = threading.Thread(target=self.server.serve_forever, daemon=True)
@@ -66,13 +65,29 @@ class FakeLLM:
     def success(self, text: str, usage: tuple[int, int, int]) -> dict:
         prompt, out, thoughts = usage
         if self.flavour == "gemini":
-            return {"candidates": [{"content": {"role": "model", "parts": [{"text": text}]}, "finishReason": "STOP"}],
-                    "usageMetadata": {"promptTokenCount": prompt, "candidatesTokenCount": out, "thoughtsTokenCount": thoughts,
-                                      "totalTokenCount": prompt + out + thoughts}, "modelVersion": "fake"}
-        return {"id": "chatcmpl-fake", "object": "chat.completion", "created": 0, "model": "fake",
-                "choices": [{"index": 0, "message": {"role": "assistant", "content": text}, "finish_reason": "stop"}],
-                "usage": {"prompt_tokens": prompt, "completion_tokens": out + thoughts, "total_tokens": prompt + out + thoughts,
-                          "completion_tokens_details": {"reasoning_tokens": thoughts}}}
+            return {
+                "candidates": [{"content": {"role": "model", "parts": [{"text": text}]}, "finishReason": "STOP"}],
+                "usageMetadata": {
+                    "promptTokenCount": prompt,
+                    "candidatesTokenCount": out,
+                    "thoughtsTokenCount": thoughts,
+                    "totalTokenCount": prompt + out + thoughts,
+                },
+                "modelVersion": "fake",
+            }
+        return {
+            "id": "chatcmpl-fake",
+            "object": "chat.completion",
+            "created": 0,
+            "model": "fake",
+            "choices": [{"index": 0, "message": {"role": "assistant", "content": text}, "finish_reason": "stop"}],
+            "usage": {
+                "prompt_tokens": prompt,
+                "completion_tokens": out + thoughts,
+                "total_tokens": prompt + out + thoughts,
+                "completion_tokens_details": {"reasoning_tokens": thoughts},
+            },
+        }
 
     def error(self, code: int) -> dict:
         if self.flavour == "gemini":

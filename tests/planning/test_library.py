@@ -1,8 +1,8 @@
 """The plan library: stored after success, retrieved by instruction similarity, can be turned off."""
 
+from spark_core.planning import PlanRequest
 from spark_core.planning.library import PlanLibrary
 from spark_core.planning.prompt import user_prompt
-from spark_core.planning import PlanRequest
 
 
 def test_store_and_retrieve_by_similarity(tmp_path):
@@ -11,10 +11,12 @@ def test_store_and_retrieve_by_similarity(tmp_path):
     lib.add("open the drawer", "task: b\ntree: {primitive: wait}\n")
     lib.add("turn on the stove", "task: c\ntree: {primitive: wait}\n")
     again = PlanLibrary(tmp_path / "plans.jsonl")  # persisted
-    (best, plan), = again.examples("place the crimson cube onto the dish", k=1)
+    ((best, plan),) = again.examples("place the crimson cube onto the dish", k=1)
     assert best == "put the red block on the plate" and plan.startswith("task: a")
     assert [i for i, _ in again.examples("switch the cooktop on", k=2)][0] == "turn on the stove"
-    prompt = user_prompt(PlanRequest("place the cube on the dish", examples=again.examples("place the cube on the dish", k=1)))
+    prompt = user_prompt(
+        PlanRequest("place the cube on the dish", examples=again.examples("place the cube on the dish", k=1))
+    )
     assert prompt.startswith("Example task: put the red block on the plate")
 
 
@@ -29,8 +31,9 @@ def test_config_file_selects_backends_and_prices(tmp_path, monkeypatch):
 
     from spark_core.config import load_config
 
-    (tmp_path / "spark.yaml").write_text("planner: openai\nmodel: qwen\nbase_url: http://127.0.0.1:9/v1\n"
-                                         "prices: {qwen: [0.1, 0.4]}\n")
+    (tmp_path / "spark.yaml").write_text(
+        "planner: openai\nmodel: qwen\nbase_url: http://127.0.0.1:9/v1\nprices: {qwen: [0.1, 0.4]}\n"
+    )
     monkeypatch.chdir(tmp_path)
     cfg = load_config()
     assert (cfg.planner, cfg.model, cfg.prices["qwen"]) == ("openai", "qwen", (0.1, 0.4))

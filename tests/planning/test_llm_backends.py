@@ -11,17 +11,37 @@ from spark_core.planning import PlanRequest, SceneView
 from spark_core.planning.llm import LLMSettings, PlannerUnavailable
 from tests.planning.fake_llm import FakeLLM
 
-GOOD = json.dumps({"task": "put the red block on the plate", "tree": {"type": "sequence", "children": [
-    {"primitive": "pick", "params": {"keypoint_label": "red block"}},
-    {"primitive": "place", "params": {"target_label": "plate"}}]}})
-BAD = json.dumps({"task": "t", "tree": {"type": "sequence", "children": [
-    {"primitive": "pick_up", "params": {"keypoint_label": "red block"}},
-    {"primitive": "grasp", "params": {"force": "high"}}]}})
+GOOD = json.dumps(
+    {
+        "task": "put the red block on the plate",
+        "tree": {
+            "type": "sequence",
+            "children": [
+                {"primitive": "pick", "params": {"keypoint_label": "red block"}},
+                {"primitive": "place", "params": {"target_label": "plate"}},
+            ],
+        },
+    }
+)
+BAD = json.dumps(
+    {
+        "task": "t",
+        "tree": {
+            "type": "sequence",
+            "children": [
+                {"primitive": "pick_up", "params": {"keypoint_label": "red block"}},
+                {"primitive": "grasp", "params": {"force": "high"}},
+            ],
+        },
+    }
+)
 
 
 def request(with_image=True):
-    kps = {"red block": Keypoint("red block", np.array([0.5, 0.0, 0.02]), np.full(3, 0.04)),
-           "plate": Keypoint("plate", np.array([0.5, 0.2, 0.008]), np.array([0.18, 0.18, 0.016]))}
+    kps = {
+        "red block": Keypoint("red block", np.array([0.5, 0.0, 0.02]), np.full(3, 0.04)),
+        "plate": Keypoint("plate", np.array([0.5, 0.2, 0.008]), np.array([0.18, 0.18, 0.016])),
+    }
     image = np.zeros((48, 64, 3), np.uint8) if with_image else None
     return PlanRequest("put the red block on the plate", SceneView(kps, "- red block: (0.500, 0.000, 0.020)", image))
 
@@ -36,8 +56,12 @@ def gemini(fake, **kw):
 def openai_planner(fake, **kw):
     from spark_core.planning.openai_compat import OpenAIPlanner
 
-    return OpenAIPlanner("local-model", base_url=fake.url + "/v1", api_key="test-key",
-                         settings=LLMSettings("local-model", backoff_s=0.01, **kw))
+    return OpenAIPlanner(
+        "local-model",
+        base_url=fake.url + "/v1",
+        api_key="test-key",
+        settings=LLMSettings("local-model", backoff_s=0.01, **kw),
+    )
 
 
 # -- gemini ---------------------------------------------------------------------------------------------------
@@ -51,12 +75,17 @@ def test_gemini_request_carries_schema_temperature_and_image():
     assert req["headers"].get("x-goog-api-key") == "test-key"
     body = req["body"]
     cfg = body["generationConfig"]
-    assert cfg["temperature"] == 0.3 and cfg["maxOutputTokens"] == 2048 and cfg["responseMimeType"] == "application/json"
+    assert (
+        cfg["temperature"] == 0.3 and cfg["maxOutputTokens"] == 2048 and cfg["responseMimeType"] == "application/json"
+    )
     assert "primitive_move_to_keypoint" in cfg["responseJsonSchema"]["$defs"]
     parts = body["contents"][0]["parts"]
     assert "Task: put the red block on the plate" in parts[0]["text"] and "red block" in parts[0]["text"]
     inline = parts[1]["inlineData"]
-    assert inline.get("mimeType", inline.get("mime_type")) == "image/png" and base64.b64decode(inline["data"])[:4] == b"\x89PNG"
+    assert (
+        inline.get("mimeType", inline.get("mime_type")) == "image/png"
+        and base64.b64decode(inline["data"])[:4] == b"\x89PNG"
+    )
     assert "move_to_keypoint{keypoint_label*" in body["systemInstruction"]["parts"][0]["text"]
     assert (res.usage.input_tokens, res.usage.output_tokens, res.usage.reasoning_tokens) == (1000, 200, 50)
     assert res.cost_usd == pytest.approx((1000 * 2.0 + 250 * 12.0) / 1e6)
@@ -172,8 +201,17 @@ def test_openai_needs_a_key_or_a_local_server(monkeypatch):
 
 def test_variant_call_over_the_wire():
     with FakeLLM("openai") as fake:
-        fake.script = [("ok", json.dumps({"red block": ["crimson cube", "red wooden block", "red block", "scarlet box"],
-                                          "plate": ["white dish"]}))]
+        fake.script = [
+            (
+                "ok",
+                json.dumps(
+                    {
+                        "red block": ["crimson cube", "red wooden block", "red block", "scarlet box"],
+                        "plate": ["white dish"],
+                    }
+                ),
+            )
+        ]
         out = openai_planner(fake).prompt_variants(["red block", "plate", "mug"], k=3)
     assert out == {"red block": ["crimson cube", "red wooden block", "scarlet box"], "plate": ["white dish"], "mug": []}
     schema = fake.requests[0]["body"]["response_format"]["json_schema"]["schema"]
@@ -194,8 +232,20 @@ def test_cli_plans_through_an_openai_compatible_server(capsys):
 
     with FakeLLM("openai") as fake:
         fake.script = [("ok", GOOD)]
-        code = main(["plan", "put the red block on the plate", "--task", "block_on_plate", "--planner", "openai",
-                     "--model", "local-model", "--base-url", fake.url + "/v1"])
+        code = main(
+            [
+                "plan",
+                "put the red block on the plate",
+                "--task",
+                "block_on_plate",
+                "--planner",
+                "openai",
+                "--model",
+                "local-model",
+                "--base-url",
+                fake.url + "/v1",
+            ]
+        )
     out = capsys.readouterr().out
     assert code == 0 and "primitive: place" in out and "usage: 120 in" in out
     content = fake.requests[0]["body"]["messages"][1]["content"]

@@ -15,27 +15,41 @@ def kp(label, xyz, size=(0.04, 0.04, 0.04)):
 
 
 def scene(**objects):
-    return SceneView({k.replace("_", " "): kp(k, *v) if isinstance(v, tuple) and isinstance(v[0], tuple) else kp(k, v)
-                      for k, v in objects.items()})
+    return SceneView(
+        {
+            k.replace("_", " "): kp(k, *v) if isinstance(v, tuple) and isinstance(v[0], tuple) else kp(k, v)
+            for k, v in objects.items()
+        }
+    )
 
 
 def prims(result):
     return [(c["primitive"], c.get("params", {})) for c in plan_to_dict(result.plan)["tree"]["children"]]
 
 
-@pytest.mark.parametrize("text,expected", [
-    ("pick up the red block", [("pick", "red block", None, None)]),
-    ("pick the red block up", [("pick", "red block", None, None)]),
-    ("Could you please drop the crimson cube into the basket?", [("put", "crimson cube", "in", "basket")]),
-    ("set the cup on top of the plate", [("put", "cup", "on", "plate")]),
-    ("stack the green block on the blue block, then the red block on the green block",
-     [("stack", "green block", "on", "blue block"), ("stack", "red block", "on", "green block")]),
-    ("open the drawer of the cabinet", [("open", "cabinet drawer", None, None)]),
-    ("open the drawer and then drop the red block into it", [("open", "drawer", None, None), ("put", "red block", "in", "it")]),
-    ("put the red block in the green tray and the blue block in the yellow tray",
-     [("put", "red block", "in", "green tray"), ("put", "blue block", "in", "yellow tray")]),
-    ("turn the stove on", [("turn_on", "stove", None, None)]),
-])
+@pytest.mark.parametrize(
+    "text,expected",
+    [
+        ("pick up the red block", [("pick", "red block", None, None)]),
+        ("pick the red block up", [("pick", "red block", None, None)]),
+        ("Could you please drop the crimson cube into the basket?", [("put", "crimson cube", "in", "basket")]),
+        ("set the cup on top of the plate", [("put", "cup", "on", "plate")]),
+        (
+            "stack the green block on the blue block, then the red block on the green block",
+            [("stack", "green block", "on", "blue block"), ("stack", "red block", "on", "green block")],
+        ),
+        ("open the drawer of the cabinet", [("open", "cabinet drawer", None, None)]),
+        (
+            "open the drawer and then drop the red block into it",
+            [("open", "drawer", None, None), ("put", "red block", "in", "it")],
+        ),
+        (
+            "put the red block in the green tray and the blue block in the yellow tray",
+            [("put", "red block", "in", "green tray"), ("put", "blue block", "in", "yellow tray")],
+        ),
+        ("turn the stove on", [("turn_on", "stove", None, None)]),
+    ],
+)
 def test_parse(text, expected):
     got = [(c.action, c.obj, c.relation, c.target) for c in parse_instruction(text)]
     assert got == expected
@@ -71,28 +85,42 @@ def test_composes_pick_and_place():
 def test_open_then_put_inside_it_opens_wider_and_targets_the_drawer():
     view = scene(drawer=(0.7, 0.2, 0.07), drawer_handle=(0.65, 0.2, 0.09), red_block=(0.4, -0.1, 0.02))
     res = RulesPlanner().plan(PlanRequest("open the drawer and put the red block inside it", view))
-    assert prims(res) == [("open_drawer", {"keypoint_label": "drawer handle", "distance": 0.18}),
-                          ("pick", {"keypoint_label": "red block"}), ("place_in", {"container_label": "drawer"})]
+    assert prims(res) == [
+        ("open_drawer", {"keypoint_label": "drawer handle", "distance": 0.18}),
+        ("pick", {"keypoint_label": "red block"}),
+        ("place_in", {"container_label": "drawer"}),
+    ]
 
 
 def test_push_into_a_region_measures_distance_from_the_scene():
     view = scene(red_block=(0.42, 0.0, 0.02), green_area=((0.6, 0.01, 0.0), (0.14, 0.14, 0.001)))
     res = RulesPlanner().plan(PlanRequest("push the red block into the green area", view))
     ((name, params),) = prims(res)
-    assert name == "push_object" and params["direction"] == "forward" and params["distance"] == pytest.approx(0.18, abs=1e-3)
+    assert (
+        name == "push_object"
+        and params["direction"] == "forward"
+        and params["distance"] == pytest.approx(0.18, abs=1e-3)
+    )
     bad = RulesPlanner().plan(PlanRequest("push the red block backward into the green area", view))
     assert not bad.ok and "not backward" in bad.error
 
 
-@pytest.mark.parametrize("instruction,view,fragment", [
-    ("put the giraffe on the plate", {"plate": (0.5, 0, 0.01)}, "could not find 'giraffe' in the scene (perception found: plate)"),
-    ("put the red block", {"red block": (0.5, 0, 0.02)}, "which destination?"),
-    ("scrub the plate", {"plate": (0.5, 0, 0.01)}, "scrub with what?"),
-    ("push the red block", {"red block": (0.5, 0, 0.02)}, "push which way?"),
-    ("open the box", {"box": (0.5, 0, 0.02)}, "perception found no handle on it"),
-    ("turn on the stove", {"stove": (0.5, 0, 0.02)}, "did not find it with a knob"),
-    ("sing a song", {}, "did not understand the instruction"),
-])
+@pytest.mark.parametrize(
+    "instruction,view,fragment",
+    [
+        (
+            "put the giraffe on the plate",
+            {"plate": (0.5, 0, 0.01)},
+            "could not find 'giraffe' in the scene (perception found: plate)",
+        ),
+        ("put the red block", {"red block": (0.5, 0, 0.02)}, "which destination?"),
+        ("scrub the plate", {"plate": (0.5, 0, 0.01)}, "scrub with what?"),
+        ("push the red block", {"red block": (0.5, 0, 0.02)}, "push which way?"),
+        ("open the box", {"box": (0.5, 0, 0.02)}, "perception found no handle on it"),
+        ("turn on the stove", {"stove": (0.5, 0, 0.02)}, "did not find it with a knob"),
+        ("sing a song", {}, "did not understand the instruction"),
+    ],
+)
 def test_refusals_are_clear(instruction, view, fragment):
     sv = SceneView({k: kp(k, v) for k, v in view.items()})
     res = RulesPlanner().plan(PlanRequest(instruction, sv))
@@ -110,9 +138,9 @@ def test_plans_type_check_and_round_trip():
 
 def test_rules_plan_executes_in_physics_through_perception():
     """perception (sim masks) -> rules plan -> execution on the MuJoCo world."""
-    from spark_core.perception.factory import make_resolver
     from spark_core.execution import Executor
     from spark_core.execution.primitives import PrimitiveLibrary
+    from spark_core.perception.factory import make_resolver
     from spark_core.planning.observe import observe
     from spark_core.sim.tasks import BUILTIN
 
@@ -129,8 +157,12 @@ def test_rules_plan_executes_in_physics_through_perception():
 
 
 def test_an_object_located_by_others_keeps_its_relation_in_the_phrase():
-    got = [(c.action, c.obj, c.target) for c in parse_instruction(
-        "pick the akita black bowl between the plate and the ramekin and place it on the plate")]
+    got = [
+        (c.action, c.obj, c.target)
+        for c in parse_instruction(
+            "pick the akita black bowl between the plate and the ramekin and place it on the plate"
+        )
+    ]
     assert got == [("pick", "akita black bowl between plate and ramekin", None), ("put", "it", "plate")]
     assert parse_instruction("pick the bowl next to the cookie box")[0].obj == "bowl next to cookie box"
 

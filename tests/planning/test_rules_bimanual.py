@@ -3,11 +3,11 @@ plan it writes runs for real on the two-arm cell through cameras and the sim seg
 
 import numpy as np
 
-from spark_core.perception.factory import make_resolver
 from spark_core.execution import Executor
 from spark_core.execution.primitives import PrimitiveLibrary
 from spark_core.grammar import Composite
 from spark_core.perception import Keypoint
+from spark_core.perception.factory import make_resolver
 from spark_core.planning import PlanRequest, SceneView
 from spark_core.planning.observe import arm_bases, observe
 from spark_core.planning.rules import RulesPlanner
@@ -17,9 +17,18 @@ SORT = "put the red block in the red tray and the blue block in the blue tray"
 
 
 def _scene() -> SceneView:
-    kp = lambda label, x, y: Keypoint(label, np.array([x, y, 0.02]), np.array([0.04, 0.04, 0.04]))  # noqa: E731
-    return SceneView({k.label: k for k in (kp("red block", 0.5, 0.15), kp("red tray", 0.6, 0.33),
-                                            kp("blue block", 0.45, -0.15), kp("blue tray", 0.6, -0.33))})
+    kp = lambda label, x, y: Keypoint(label, np.array([x, y, 0.02]), np.array([0.04, 0.04, 0.04]))
+    return SceneView(
+        {
+            k.label: k
+            for k in (
+                kp("red block", 0.5, 0.15),
+                kp("red tray", 0.6, 0.33),
+                kp("blue block", 0.45, -0.15),
+                kp("blue tray", 0.6, -0.33),
+            )
+        }
+    )
 
 
 def test_two_arms_get_one_carry_each_in_parallel():
@@ -28,8 +37,10 @@ def test_two_arms_get_one_carry_each_in_parallel():
     par = result.plan.tree.children[0]
     assert isinstance(par, Composite) and par.type.value == "parallel"
     branches = {b.arm: [(c.primitive, c.labels) for c in b.children] for b in par.children}
-    assert branches == {"left": [("pick_with_arm", ["red block"]), ("place_in", ["red tray"])],
-                        "right": [("pick_with_arm", ["blue block"]), ("place_in", ["blue tray"])]}
+    assert branches == {
+        "left": [("pick_with_arm", ["red block"]), ("place_in", ["red tray"])],
+        "right": [("pick_with_arm", ["blue block"]), ("place_in", ["blue tray"])],
+    }
 
 
 def test_one_arm_keeps_a_plain_sequence():
@@ -43,7 +54,9 @@ def test_rules_bimanual_plan_runs_on_the_two_arm_cell_with_perception():
     world = task.make_world(2)
     try:
         resolver = make_resolver(world, "sim", 2)
-        result = RulesPlanner().plan(PlanRequest(task.instruction, observe(task.instruction, resolver), arms=arm_bases(world)))
+        result = RulesPlanner().plan(
+            PlanRequest(task.instruction, observe(task.instruction, resolver), arms=arm_bases(world))
+        )
         assert result.ok and "arm: left" in result.text and "arm: right" in result.text
         trial = Executor(PrimitiveLibrary(world, resolver, seed=2), resolver).run(result.plan)
         world.settle(0.5)

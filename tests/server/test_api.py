@@ -11,7 +11,9 @@ from server.settings import Settings
 
 @pytest.fixture()
 def client(tmp_path):
-    app = create_app(Settings(store_url=f"sqlite:///{tmp_path / 'api.db'}", workers=2, artifacts_dir=str(tmp_path / "art")))
+    app = create_app(
+        Settings(store_url=f"sqlite:///{tmp_path / 'api.db'}", workers=2, artifacts_dir=str(tmp_path / "art"))
+    )
     with TestClient(app) as c:
         yield c
 
@@ -42,8 +44,12 @@ def test_health_grammar_tasks_validate(client):
     g = client.get("/api/grammar").json()
     assert len(g["primitives"]) >= 35 and "$defs" in g["json_schema"]
     assert any(t["name"] == "stack_two" for t in client.get("/api/tasks").json())
-    bad = client.post("/api/plans/validate", json={"text": "task: t\ntree: {primitive: grasp, params: {force: high}}"}).json()
-    assert not bad["ok"] and bad["errors"] == [{"path": "tree.params.force", "message": 'expected number in [0, 140], got "high"'}]
+    bad = client.post(
+        "/api/plans/validate", json={"text": "task: t\ntree: {primitive: grasp, params: {force: high}}"}
+    ).json()
+    assert not bad["ok"] and bad["errors"] == [
+        {"path": "tree.params.force", "message": 'expected number in [0, 140], got "high"'}
+    ]
     good = client.post("/api/plans/validate", json={"text": "task: t\ntree: {primitive: wait}"}).json()
     assert good["ok"] and good["canonical_yaml"].startswith("task: t")
     assert "/api/trials" in client.get("/openapi.json").json()["paths"]
@@ -55,7 +61,10 @@ def test_create_run_get_list_delete(client):
     trial_id = r.json()["id"]
     trial = wait_done(client, trial_id)
     assert trial["success"] is True and trial["outcome"] == "success" and trial["plan_text"].startswith("task:")
-    assert trial["events"][0]["kind"] == "started" and trial["events"][-1] == {**trial["events"][-1], "kind": "succeeded"}
+    assert trial["events"][0]["kind"] == "started" and trial["events"][-1] == {
+        **trial["events"][-1],
+        "kind": "succeeded",
+    }
     assert len(trial["trajectory"]) > 100
     page = client.get("/api/trials", params={"task": "lift_block"}).json()
     assert page["total"] == 1 and page["items"][0]["id"] == trial_id and "trajectory" not in page["items"][0]
@@ -65,17 +74,28 @@ def test_create_run_get_list_delete(client):
 
 
 def test_rules_planner_trial_and_planner_refusal(client):
-    ok = client.post("/api/trials", json={"task": "stack_two", "planner": "rules", "segmenter": "sim",
-                                          "instruction": "put the crimson cube on top of the navy cube"}).json()
-    refused = client.post("/api/trials", json={"task": "stack_two", "planner": "rules", "instruction": "sing a song"}).json()
+    ok = client.post(
+        "/api/trials",
+        json={
+            "task": "stack_two",
+            "planner": "rules",
+            "segmenter": "sim",
+            "instruction": "put the crimson cube on top of the navy cube",
+        },
+    ).json()
+    refused = client.post(
+        "/api/trials", json={"task": "stack_two", "planner": "rules", "instruction": "sing a song"}
+    ).json()
     assert wait_done(client, ok["id"])["success"] is True
     bad = wait_done(client, refused["id"])
     assert bad["success"] is False and bad["failure"] == "planner" and "did not understand" in bad["reason"]
 
 
 def test_breakpoint_step_resume_and_live_events(client):
-    r = client.post("/api/trials", json={"task": "stack_two", "segmenter": "privileged-keypoints",
-                                         "breakpoints": ["tree.children[1]"]}).json()
+    r = client.post(
+        "/api/trials",
+        json={"task": "stack_two", "segmenter": "privileged-keypoints", "breakpoints": ["tree.children[1]"]},
+    ).json()
     trial_id = r["id"]
     with client.websocket_connect(f"/api/trials/{trial_id}/events") as ws:
         seen = []
@@ -104,12 +124,17 @@ def test_bad_requests_are_clear(client):
 
 
 def test_mutations_need_a_token_beyond_loopback(tmp_path):
-    app = create_app(Settings(host="0.0.0.0", store_url=f"sqlite:///{tmp_path / 'x.db'}", workers=1, api_token="s3cret"))
+    app = create_app(
+        Settings(host="0.0.0.0", store_url=f"sqlite:///{tmp_path / 'x.db'}", workers=1, api_token="s3cret")
+    )
     with TestClient(app) as c:
         assert c.post("/api/plans/validate", json={"text": "x"}).status_code == 401
         assert c.get("/api/health").status_code == 200
-        ok = c.post("/api/plans/validate", json={"text": "task: t\ntree: {primitive: wait}"},
-                    headers={"Authorization": "Bearer s3cret"})
+        ok = c.post(
+            "/api/plans/validate",
+            json={"text": "task: t\ntree: {primitive: wait}"},
+            headers={"Authorization": "Bearer s3cret"},
+        )
         assert ok.status_code == 200 and ok.json()["ok"]
 
 
@@ -132,8 +157,12 @@ def test_api_benchmark_runs_on_a_bulk_store():
 
 
 def test_twenty_submissions_with_two_workers_all_complete(client):
-    ids = [client.post("/api/trials", json={"task": "lift_block", "segmenter": "privileged-keypoints", "seed": i}).json()["id"]
-           for i in range(20)]
+    ids = [
+        client.post("/api/trials", json={"task": "lift_block", "segmenter": "privileged-keypoints", "seed": i}).json()[
+            "id"
+        ]
+        for i in range(20)
+    ]
     queued = client.get("/api/trials", params={"limit": 500}).json()
     assert queued["total"] == 20  # every submission is recorded at once, before any runs
     done = [wait_done(client, i, timeout=300) for i in ids]
@@ -144,7 +173,10 @@ def test_twenty_submissions_with_two_workers_all_complete(client):
 def test_mutating_calls_are_rate_limited(tmp_path):
     app = create_app(Settings(store_url=f"sqlite:///{tmp_path / 'rl.db'}", workers=1, rate_per_s=0.5, rate_burst=3))
     with TestClient(app) as c:
-        codes = [c.post("/api/plans/validate", json={"text": "task: t\ntree: {primitive: wait}"}).status_code for _ in range(5)]
+        codes = [
+            c.post("/api/plans/validate", json={"text": "task: t\ntree: {primitive: wait}"}).status_code
+            for _ in range(5)
+        ]
         assert codes[:3] == [200, 200, 200] and codes[3:] == [429, 429]
         assert c.get("/api/health").status_code == 200  # reads are not limited
         r = c.post("/api/plans/validate", json={"text": "x"})
@@ -165,15 +197,22 @@ def test_detection_images_are_stored_with_their_hash(client):
 
 
 def test_batch_progress_results_and_cancel(client):
-    r = client.post("/api/batches", json={"tasks": ["lift_block", "push_to_zone"], "trials": 2, "segmenter": "privileged-keypoints"})
+    r = client.post(
+        "/api/batches", json={"tasks": ["lift_block", "push_to_zone"], "trials": 2, "segmenter": "privileged-keypoints"}
+    )
     assert r.status_code == 202 and r.json()["trials"] == 4
     bid = r.json()["id"]
     b = wait_batch(client, bid, lambda b: b["status"] == "done")
     assert b["progress"] == {"done": 4, "total": 4}
-    assert {row["task"]: (row["successes"], row["total"]) for row in b["results"]} == {"lift_block": (2, 2), "push_to_zone": (2, 2)}
+    assert {row["task"]: (row["successes"], row["total"]) for row in b["results"]} == {
+        "lift_block": (2, 2),
+        "push_to_zone": (2, 2),
+    }
     assert client.get("/api/trials", params={"batch": bid}).json()["total"] == 4
 
-    big = client.post("/api/batches", json={"tasks": ["stack_three"], "trials": 8, "segmenter": "privileged-keypoints"}).json()["id"]
+    big = client.post(
+        "/api/batches", json={"tasks": ["stack_three"], "trials": 8, "segmenter": "privileged-keypoints"}
+    ).json()["id"]
     cancel = client.post(f"/api/batches/{big}/cancel").json()
     assert cancel["cancelled"] >= 6  # with 2 workers most of the 8 were still queued
     b = wait_batch(client, big, lambda b: b["progress"]["done"] == 8)
@@ -198,16 +237,21 @@ def test_a_crashing_trial_fails_with_its_reason_and_the_worker_lives_on(client):
     bad = client.post("/api/trials", json={"task": "lift_block", "planner": "openai"}).json()["id"]  # no --model
     trial = wait_done(client, bad)
     assert trial["success"] is False and trial["failure"] == "planner"
-    assert trial["reason"] == "planner 'openai' unavailable: the openai planner needs --model (e.g. gpt-4.1, or the name your local server serves)"
+    assert (
+        trial["reason"]
+        == "planner 'openai' unavailable: the openai planner needs --model (e.g. gpt-4.1, or the name your local server serves)"
+    )
     assert client.get("/api/health").json() == {"status": "ok"}
     again = client.post("/api/trials", json={"task": "lift_block", "segmenter": "privileged-keypoints"}).json()["id"]
     assert wait_done(client, again)["success"] is True  # the same worker processes keep serving
 
 
 def test_batch_from_an_explicit_spec_list_exports_csv(client):
-    specs = [{"task": "lift_block", "seed": 3, "segmenter": "privileged-keypoints"},
-             {"task": "lift_block", "seed": 4, "instruction": "lift the red block", "segmenter": "privileged-keypoints"},
-             {"task": "push_to_zone", "seed": 1, "segmenter": "privileged-keypoints"}]
+    specs = [
+        {"task": "lift_block", "seed": 3, "segmenter": "privileged-keypoints"},
+        {"task": "lift_block", "seed": 4, "instruction": "lift the red block", "segmenter": "privileged-keypoints"},
+        {"task": "push_to_zone", "seed": 1, "segmenter": "privileged-keypoints"},
+    ]
     bid = client.post("/api/batches", json={"specs": specs}).json()["id"]
     for _ in range(1200):
         b = client.get(f"/api/batches/{bid}").json()
@@ -215,7 +259,11 @@ def test_batch_from_an_explicit_spec_list_exports_csv(client):
             break
         time.sleep(0.1)
     assert b["progress"] == {"done": 3, "total": 3}
-    assert sorted((t["task"], t["seed"]) for t in b["trials"]) == [("lift_block", 3), ("lift_block", 4), ("push_to_zone", 1)]
+    assert sorted((t["task"], t["seed"]) for t in b["trials"]) == [
+        ("lift_block", 3),
+        ("lift_block", 4),
+        ("push_to_zone", 1),
+    ]
     assert "lift the red block" in [t["instruction"] for t in b["trials"]]
     results = client.get(f"/api/batches/{bid}/results.csv")
     assert results.headers["content-type"].startswith("text/csv")
@@ -233,7 +281,9 @@ def test_batch_from_an_explicit_spec_list_exports_csv(client):
 
 
 def test_trials_on_other_embodiments(client):
-    ur = client.post("/api/trials", json={"task": "stack_two", "segmenter": "privileged-keypoints", "embodiment": "ur10"}).json()["id"]
+    ur = client.post(
+        "/api/trials", json={"task": "stack_two", "segmenter": "privileged-keypoints", "embodiment": "ur10"}
+    ).json()["id"]
     two = client.post("/api/trials", json={"task": "handover_bar", "segmenter": "privileged-keypoints"}).json()["id"]
     bad = client.post("/api/trials", json={"task": "lift_tray", "embodiment": "ur10"})
     assert bad.status_code == 422 and "runs on bimanual" in bad.json()["detail"]
@@ -254,7 +304,9 @@ def test_a_suite_without_reference_plans_needs_a_planner(client):
 
 def test_a_capbench_batch_runs_in_the_console(client):
     pytest.importorskip("robosuite", reason="benchmark extras: make bench-deps")
-    r = client.post("/api/batches", json={"suite": "capbench", "tasks": ["Lift"], "trials": 2, "segmenter": "privileged-keypoints"})
+    r = client.post(
+        "/api/batches", json={"suite": "capbench", "tasks": ["Lift"], "trials": 2, "segmenter": "privileged-keypoints"}
+    )
     assert r.status_code == 202
     b = wait_batch(client, r.json()["id"], lambda b: b["status"] == "done")
     assert b["progress"] == {"done": 2, "total": 2}

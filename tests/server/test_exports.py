@@ -15,11 +15,18 @@ from .test_api import wait_done
 
 
 def test_batch_and_selection_export_as_lerobot_zip(tmp_path):
-    settings = Settings(store_url=f"sqlite:///{tmp_path / 'e.db'}", workers=2, viser=False,
-                        artifacts_dir=str(tmp_path / "art"), exports_dir=str(tmp_path / "exports"))
+    settings = Settings(
+        store_url=f"sqlite:///{tmp_path / 'e.db'}",
+        workers=2,
+        viser=False,
+        artifacts_dir=str(tmp_path / "art"),
+        exports_dir=str(tmp_path / "exports"),
+    )
     with TestClient(create_app(settings)) as c:
-        bid = c.post("/api/batches", json={"tasks": ["lift_block"], "trials": 2, "segmenter": "privileged-keypoints",
-                                           "capture": True}).json()["id"]
+        bid = c.post(
+            "/api/batches",
+            json={"tasks": ["lift_block"], "trials": 2, "segmenter": "privileged-keypoints", "capture": True},
+        ).json()["id"]
         plain = c.post("/api/trials", json={"task": "lift_block", "segmenter": "privileged-keypoints"}).json()["id"]
         for _ in range(1200):
             if c.get(f"/api/batches/{bid}").json()["status"] == "done":
@@ -36,7 +43,11 @@ def test_batch_and_selection_export_as_lerobot_zip(tmp_path):
         assert "videos/observation.images.agentview/chunk-000/file-000.mp4" in z.namelist()
         trials = [t["id"] for t in c.get(f"/api/batches/{bid}").json()["trials"]]
         sel = c.post("/api/exports", json={"trial_ids": [trials[0], plain]}).json()
-        assert sel["episodes"] == 1 and sel["skipped"][0]["id"] == plain and "without capture" in sel["skipped"][0]["reason"]
+        assert (
+            sel["episodes"] == 1
+            and sel["skipped"][0]["id"] == plain
+            and "without capture" in sel["skipped"][0]["reason"]
+        )
         nothing = c.post("/api/exports", json={"trial_ids": [plain]})
         assert nothing.status_code == 422 and "without capture" in nothing.json()["detail"]
         assert c.post("/api/exports", json={}).status_code == 422

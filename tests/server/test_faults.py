@@ -23,13 +23,22 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def _app(tmp_path, **kw):
-    return create_app(Settings(store_url=f"sqlite:///{tmp_path / 'f.db'}", workers=1, viser=False,
-                               artifacts_dir=str(tmp_path / "art"), **kw))
+    return create_app(
+        Settings(
+            store_url=f"sqlite:///{tmp_path / 'f.db'}",
+            workers=1,
+            viser=False,
+            artifacts_dir=str(tmp_path / "art"),
+            **kw,
+        )
+    )
 
 
 def _paused_trial(c) -> dict:
     """A trial paused before its first primitive, i.e. mid-trial inside its worker process."""
-    tid = c.post("/api/trials", json={"task": "lift_block", "segmenter": "privileged-keypoints", "start_paused": True}).json()["id"]
+    tid = c.post(
+        "/api/trials", json={"task": "lift_block", "segmenter": "privileged-keypoints", "start_paused": True}
+    ).json()["id"]
     for _ in range(1200):
         t = c.get(f"/api/trials/{tid}").json()
         if any(e["kind"] == "paused" for e in t["events"]):
@@ -84,7 +93,8 @@ def test_an_exception_inside_the_worker_is_recorded_and_the_worker_lives_on(tmp_
         "from spark_core.sim.tasks import TASKS\n"
         "def crash(world, rng):\n"
         "    raise RuntimeError('simulated crash inside the trial')\n"
-        "TASKS['close_drawer'] = dataclasses.replace(TASKS['close_drawer'], setup=crash)\n")
+        "TASKS['close_drawer'] = dataclasses.replace(TASKS['close_drawer'], setup=crash)\n"
+    )
     monkeypatch.setenv("PYTHONPATH", f"{plugin}{os.pathsep}{os.environ.get('PYTHONPATH', '')}")
     with TestClient(_app(tmp_path)) as c:
         tid = c.post("/api/trials", json={"task": "close_drawer", "segmenter": "privileged-keypoints"}).json()["id"]
@@ -105,8 +115,13 @@ def _free_port() -> int:
 
 def _serve(port: int, db: Path, log: Path) -> subprocess.Popen:
     env = {**os.environ, "SPARK_VISER": "0", "SPARK_WORKERS": "1", "SPARK_ARTIFACTS_DIR": str(db.parent / "art")}
-    return subprocess.Popen([sys.executable, "-m", "spark_cli", "serve", "--port", str(port), "--store",
-                             f"sqlite:///{db}"], cwd=ROOT, env=env, stdout=log.open("ab"), stderr=subprocess.STDOUT)
+    return subprocess.Popen(
+        [sys.executable, "-m", "spark_cli", "serve", "--port", str(port), "--store", f"sqlite:///{db}"],
+        cwd=ROOT,
+        env=env,
+        stdout=log.open("ab"),
+        stderr=subprocess.STDOUT,
+    )
 
 
 def _wait_up(url: str, proc: subprocess.Popen, log: Path) -> None:
@@ -129,8 +144,9 @@ def test_restarting_the_server_process_mid_trial_marks_the_trial_interrupted(tmp
     proc = _serve(port, db, log)
     try:
         _wait_up(url, proc, log)
-        tid = httpx.post(url + "/api/trials", json={"task": "lift_block", "segmenter": "privileged-keypoints",
-                                                    "start_paused": True}).json()["id"]
+        tid = httpx.post(
+            url + "/api/trials", json={"task": "lift_block", "segmenter": "privileged-keypoints", "start_paused": True}
+        ).json()["id"]
         for _ in range(1200):
             t = httpx.get(f"{url}/api/trials/{tid}").json()
             if t["status"] == "running" and t.get("worker_pid"):
@@ -160,7 +176,9 @@ def test_stopping_the_server_while_workers_warm_up_is_prompt_and_leaves_no_proce
     proc = _serve(port, db, log)  # `spark serve` spawns its workers at start; they take seconds to warm up
     try:
         _wait_up(f"http://127.0.0.1:{port}", proc, log)
-        children = [int(p) for t in Path(f"/proc/{proc.pid}/task").iterdir() for p in (t / "children").read_text().split()]
+        children = [
+            int(p) for t in Path(f"/proc/{proc.pid}/task").iterdir() for p in (t / "children").read_text().split()
+        ]
         proc.send_signal(signal.SIGTERM)
         proc.wait(5)  # the lifespan does not wait for a warm-up to finish (which takes 5-10 s)
         time.sleep(1.0)

@@ -19,8 +19,14 @@ TOKEN = "s3cret-token-4711"
 
 
 def _settings(tmp_path, **kw) -> Settings:
-    return Settings(store_url=f"sqlite:///{tmp_path / 's.db'}", workers=1, viser=False,
-                    artifacts_dir=str(tmp_path / "art"), exports_dir=str(tmp_path / "exports"), **kw)
+    return Settings(
+        store_url=f"sqlite:///{tmp_path / 's.db'}",
+        workers=1,
+        viser=False,
+        artifacts_dir=str(tmp_path / "art"),
+        exports_dir=str(tmp_path / "exports"),
+        **kw,
+    )
 
 
 @contextlib.contextmanager
@@ -100,8 +106,11 @@ def test_guessing_the_token_is_rate_limited_and_forwarded_for_from_loopback_does
         guesses = [{"Authorization": f"Bearer guess{k}", "X-Forwarded-For": f"203.0.113.{k}"} for k in range(20)]
         codes = [httpx.post(f"{base}/api/plans/validate", json={"text": "x"}, headers=h).status_code for h in guesses]
         assert codes[:10] == [401] * 10 and codes[10:] == [429] * 10, codes
-        right = httpx.post(f"{base}/api/plans/validate", json={"text": "x"},
-                           headers={"Authorization": f"Bearer {TOKEN}", "X-Forwarded-For": "198.51.100.7"})
+        right = httpx.post(
+            f"{base}/api/plans/validate",
+            json={"text": "x"},
+            headers={"Authorization": f"Bearer {TOKEN}", "X-Forwarded-For": "198.51.100.7"},
+        )
         assert right.status_code == 429 and int(right.headers["retry-after"]) > 0  # blocked, however it is dressed
         login = httpx.get(f"{base}/?token=guess", headers={"X-Forwarded-For": "198.51.100.8"})
         assert login.status_code == 429
@@ -141,11 +150,15 @@ def test_a_chunked_body_over_the_limit_is_refused(tmp_path):
     with _serve(_settings(tmp_path)) as base:
         r = httpx.post(f"{base}/api/plans/validate", content=body(), headers={"Content-Type": "application/json"})
         assert r.status_code == 413 and "larger than 1024 KiB" in r.json()["detail"]
-        declared = httpx.post(f"{base}/api/plans/validate", content=b" " * (2 * 1024 * 1024),
-                              headers={"Content-Type": "application/json"})
+        declared = httpx.post(
+            f"{base}/api/plans/validate", content=b" " * (2 * 1024 * 1024), headers={"Content-Type": "application/json"}
+        )
         assert declared.status_code == 413
-        small = httpx.post(f"{base}/api/plans/validate", content=(c for c in [b'{"text": ', b'"x"}']),
-                           headers={"Content-Type": "application/json"})
+        small = httpx.post(
+            f"{base}/api/plans/validate",
+            content=(c for c in [b'{"text": ', b'"x"}']),
+            headers={"Content-Type": "application/json"},
+        )
         assert small.status_code == 200  # a small chunked body still reaches the route whole
 
 
@@ -210,6 +223,7 @@ def test_the_trial_list_reads_no_heavy_column_and_pages_from_an_index(tmp_path):
     filtered_total, filtered = store.list_trials(task="task1", success=True, limit=5)
     assert filtered_total == 10 and all(t["task"] == "task1" and t["success"] for t in filtered)
     with store.engine.connect() as conn:
-        plan = conn.execute(text("EXPLAIN QUERY PLAN SELECT id FROM trials ORDER BY created_at DESC, id DESC "
-                                 "LIMIT 50 OFFSET 5000")).fetchall()
+        plan = conn.execute(
+            text("EXPLAIN QUERY PLAN SELECT id FROM trials ORDER BY created_at DESC, id DESC LIMIT 50 OFFSET 5000")
+        ).fetchall()
     assert any("COVERING INDEX ix_trials_created_at_id" in str(row) for row in plan), plan  # migration 0006

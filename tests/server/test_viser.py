@@ -45,7 +45,9 @@ def test_feed_mirrors_the_world_at_its_rate():
 
 
 def _app(tmp_path, **kw):
-    return create_app(Settings(store_url=f"sqlite:///{tmp_path / 'v.db'}", workers=1, artifacts_dir=str(tmp_path / "a"), **kw))
+    return create_app(
+        Settings(store_url=f"sqlite:///{tmp_path / 'v.db'}", workers=1, artifacts_dir=str(tmp_path / "a"), **kw)
+    )
 
 
 def test_trials_stream_into_the_view_which_is_relayed_from_the_console_origin_and_replays(tmp_path):

@@ -7,10 +7,10 @@ import pytest
 
 pytest.importorskip("libero", reason="benchmark extras: make bench-deps")
 
-from spark_core.perception.factory import make_resolver  # noqa: E402
-from spark_core.trial import TrialConfig, run_trial  # noqa: E402
-from spark_core.sim.libero_envs import CELLS, make_env, tasks  # noqa: E402
-from spark_core.sim.tasks import SUITES  # noqa: E402
+from spark_core.perception.factory import make_resolver
+from spark_core.sim.libero_envs import CELLS, make_env, tasks
+from spark_core.sim.tasks import SUITES
+from spark_core.trial import TrialConfig, run_trial
 
 
 def _task(cell: str, stem: str):
@@ -86,20 +86,36 @@ def test_cabinet_drawers_are_parts_whose_handles_face_the_way_the_drawer_opens()
 
     w = SUITES["liberopro"]["libero_goal_swap:open_the_middle_drawer_of_the_cabinet"].make_world(0)
     try:
-        assert {"wooden cabinet top drawer handle", "wooden cabinet middle drawer", "wooden cabinet bottom drawer"} \
-            <= set(w.scene.parts)
+        assert {
+            "wooden cabinet top drawer handle",
+            "wooden cabinet middle drawer",
+            "wooden cabinet bottom drawer",
+        } <= set(w.scene.parts)
         resolver = make_resolver(w, "sim", 0)
         lib = PrimitiveLibrary(w, resolver)
         label = "drawer middle layer handle"  # the rules planner's phrase for "open the middle layer of the drawer"
         handle = resolver.resolve(label)
-        assert abs(handle.position_m[2] - w.body_aabb("wooden_cabinet_1_cabinet_middle#wooden cabinet middle drawer handle")[0][2]) < 0.02
-        ctx = Ctx(w, "right", lib.motion["right"], {"keypoint_label": label}, {label: handle}, lib.memory["right"], resolver)
+        assert (
+            abs(
+                handle.position_m[2]
+                - w.body_aabb("wooden_cabinet_1_cabinet_middle#wooden cabinet middle drawer handle")[0][2]
+            )
+            < 0.02
+        )
+        ctx = Ctx(
+            w, "right", lib.motion["right"], {"keypoint_label": label}, {label: handle}, lib.memory["right"], resolver
+        )
         assert np.allclose(handle_facing(ctx, handle), [0.0, 1.0, 0.0], atol=1e-6)
     finally:
         w.close()
 
 
 def test_open_the_top_drawer_and_put_the_bowl_inside():
-    out = run_trial(TrialConfig(_task("libero_goal_swap", "open_the_top_drawer_and_put_the_bowl_inside").name,
-                                planner="rules", segmenter="sim"))
+    out = run_trial(
+        TrialConfig(
+            _task("libero_goal_swap", "open_the_top_drawer_and_put_the_bowl_inside").name,
+            planner="rules",
+            segmenter="sim",
+        )
+    )
     assert out.success, out.reason

@@ -2,19 +2,17 @@
 
 from __future__ import annotations
 
-import dataclasses
-
 import mujoco
 import numpy as np
 import pytest
 
 pytest.importorskip("robosuite", reason="benchmark extras: make bench-deps")
 
-from spark_core.trial import TrialConfig, Verdict, run_trial  # noqa: E402
-from spark_core.control.trajectory import JointTrajectory  # noqa: E402
-from spark_core.perception.privileged import PrivilegedResolver  # noqa: E402
-from spark_core.sim.capbench_envs import make_env  # noqa: E402
-from spark_core.sim.tasks import SUITES, TASKS  # noqa: E402
+from spark_core.control.trajectory import JointTrajectory
+from spark_core.perception.privileged import PrivilegedResolver
+from spark_core.sim.capbench_envs import make_env
+from spark_core.sim.tasks import SUITES, TASKS
+from spark_core.trial import TrialConfig, Verdict, run_trial
 
 
 @pytest.fixture(scope="module")

@@ -7,7 +7,6 @@ from spark_core.control.panda import panda
 from spark_core.sim.objects import KINDS
 from spark_core.sim.scene import GRIPPER_CLEARANCE_M, ObjectRequest, build_scene
 from spark_core.sim.tasks import BUILTIN
-from spark_core.sim.world import MujocoWorld
 
 
 def test_object_library_has_labelled_described_objects():
@@ -28,7 +27,10 @@ def test_placement_is_seeded_and_collision_free():
     assert not np.array_equal(pa, np.array([o.position_m for o in c.objects.values()]))
     for i in range(5):
         for j in range(i):
-            assert np.linalg.norm(pa[i, :2] - pa[j, :2]) > 2 * a.objects["block 0"].spec.footprint_m + GRIPPER_CLEARANCE_M - 1e-9
+            assert (
+                np.linalg.norm(pa[i, :2] - pa[j, :2])
+                > 2 * a.objects["block 0"].spec.footprint_m + GRIPPER_CLEARANCE_M - 1e-9
+            )
 
 
 def test_impossible_placement_says_which_object():

@@ -7,13 +7,13 @@ import pytest
 
 pytest.importorskip("robosuite", reason="benchmark extras: make bench-deps")
 
-from spark_core.control.pose import Pose, top_down_rotation  # noqa: E402
-from spark_core.execution.primitives import PrimitiveLibrary  # noqa: E402
-from spark_core.execution.primitives.coverage import coverage_strokes  # noqa: E402
-from spark_core.grammar import PrimitiveCall  # noqa: E402
-from spark_core.perception import LabelNotFound  # noqa: E402
-from spark_core.perception.privileged import PrivilegedResolver  # noqa: E402
-from spark_core.sim.tasks import TASKS  # noqa: E402
+from spark_core.control.pose import Pose, top_down_rotation
+from spark_core.execution.primitives import PrimitiveLibrary
+from spark_core.execution.primitives.coverage import coverage_strokes
+from spark_core.grammar import PrimitiveCall
+from spark_core.perception import LabelNotFound
+from spark_core.perception.privileged import PrivilegedResolver
+from spark_core.sim.tasks import TASKS
 
 
 @pytest.fixture()
@@ -62,6 +62,10 @@ def test_the_episode_ends_for_good_near_a_joint_limit(wipe):
     world.referee(world)
     assert "joint came within 0.1 rad" in world.referee.ended
     world.reset()  # hold where the arm is now, then wipe: robosuite's episode is over, so nothing counts
-    lib.perform(PrimitiveCall("wipe_area", {"keypoint_label": "dirt", "max_passes": 1}),
-                {"dirt": resolver.resolve("dirt")}, "right", 180)
+    lib.perform(
+        PrimitiveCall("wipe_area", {"keypoint_label": "dirt", "max_passes": 1}),
+        {"dirt": resolver.resolve("dirt")},
+        "right",
+        180,
+    )
     assert world.referee.summary.startswith("0 of 100") and not TASKS["Wipe"].success(world)

@@ -15,7 +15,9 @@ from spark_core.trace.lerobot import ExportError, ExportFilter, export_lerobot
 from spark_core.trace.sink import StoreSink
 from spark_core.trial import TrialConfig, run_trial
 
-FAILING = "task: miss\ntree: {type: sequence, children: [{primitive: pick, params: {keypoint_label: purple giraffe}}]}\n"
+FAILING = (
+    "task: miss\ntree: {type: sequence, children: [{primitive: pick, params: {keypoint_label: purple giraffe}}]}\n"
+)
 
 
 @pytest.fixture(scope="module")
@@ -24,10 +26,13 @@ def recorded(tmp_path_factory):
     store = TraceStore(f"sqlite:///{root / 't.db'}")
     cfg = CaptureConfig(fps=10, width=128, height=128)
     sinks = [StoreSink(store, root / "art")]
-    ok = [run_trial(TrialConfig(t, segmenter="privileged-keypoints", seed=s, capture=cfg), sinks)
-          for t, s in (("lift_block", 0), ("stack_two", 1))]
-    bad = run_trial(TrialConfig("lift_block", plan_text=FAILING, segmenter="privileged-keypoints", seed=2, capture=cfg),
-                    sinks)
+    ok = [
+        run_trial(TrialConfig(t, segmenter="privileged-keypoints", seed=s, capture=cfg), sinks)
+        for t, s in (("lift_block", 0), ("stack_two", 1))
+    ]
+    bad = run_trial(
+        TrialConfig("lift_block", plan_text=FAILING, segmenter="privileged-keypoints", seed=2, capture=cfg), sinks
+    )
     run_trial(TrialConfig("lift_block", segmenter="privileged-keypoints", seed=3), sinks)  # not captured
     assert [o.success for o in ok] == [True, True] and bad.success is False
     return store, root
@@ -54,7 +59,11 @@ def test_export_reads_back_with_matching_features_frames_and_timestamps(recorded
             continue
         col = data.schema.field(name).type
         if feat["dtype"] == "float32" and feat["shape"] != [1]:
-            assert col.list_size == feat["shape"][0] and str(col.value_type) == "float" and len(feat["names"]) == col.list_size
+            assert (
+                col.list_size == feat["shape"][0]
+                and str(col.value_type) == "float"
+                and len(feat["names"]) == col.list_size
+            )
         elif feat["dtype"] == "string":
             assert str(col) == "string"
         else:
@@ -94,7 +103,9 @@ def test_stats_are_exact_on_one_episode_and_pooled_over_several(recorded, tmp_pa
     state = np.array(data.column("observation.state").to_pylist(), np.float64)
     assert np.allclose(stats["observation.state"]["mean"], state.mean(0), atol=1e-6)
     assert np.allclose(stats["observation.state"]["std"], state.std(0), atol=1e-6)
-    assert np.allclose(stats["observation.state"]["min"], state.min(0)) and stats["observation.state"]["count"] == [len(state)]
+    assert np.allclose(stats["observation.state"]["min"], state.min(0)) and stats["observation.state"]["count"] == [
+        len(state)
+    ]
     img = np.array(stats["observation.images.agentview"]["mean"])
     assert img.shape == (3, 1, 1) and np.all((img > 0) & (img < 1))
     export_lerobot(store, tmp_path / "all")
@@ -123,8 +134,14 @@ def test_frame_labels_line_up_with_the_trial_events(recorded, tmp_path):
                 spans[ev["node_path"]][1] = ev["t"]
         sl = slice(e["dataset_from_index"], e["dataset_to_index"])
         labelled = 0
-        for k, (path, prim, label, sub) in enumerate(zip(rows["spark.node_path"][sl], rows["spark.primitive"][sl],
-                                                          rows["spark.label"][sl], rows["subtask_index"][sl])):
+        for k, (path, prim, label, sub) in enumerate(
+            zip(
+                rows["spark.node_path"][sl],
+                rows["spark.primitive"][sl],
+                rows["spark.label"][sl],
+                rows["subtask_index"][sl],
+            )
+        ):
             t = npz["clock_s"][k]  # when the frame was taken, on the event bus's clock
             if path:
                 start, end = spans[path]
@@ -146,6 +163,10 @@ def test_nothing_to_export_says_why(recorded, tmp_path):
     with pytest.raises(ExportError, match="no trial matches"):
         export_lerobot(store, tmp_path / "x", ExportFilter(tasks=("open_drawer",)))
     with pytest.raises(ExportError, match="without capture"):
-        export_lerobot(store, tmp_path / "y", ExportFilter(trial_ids=tuple(store.trial_ids(tasks=("lift_block",), success=True)[-1:])))
+        export_lerobot(
+            store,
+            tmp_path / "y",
+            ExportFilter(trial_ids=tuple(store.trial_ids(tasks=("lift_block",), success=True)[-1:])),
+        )
     failed = export_lerobot(store, tmp_path / "z", ExportFilter(success_only=False))
     assert failed.episodes == 3

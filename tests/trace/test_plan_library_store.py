@@ -9,7 +9,9 @@ from spark_core.trace.plan_library import StorePlanLibrary
 def test_store_library_keeps_plans_and_retrieves_similar_ones(tmp_path):
     url = f"sqlite:///{tmp_path / 'lib.db'}"
     lib = StorePlanLibrary(TraceStore(url))
-    lib.add("stack the red block on the blue block", "task: stack\ntree: {primitive: wait}\n", "2 blocks", trial_id="t-1")
+    lib.add(
+        "stack the red block on the blue block", "task: stack\ntree: {primitive: wait}\n", "2 blocks", trial_id="t-1"
+    )
     lib.add("open the drawer", "task: drawer\ntree: {primitive: wait}\n")
     again = StorePlanLibrary(TraceStore(url))  # another process opening the same store
     assert [e["instruction"] for e in again.entries()] == ["stack the red block on the blue block", "open the drawer"]

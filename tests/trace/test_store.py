@@ -59,8 +59,14 @@ def test_a_physics_trial_is_recorded_completely(recorded):
 def test_queries_filter_sort_paginate_and_delete(tmp_path):
     store = TraceStore(f"sqlite:///{tmp_path / 't.db'}")
     for i in range(7):
-        store.create_trial(f"t{i}", task="stack_two" if i % 2 else "lift_block", instruction=f"job {i}",
-                           success=bool(i % 3), status="done", wall_time_s=float(i))
+        store.create_trial(
+            f"t{i}",
+            task="stack_two" if i % 2 else "lift_block",
+            instruction=f"job {i}",
+            success=bool(i % 3),
+            status="done",
+            wall_time_s=float(i),
+        )
     store.add_events("t1", [{"seq": 0, "t": 0.0, "node_path": "tree", "kind": "started", "detail": {}}])
     assert store.list_trials(task="stack_two")[0] == 3
     assert store.list_trials(success=False)[0] == 3

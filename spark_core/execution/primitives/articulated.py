@@ -11,7 +11,6 @@ from .base import Ctx, primitive
 from .gripper import grasp, open_gripper
 from .pick_place import grasp_object
 
-
 PULL_SPEED_M_S = 0.2
 
 
@@ -53,8 +52,9 @@ def _grasp_handle(ctx: Ctx, label_slot: str = "keypoint_label") -> tuple[ActionO
     # the handle, in free space, then the hand descends to the approach point.
     out = ActionOutcome.fail(f"no hand orientation reaches {kp.label!r}", FailureKind.KINEMATIC_LIMIT)
     for R in _handle_rotations(kp, n):
-        out = ctx.motion.move_to(Pose(at + 0.06 * n, R), what=f"approach to {kp.label!r}",
-                                 reconfigure_via=0.08 * n + [0.0, 0.0, 0.15])
+        out = ctx.motion.move_to(
+            Pose(at + 0.06 * n, R), what=f"approach to {kp.label!r}", reconfigure_via=0.08 * n + [0.0, 0.0, 0.15]
+        )
         if out.ok or out.failure is not FailureKind.KINEMATIC_LIMIT:
             break
     if not out.ok:
@@ -69,8 +69,15 @@ class _PullWatch:
     then gained under `eps_m` in the last `window` periods (a drawer on its end stop), and how far the hand had
     come when the handle was last pinched."""
 
-    def __init__(self, ctx: Ctx, start: np.ndarray, facing: np.ndarray, after_m: float = 0.05, window: int = 20,
-                 eps_m: float = 0.002):
+    def __init__(
+        self,
+        ctx: Ctx,
+        start: np.ndarray,
+        facing: np.ndarray,
+        after_m: float = 0.05,
+        window: int = 20,
+        eps_m: float = 0.002,
+    ):
         self.ctx, self.start, self.facing = ctx, start, facing
         self.after_m, self.window, self.eps_m = after_m, window, eps_m
         self.progress: list[float] = []
@@ -85,8 +92,9 @@ class _PullWatch:
         return p > self.after_m and len(self.progress) > w and p - self.progress[-1 - w] < self.eps_m
 
 
-def _pull_held(ctx: Ctx, distance: float, what: str, facing: np.ndarray, R: np.ndarray,
-               handle: Keypoint | None = None) -> ActionOutcome:
+def _pull_held(
+    ctx: Ctx, distance: float, what: str, facing: np.ndarray, R: np.ndarray, handle: Keypoint | None = None
+) -> ActionOutcome:
     """Pull along the handle's facing while holding, up to `distance` or the end stop. Success: the hand
     travelled at least 80 % of the distance and the handle came with it: seen again where the hand took it
     (when perception finds it there), else still pinched when the pull ended."""
@@ -105,17 +113,26 @@ def _pull_held(ctx: Ctx, distance: float, what: str, facing: np.ndarray, R: np.n
     if moved is None and not held:
         return ctx.fail(f"the {what} slipped out of the gripper while pulling")
     if moved is not None and moved < 0.8 * travelled:
-        return ctx.fail(f"the {what} came {moved * 100:.1f} cm of the hand's {travelled * 100:.1f} cm: it slipped "
-                        "in the fingers")
-    return ActionOutcome.success(0.0, travelled_m=round(travelled, 4), **({} if moved is None else {"moved_m": round(moved, 4)}))
+        return ctx.fail(
+            f"the {what} came {moved * 100:.1f} cm of the hand's {travelled * 100:.1f} cm: it slipped in the fingers"
+        )
+    return ActionOutcome.success(
+        0.0, travelled_m=round(travelled, 4), **({} if moved is None else {"moved_m": round(moved, 4)})
+    )
 
 
 def _handle_moved(ctx: Ctx, handle: Keypoint, facing: np.ndarray, travelled: float) -> float | None:
     """How far (m, along `facing`) perception now sees the handle from where it was; None when it is not seen
     where it was or where the hand took it (then it is another drawer's handle, or hidden)."""
     seen = ctx.observe(handle.label)
-    if seen is None or min(np.linalg.norm(seen.position_m - handle.position_m),
-                           np.linalg.norm(seen.position_m - handle.position_m - travelled * facing)) > 0.03:
+    if (
+        seen is None
+        or min(
+            np.linalg.norm(seen.position_m - handle.position_m),
+            np.linalg.norm(seen.position_m - handle.position_m - travelled * facing),
+        )
+        > 0.03
+    ):
         return None
     return float(np.dot(seen.position_m - handle.position_m, facing))
 
@@ -127,8 +144,14 @@ def pull(ctx: Ctx) -> ActionOutcome:
     out, facing, R = _grasp_handle(ctx)
     if not out.ok:
         return out
-    return _pull_held(ctx, ctx.args["distance"], "drawer" if "drawer" in ctx.args["keypoint_label"] else "handle",
-                      facing, R, ctx.kp("keypoint_label"))
+    return _pull_held(
+        ctx,
+        ctx.args["distance"],
+        "drawer" if "drawer" in ctx.args["keypoint_label"] else "handle",
+        facing,
+        R,
+        ctx.kp("keypoint_label"),
+    )
 
 
 @primitive("close_drawer")
@@ -146,19 +169,23 @@ def close_drawer(ctx: Ctx) -> ActionOutcome:
             break
     if not out.ok:
         return out
-    out = ctx.motion.move_line(Pose(at - 0.30 * n, R), speed_m_s=0.15,
-                               stop=ctx.sustained_contact(25.0, ticks=5), check=False)
+    out = ctx.motion.move_line(
+        Pose(at - 0.30 * n, R), speed_m_s=0.15, stop=ctx.sustained_contact(25.0, ticks=5), check=False
+    )
     ctx.motion.move_line(Pose(ctx.tcp.position_m + 0.08 * n, R), check=False)
     if not out.detail.get("stopped_early"):
-        return ctx.fail("pushed 30 cm without reaching the drawer's end stop: the drawer is not where expected",
-                        FailureKind.PERCEPTION)
+        return ctx.fail(
+            "pushed 30 cm without reaching the drawer's end stop: the drawer is not where expected",
+            FailureKind.PERCEPTION,
+        )
     return ActionOutcome.success(0.0)
 
 
 def _rotate_held(ctx: Ctx, angle_rad: float) -> ActionOutcome:
     tcp = ctx.tcp
-    out = ctx.motion.move_line(Pose(tcp.position_m, rot_z(angle_rad) @ tcp.rotation), speed_m_s=0.05, what="rotated grip",
-                               check=False)
+    out = ctx.motion.move_line(
+        Pose(tcp.position_m, rot_z(angle_rad) @ tcp.rotation), speed_m_s=0.05, what="rotated grip", check=False
+    )
     rel = tcp.rotation.T @ ctx.tcp.rotation  # measured on the TCP, not on a joint: any wrist layout
     turned = abs(float(np.arctan2(rel[1, 0], rel[0, 0])))
     if not ctx.holding():
@@ -198,7 +225,9 @@ def press(ctx: Ctx) -> ActionOutcome:
     out = ctx.motion.move_to(above, what=f"point above {kp.label!r}")
     if not out.ok:
         return out
-    out = ctx.motion.move_line(above.translated([0, 0, -0.12]), speed_m_s=0.04, stop=ctx.contact(ctx.args["force_n"]), check=False)
+    out = ctx.motion.move_line(
+        above.translated([0, 0, -0.12]), speed_m_s=0.04, stop=ctx.contact(ctx.args["force_n"]), check=False
+    )
     ctx.motion.move_line(ctx.tcp.translated([0, 0, 0.06]), check=False)
     if not out.detail.get("stopped_early"):
         return ctx.fail(f"no contact reached at {kp.label!r}", FailureKind.PERCEPTION)

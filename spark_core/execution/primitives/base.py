@@ -2,8 +2,9 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any, Callable, Mapping
+from typing import Any
 
 import numpy as np
 
@@ -13,7 +14,7 @@ from ..motion import ArmMotion
 from ..protocols import ActionOutcome, FailureKind, Resolver
 from ..world import World
 
-IMPLEMENTATIONS: dict[str, Callable[["Ctx"], ActionOutcome]] = {}
+IMPLEMENTATIONS: dict[str, Callable[[Ctx], ActionOutcome]] = {}
 TABLE_CLEARANCE_M = 0.012  # lowest TCP height above the table for a top-down grasp
 CONTACT_FORCE_N = 3.0
 
@@ -21,7 +22,7 @@ CONTACT_FORCE_N = 3.0
 def primitive(name: str):
     """Register the implementation of grammar primitive `name`."""
 
-    def deco(fn: Callable[["Ctx"], ActionOutcome]):
+    def deco(fn: Callable[[Ctx], ActionOutcome]):
         IMPLEMENTATIONS[name] = fn
         return fn
 
@@ -53,7 +54,7 @@ class Ctx:
     rng: np.random.Generator = field(default_factory=lambda: np.random.default_rng(0))
     peers: Mapping[str, tuple[ArmMotion, ArmMemory]] = field(default_factory=dict)  # every arm, for two-arm skills
 
-    def for_arm(self, arm: str) -> "Ctx":
+    def for_arm(self, arm: str) -> Ctx:
         """The same call seen from another arm (handoff, two-handed lift)."""
         if arm not in self.peers:
             raise KeyError(f"no arm {arm!r} on this embodiment (arms: {', '.join(self.peers) or self.arm})")
@@ -126,13 +127,18 @@ class Ctx:
         g = self.world.kinematics[self.arm].robot.gripper
         if g.mounted_tool:
             return True  # a tool fixed to the flange is always held
-        return self.world.gripper_width_m(self.arm) > g.closed_empty_width_m and bool(self.world.pinched_bodies(self.arm))
+        return self.world.gripper_width_m(self.arm) > g.closed_empty_width_m and bool(
+            self.world.pinched_bodies(self.arm)
+        )
 
     def no_fingers(self) -> ActionOutcome | None:
         """A failure for finger skills on an arm that carries a mounted tool, else None."""
         tool = self.world.kinematics[self.arm].robot.gripper.mounted_tool
-        return self.fail(f"arm {self.arm!r} carries a mounted {tool} and has no fingers to grasp or release with") \
-            if tool else None
+        return (
+            self.fail(f"arm {self.arm!r} carries a mounted {tool} and has no fingers to grasp or release with")
+            if tool
+            else None
+        )
 
     def contact(self, threshold_n: float = CONTACT_FORCE_N) -> Callable[[], bool]:
         return lambda: self.world.wrist_force_n(self.arm) > threshold_n

@@ -46,7 +46,7 @@ def both(*steps) -> list[ActionOutcome]:
     def run(i, fn):
         try:
             out[i] = fn()
-        except Exception as e:  # noqa: BLE001 - an arm's exception becomes that arm's failure
+        except Exception as e:
             out[i] = ActionOutcome.fail(f"{type(e).__name__}: {e}", FailureKind.CONTROL)
 
     threads = [threading.Thread(target=run, args=(i, fn), daemon=True) for i, fn in enumerate(steps)]
@@ -92,9 +92,12 @@ def handoff(ctx: Ctx) -> ActionOutcome:
     offset = float(giver.memory.grasp_offset_xy_hand_m[0])
     reach = abs(offset) + giver.memory.held_length_m / 2 - HANDOFF_END_MARGIN_M
     if reach < HANDOFF_MIN_GAP_M:
-        return giver.fail(f"only {100 * (reach + HANDOFF_END_MARGIN_M):.1f} cm of the {label!r} sticks out of the "
-                          f"{giver.arm} hand: the other hand needs {100 * (HANDOFF_MIN_GAP_M + HANDOFF_END_MARGIN_M):.1f} cm "
-                          "beside it (grasp it nearer an end)", FailureKind.PLANNER)
+        return giver.fail(
+            f"only {100 * (reach + HANDOFF_END_MARGIN_M):.1f} cm of the {label!r} sticks out of the "
+            f"{giver.arm} hand: the other hand needs {100 * (HANDOFF_MIN_GAP_M + HANDOFF_END_MARGIN_M):.1f} cm "
+            "beside it (grasp it nearer an end)",
+            FailureKind.PLANNER,
+        )
     gap = min(reach, HANDOFF_GAP_M)
     heading = float(np.arctan2(toward[1], toward[0])) + (np.pi if offset < 0 else 0.0)
     with cooperative(giver, receiver):
@@ -172,8 +175,16 @@ def _handles(kp: Keypoint) -> list[Keypoint]:
     out = []
     for s in (-1.0, 1.0):
         p = kp.position_m + s * axis * (half - 0.012)
-        out.append(replace(kp, label=f"{kp.label} handle", position_m=p, extent_m=np.array([0.024, 0.06, kp.extent_m[2]]),
-                           yaw_rad=axis_yaw, detail={}))
+        out.append(
+            replace(
+                kp,
+                label=f"{kp.label} handle",
+                position_m=p,
+                extent_m=np.array([0.024, 0.06, kp.extent_m[2]]),
+                yaw_rad=axis_yaw,
+                detail={},
+            )
+        )
     return out
 
 
@@ -197,8 +208,12 @@ def bimanual_lift(ctx: Ctx) -> ActionOutcome:
             return failed[0]
         z0 = kp.position_m[2]
         height = ctx.args["height"]
-        both(*(lambda c=c: c.motion.move_line(c.tcp.translated([0, 0, height]), speed_m_s=0.08, check=False)
-               for c in arms))
+        both(
+            *(
+                lambda c=c: c.motion.move_line(c.tcp.translated([0, 0, height]), speed_m_s=0.08, check=False)
+                for c in arms
+            )
+        )
     if not all(c.holding() for c in arms):
         return ctx.fail(f"the {kp.label!r} slipped from " + " and ".join(c.arm for c in arms if not c.holding()))
     now = ctx.observe(kp.label)

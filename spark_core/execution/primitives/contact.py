@@ -23,8 +23,9 @@ def _shove(ctx: Ctx, low: bool) -> ActionOutcome:
     yaw = wrap_grasp_yaw(np.arctan2(d[1], d[0]))  # closing axis across the push: both fingers side by side
     start = np.array([*(kp.position_m[:2] - d * (half + 0.035)), z])
     before = kp.position_m.copy()
-    out = ctx.motion.move_to([ctx.top_down(start + [0, 0, 0.1], yaw), ctx.top_down(start, yaw)],
-                             what=f"point behind {kp.label!r}")
+    out = ctx.motion.move_to(
+        [ctx.top_down(start + [0, 0, 0.1], yaw), ctx.top_down(start, yaw)], what=f"point behind {kp.label!r}"
+    )
     if not out.ok:
         return out
     end = start + np.array([*(d * dist), 0.0])
@@ -37,8 +38,10 @@ def _shove(ctx: Ctx, low: bool) -> ActionOutcome:
     if after is not None:
         moved = float(np.dot(after.position_m[:2] - before[:2], d))
         if after.position_m[2] > before[2] + 0.02:
-            return ctx.fail(f"{kp.label!r} was lifted or tipped ({100 * (after.position_m[2] - before[2]):.1f} cm up) "
-                            "instead of sliding")
+            return ctx.fail(
+                f"{kp.label!r} was lifted or tipped ({100 * (after.position_m[2] - before[2]):.1f} cm up) "
+                "instead of sliding"
+            )
         if moved < 0.5 * dist:
             return ctx.fail(f"{kp.label!r} moved {moved * 100:.1f} cm of {dist * 100:.0f} cm", FailureKind.CONTROL)
     return ActionOutcome.success(0.0)
@@ -147,8 +150,10 @@ def _pressed_path(ctx: Ctx, waypoints: list[np.ndarray], yaw: float, surface_z_m
     if not out.ok:
         return out
     if not out.detail.get("stopped_early"):
-        return ctx.fail(f"the tool never touched the surface under {label!r} (TCP at z={ctx.tcp.position_m[2]:.3f} m)",
-                        FailureKind.PERCEPTION)
+        return ctx.fail(
+            f"the tool never touched the surface under {label!r} (TCP at z={ctx.tcp.position_m[2]:.3f} m)",
+            FailureKind.PERCEPTION,
+        )
     z = ctx.tcp.position_m[2] - WIPE_PRESS_M
     touching, length = 0, 0.0
     for p in waypoints:
@@ -157,7 +162,9 @@ def _pressed_path(ctx: Ctx, waypoints: list[np.ndarray], yaw: float, surface_z_m
         touching += ctx.world.wrist_force_n(ctx.arm) > 0.5
     ctx.motion.move_line(ctx.tcp.translated([0, 0, 0.1]), check=False)
     if touching < 0.7 * len(waypoints):
-        return ctx.fail(f"the tool lost contact with the surface on {len(waypoints) - touching} of {len(waypoints)} strokes")
+        return ctx.fail(
+            f"the tool lost contact with the surface on {len(waypoints) - touching} of {len(waypoints)} strokes"
+        )
     return ActionOutcome.success(0.0, path_m=round(length, 3))
 
 

@@ -5,7 +5,9 @@ from __future__ import annotations
 import numpy as np
 
 
-def coverage_strokes(footprint_xy_m: np.ndarray, stripe_m: float, margin_m: float = 0.03) -> tuple[list[np.ndarray], float]:
+def coverage_strokes(
+    footprint_xy_m: np.ndarray, stripe_m: float, margin_m: float = 0.03
+) -> tuple[list[np.ndarray], float]:
     """Waypoints (xy, m) of a serpentine that passes a tool `stripe_m` wide (across the motion) over every point
     of the footprint, and the stroke direction (rad about world z).
 

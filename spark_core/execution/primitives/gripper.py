@@ -51,4 +51,6 @@ def grasp_perturb(ctx: Ctx) -> ActionOutcome:
     open_gripper(ctx)
     ang = ctx.rng.uniform(0, 2 * np.pi)
     d = ctx.args["offset"]
-    return ctx.motion.move_line(ctx.tcp.translated([d * np.cos(ang), d * np.sin(ang), 0.0]), what="perturbed grasp pose")
+    return ctx.motion.move_line(
+        ctx.tcp.translated([d * np.cos(ang), d * np.sin(ang), 0.0]), what="perturbed grasp pose"
+    )

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Mapping
+from collections.abc import Mapping
 
 import numpy as np
 
@@ -26,7 +26,9 @@ class PrimitiveLibrary:
         self.arms = tuple(world.arms)
         self.resolver = resolver
         self.rng = np.random.default_rng(seed)
-        self.motion = {a: ArmMotion(world, a, speed=speed, rng=np.random.default_rng(seed + i)) for i, a in enumerate(self.arms)}
+        self.motion = {
+            a: ArmMotion(world, a, speed=speed, rng=np.random.default_rng(seed + i)) for i, a in enumerate(self.arms)
+        }
         self.memory = {a: ArmMemory() for a in self.arms}
 
     def timeout_scale(self, arm: str | None) -> float:
@@ -38,15 +40,26 @@ class PrimitiveLibrary:
     def implemented() -> frozenset[str]:
         return frozenset(IMPLEMENTATIONS)
 
-    def perform(self, call: PrimitiveCall, keypoints: Mapping[str, Keypoint], arm: str, timeout_s: float) -> ActionOutcome:
+    def perform(
+        self, call: PrimitiveCall, keypoints: Mapping[str, Keypoint], arm: str, timeout_s: float
+    ) -> ActionOutcome:
         impl = IMPLEMENTATIONS.get(call.primitive)
         if impl is None:
             return ActionOutcome.fail(f"{call.primitive} is not implemented on this embodiment", FailureKind.PLANNER)
         t0 = self.world.sim_time_s
         peers = {a: (self.motion[a], self.memory[a]) for a in self.arms}
         own = arm if arm in self.motion else self.arms[0]  # "both" (two-arm skills): they address arms via peers
-        ctx = Ctx(self.world, own, self.motion[own], dict(call.args), keypoints, self.memory[own], self.resolver, self.rng,
-                  peers)
+        ctx = Ctx(
+            self.world,
+            own,
+            self.motion[own],
+            dict(call.args),
+            keypoints,
+            self.memory[own],
+            self.resolver,
+            self.rng,
+            peers,
+        )
         outcome = impl(ctx)
         outcome.sim_time_s = self.world.sim_time_s - t0
         return outcome

@@ -77,8 +77,13 @@ def wait(ctx: Ctx) -> ActionOutcome:
 
 @primitive("lower_until_contact")
 def lower_until_contact(ctx: Ctx) -> ActionOutcome:
-    out = ctx.motion.move_line(ctx.tcp.translated([0, 0, -ctx.args["max_distance"]]), speed_m_s=0.05,
-                               stop=ctx.contact(), what="lowest point", check=False)
+    out = ctx.motion.move_line(
+        ctx.tcp.translated([0, 0, -ctx.args["max_distance"]]),
+        speed_m_s=0.05,
+        stop=ctx.contact(),
+        what="lowest point",
+        check=False,
+    )
     if not out.detail.get("stopped_early"):
         return ctx.fail(f"no contact within {ctx.args['max_distance']:.2f} m")
     return out

@@ -26,8 +26,15 @@ def _seq(*steps) -> ActionOutcome:
     return ActionOutcome.success(0.0)
 
 
-def grasp_object(ctx: Ctx, kp: Keypoint, force: float = 50.0, strategy: str = "top_down",
-                 target_width: float | None = None, z: float | None = None, along_m: float = 0.0) -> ActionOutcome:
+def grasp_object(
+    ctx: Ctx,
+    kp: Keypoint,
+    force: float = 50.0,
+    strategy: str = "top_down",
+    target_width: float | None = None,
+    z: float | None = None,
+    along_m: float = 0.0,
+) -> ActionOutcome:
     """Approach from above (or from the robot's side), descend straight, close, and remember what is held.
     `along_m`: grasp that far from the centre along the object's long axis (a top-down grasp's hand x axis)."""
     open_gripper(ctx)
@@ -46,8 +53,10 @@ def grasp_object(ctx: Ctx, kp: Keypoint, force: float = 50.0, strategy: str = "t
             ctx.world.set_gripper(ctx.arm, RIM_PRESHAPE_M, 20.0, duration_s=0.1)
         pre = ctx.top_down([at[0], at[1], kp.top_z_m + APPROACH_M], yaw)
         pose = ctx.top_down([at[0], at[1], z], yaw)
-    out = _seq(lambda: ctx.motion.move_to(pre, what=f"approach above {kp.label!r}"),
-               lambda: ctx.motion.move_line(pose, speed_m_s=0.2, what=f"grasp pose of {kp.label!r}"))
+    out = _seq(
+        lambda: ctx.motion.move_to(pre, what=f"approach above {kp.label!r}"),
+        lambda: ctx.motion.move_line(pose, speed_m_s=0.2, what=f"grasp pose of {kp.label!r}"),
+    )
     if not out.ok:
         return out
     ctx.args = {**ctx.args, "force": force, "target_width": target_width}
@@ -118,8 +127,9 @@ def pick(ctx: Ctx) -> ActionOutcome:
     return pick_and_lift(ctx, ctx.kp("keypoint_label"), ctx.args["lift_height"])
 
 
-def put_down(ctx: Ctx, target: Keypoint, offset_xy=(0.0, 0.0), floor_z: float | None = None,
-             what: str = "target") -> ActionOutcome:
+def put_down(
+    ctx: Ctx, target: Keypoint, offset_xy=(0.0, 0.0), floor_z: float | None = None, what: str = "target"
+) -> ActionOutcome:
     """Carry the held object above `target`, descend until the wrist feels support, release, retract.
 
     The expected support height is the target's top (or `floor_z` inside a container). Descending well past
@@ -133,10 +143,13 @@ def put_down(ctx: Ctx, target: Keypoint, offset_xy=(0.0, 0.0), floor_z: float | 
     # the object's centre, not the hand, over the target (they differ for a rim grasp)
     held_offset = _rot2(_hand_yaw(ctx.top_down(ctx.tcp.position_m, yaw).rotation)) @ ctx.memory.grasp_offset_xy_hand_m
     xy = target.position_m[:2] + np.asarray(offset_xy, float) - held_offset
-    above = ctx.top_down([xy[0], xy[1], max(tcp_at_contact, target.top_z_m + ctx.memory.grasp_offset_z_m) + 0.06 + 0.02], yaw)
+    above = ctx.top_down(
+        [xy[0], xy[1], max(tcp_at_contact, target.top_z_m + ctx.memory.grasp_offset_z_m) + 0.06 + 0.02], yaw
+    )
     if ctx.tcp.position_m[2] < above.position_m[2] - 0.01:  # rise first: never drag the load low across the scene
-        ctx.motion.move_line(ctx.tcp.translated([0, 0, above.position_m[2] - ctx.tcp.position_m[2]]),
-                             what="carry height", check=False)
+        ctx.motion.move_line(
+            ctx.tcp.translated([0, 0, above.position_m[2] - ctx.tcp.position_m[2]]), what="carry height", check=False
+        )
     out = ctx.motion.move_to(above, what=f"point above the {what} {target.label!r}")
     if not out.ok:
         return out
@@ -146,13 +159,19 @@ def put_down(ctx: Ctx, target: Keypoint, offset_xy=(0.0, 0.0), floor_z: float | 
         open_gripper(ctx)
         ctx.memory.held_label = None
         ctx.motion.move_line(ctx.tcp.translated([0, 0, 0.08]), check=False)
-        return ctx.fail(f"no support felt at the {what} {target.label!r} (expected near z={support_z:.3f} m): "
-                        "it moved or is not there", FailureKind.PERCEPTION)
+        return ctx.fail(
+            f"no support felt at the {what} {target.label!r} (expected near z={support_z:.3f} m): "
+            "it moved or is not there",
+            FailureKind.PERCEPTION,
+        )
     felt_z = float(ctx.tcp.position_m[2])
     if felt_z < tcp_at_contact - SUPPORT_TOL_M:  # support much lower than the target's top: the target is gone
         ctx.motion.move_line(ctx.tcp.translated([0, 0, 0.08]), check=False)  # keep holding: a retry re-detects
-        return ctx.fail(f"support felt {100 * (tcp_at_contact - felt_z):.1f} cm below the top of the {what} "
-                        f"{target.label!r}: it moved or is not there", FailureKind.PERCEPTION)
+        return ctx.fail(
+            f"support felt {100 * (tcp_at_contact - felt_z):.1f} cm below the top of the {what} "
+            f"{target.label!r}: it moved or is not there",
+            FailureKind.PERCEPTION,
+        )
     open_gripper(ctx)
     ctx.memory.held_label = None
     ctx.motion.move_line(ctx.tcp.translated([0, 0, 0.08]), what="retreat", check=False)
@@ -204,8 +223,13 @@ def insert(ctx: Ctx) -> ActionOutcome:
     if not out.ok:
         return out
     goal_z = hole.top_z_m - ctx.args["depth"] + off
-    out = ctx.motion.move_line(ctx.top_down([hole.position_m[0], hole.position_m[1], goal_z], yaw), speed_m_s=0.04,
-                               stop=ctx.contact(8.0), what="insertion depth", check=False)
+    out = ctx.motion.move_line(
+        ctx.top_down([hole.position_m[0], hole.position_m[1], goal_z], yaw),
+        speed_m_s=0.04,
+        stop=ctx.contact(8.0),
+        what="insertion depth",
+        check=False,
+    )
     reached = ctx.tcp.position_m[2] <= goal_z + 0.01
     open_gripper(ctx)
     ctx.memory.held_label = None
@@ -255,20 +279,31 @@ def place_over(ctx: Ctx) -> ActionOutcome:
         if np.linalg.norm(gap) < 0.002:
             break
         xy = xy + gap
-        ctx.motion.move_line(ctx.top_down([xy[0], xy[1], above.position_m[2]], yaw), speed_m_s=0.05,
-                             what="centre over the peg", check=False)
+        ctx.motion.move_line(
+            ctx.top_down([xy[0], xy[1], above.position_m[2]], yaw),
+            speed_m_s=0.05,
+            what="centre over the peg",
+            check=False,
+        )
     base_z = max(peg.position_m[2] - peg.extent_m[2] / 2, 0.0)  # a peg may be sunk into the table (z = 0)
     goal_z = base_z + tcp_above_bottom + 0.004
-    ctx.motion.move_line(ctx.top_down([xy[0], xy[1], goal_z], yaw), speed_m_s=0.05, stop=ctx.contact(10.0),
-                         what=f"base of {peg.label!r}", check=False)
+    ctx.motion.move_line(
+        ctx.top_down([xy[0], xy[1], goal_z], yaw),
+        speed_m_s=0.05,
+        stop=ctx.contact(10.0),
+        what=f"base of {peg.label!r}",
+        check=False,
+    )
     bottom_z = float(ctx.tcp.position_m[2] - tcp_above_bottom)  # where the object's underside got to
     open_gripper(ctx)
     ctx.memory.held_label = None
     ctx.motion.move_line(ctx.tcp.translated([0, 0, 0.10]), what="retreat", check=False)
     through_m = peg.top_z_m - bottom_z
     if through_m < min(0.03, 0.5 * (peg.top_z_m - base_z)):
-        return ctx.fail(f"{obj.label!r} jammed: its underside stopped {100 * (bottom_z - base_z):.1f} cm above the "
-                        f"base of {peg.label!r}, {100 * max(through_m, 0.0):.1f} cm down the peg")
+        return ctx.fail(
+            f"{obj.label!r} jammed: its underside stopped {100 * (bottom_z - base_z):.1f} cm above the "
+            f"base of {peg.label!r}, {100 * max(through_m, 0.0):.1f} cm down the peg"
+        )
     if ctx.world.pinched_bodies(ctx.arm):
         return ctx.fail("object stuck to the gripper after release")
     return ActionOutcome.success(0.0, turned_rad=round(applied, 4))

@@ -51,9 +51,12 @@ def pour(ctx: Ctx) -> ActionOutcome:
         ctx.world.settle(1.0, ctx.arm)
         ctx.motion.move_line(upright, speed_m_s=0.05, check=False)
         if tilt_error > 0.3:
-            return ctx.fail(f"wrist reached only {np.degrees(angle - tilt_error):.0f} of {np.degrees(angle):.0f} deg of tilt")
+            return ctx.fail(
+                f"wrist reached only {np.degrees(angle - tilt_error):.0f} of {np.degrees(angle):.0f} deg of tilt"
+            )
         if not ctx.holding():
             return ctx.fail("dropped the container while pouring")
         return ActionOutcome.success(0.0, tilt_sign=sign)
-    return ActionOutcome.fail(f"no reachable pouring pose over {target.label!r} in either tilt direction",
-                              FailureKind.KINEMATIC_LIMIT)
+    return ActionOutcome.fail(
+        f"no reachable pouring pose over {target.label!r} in either tilt direction", FailureKind.KINEMATIC_LIMIT
+    )

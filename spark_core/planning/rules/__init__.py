@@ -3,5 +3,4 @@
 from .parse import Clause, ParseError, parse_instruction
 from .planner import RulesPlanner
 
-
 __all__ = ["Clause", "ParseError", "RulesPlanner", "parse_instruction"]

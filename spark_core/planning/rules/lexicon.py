@@ -24,12 +24,35 @@ WITH = ("with", "using")
 FROM = ("from", "out of")
 DIRECTIONS: dict[str, tuple[str, ...]] = {
     "forward": ("forward", "forwards", "away from the robot", "away from you", "ahead", "further away", "to the back"),
-    "backward": ("backward", "backwards", "toward the robot", "towards the robot", "toward you", "towards you", "closer"),
+    "backward": (
+        "backward",
+        "backwards",
+        "toward the robot",
+        "towards the robot",
+        "toward you",
+        "towards you",
+        "closer",
+    ),
     "left": ("to the left", "left", "leftward", "leftwards"),
     "right": ("to the right", "right", "rightward", "rightwards"),
 }
 DETERMINERS = ("the", "a", "an", "this", "that", "these", "those", "some", "all")
 PRONOUNS = ("it", "them", "there")
 # Words that carry no action. ("then" is not one: it separates clauses.)
-FILLERS = ("please", "carefully", "gently", "slowly", "now", "also", "first", "finally", "next",
-           "can you", "could you", "would you", "i want you to", "go ahead and", "robot,")
+FILLERS = (
+    "please",
+    "carefully",
+    "gently",
+    "slowly",
+    "now",
+    "also",
+    "first",
+    "finally",
+    "next",
+    "can you",
+    "could you",
+    "would you",
+    "i want you to",
+    "go ahead and",
+    "robot,",
+)

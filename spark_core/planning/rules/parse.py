@@ -60,7 +60,7 @@ def _split_on(phrase: str, preps: tuple[str, ...]) -> tuple[str, str] | None:
     for p in sorted(preps, key=len, reverse=True):
         m = re.search(rf"(^|\s){re.escape(p)}(\s|$)", phrase)
         if m:
-            return phrase[: m.start()].strip(), phrase[m.end():].strip()
+            return phrase[: m.start()].strip(), phrase[m.end() :].strip()
     return None
 
 
@@ -69,7 +69,7 @@ def _direction(phrase: str) -> tuple[str | None, str]:
         for f in sorted(forms, key=len, reverse=True):
             m = re.search(rf"(^|\s){re.escape(f)}(\s|$)", phrase)
             if m:
-                return d, (phrase[: m.start()] + " " + phrase[m.end():]).strip()
+                return d, (phrase[: m.start()] + " " + phrase[m.end() :]).strip()
     return None, phrase
 
 
@@ -78,7 +78,7 @@ def _distance(phrase: str) -> tuple[float | None, str]:
     if not m:
         return None, phrase
     value = float(m.group(1)) * {"cm": 0.01, "centimeters": 0.01, "centimetres": 0.01, "mm": 0.001}.get(m.group(2), 1.0)
-    return value, (phrase[: m.start()] + phrase[m.end():]).replace(" by ", " ").strip()
+    return value, (phrase[: m.start()] + phrase[m.end() :]).replace(" by ", " ").strip()
 
 
 def _match_verb(clause: str) -> tuple[str, str] | None:
@@ -88,15 +88,18 @@ def _match_verb(clause: str) -> tuple[str, str] | None:
     best = None
     for action, forms in VERBS.items():
         for f in forms:
-            if clause == f or clause.startswith(f + " "):
-                if best is None or len(f) > len(best[2]):
-                    best = (action, clause[len(f):].strip(), f)
+            if (clause == f or clause.startswith(f + " ")) and (best is None or len(f) > len(best[2])):
+                best = (action, clause[len(f) :].strip(), f)
     return (best[0], best[1]) if best else None
 
 
 def split_clauses(text: str) -> list[str]:
-    parts = re.split(r"\s*,\s*(?:and\s+)?(?:then\s+)?|\s+(?:and\s+)?then\s+|\s+and\s+(?=(?:" + "|".join(
-        re.escape(f) for forms in VERBS.values() for f in forms) + r")\b)|\s+after that\s+|\s+before\s+", text)
+    parts = re.split(
+        r"\s*,\s*(?:and\s+)?(?:then\s+)?|\s+(?:and\s+)?then\s+|\s+and\s+(?=(?:"
+        + "|".join(re.escape(f) for forms in VERBS.values() for f in forms)
+        + r")\b)|\s+after that\s+|\s+before\s+",
+        text,
+    )
     return [p.strip() for p in parts if p and p.strip()]
 
 
@@ -110,8 +113,11 @@ def parse_instruction(instruction: str) -> list[Clause]:
     expanded = []
     for part in raw:
         # ("between the plate and the ramekin" is one phrase)
-        expanded += ([p for p in re.split(r"\s+and\s+(?=(?:the|a|an)\s)", part) if p.strip()]
-                     if " between " not in f" {part} " else [part])
+        expanded += (
+            [p for p in re.split(r"\s+and\s+(?=(?:the|a|an)\s)", part) if p.strip()]
+            if " between " not in f" {part} "
+            else [part]
+        )
     previous: str | None = None
     for part in expanded:
         verb = _match_verb(part)
@@ -137,7 +143,7 @@ def _clause(action: str, rest: str, text: str) -> Clause:
     direction, rest = _direction(rest)
     if action == "scrub":
         split = _split_on(rest, WITH)
-        obj, tool = (split if split else (rest, None))
+        obj, tool = split if split else (rest, None)
         off = _split_on(obj, ("off of", "off", "from"))
         obj = re.sub(r"\s+clean$", "", off[0] if off else obj)  # "wipe the dirt off the table": the dirt goes
         return Clause(action, target=noun_phrase(obj), tool=noun_phrase(tool) if tool else None, text=text)
@@ -145,23 +151,42 @@ def _clause(action: str, rest: str, text: str) -> Clause:
         into = _split_on(rest, IN) or _split_on(rest, ON)
         what, target = into if into else (rest, None)
         src = _split_on(what, FROM)
-        obj, source = (src if src else (what, None))
+        obj, source = src if src else (what, None)
         source = noun_phrase(source) if source else noun_phrase(obj)
-        return Clause(action, obj=noun_phrase(obj) if obj else None, target=noun_phrase(target) if target else None,
-                      source=source, text=text)
+        return Clause(
+            action,
+            obj=noun_phrase(obj) if obj else None,
+            target=noun_phrase(target) if target else None,
+            source=source,
+            text=text,
+        )
     if action == "pick":  # "pick the bowl on the stove": where it is picks out which bowl; keep it in the phrase
         return Clause(action, obj=object_phrase(rest) or None, direction=direction, distance_m=distance, text=text)
     for relation, preps in (("in", IN), ("on", ON)):
         split = _split_on(rest, preps)
         if split:
             obj, target = split
-            return Clause(action, obj=noun_phrase(obj) or None, target=noun_phrase(target) or None, relation=relation,
-                          direction=direction, distance_m=distance, text=text)
+            return Clause(
+                action,
+                obj=noun_phrase(obj) or None,
+                target=noun_phrase(target) or None,
+                relation=relation,
+                direction=direction,
+                distance_m=distance,
+                text=text,
+            )
     split = _split_on(rest, ("to the front of", "next to", "to", "toward", "towards", "beside"))
     if split and action in ("put", "push"):
         obj, target = split
-        return Clause(action, obj=noun_phrase(obj), target=noun_phrase(target), relation="near", direction=direction,
-                      distance_m=distance, text=text)
+        return Clause(
+            action,
+            obj=noun_phrase(obj),
+            target=noun_phrase(target),
+            relation="near",
+            direction=direction,
+            distance_m=distance,
+            text=text,
+        )
     return Clause(action, obj=noun_phrase(rest) or None, direction=direction, distance_m=distance, text=text)
 
 

@@ -43,17 +43,30 @@ class RulesPlanner:
             children = _two_arm_branches(children, request) or children
             data = {"task": request.instruction.strip(), "tree": {"type": "sequence", "children": children}}
             plan = check_plan(data)
-            return PlanResult(self.name, to_yaml(plan), plan, latency_s=time.perf_counter() - t0,
-                              detail={"understood": understood})
+            return PlanResult(
+                self.name, to_yaml(plan), plan, latency_s=time.perf_counter() - t0, detail={"understood": understood}
+            )
         except ParseError as e:
-            return PlanResult(self.name, "", None, error=f"did not understand the instruction: {e}",
-                              latency_s=time.perf_counter() - t0)
+            return PlanResult(
+                self.name,
+                "",
+                None,
+                error=f"did not understand the instruction: {e}",
+                latency_s=time.perf_counter() - t0,
+            )
         except CannotPlan as e:
-            return PlanResult(self.name, "", None, error=str(e), latency_s=time.perf_counter() - t0,
-                              detail={"understood": understood})
+            return PlanResult(
+                self.name, "", None, error=str(e), latency_s=time.perf_counter() - t0, detail={"understood": understood}
+            )
         except PlanError as e:  # a composition bug: report it rather than crash
-            return PlanResult(self.name, "", None, issues=e.issues, error="the composed plan did not type-check",
-                              latency_s=time.perf_counter() - t0)
+            return PlanResult(
+                self.name,
+                "",
+                None,
+                issues=e.issues,
+                error="the composed plan did not type-check",
+                latency_s=time.perf_counter() - t0,
+            )
 
     # -- composition -------------------------------------------------------------------------------------------
     def _compose(self, clauses: list[Clause], request: PlanRequest) -> list[dict]:
@@ -71,7 +84,7 @@ class RulesPlanner:
         last_object: str | None = None
         last_container: str | None = None
         held: str | None = None  # what the previous step left in the hand (a bare "pick X")
-        for i, c in enumerate(clauses):
+        for _i, c in enumerate(clauses):
             obj = last_object if is_pronoun(c.obj) else c.obj
             target = (last_container or last_object) if is_pronoun(c.target) else c.target
             if target is None and c.relation == "in" and c.text.rstrip().endswith(("inside", "in", "into")):
@@ -86,7 +99,11 @@ class RulesPlanner:
                     raise CannotPlan(f"{c.text!r}: I can put things on or in something, not next to it")
                 pick = [] if held == o else [_prim("pick", keypoint_label=o)]  # "pick X and place it": X is in hand
                 if c.action == "stack":
-                    out += [_prim("place", target_label=t)] if held == o else [_prim("stack", keypoint_label=o, target_label=t)]
+                    out += (
+                        [_prim("place", target_label=t)]
+                        if held == o
+                        else [_prim("stack", keypoint_label=o, target_label=t)]
+                    )
                 elif c.relation == "in":
                     out += pick + [_prim("place_in", container_label=t)]
                 else:
@@ -97,10 +114,14 @@ class RulesPlanner:
                 out.append(_prim("push_object", keypoint_label=o, direction=direction, distance=distance))
             elif c.action in ("open", "close"):
                 o = need(obj, f"thing to {c.action}", c)  # the object itself must be seen, not only a handle-like part
-                handle = next((h for h in (f"{o} handle", "drawer handle" if "drawer" in o else "") if h in scene), None)
+                handle = next(
+                    (h for h in (f"{o} handle", "drawer handle" if "drawer" in o else "") if h in scene), None
+                )
                 if handle is None:
-                    raise CannotPlan(f"cannot {c.action} {o!r}: perception found no handle on it (looked for {o + ' handle'!r}; "
-                                     f"found: {seen})")
+                    raise CannotPlan(
+                        f"cannot {c.action} {o!r}: perception found no handle on it (looked for {o + ' handle'!r}; "
+                        f"found: {seen})"
+                    )
                 if c.action == "open":
                     # fully: into the end stop if it comes first (LIBERO's drawers count as open past 14 of 16 cm)
                     out.append(_prim("open_drawer", keypoint_label=handle, distance=0.18))
@@ -111,14 +132,19 @@ class RulesPlanner:
                 obj = need(obj, "appliance", c)
                 knob = obj if obj.endswith("knob") else f"{obj} knob"
                 if knob not in scene:
-                    raise CannotPlan(f"cannot turn {obj!r} {c.action[5:]}: perception did not find it with a knob "
-                                     f"(looked for {obj!r} and {knob!r}; found: {seen})")
+                    raise CannotPlan(
+                        f"cannot turn {obj!r} {c.action[5:]}: perception did not find it with a knob "
+                        f"(looked for {obj!r} and {knob!r}; found: {seen})"
+                    )
                 out.append(_prim("turn_knob", keypoint_label=knob, angle=90.0 if c.action == "turn_on" else -90.0))
             elif c.action == "pour":
                 src = need(c.source or obj, "container to pour from", c)
                 dst = need(target, "container to pour into", c)
-                out += [_prim("grasp_se3", keypoint_label=src, strategy="side", force=40.0), _prim("lift", height=0.12),
-                        _prim("pour", target_label=dst, pour_angle=POUR_ANGLE_RAD)]
+                out += [
+                    _prim("grasp_se3", keypoint_label=src, strategy="side", force=40.0),
+                    _prim("lift", height=0.12),
+                    _prim("pour", target_label=dst, pour_angle=POUR_ANGLE_RAD),
+                ]
             elif c.action == "scrub":
                 t = need(target or obj, "surface to scrub", c)
                 if not c.tool and request.tools:  # an arm carries a wiping pad: wipe the region clean with it
@@ -127,8 +153,12 @@ class RulesPlanner:
                     raise CannotPlan(f"{c.text!r}: scrub with what? say e.g. 'with the sponge'")
                 else:
                     tool = need(c.tool, "tool", c)
-                    out += [_prim("pick", keypoint_label=tool), _prim("constrained_scrub", target_label=t),
-                            _prim("move_relative", dz=0.10), _prim("release")]
+                    out += [
+                        _prim("pick", keypoint_label=tool),
+                        _prim("constrained_scrub", target_label=t),
+                        _prim("move_relative", dz=0.10),
+                        _prim("release"),
+                    ]
             held = obj if c.action == "pick" else None
             last_object = obj or last_object
         if clauses and clauses[-1].action in ("open", "close", "turn_on", "turn_off"):
@@ -162,7 +192,7 @@ def _two_arm_branches(steps: list[dict], request: PlanRequest) -> list[dict] | N
     get them all."""
     if len(request.arms) != 2 or len(steps) < 4 or len(steps) % 2:
         return None
-    pairs = [steps[i:i + 2] for i in range(0, len(steps), 2)]
+    pairs = [steps[i : i + 2] for i in range(0, len(steps), 2)]
     if not all(p[0]["primitive"] == "pick" and p[1]["primitive"] in CARRY_ENDS for p in pairs):
         return None
     scene = request.scene.keypoints
@@ -172,8 +202,10 @@ def _two_arm_branches(steps: list[dict], request: PlanRequest) -> list[dict] | N
         labels = [pick["params"]["keypoint_label"], next(iter(put["params"].values()))]
         if not all(lb in scene for lb in labels):
             return None
-        reach = {a: max(float(np.linalg.norm(scene[lb].position_m[:2] - np.asarray(request.arms[a]))) for lb in labels)
-                 for a in arms}
+        reach = {
+            a: max(float(np.linalg.norm(scene[lb].position_m[:2] - np.asarray(request.arms[a]))) for lb in labels)
+            for a in arms
+        }
         arm = min(arms, key=reach.get)
         branches[arm] += [{"primitive": "pick_with_arm", "params": dict(pick["params"])}, put]
     if not all(branches.values()):

@@ -6,8 +6,17 @@ from .capbench import SUITE as CAPBENCH
 from .liberopro import SUITE as LIBEROPRO
 from .spec import TaskSpec
 
-TASKS: dict[str, TaskSpec] = {**BUILTIN, **BIMANUAL, **CAPBENCH, **LIBEROPRO}  # every task by name (console, replay, export)
-SUITES: dict[str, dict[str, TaskSpec]] = {"builtin": BUILTIN, "bimanual": BIMANUAL, "capbench": CAPBENCH,
-                                          "liberopro": LIBEROPRO}
+TASKS: dict[str, TaskSpec] = {
+    **BUILTIN,
+    **BIMANUAL,
+    **CAPBENCH,
+    **LIBEROPRO,
+}  # every task by name (console, replay, export)
+SUITES: dict[str, dict[str, TaskSpec]] = {
+    "builtin": BUILTIN,
+    "bimanual": BIMANUAL,
+    "capbench": CAPBENCH,
+    "liberopro": LIBEROPRO,
+}
 
 __all__ = ["BIMANUAL", "BUILTIN", "CAPBENCH", "LIBEROPRO", "SUITES", "TASKS", "TaskSpec"]

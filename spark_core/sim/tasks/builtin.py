@@ -28,7 +28,9 @@ def on_top(w: MujocoWorld, obj: str, support: str, xy_tol: float) -> bool:
 
 def inside(w: MujocoWorld, obj: str, container: str, margin: float = 0.0) -> bool:
     p, (lo, hi) = _pos(w, obj), w.body_aabb(container)
-    return bool(np.all(p[:2] > lo[:2] + margin) and np.all(p[:2] < hi[:2] - margin) and p[2] < hi[2] and _released(w, obj))
+    return bool(
+        np.all(p[:2] > lo[:2] + margin) and np.all(p[:2] < hi[:2] - margin) and p[2] < hi[2] and _released(w, obj)
+    )
 
 
 def _lifted(w):
@@ -84,49 +86,129 @@ def _scrubbed(w):
 CABINET = O("cabinet", "cabinet", "brown", (0.74, 0.78), (0.18, 0.26))
 STOVE = O("stove", "stove", "grey", (0.56, 0.62), (-0.1, 0.1))
 
-SUITE: dict[str, TaskSpec] = {t.name: t for t in [
-    TaskSpec("lift_block", "pick up the red block", (O("red block", "block", "red", **FREE), O("blue block", "block", "blue", **FREE)),
-             _lifted, "red block bottom > 5 cm above the table and held"),
-    TaskSpec("block_on_plate", "put the red block on the plate",
-             (O("red block", "block", "red", **FREE), O("plate", "plate", "white", **FREE)),
-             lambda w: on_top(w, "red block", "plate", 0.07), "red block resting on the plate, within 7 cm of its centre, released"),
-    TaskSpec("block_in_bowl", "put the red block in the bowl",
-             (O("red block", "block", "red", **FREE), O("bowl", "bowl", "white", **FREE)),
-             lambda w: inside(w, "red block", "bowl", 0.01), "red block inside the bowl's footprint, below its rim, released"),
-    TaskSpec("block_in_basket", "put the green block in the basket",
-             (O("green block", "block", "green", **FREE), O("basket", "basket", "brown", **FREE)),
-             lambda w: inside(w, "green block", "basket", 0.01), "green block inside the basket, released"),
-    TaskSpec("stack_two", "stack the red block on the blue block",
-             (O("red block", "block", "red", **FREE), O("blue block", "block", "blue", **FREE)),
-             lambda w: on_top(w, "red block", "blue block", 0.02), "red block on the blue block (xy < 2 cm), released"),
-    TaskSpec("stack_three", "stack the green block on the blue block, then the red block on the green block",
-             (O("red block", "block", "red", **FREE), O("green block", "block", "green", **FREE), O("blue block", "block", "blue", **FREE)),
-             lambda w: on_top(w, "green block", "blue block", 0.02) and on_top(w, "red block", "green block", 0.02),
-             "green on blue and red on green (xy < 2 cm each), released"),
-    TaskSpec("push_to_zone", "push the red block forward into the green area",
-             (O("red block", "block", "red", x=(0.38, 0.45), y=(-0.15, 0.15)),
-              O("green area", "zone", "green", x=(0.17, 0.19), y=(-0.02, 0.02), near="red block")),
-             lambda w: inside(w, "red block", "green area"), "red block centre inside the green square"),
-    TaskSpec("open_drawer", "open the drawer of the cabinet", (CABINET, O("red block", "block", "red", x=(0.38, 0.55), y=(-0.25, 0.0))),
-             lambda w: w.joint_value("cabinet/drawer_slide") > 0.10, "drawer slide > 10 cm"),
-    TaskSpec("close_drawer", "close the drawer of the cabinet", (CABINET, O("red block", "block", "red", x=(0.38, 0.55), y=(-0.25, 0.0))),
-             lambda w: w.joint_value("cabinet/drawer_slide") < 0.02, "drawer slide < 2 cm", setup=_open_drawer),
-    TaskSpec("block_in_drawer", "open the drawer and put the red block inside it",
-             (CABINET, O("red block", "block", "red", x=(0.38, 0.55), y=(-0.25, 0.0))),
-             lambda w: inside(w, "red block", "cabinet/drawer"), "red block inside the drawer's footprint, released",
-             max_sim_s=80.0),
-    TaskSpec("turn_on_stove", "turn on the stove", (STOVE, O("red block", "block", "red", x=(0.38, 0.5), y=(-0.3, 0.3))),
-             lambda w: w.joint_value("stove/knob_hinge") > np.radians(60), "knob turned > 60 deg"),
-    TaskSpec("pour_beads", "pour the beads from the mug into the bowl",
-             (O("mug", "mug", "red", x=(0.42, 0.5), y=(-0.2, -0.05)), O("bowl", "bowl", "white", x=(0.45, 0.6), y=(0.08, 0.25)),
-              *[O(f"bead {k}", "ball", "yellow", x=(0.0, 0.0), y=(0.0, 0.0), z=0.02 + 0.016 * k, near="mug") for k in range(BEADS)]),
-             _poured, "at least 3 of 5 beads inside the bowl", setup=_fill_mug),
-    TaskSpec("scrub_plate", "scrub the plate with the sponge",
-             (O("sponge", "sponge", "yellow", **FREE), O("plate", "plate", "white", **FREE)),
-             _scrubbed, f"sponge touched >= {_Coverage.NEEDED} distinct 2 cm cells of the plate", setup=_scrub_setup),
-    TaskSpec("sort_two", "put the red block in the green tray and the blue block in the yellow tray",
-             (O("red block", "block", "red", x=(0.4, 0.55), y=(-0.1, 0.1)), O("blue block", "block", "blue", x=(0.4, 0.55), y=(-0.1, 0.1)),
-              O("green tray", "tray", "green", x=(0.45, 0.55), y=(0.3, 0.34)), O("yellow tray", "tray", "yellow", x=(0.45, 0.55), y=(-0.34, -0.3))),
-             lambda w: inside(w, "red block", "green tray") and inside(w, "blue block", "yellow tray"),
-             "red block in the green tray and blue block in the yellow tray, released"),
-]}
+SUITE: dict[str, TaskSpec] = {
+    t.name: t
+    for t in [
+        TaskSpec(
+            "lift_block",
+            "pick up the red block",
+            (O("red block", "block", "red", **FREE), O("blue block", "block", "blue", **FREE)),
+            _lifted,
+            "red block bottom > 5 cm above the table and held",
+        ),
+        TaskSpec(
+            "block_on_plate",
+            "put the red block on the plate",
+            (O("red block", "block", "red", **FREE), O("plate", "plate", "white", **FREE)),
+            lambda w: on_top(w, "red block", "plate", 0.07),
+            "red block resting on the plate, within 7 cm of its centre, released",
+        ),
+        TaskSpec(
+            "block_in_bowl",
+            "put the red block in the bowl",
+            (O("red block", "block", "red", **FREE), O("bowl", "bowl", "white", **FREE)),
+            lambda w: inside(w, "red block", "bowl", 0.01),
+            "red block inside the bowl's footprint, below its rim, released",
+        ),
+        TaskSpec(
+            "block_in_basket",
+            "put the green block in the basket",
+            (O("green block", "block", "green", **FREE), O("basket", "basket", "brown", **FREE)),
+            lambda w: inside(w, "green block", "basket", 0.01),
+            "green block inside the basket, released",
+        ),
+        TaskSpec(
+            "stack_two",
+            "stack the red block on the blue block",
+            (O("red block", "block", "red", **FREE), O("blue block", "block", "blue", **FREE)),
+            lambda w: on_top(w, "red block", "blue block", 0.02),
+            "red block on the blue block (xy < 2 cm), released",
+        ),
+        TaskSpec(
+            "stack_three",
+            "stack the green block on the blue block, then the red block on the green block",
+            (
+                O("red block", "block", "red", **FREE),
+                O("green block", "block", "green", **FREE),
+                O("blue block", "block", "blue", **FREE),
+            ),
+            lambda w: on_top(w, "green block", "blue block", 0.02) and on_top(w, "red block", "green block", 0.02),
+            "green on blue and red on green (xy < 2 cm each), released",
+        ),
+        TaskSpec(
+            "push_to_zone",
+            "push the red block forward into the green area",
+            (
+                O("red block", "block", "red", x=(0.38, 0.45), y=(-0.15, 0.15)),
+                O("green area", "zone", "green", x=(0.17, 0.19), y=(-0.02, 0.02), near="red block"),
+            ),
+            lambda w: inside(w, "red block", "green area"),
+            "red block centre inside the green square",
+        ),
+        TaskSpec(
+            "open_drawer",
+            "open the drawer of the cabinet",
+            (CABINET, O("red block", "block", "red", x=(0.38, 0.55), y=(-0.25, 0.0))),
+            lambda w: w.joint_value("cabinet/drawer_slide") > 0.10,
+            "drawer slide > 10 cm",
+        ),
+        TaskSpec(
+            "close_drawer",
+            "close the drawer of the cabinet",
+            (CABINET, O("red block", "block", "red", x=(0.38, 0.55), y=(-0.25, 0.0))),
+            lambda w: w.joint_value("cabinet/drawer_slide") < 0.02,
+            "drawer slide < 2 cm",
+            setup=_open_drawer,
+        ),
+        TaskSpec(
+            "block_in_drawer",
+            "open the drawer and put the red block inside it",
+            (CABINET, O("red block", "block", "red", x=(0.38, 0.55), y=(-0.25, 0.0))),
+            lambda w: inside(w, "red block", "cabinet/drawer"),
+            "red block inside the drawer's footprint, released",
+            max_sim_s=80.0,
+        ),
+        TaskSpec(
+            "turn_on_stove",
+            "turn on the stove",
+            (STOVE, O("red block", "block", "red", x=(0.38, 0.5), y=(-0.3, 0.3))),
+            lambda w: w.joint_value("stove/knob_hinge") > np.radians(60),
+            "knob turned > 60 deg",
+        ),
+        TaskSpec(
+            "pour_beads",
+            "pour the beads from the mug into the bowl",
+            (
+                O("mug", "mug", "red", x=(0.42, 0.5), y=(-0.2, -0.05)),
+                O("bowl", "bowl", "white", x=(0.45, 0.6), y=(0.08, 0.25)),
+                *[
+                    O(f"bead {k}", "ball", "yellow", x=(0.0, 0.0), y=(0.0, 0.0), z=0.02 + 0.016 * k, near="mug")
+                    for k in range(BEADS)
+                ],
+            ),
+            _poured,
+            "at least 3 of 5 beads inside the bowl",
+            setup=_fill_mug,
+        ),
+        TaskSpec(
+            "scrub_plate",
+            "scrub the plate with the sponge",
+            (O("sponge", "sponge", "yellow", **FREE), O("plate", "plate", "white", **FREE)),
+            _scrubbed,
+            f"sponge touched >= {_Coverage.NEEDED} distinct 2 cm cells of the plate",
+            setup=_scrub_setup,
+        ),
+        TaskSpec(
+            "sort_two",
+            "put the red block in the green tray and the blue block in the yellow tray",
+            (
+                O("red block", "block", "red", x=(0.4, 0.55), y=(-0.1, 0.1)),
+                O("blue block", "block", "blue", x=(0.4, 0.55), y=(-0.1, 0.1)),
+                O("green tray", "tray", "green", x=(0.45, 0.55), y=(0.3, 0.34)),
+                O("yellow tray", "tray", "yellow", x=(0.45, 0.55), y=(-0.34, -0.3)),
+            ),
+            lambda w: inside(w, "red block", "green tray") and inside(w, "blue block", "yellow tray"),
+            "red block in the green tray and blue block in the yellow tray, released",
+        ),
+    ]
+}

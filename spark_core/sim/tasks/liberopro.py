@@ -25,9 +25,17 @@ def _success(world: RobosuiteWorld) -> bool:
 
 
 def _spec(t: LiberoTask) -> TaskSpec:
-    return TaskSpec(t.name, t.instruction, (), _success, "LIBERO BDDL goal (env.check_success())",
-                    max_sim_s=t.horizon_s, tags=("liberopro", t.cell), embodiments=(LIBERO_PANDA,),
-                    world_factory=lambda seed, t=t: _world(t, seed))
+    return TaskSpec(
+        t.name,
+        t.instruction,
+        (),
+        _success,
+        "LIBERO BDDL goal (env.check_success())",
+        max_sim_s=t.horizon_s,
+        tags=("liberopro", t.cell),
+        embodiments=(LIBERO_PANDA,),
+        world_factory=lambda seed, t=t: _world(t, seed),
+    )
 
 
 SUITE: dict[str, TaskSpec] = {t.name: _spec(t) for t in tasks()}

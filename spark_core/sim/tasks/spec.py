@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from importlib import resources
-from typing import Callable
 
 import numpy as np
 
@@ -39,15 +39,17 @@ class TaskSpec:
 
     def reference_plan_text(self) -> str:
         if not self.has_reference_plan:  # e.g. LIBERO-PRO: its plans come from a planner
-            raise FileNotFoundError(f"task {self.name!r} has no reference plan: run it with a planner "
-                                    "(rules, gemini or openai)")
+            raise FileNotFoundError(
+                f"task {self.name!r} has no reference plan: run it with a planner (rules, gemini or openai)"
+            )
         return resources.files(__package__).joinpath("reference", f"{self.name}.yaml").read_text(encoding="utf-8")
 
     def make_world(self, seed: int, embodiment: str | None = None) -> MujocoWorld:
         embodiment = embodiment or self.embodiments[0]
         if embodiment not in self.embodiments:
-            raise ValueError(f"task {self.name!r} needs one of the embodiments {', '.join(self.embodiments)}, "
-                             f"not {embodiment!r}")
+            raise ValueError(
+                f"task {self.name!r} needs one of the embodiments {', '.join(self.embodiments)}, not {embodiment!r}"
+            )
         if self.world_factory is not None:
             world = self.world_factory(seed)
         else:
