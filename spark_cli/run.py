@@ -62,12 +62,12 @@ def register(sub) -> None:
 
 def _library(args: argparse.Namespace):
     """The plan library: the trace store's table by default ("store"), or a JSON-lines file given by path."""
-    from spark_core.planning.library import PlanLibrary
+    from spark_core.planning.plan_library import PlanLibrary
 
     if args.plan_library not in (None, "store"):
         return PlanLibrary(args.plan_library, enabled=not args.no_plan_library)
     from spark_core.trace import TraceStore
-    from spark_core.trace.plan_library import StorePlanLibrary
+    from spark_core.trace.library_table import StorePlanLibrary
 
     library = StorePlanLibrary(
         TraceStore(getattr(args, "store", None) or "sqlite:///var/spark.db"), enabled=not args.no_plan_library

@@ -60,7 +60,7 @@ _EXPORTS: dict[str, str] = {
     # trace store, its sink, exports
     "TraceStore": "spark_core.trace",
     "StoreSink": "spark_core.trace.sink",
-    "StorePlanLibrary": "spark_core.trace.plan_library",
+    "StorePlanLibrary": "spark_core.trace.library_table",
     "export_lerobot": "spark_core.trace.lerobot",
     "ExportError": "spark_core.trace.lerobot",
     "ExportFilter": "spark_core.trace.lerobot",

@@ -4,6 +4,7 @@ completion order to `progress`; the returned list is in job order."""
 
 from __future__ import annotations
 
+import multiprocessing
 import os
 from collections.abc import Callable, Sequence
 from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -36,7 +37,8 @@ def run_jobs(
         for i, job in enumerate(jobs):
             done(i, fn(job))
     else:
-        with ProcessPoolExecutor(workers) as pool:
+        # spawn, never fork: the caller may hold threads (a console, torch's pool) whose locks a fork would copy held
+        with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn")) as pool:
             futures = {pool.submit(fn, job): i for i, job in enumerate(jobs)}
             for fut in as_completed(futures):
                 done(futures[fut], fut.result())

@@ -1,6 +1,6 @@
 """Execution: runs typed plans with late label binding, post-conditions, recovery and step-through control."""
 
-from .control import Aborted, StepControl
+from .step_control import Aborted, StepControl
 from .events import EVENT_KINDS, Event, EventBus, EventKind
 from .executor import BOTH_ARMS, Executor, Failure, ReplanRequest
 from .protocols import ActionOutcome, Actuator, FailureKind, Resolver

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 from ..grammar import Composite, CompositeType, Node, Plan, PrimitiveCall, walk
 from ..grammar.tree import child_path
 from ..perception import Keypoint, LabelNotFound
-from .control import Aborted, StepControl
+from .step_control import Aborted, StepControl
 from .events import EventBus, EventKind
 from .protocols import ActionOutcome, Actuator, FailureKind, Resolver
 from .recovery import PERTURB, REDETECT, REPLAN, RecoveryPolicy

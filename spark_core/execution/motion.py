@@ -11,7 +11,7 @@ from ..control.ik import Unreachable, solve_ik
 from ..control.pose import Pose, rotation_error
 from ..control.trajectory import Limits, chain_joint_waypoints, line_trajectory
 from .protocols import ActionOutcome, FailureKind
-from .world import World
+from .world_protocol import World
 
 POSITION_TOL_M = 0.01
 ARM_CLEARANCE_M = 0.15  # closest a planned TCP path may come to another arm's hand (now or where it is heading)

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import json
-
 from ..grammar import REGISTRY, Registry, plan_json_schema
 from ..grammar.reference import signature
 from ..grammar.spec import Tier
@@ -68,6 +66,3 @@ def repair_prompt(errors: list[str]) -> str:
 def response_schema() -> dict:
     return plan_json_schema()
 
-
-def schema_json() -> str:
-    return json.dumps(response_schema())

@@ -237,7 +237,10 @@ def _episode_source(trial: dict) -> dict | str:
         videos[cam] = Path(v["path"])
     node_path = [str(p) for p in z["node_path"]]
     primitive = [str(p) for p in z["primitive"]]
-    label = [_labels(trial.get("plan_tree"), p) for p in node_path]
+    from ..grammar import parse_plan
+
+    plan = parse_plan(trial["plan_text"]) if trial.get("plan_text") else None
+    label = [_labels(plan, p) for p in node_path]
     subtask = [
         IDLE
         if not p
@@ -261,30 +264,20 @@ def _episode_source(trial: dict) -> dict | str:
     }
 
 
-def _labels(plan_tree: dict | None, paths: str) -> str:
-    """The object label(s) a node's label slots name (';' between parallel arms)."""
-    from ..grammar import REGISTRY
-    from ..grammar.spec import SlotType
+def _labels(plan, paths: str) -> str:
+    """The object label(s) a node names (';' between parallel arms)."""
+    from ..grammar import PrimitiveCall
 
-    if not paths or not plan_tree:
+    if not paths or plan is None:
         return ""
     out = []
     for path in paths.split(";"):
-        node = _node_at(plan_tree, path)
-        spec = REGISTRY.get(node.get("primitive", "")) if node else None
-        names = [s.name for s in spec.slots if s.type == SlotType.LABEL] if spec else []
-        out.append(", ".join(str(node["params"][n]) for n in names if n in (node.get("params") or {})))
+        try:
+            node = plan.node_at(path)
+        except KeyError:
+            node = None
+        out.append(", ".join(node.labels) if isinstance(node, PrimitiveCall) else "")
     return ";".join(out)
-
-
-def _node_at(plan_tree: dict, path: str) -> dict | None:
-    import re
-
-    node = plan_tree.get("tree")
-    for idx in re.findall(r"\[(\d+)\]", path.removeprefix("tree")):
-        kids = (node or {}).get("children") or []
-        node = kids[int(idx)] if int(idx) < len(kids) else None
-    return node
 
 
 def _segments(node_path: list[str], primitive: list[str], label: list[str], fps: float) -> list[dict]:

@@ -1,7 +1,7 @@
 """The plan library: stored after success, retrieved by instruction similarity, can be turned off."""
 
 from spark_core.planning import PlanRequest
-from spark_core.planning.library import PlanLibrary
+from spark_core.planning.plan_library import PlanLibrary
 from spark_core.planning.prompt import user_prompt
 
 

@@ -1,9 +1,9 @@
 """The plan library lives in the trace store: rows survive reopening, examples come back by similarity, and the
 old JSON-lines file imports once without duplicates."""
 
-from spark_core.planning.library import PlanLibrary
+from spark_core.planning.plan_library import PlanLibrary
 from spark_core.trace import TraceStore
-from spark_core.trace.plan_library import StorePlanLibrary
+from spark_core.trace.library_table import StorePlanLibrary
 
 
 def test_store_library_keeps_plans_and_retrieves_similar_ones(tmp_path):

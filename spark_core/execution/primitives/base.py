@@ -8,11 +8,11 @@ from typing import Any
 
 import numpy as np
 
-from ...control.pose import Pose, rot_z, top_down_rotation, wrap_grasp_yaw, yaw_of
+from ...control.pose import Pose, top_down_rotation, wrap_grasp_yaw, yaw_of
 from ...perception import Keypoint, LabelNotFound
 from ..motion import ArmMotion
 from ..protocols import ActionOutcome, FailureKind, Resolver
-from ..world import World
+from ..world_protocol import World
 
 IMPLEMENTATIONS: dict[str, Callable[[Ctx], ActionOutcome]] = {}
 TABLE_CLEARANCE_M = 0.012  # lowest TCP height above the table for a top-down grasp
@@ -156,7 +156,3 @@ class Ctx:
     def fail(self, reason: str, kind: FailureKind = FailureKind.CONTROL) -> ActionOutcome:
         return ActionOutcome.fail(reason, kind)
 
-
-def yaw_rotation(R: np.ndarray, dyaw: float) -> np.ndarray:
-    """Rotate an orientation about world z."""
-    return rot_z(dyaw) @ R

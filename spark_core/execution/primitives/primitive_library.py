@@ -10,7 +10,7 @@ from ...grammar import PrimitiveCall
 from ...perception import Keypoint
 from ..motion import ArmMotion
 from ..protocols import ActionOutcome, FailureKind, Resolver
-from ..world import World
+from ..world_protocol import World
 from . import articulated, bimanual, contact, gripper, motions, pick_place, pouring  # noqa: F401 - register implementations
 from .base import IMPLEMENTATIONS, ArmMemory, Ctx
 

@@ -54,10 +54,6 @@ class StepControl:
         with self._cond:
             self._breakpoints = set(paths)
 
-    def add_breakpoint(self, path: str) -> None:
-        with self._cond:
-            self._breakpoints.add(path)
-
     def remove_breakpoint(self, path: str) -> None:
         with self._cond:
             self._breakpoints.discard(path)

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from ..perception.text_encoder import SHARED_ENCODER, TextEncoder
-from ..planning.library import PlanLibrary
+from ..planning.plan_library import PlanLibrary
 from .store import TraceStore
 
 
