@@ -6,7 +6,7 @@ STAMP := $(VENV)/.installed
 export MUJOCO_GL ?= egl
 export HF_HUB_OFFLINE := 1
 
-.PHONY: install bench-deps run serve demo test test-all grammar-docs clean
+.PHONY: install bench-deps run serve demo test test-all lint grammar-docs clean
 
 install: $(STAMP)
 
@@ -39,6 +39,12 @@ serve: install
 demo: install
 	$(BIN)/spark validate examples/plans/*.yaml
 	$(BIN)/spark run stack_three --seed 0
+
+# ruff (lint + format) and mypy, configured in pyproject.toml.
+lint: install
+	$(BIN)/ruff check .
+	$(BIN)/ruff format --check .
+	$(BIN)/mypy
 
 # The benchmark extras are part of the tests: each suite gets a one-trial smoke.
 test: install bench-deps

@@ -50,7 +50,8 @@ def register(sub) -> None:
         help="reference (hand-written plans), or one planner call per trial (liberopro has no reference plans)",
     )
     b.add_argument("--model", help="LLM model name for an LLM planner")
-    b.add_argument("--base-url", help="LLM endpoint for an LLM planner")
+    b.add_argument("--base-url", help="an ad-hoc LLM URL for an LLM planner (a local server; it gets no key)")
+    b.add_argument("--endpoint", help="a named LLM endpoint from spark.yaml `endpoints:` (with its key)")
     b.add_argument(
         "--segmenter",
         default="privileged-keypoints",
@@ -185,6 +186,7 @@ def _cmd_bench(args: argparse.Namespace) -> int:
             planner=args.planner,
             model=args.model,
             base_url=args.base_url,
+            endpoint=args.endpoint,
             segmenter=args.segmenter,
             cameras=tuple(args.cameras) if args.cameras else None,
             noise=NoiseModel(miss_rate=args.miss_rate),

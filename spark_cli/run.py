@@ -30,7 +30,8 @@ def register(sub) -> None:
     )
     r.add_argument("--instruction", help="instruction for --planner (default: the task's own)")
     r.add_argument("--model", help="LLM model name (gemini default: gemini-3.1-pro-preview)")
-    r.add_argument("--base-url", help="LLM endpoint (OpenAI-compatible server, or a Gemini proxy)")
+    r.add_argument("--base-url", help="an ad-hoc LLM URL (a local OpenAI-compatible server); it gets no key")
+    r.add_argument("--endpoint", help="a named LLM endpoint from spark.yaml `endpoints:` (with its key)")
     r.add_argument("--no-recovery", action="store_true", help="no retries (recovery tiers off)")
     r.add_argument("--no-adaptive", action="store_true", help="one prompt per label (no adaptive prompts)")
     r.add_argument("--time-limit", type=float, help="simulated seconds (default: the task's own)")
@@ -55,7 +56,8 @@ def register(sub) -> None:
     pl.add_argument("--seed", type=int, default=0)
     pl.add_argument("--planner", choices=[p for p in PLANNERS if p != "reference"], help="default: rules")
     pl.add_argument("--model", help="LLM model name (gemini default: gemini-3.1-pro-preview)")
-    pl.add_argument("--base-url", help="LLM endpoint (OpenAI-compatible server, or a Gemini proxy)")
+    pl.add_argument("--base-url", help="an ad-hoc LLM URL (a local OpenAI-compatible server); it gets no key")
+    pl.add_argument("--endpoint", help="a named LLM endpoint from spark.yaml `endpoints:` (with its key)")
     pl.add_argument("--segmenter", choices=list(SEGMENTERS), help="perception backend (default: sim)")
     pl.set_defaults(func=_cmd_plan)
 
@@ -84,15 +86,18 @@ def _cmd_plan(args: argparse.Namespace) -> int:
     from spark_core.perception.factory import make_resolver
     from spark_core.planning import PlanRequest
     from spark_core.planning.backends import make_planner
+    from spark_core.planning.llm import PlannerUnavailable
     from spark_core.planning.observe import annotated_view, arm_bases, arm_tools, observe
 
     try:
         task = check_task(args.task)
-        planner = make_planner(args.planner, args.model, args.base_url)  # fails fast, before any simulation
+        planner = make_planner(
+            args.planner, args.model, args.base_url, args.endpoint
+        )  # fails fast, before any simulation
     except CatalogError as e:
         print(str(e), file=sys.stderr)
         return 2
-    except ValueError as e:  # PlannerUnavailable: a missing key or server
+    except (ValueError, PlannerUnavailable) as e:  # a missing key or server
         print(f"planner {args.planner!r} unavailable: {e}", file=sys.stderr)
         return 2
     world = task.make_world(args.seed)
@@ -107,7 +112,7 @@ def _cmd_plan(args: argparse.Namespace) -> int:
     print("perception saw:\n" + "\n".join("  " + line for line in view.summary.splitlines()))
     if result.detail.get("understood"):
         print("understood: " + "; ".join(result.detail["understood"]))
-    if result.ok:
+    if result.plan is not None:
         from spark_core.grammar import to_yaml
 
         print(to_yaml(result.plan).rstrip())
@@ -182,12 +187,13 @@ def _cmd_run(args: argparse.Namespace) -> int:
             return 2
     config = TrialConfig(
         args.task,
-        args.instruction,
-        args.planner,
-        args.model,
-        args.base_url,
-        plan_text,
-        args.segmenter,
+        instruction=args.instruction,
+        planner=args.planner,
+        model=args.model,
+        base_url=args.base_url,
+        plan_text=plan_text,
+        segmenter=args.segmenter,
+        endpoint=args.endpoint,
         embodiment=args.embodiment,
         seed=args.seed,
         recovery=not args.no_recovery,

@@ -166,7 +166,8 @@ def enums() -> dict[str, list[str]]:
 
 
 def catalog_json(with_tasks: bool = True) -> dict[str, Any]:
-    """Everything above as plain JSON (for `GET /api/catalog` and `spark catalog`)."""
+    """Everything above as plain JSON (for `GET /api/catalog` and `spark catalog`), with the LLM endpoints the
+    operator configured (names, planners and models only)."""
     out: dict[str, Any] = {
         "planners": [asdict(p) for p in PLANNERS.values()],
         "segmenters": [asdict(s) for s in SEGMENTERS.values()],
@@ -174,6 +175,9 @@ def catalog_json(with_tasks: bool = True) -> dict[str, Any]:
         "suites": suites(),
         **enums(),
     }
+    from .planning.endpoints import configured_endpoints
+
+    out["endpoints"] = [e.public() for e in configured_endpoints().values()]
     if with_tasks:
         out["tasks"] = [task_entry(t) for names in out["suites"].values() for t in names]
     return out

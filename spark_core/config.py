@@ -1,8 +1,9 @@
 """User configuration: `spark.yaml` in the working directory, or the file named by SPARK_CONFIG.
 
-Keys (all optional): planner (rules|gemini|openai), model, base_url, segmenter (a catalog segmenter:
-`spark catalog`),
-plan_library ('store' or a .jsonl path), prices ({model: [input_usd_per_mtok, output_usd_per_mtok]}). Command-line flags win.
+Keys (all optional): planner, model, base_url, segmenter (catalog names: `spark catalog`), plan_library ('store'
+or a .jsonl path), prices ({model: [input_usd_per_mtok, output_usd_per_mtok]}), endpoints (the LLM endpoints API
+callers may choose by name, with the environment variable of each one's key: planning/endpoints.py).
+Command-line flags win.
 """
 
 from __future__ import annotations
@@ -13,7 +14,9 @@ from pathlib import Path
 
 import yaml
 
-KEYS = ("planner", "model", "base_url", "segmenter", "plan_library", "prices")
+from .planning.endpoints import Endpoint, parse_endpoints
+
+KEYS = ("planner", "model", "base_url", "segmenter", "plan_library", "prices", "endpoints")
 
 
 @dataclass(frozen=True)
@@ -24,6 +27,7 @@ class Config:
     segmenter: str | None = None
     plan_library: str | None = None
     prices: dict[str, tuple[float, float]] = field(default_factory=dict)
+    endpoints: dict[str, Endpoint] = field(default_factory=dict)
     source: str = ""
 
 
@@ -46,4 +50,9 @@ def load_config(path: str | os.PathLike | None = None) -> Config:
         if not (isinstance(rate, (list, tuple)) and len(rate) == 2 and all(isinstance(x, (int, float)) for x in rate)):
             raise ValueError(f"{p}: prices.{model}: expected [input_usd_per_mtok, output_usd_per_mtok], got {rate!r}")
         prices[str(model)] = (float(rate[0]), float(rate[1]))
-    return Config(**{k: data.get(k) for k in KEYS if k != "prices"}, prices=prices, source=str(p))
+    return Config(
+        **{k: data.get(k) for k in KEYS if k not in ("prices", "endpoints")},
+        prices=prices,
+        endpoints=parse_endpoints(data.get("endpoints"), str(p)),
+        source=str(p),
+    )

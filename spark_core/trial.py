@@ -33,7 +33,7 @@ class TrialConfig:
     instruction: str | None = None  # None: the task's own (LIBERO: the env's)
     planner: str = "reference"  # a catalog planner
     model: str | None = None  # LLM model name (planner default when None)
-    base_url: str | None = None  # LLM endpoint; None: the vendor's
+    base_url: str | None = None  # an ad-hoc LLM URL (CLI only; it gets no key); None: the vendor's
     plan_text: str | None = None  # a plan to run as given (the planner is then not called)
     segmenter: str = "sim"  # a catalog segmenter
     cameras: tuple[str, ...] | None = None  # None: the scene's perception cameras
@@ -49,6 +49,7 @@ class TrialConfig:
     breakpoints: tuple[str, ...] = ()
     start_paused: bool = False
     batch_id: str | None = None
+    endpoint: str | None = None  # a named LLM endpoint the operator configured (spark.yaml endpoints:)
 
     def check(self) -> TrialConfig:
         """Raise TrialConfigError naming what is wrong; return self. Cheap: builds no world."""
@@ -75,6 +76,15 @@ class TrialConfig:
             )
         if PLANNERS[self.planner].needs_model and not self.model:
             raise TrialConfigError(f"model: the {self.planner} planner needs a model name")
+        if self.endpoint is not None:
+            from .planning.endpoints import resolve_endpoint
+
+            if self.base_url is not None:
+                raise TrialConfigError("base_url: give an endpoint name or a URL, not both")
+            try:
+                resolve_endpoint(self.endpoint, self.planner, self.model)
+            except ValueError as e:
+                raise TrialConfigError(str(e)) from None
         if self.time_limit_s is not None and not 0 < self.time_limit_s <= 3600:
             raise TrialConfigError(f"time_limit_s: expected (0, 3600] simulated seconds, got {self.time_limit_s}")
         if self.pacing is not None and not 0.01 <= self.pacing <= 100:
@@ -105,6 +115,7 @@ class TrialConfig:
             "time_limit_s": time_limit_s,
             "pacing": f"{self.pacing:g}x real time" if self.pacing else "as fast as possible",
             "noise": self.noise.describe() if self.segmenter == "sim-noisy" else None,
+            "endpoint": self.endpoint,
             "success_rule": "the task's predicate within the time limit AND the behavior tree succeeded",
         }
 
@@ -213,9 +224,11 @@ def _plan(ctx: TrialContext, library: Any) -> tuple[Plan | None, dict[str, Any]]
     from .planning.observe import annotated_view, arm_bases, arm_tools, observe
 
     t0 = time.perf_counter()
+    from .planning.llm import PlannerUnavailable
+
     try:
-        planner = make_planner(cfg.planner, cfg.model, cfg.base_url)
-    except ValueError as e:  # PlannerUnavailable is a ValueError: a missing key or server
+        planner = make_planner(cfg.planner, cfg.model, cfg.base_url, cfg.endpoint)
+    except (ValueError, PlannerUnavailable) as e:  # a missing key or server
         return None, {
             "source": cfg.planner,
             "error": f"planner {cfg.planner!r} unavailable: {e}",
@@ -265,26 +278,28 @@ def run_trial(
     t0 = time.perf_counter()
     time_limit_s = config.time_limit_s or task.max_sim_s
     protocol = config.protocol(time_limit_s)
-    base = dict(
-        trial_id=trial_id,
-        task=task.name,
-        seed=config.seed,
-        instruction=config.instruction or task.instruction,
-        protocol=protocol,
-    )
-    if control.aborted:  # cancelled while queued: never starts
-        outcome = TrialOutcome(
-            **base,
-            verdict=Verdict.ABORTED,
+
+    def unrun(verdict: Verdict, reason: str, failure: str | None = None) -> TrialOutcome:
+        """The outcome of a trial that never reached the end of execution."""
+        return TrialOutcome(
+            trial_id=trial_id,
+            task=task.name,
+            seed=config.seed,
+            instruction=config.instruction or task.instruction,
+            verdict=verdict,
             task_success=None,
             tree_status=None,
-            failure=None,
+            failure=failure,
             failed_node=None,
-            reason="cancelled before it started",
+            reason=reason,
             unmet=None,
             sim_time_s=0.0,
-            wall_time_s=0.0,
+            wall_time_s=round(time.perf_counter() - t0, 3),
+            protocol=dict(protocol),
         )
+
+    if control.aborted:  # cancelled while queued: never starts
+        outcome = unrun(Verdict.ABORTED, "cancelled before it started")
         for sink in sinks:
             sink.on_finish(None, outcome)
         return outcome
@@ -293,18 +308,7 @@ def run_trial(
         ctx = _start(config, task, trial_id, protocol, sinks)
         outcome = _run(ctx, sinks, control, library, time_limit_s, t0)
     except Exception as e:
-        outcome = TrialOutcome(
-            **base,
-            verdict=Verdict.CRASHED,
-            task_success=None,
-            tree_status=None,
-            failure="internal",
-            failed_node=None,
-            reason=f"internal error: {type(e).__name__}: {e}",
-            unmet=None,
-            sim_time_s=0.0,
-            wall_time_s=round(time.perf_counter() - t0, 3),
-        )
+        outcome = unrun(Verdict.CRASHED, f"internal error: {type(e).__name__}: {e}", failure="internal")
         outcome.protocol = {**protocol, "traceback": traceback.format_exc()[-4000:]}
         if ctx is not None:
             outcome.instruction = ctx.instruction

@@ -115,9 +115,5 @@ def test_the_api_serves_the_catalog_the_cli_offers(tmp_path):
     ]
     assert bad.status_code == 422 and "unknown segmenter 'oracle'" in bad.text
     assert schema["segmenter"]["enum"] == [s["name"] for s in served["segmenters"]]
-    run = next(
-        a
-        for a in build_parser()._subparsers._group_actions[0].choices["run"]._actions
-        if a.dest == "segmenter"
-    )
+    run = next(a for a in build_parser()._subparsers._group_actions[0].choices["run"]._actions if a.dest == "segmenter")
     assert list(run.choices) == schema["segmenter"]["enum"]

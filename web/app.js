@@ -28,6 +28,7 @@ async function dashboard(view) {
         <label>Instruction <input type="text" name="instruction" placeholder="default: the task's own"></label><br>
         <label>Planner <select name="planner">${options(cat.planners)}</select></label>
         <label>Model <input type="text" name="model" placeholder="planner default" style="width:10em"></label>
+        <label title="LLM endpoints the operator configured (spark.yaml endpoints:)">Endpoint <select name="endpoint"><option value="">vendor default</option>${options(cat.endpoints, (e) => `${e.name} (${e.planner})`)}</select></label>
         <label>Segmenter <select name="segmenter">${options(cat.segmenters, segLabel)}</select></label>
         <label>Robot <select name="embodiment"><option value="">task default</option>${options(cat.embodiments)}</select></label>
         <label>Seed <input type="number" name="seed" value="0" min="0" style="width:5em"></label>
@@ -53,6 +54,7 @@ async function dashboard(view) {
     if (f.get("instruction")) body.instruction = f.get("instruction");
     if (f.get("embodiment")) body.embodiment = f.get("embodiment");
     if (f.get("model")) body.model = f.get("model");
+    if (f.get("endpoint")) body.endpoint = f.get("endpoint");
     try { const r = await api("/api/trials", { method: "POST", body: JSON.stringify(body) }); location.hash = `#/trial/${r.id}`; }
     catch (err) { $("#form-error").textContent = err.message; }
   };

@@ -7,7 +7,7 @@ import uuid
 
 from fastapi import APIRouter, HTTPException, Request
 from fastapi.responses import PlainTextResponse
-from pydantic import BaseModel, Field
+from pydantic import BaseModel, ConfigDict, Field
 
 from spark_core import PLANNERS, SEGMENTERS, wilson
 from spark_core import suites as catalog_suites
@@ -21,6 +21,8 @@ router = APIRouter(prefix="/api/batches", tags=["batches"])
 class BatchTrial(BaseModel):
     """One trial of an explicit batch; unset fields take the batch's values."""
 
+    model_config = ConfigDict(extra="forbid")
+
     task: str
     instruction: str | None = Field(None, max_length=2000, description="default: the task's own")
     seed: int = Field(0, ge=0, le=MAX_SEED, strict=True)
@@ -29,6 +31,8 @@ class BatchTrial(BaseModel):
 
 
 class BatchCreate(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
     suite: str = Field("builtin", description="task suite (GET /api/catalog lists them)")
     specs: list[BatchTrial] | None = Field(
         None, max_length=2000, description="explicit trials (instead of tasks × trials from the suite)"
@@ -38,6 +42,7 @@ class BatchCreate(BaseModel):
     seed: int = Field(0, ge=0, le=MAX_SEED, strict=True)
     planner: str = Field("reference", json_schema_extra={"enum": list(PLANNERS)})
     model: str | None = Field(None, max_length=200)
+    endpoint: str | None = Field(None, max_length=100, description="an LLM endpoint the operator configured")
     segmenter: str = Field("sim", json_schema_extra={"enum": list(SEGMENTERS)})
     capture: bool = Field(False, description="record training-data frames for every trial (for LeRobot export)")
 
@@ -74,6 +79,7 @@ def create_batch(body: BatchCreate, request: Request) -> dict:
                 planner=sp.planner or body.planner,
                 segmenter=sp.segmenter or body.segmenter,
                 model=body.model,
+                endpoint=body.endpoint,
                 capture=body.capture,
             )
             for sp in body.specs
@@ -86,6 +92,7 @@ def create_batch(body: BatchCreate, request: Request) -> dict:
                 planner=body.planner,
                 segmenter=body.segmenter,
                 model=body.model,
+                endpoint=body.endpoint,
                 capture=body.capture,
             )
             for task in (body.tasks or suites[body.suite])

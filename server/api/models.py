@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any, Literal
 
-from pydantic import BaseModel, Field, field_validator
+from pydantic import BaseModel, ConfigDict, Field, field_validator
 
 from spark_core import EMBODIMENTS, PLANNERS, SEGMENTERS, CatalogError, check_embodiment, check_planner, check_segmenter
 
@@ -16,6 +16,8 @@ def _enum(names: Any) -> dict[str, Any]:
 
 
 class TrialCreate(BaseModel):
+    model_config = ConfigDict(extra="forbid")  # a misspelt or retired field (base_url) is an error, not ignored
+
     task: str = Field(description="task whose scene to run in (GET /api/catalog lists them)")
     instruction: str | None = Field(None, max_length=2000, description="default: the task's own instruction")
     planner: str = Field("reference", json_schema_extra=_enum(PLANNERS))
@@ -27,7 +29,9 @@ class TrialCreate(BaseModel):
     seed: int = Field(0, ge=0, le=MAX_SEED, strict=True)
     breakpoints: list[str] = Field(default_factory=list, max_length=200, description="node paths to pause before")
     model: str | None = Field(None, max_length=200)
-    base_url: str | None = Field(None, max_length=500)
+    endpoint: str | None = Field(
+        None, max_length=100, description="an LLM endpoint the operator configured (GET /api/catalog lists them)"
+    )
     plan: str | None = Field(
         None, max_length=256 * 1024, description="a plan to run as given (the planner is not called)"
     )

@@ -32,12 +32,13 @@ def trial_config(body: TrialCreate, batch_id: str | None = None) -> TrialConfig:
         capture = CaptureConfig()
     config = TrialConfig(
         body.task,
-        body.instruction,
-        body.planner,
-        body.model,
-        body.base_url,
-        body.plan,
-        body.segmenter,
+        instruction=body.instruction,
+        planner=body.planner,
+        model=body.model,
+        base_url=None,  # never a caller's URL: endpoints are the operator's (named in spark.yaml)
+        plan_text=body.plan,
+        segmenter=body.segmenter,
+        endpoint=body.endpoint,
         embodiment=body.embodiment,
         seed=body.seed,
         recovery=body.recovery,

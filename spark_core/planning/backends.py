@@ -1,26 +1,39 @@
-"""Planner backends by name (CLI flags and config select them here)."""
+"""Planner backends by name (the catalog's planners; CLI flags, config and the API select them here)."""
 
 from __future__ import annotations
 
+from .llm import PlannerUnavailable
 from .protocol import Planner
 
-BACKENDS = ("rules", "gemini", "openai")
 
+def make_planner(
+    name: str, model: str | None = None, base_url: str | None = None, endpoint: str | None = None
+) -> Planner:
+    """Raises PlannerUnavailable (what is missing: a key, a server) or ValueError (a bad choice).
 
-def make_planner(name: str, model: str | None = None, base_url: str | None = None) -> Planner:
-    """Raises llm.PlannerUnavailable with what is missing (key, server) when a backend cannot run."""
+    Keys: a named `endpoint` (the operator's allowlist) gets the key of its `api_key_env`; the vendor's own URL
+    gets the usual environment key; any other `base_url` gets no key at all (a local server), so a URL someone
+    else chose never receives the server's credentials."""
     if name == "rules":
         from .rules import RulesPlanner
 
         return RulesPlanner()
+    api_key = None
+    if endpoint is not None:
+        from .endpoints import resolve_endpoint
+
+        ep = resolve_endpoint(endpoint, name, model)
+        base_url, api_key = ep.base_url, ep.api_key()
+        if ep.api_key_env and not api_key:
+            raise PlannerUnavailable(f"endpoint {endpoint!r} needs its key: set {ep.api_key_env} on the server")
     if name == "gemini":
         from .gemini import DEFAULT_MODEL, GeminiPlanner
 
-        return GeminiPlanner(model or DEFAULT_MODEL, base_url=base_url)
+        return GeminiPlanner(model or DEFAULT_MODEL, api_key=api_key, base_url=base_url)
     if name == "openai":
         from .openai_compat import OpenAIPlanner
 
         if not model:
             raise ValueError("the openai planner needs --model (e.g. gpt-4.1, or the name your local server serves)")
-        return OpenAIPlanner(model, base_url=base_url)
-    raise ValueError(f"unknown planner {name!r}; available: {', '.join(BACKENDS)}")
+        return OpenAIPlanner(model, base_url=base_url, api_key=api_key)
+    raise ValueError(f"unknown planner {name!r}")

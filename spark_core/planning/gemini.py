@@ -24,9 +24,15 @@ class GeminiPlanner:
         from google import genai
         from google.genai import types
 
-        key = api_key or os.environ.get("GEMINI_API_KEY") or os.environ.get("GOOGLE_API_KEY")
+        # The environment's key goes to Google's own endpoint only: any other URL needs its key given explicitly
+        # (a named endpoint in spark.yaml), so a caller-chosen URL never receives it.
+        key = api_key or (None if base_url else os.environ.get("GEMINI_API_KEY") or os.environ.get("GOOGLE_API_KEY"))
         if not key:
-            raise PlannerUnavailable("the gemini planner needs an API key: set GEMINI_API_KEY (or GOOGLE_API_KEY)")
+            raise PlannerUnavailable(
+                "the gemini planner needs an API key: set GEMINI_API_KEY (or GOOGLE_API_KEY)"
+                if not base_url
+                else f"no key for {base_url}: configure it as a named endpoint (spark.yaml endpoints:) with api_key_env"
+            )
         self.settings = settings or LLMSettings(model)
         self.types = types
         self.errors = genai.errors

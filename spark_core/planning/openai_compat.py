@@ -19,7 +19,9 @@ class OpenAIPlanner:
     ):
         import openai
 
-        key = api_key or os.environ.get("OPENAI_API_KEY") or ("not-needed" if base_url else None)
+        # The environment's key goes to OpenAI's own endpoint only; any other URL (a local server) gets none
+        # unless its key is given explicitly (a named endpoint in spark.yaml).
+        key = api_key or ("not-needed" if base_url else os.environ.get("OPENAI_API_KEY"))
         if key is None:
             raise PlannerUnavailable(
                 "the openai planner needs OPENAI_API_KEY, or --base-url of a local "
