@@ -8,11 +8,14 @@ starts a fresh process for the next trial and the console carries on."""
 
 from __future__ import annotations
 
+import contextlib
+import functools
 import queue
 import threading
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import Any
 
 from spark_core import StepControl, TraceStore, TrialConfig, Verdict, check_task
 
@@ -195,10 +198,10 @@ class TrialRunner:
     # -- slots --------------------------------------------------------------------------------------------------
     def _slot(self, i: int, spawn_at_start: bool) -> None:
         if spawn_at_start:
-            try:
+            # On failure: retried when the first trial arrives, which then fails with the reason if it still
+            # cannot start.
+            with contextlib.suppress(RuntimeError):
                 self._worker(i)
-            except RuntimeError:
-                pass  # retried when the first trial arrives, which then fails with the reason if it still cannot start
         while (trial_id := self.queue.get()) is not None:
             live = self.live[trial_id]
             t0 = time.perf_counter()
@@ -215,7 +218,7 @@ class TrialRunner:
                     continue
                 worker = self._worker(i)
                 live.worker_pid = worker.pid
-                state = live.control.attach(lambda action, arg, w=worker, t=trial_id: w.send("control", t, action, arg))
+                state = live.control.attach(functools.partial(_forward, worker, trial_id))
                 worker.send("run", trial_id, live.config, state)
                 failure = self._pump(trial_id, live, worker)
                 if failure:
@@ -267,7 +270,7 @@ class TrialRunner:
                 return f"worker process {worker.pid} died ({worker.death()}) while running the trial"
             if msg[1] != trial_id:
                 continue  # a late message of an earlier trial
-            payload = msg[2] if len(msg) > 2 else None
+            payload: Any = msg[2] if len(msg) > 2 else None
             if kind == "done":
                 return None
             if kind == "event":
@@ -302,6 +305,11 @@ class TrialRunner:
             reason=reason,
             wall_time_s=round(wall_s, 3),
         )
+
+
+def _forward(worker: WorkerProcess, trial_id: str, action: str, arg: object) -> None:
+    """An operator's step-through command, sent to the worker running the trial."""
+    worker.send("control", trial_id, action, arg)
 
 
 def _config_record(config: TrialConfig) -> dict:

@@ -10,6 +10,7 @@ from __future__ import annotations
 import contextlib
 import io
 import threading
+from typing import Any
 
 import numpy as np
 
@@ -27,8 +28,8 @@ class ViserScene:
         self.host = host
         self.rate_hz = rate_hz  # what feeds are asked to publish at
         self.current: str | None = None  # key (trial id, or "replay:<id>") of what is on screen
-        self._frames: dict[int, object] = {}  # body id -> viser frame
-        self._targets: dict[str, object] = {}
+        self._frames: dict[int, Any] = {}  # body id -> viser frame
+        self._targets: dict[str, Any] = {}
         self._lock = threading.Lock()
         self.ticks = 0  # pose updates drawn
         cam = self.server.initial_camera  # in front of and above the table, looking at the workspace
@@ -47,7 +48,7 @@ class ViserScene:
         with self._lock:
             self.current = key
             scene.reset()
-            frames: dict[int, object] = {}
+            frames: dict[int, Any] = {}
             for i, g in enumerate(geoms):
                 if g.body not in frames:
                     frames[g.body] = scene.add_frame(f"/world/b{g.body}", show_axes=False)
@@ -76,8 +77,8 @@ class ViserScene:
         with self._lock:
             if key != self.current:
                 return
-            for i, (label, p) in enumerate(keypoints.items()):
-                p = np.asarray(p, float)
+            for i, (label, position) in enumerate(keypoints.items()):
+                p = np.asarray(position, float)
                 self.server.scene.add_icosphere(f"/keypoints/k{i}", radius=0.008, color=(255, 40, 200), position=p)
                 self.server.scene.add_label(f"/keypoints/k{i}/label", text=label, position=p + [0, 0, 0.03])
 

@@ -173,7 +173,7 @@ class _PipeSink(BaseSink):
 
     def __init__(self, trial_id: str, send: Callable, feed_hz: float):
         self.trial_id, self.send, self.feed_hz = trial_id, send, feed_hz
-        self.feed = None
+        self.feed: Any = None
 
     def on_start(self, ctx) -> None:
         from .scene_feed import SceneFeed

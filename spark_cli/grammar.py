@@ -53,7 +53,8 @@ def _cmd_validate(args: argparse.Namespace) -> int:
         else:
             n = len(plan.primitives())
             print(
-                f"{name}: ok - {plan.task!r}: {n} primitive{'s' if n != 1 else ''}, labels {', '.join(plan.labels()) or '-'}"
+                f"{name}: ok - {plan.task!r}: {n} primitive{'s' if n != 1 else ''}, "
+                f"labels {', '.join(plan.labels()) or '-'}"
             )
             if args.canonical:
                 print(to_yaml(plan))

@@ -50,7 +50,8 @@ def _cmd_trials(args: argparse.Namespace) -> int:
     print(f"{total} trial(s) in {args.store}; newest {len(rows)}:")
     for r in rows:
         print(
-            f"  {r['created_at'][:19]}  {r['verdict'] or r['status']:<13} {r['id']:<34} {r['task']:<16} {r['planner']:<9} {r['instruction'][:50]!r}"
+            f"  {r['created_at'][:19]}  {r['verdict'] or r['status']:<13} {r['id']:<34} {r['task']:<16} "
+            f"{r['planner']:<9} {r['instruction'][:50]!r}"
         )
     return 0
 

@@ -29,7 +29,8 @@ def test_validate_examples_ok():
 def test_validate_lists_every_error_and_exits_1(tmp_path):
     bad = tmp_path / "bad.yaml"
     bad.write_text(
-        "task: t\ntree:\n  type: sequence\n  children:\n    - {primitive: grasp, params: {force: high}}\n    - {primitive: grap}\n"
+        "task: t\ntree:\n  type: sequence\n  children:\n"
+        "    - {primitive: grasp, params: {force: high}}\n    - {primitive: grap}\n"
     )
     out = spark("validate", str(bad))
     assert out.returncode == 1

@@ -4,6 +4,7 @@ relay at /viser to the viser server, which listens on loopback only (so the toke
 from __future__ import annotations
 
 import asyncio
+import contextlib
 from pathlib import Path
 
 from fastapi import APIRouter, HTTPException, Request, WebSocket, WebSocketDisconnect
@@ -81,7 +82,5 @@ async def viser_relay(websocket: WebSocket) -> None:
             for t in tasks:
                 t.cancel()
             await asyncio.gather(*tasks, return_exceptions=True)
-    try:
+    with contextlib.suppress(RuntimeError):  # already closed by the browser
         await websocket.close()
-    except RuntimeError:
-        pass  # already closed by the browser

@@ -57,7 +57,8 @@ def run(trials: int = 3) -> dict:
                     await new Promise((done) => {
                       const ws = new WebSocket(base.replace('http', 'ws') + `/api/trials/${id}/events`);
                       ws.onopen = () => setTimeout(() => fetch(`/api/trials/${id}/control`, {method: 'POST',
-                          headers: {'content-type': 'application/json'}, body: JSON.stringify({action: 'resume'})}), 300);
+                          headers: {'content-type': 'application/json'},
+                          body: JSON.stringify({action: 'resume'})}), 300);
                       ws.onmessage = (m) => { const ev = JSON.parse(m.data);
                         if (ev.kind === 'closed') { done(); return; }
                         if (ev.kind !== 'paused' && ev.wall_s) lat.push(Date.now() / 1000 - ev.wall_s); };
@@ -83,7 +84,8 @@ def section(r: dict, command: str) -> str:
         f"| events | p50 | p99 |\n|---|---|---|\n| {r['events']} | {r['p50_ms']:.1f} ms | {r['p99_ms']:.1f} ms |\n\n"
         + footer(
             command,
-            f"executor event published in the trial worker process -> pipe -> console -> WebSocket -> headless chromium "
+            f"executor event published in the trial worker process -> pipe -> console -> WebSocket -> "
+            f"headless chromium "
             f"(Debian chromium-headless-shell, same machine clock); stack_two reference plan, privileged "
             f"resolver, {r['trials']} trials; events replayed from history at connect are excluded",
         )

@@ -73,8 +73,10 @@ def section(r: dict, command: str) -> str:
         + summary
         + footer(
             command,
-            f"{r['trials']} builtin trials (tasks in turn, seeds 0..), reference plans, segmenter privileged-keypoints (PRIVILEGED: simulator state), "
-            f"capture on (agentview + wrist 256×256 at 10 fps of simulated time, no shadow maps, libsvtav1 crf 30), recorded on "
+            f"{r['trials']} builtin trials (tasks in turn, seeds 0..), reference plans, "
+            f"segmenter privileged-keypoints (PRIVILEGED: simulator state), "
+            f"capture on (agentview + wrist 256×256 at 10 fps of simulated time, no shadow maps, libsvtav1 crf 30), "
+            f"recorded on "
             f"{r['workers']} local processes in {r['record_wall_s']:.0f} s; export = verified successes only "
             f"({r['data_files']} data file(s), {r['video_files']} video file(s), videos concatenated by packet copy)",
         )

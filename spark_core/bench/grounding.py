@@ -116,8 +116,8 @@ def evaluate(world: MujocoWorld, prompts: list[tuple[str, str]]) -> list[dict]:
         ok = got == [target]
         err = None
         if ok:
-            evs = [masked_points(dets[0], f) for dets, f in zip(per_view, frames) if len(dets) == 1]
-            evs = [e for e in evs if e is not None]
+            views = [masked_points(dets[0], f) for dets, f in zip(per_view, frames) if len(dets) == 1]
+            evs = [e for e in views if e is not None]
             if evs:
                 kp = keypoint_from_points(target, evs, seg.name)
                 err = float(np.linalg.norm(kp.position_m - truth.resolve(target).position_m))

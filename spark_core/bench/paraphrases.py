@@ -156,10 +156,12 @@ def section(rows: list[dict], errors: list[dict], command: str) -> str:
     for task in PARAPHRASES:
         rs = [r for r in rows if r["task"] == task]
         lines.append(
-            f"| {task} | {len(rs)} | {pct(sum(r['planned'] for r in rs) / len(rs))} | {pct(sum(r['success'] for r in rs) / len(rs))} |"
+            f"| {task} | {len(rs)} | {pct(sum(r['planned'] for r in rs) / len(rs))} | "
+            f"{pct(sum(r['success'] for r in rs) / len(rs))} |"
         )
     lines.append(
-        f"| **all** | {len(rows)} | {pct(sum(r['planned'] for r in rows) / len(rows))} | {pct(sum(r['success'] for r in rows) / len(rows))} |"
+        f"| **all** | {len(rows)} | {pct(sum(r['planned'] for r in rows) / len(rows))} | "
+        f"{pct(sum(r['success'] for r in rows) / len(rows))} |"
     )
     lines.append("")
     lines.append(f"Nonsense instructions refused with an error: {sum(e['refused'] for e in errors)} of {len(errors)}.")
@@ -172,8 +174,9 @@ def section(rows: list[dict], errors: list[dict], command: str) -> str:
         + footer(
             command,
             "planner: rules (offline, deterministic); it saw only what perception found for the phrases of the "
-            "instruction (no object dictionary); perception: sim segmenter (privileged masks), agentview+side, adaptive "
-            "prompts; execution in the task's scene (seed 0) through the trial pipeline, recovery tiers 1-2; success: the task's "
+            "instruction (no object dictionary); perception: sim segmenter (privileged masks), agentview+side, "
+            "adaptive prompts; execution in the task's scene (seed 0) through the trial pipeline, recovery tiers 1-2; "
+            "success: the task's "
             "predicate within its time limit AND the behavior tree succeeded",
         )
     )

@@ -17,7 +17,10 @@ def protocol(config: TrialConfig) -> str:
     p = config.protocol(0.0)
     seg = f"{p['segmenter']} ({'PRIVILEGED' if p['privileged'] else 'non-privileged'}: {p['segmenter_description']})"
     if p["cameras"] != "none":
-        seg += f", cameras {p['cameras']} 640x480, adaptive prompts {'on (label + 3 variants)' if p['adaptive_prompts'] else 'off'}"
+        seg += (
+            f", cameras {p['cameras']} 640x480, "
+            f"adaptive prompts {'on (label + 3 variants)' if p['adaptive_prompts'] else 'off'}"
+        )
     if p["noise"]:
         seg += f", noise: {p['noise']}, misses independent per prompt and per view"
     rec = "recovery tiers 1-2 on (2 retries per node), replan off" if config.recovery else "recovery off"
@@ -92,7 +95,8 @@ def table(rows: list[dict]) -> str:
                 fails[key] = fails.get(key, 0) + 1
         lines.append(
             f"| {task} | {pct(k / len(rs))} | {pct(lo)} – {pct(hi)} | {len(rs)} | "
-            f"{statistics.median(r['sim_time_s'] for r in rs):.1f} s | {statistics.median(r['wall_time_s'] for r in rs):.2f} s | "
+            f"{statistics.median(r['sim_time_s'] for r in rs):.1f} s | "
+            f"{statistics.median(r['wall_time_s'] for r in rs):.2f} s | "
             f"{', '.join(f'{v}× {k}' for k, v in sorted(fails.items())) or '-'} |"
         )
     total = sum(r["success"] for r in rows)

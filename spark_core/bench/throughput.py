@@ -4,6 +4,7 @@ cluster with the same number of workers; cluster start-up counted)."""
 from __future__ import annotations
 
 import time
+from typing import Any
 
 from .report import footer
 
@@ -28,7 +29,7 @@ def run(
     from ..trial import TrialConfig
     from . import reference_suite
 
-    out = {"trials_per_task": trials, "workers": workers, "segmenter": segmenter, "suites": {}}
+    out: dict[str, Any] = {"trials_per_task": trials, "workers": workers, "segmenter": segmenter, "suites": {}}
     for suite in suites:
         tasks = tasks_of(suite)
         runs = {}

@@ -47,7 +47,7 @@ def solve_ik(
     else:
         p_target, R_target = np.asarray(target, float), None
     lo, hi = kin.lower, kin.upper
-    best = (np.inf, None)
+    best: tuple[float, tuple[float, float] | None] = (np.inf, None)
     total_iter = 0
     for attempt in range(restarts + 1):
         if attempt == 0:

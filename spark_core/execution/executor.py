@@ -10,11 +10,11 @@ from dataclasses import dataclass
 from ..grammar import Composite, CompositeType, Node, Plan, PrimitiveCall, walk
 from ..grammar.tree import child_path
 from ..perception import Keypoint, LabelNotFound
-from .step_control import Aborted, StepControl
 from .events import EventBus, EventKind
 from .protocols import ActionOutcome, Actuator, FailureKind, Resolver
 from .recovery import PERTURB, REDETECT, REPLAN, RecoveryPolicy
 from .result import NodeRecord, NodeStatus, TrialResult
+from .step_control import Aborted, StepControl
 
 BOTH_ARMS = "both"
 # Label-binding moves that position the hand for the label-free primitives after them (grasp, release, ...).
@@ -244,8 +244,8 @@ class Executor:
             rec.retries += 1
             action = spec.perturbation if tier == PERTURB else "retract+redetect"
             reanchor = anchor if tier == REDETECT and not call.labels else None
-            if reanchor is not None:
-                action += f"+reapproach:{reanchor.primitive}"
+            if reanchor is not None:  # tier REDETECT: action is "retract+redetect"
+                action = f"{action}+reapproach:{reanchor.primitive}"
             rec.recoveries.append(f"tier{tier}:{action}")
             self.bus.publish(
                 path,

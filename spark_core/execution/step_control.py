@@ -75,7 +75,7 @@ class StepControl:
             return "paused" if self.paused_at is not None else ("pausing" if self._paused else "running")
 
     # -- executor side -----------------------------------------------------------------------------------------
-    def checkpoint(self, node_path: str, on_pause: Callable[[str, str], None] | None = None) -> None:
+    def checkpoint(self, node_path: str, on_pause: Callable[[str, str], object] | None = None) -> None:
         """Block until `node_path` may start. Raises Aborted. `on_pause(path, why)` is called when pausing."""
         with self._cond:
             if self._aborted:

@@ -31,7 +31,7 @@ class _PlanLoader(yaml.SafeLoader):
         super().__init__(stream)
         self._depth = 0
 
-    def compose_node(self, parent, index):  # type: ignore[override]
+    def compose_node(self, parent, index):
         if self.check_event(yaml.AliasEvent):
             ev = self.peek_event()
             raise _fail("text", f"line {ev.start_mark.line + 1}: YAML aliases (*{ev.anchor}) are not allowed in plans")

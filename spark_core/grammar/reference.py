@@ -50,7 +50,8 @@ def markdown(registry: Registry = REGISTRY) -> str:
         for spec in specs:
             slots = "<br>".join(_slot_detail(s) for s in spec.slots) or "none"
             lines.append(
-                f"| `{spec.name}` | {slots} | {spec.arm.value} | {spec.timeout_s:g} s | {spec.postcondition} | {spec.description} |"
+                f"| `{spec.name}` | {slots} | {spec.arm.value} | {spec.timeout_s:g} s | {spec.postcondition} | "
+                f"{spec.description} |"
             )
         lines.append("")
     return "\n".join(lines)

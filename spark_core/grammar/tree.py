@@ -5,7 +5,7 @@ from __future__ import annotations
 import enum
 from collections.abc import Iterator
 from dataclasses import dataclass, field
-from typing import Any, Union
+from typing import Any
 
 from .registry import REGISTRY
 from .spec import PrimitiveSpec
@@ -48,7 +48,7 @@ class Composite:
     arm: str | None = None
 
 
-Node = Union[PrimitiveCall, Composite]
+Node = PrimitiveCall | Composite
 
 
 def child_path(parent: str, index: int) -> str:

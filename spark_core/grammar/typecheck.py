@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import difflib
 import json
-from typing import Any
+from typing import Any, cast
 
 from .errors import PlanError, PlanIssue
 from .loading import decode, load_text, unwrap
@@ -211,7 +211,7 @@ class _Checker:
         tree = self.node(data["tree"], "tree", 0, None)
         if tree is None or self.issues:
             return None
-        return Plan(task=task, tree=tree)
+        return Plan(task=cast(str, task), tree=tree)  # a str: any other value was reported above
 
 
 def _arms_used(node: Node) -> set[str]:

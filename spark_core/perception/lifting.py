@@ -55,11 +55,12 @@ def keypoint_from_points(label: str, evidence: list[PointEvidence], source: str)
         centre_xy = np.array([cx, cy])
     else:
         centre_xy = (lo[:2] + hi[:2]) / 2
-    yaw: float | None = np.radians(angle)
+    box_yaw = np.radians(angle)
+    yaw: float | None = box_yaw
     if w < 0.01 or h < 0.01 or abs(w - h) < 0.15 * max(w, h):
         yaw = None  # nearly square or too thin from this view: the principal axis is not observable
     elif w < h:
-        yaw = yaw + np.pi / 2  # long side along the principal axis
+        yaw = box_yaw + np.pi / 2  # long side along the principal axis
     extent_xy = np.array([max(w, h), min(w, h)]) if len(top) >= 5 else extent[:2]
     centre = np.array([centre_xy[0], centre_xy[1], (lo[2] + hi[2]) / 2])
     best = max(evidence, key=lambda e: e.detection.score)

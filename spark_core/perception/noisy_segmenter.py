@@ -64,6 +64,7 @@ class SimNoisySegmenter:
             if self.noise.confusion_rate and self.rng.random() < self.noise.confusion_rate:
                 other = self._confuser(det, frame, ids)
                 if other is not None:
+                    assert frame.object_ids is not None  # the base segmenter refuses frames without object ids
                     mask = frame.object_ids == ids[other]
                     detail.update(object=other, confused_from=det.detail.get("object"))
             k = abs(self.noise.erode_px)
@@ -77,6 +78,7 @@ class SimNoisySegmenter:
 
     def _confuser(self, det: Detection, frame: CameraFrame, ids: dict[str, int]) -> str | None:
         truth = det.detail.get("object")
+        assert frame.object_ids is not None  # only called on detections of the base segmenter, which needs them
         visible = {frame.labels[i] for i in np.unique(frame.object_ids) if i and i in frame.labels}
         sims = {k: v for k, v in self.base.similarities(det.prompt).items() if k in visible and k != truth}
-        return max(sims, key=sims.get) if sims else None
+        return max(sims, key=sims.__getitem__) if sims else None

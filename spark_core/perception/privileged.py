@@ -3,6 +3,8 @@ keypoint it returns is marked `privileged:sim-state`, and every figure produced 
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from .keypoint import Keypoint, LabelNotFound
@@ -41,7 +43,7 @@ class PrivilegedResolver:
         # The object's own length and width (a turned object's world box overstates them) decide which side the
         # fingers close across; see Ctx.grasp_yaw.
         own = self.world.body_extent_m(body, yaw)
-        detail = {"body_extent_m": [round(float(x), 5) for x in own]}
+        detail: dict[str, Any] = {"body_extent_m": [round(float(x), 5) for x in own]}
         if len(geoms) > 1:  # a region made of pieces (Wipe's dirt): where each piece is, for covering it
             xy = self.world.data.geom_xpos[geoms, :2] - self.world.origin_m[:2]
             detail["footprint_xy_m"] = [[round(float(x), 4), round(float(y), 4)] for x, y in xy]

@@ -8,6 +8,7 @@ executor's tier-2 recovery calls it after retracting).
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from typing import Any
 
 import numpy as np
 
@@ -70,7 +71,7 @@ class PerceptionResolver:
         self._ensure_fresh()
         variants = self.variants(label) if self.adaptive else []
         evidence: list[PointEvidence] = []
-        record = {"label": label, "t_sim_s": self._captured_at, "cameras": {}}
+        record: dict[str, Any] = {"label": label, "t_sim_s": self._captured_at, "cameras": {}}
         for cam, frame in self.frames.items():
             sel = select_prompt(self.segmenter, frame, label, variants)
             record["cameras"][cam] = sel.to_dict()

@@ -66,7 +66,8 @@ class Sam3Segmenter:
 
         self.path = locate_checkpoint(model or os.environ.get("SPARK_SAM3_MODEL", DEFAULT_MODEL))
         self.device = device or ("cuda" if torch.cuda.is_available() else "cpu")
-        self.model = Sam3Model.from_pretrained(str(self.path)).to(self.device).eval()
+        # transformers' stubs type .to() of a from_pretrained() result wrongly (as taking a model)
+        self.model = Sam3Model.from_pretrained(str(self.path)).to(self.device).eval()  # type: ignore[arg-type]
         self.tokenizer = AutoTokenizer.from_pretrained(str(self.path))
         self.image_size = int(self.model.config.vision_config.image_size)
         self.score_threshold = score_threshold

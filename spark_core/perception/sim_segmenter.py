@@ -117,6 +117,7 @@ class SimSegmenter:
         """Instances of `head`; when several, the one nearest the anchor objects (their midpoint for "between"),
         or the farthest when negated ("not between")."""
         dets = self.segment(frame, [head])
+        assert frame.object_ids is not None  # segment() refuses frames without object ids
         found = []
         for a in anchors:
             cands = [

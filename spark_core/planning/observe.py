@@ -6,6 +6,8 @@ action needs, e.g. a drawer's handle) is handed to perception, and only what per
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from ..perception import Keypoint, LabelNotFound
 from ..perception.resolver_protocol import Resolver
 from ..perception.summary import summarise
@@ -34,7 +36,7 @@ def phrases_for(instruction: str) -> list[str]:
     return list(out)
 
 
-def observe(instruction: str, resolver: Resolver, extra: list[str] = ()) -> SceneView:
+def observe(instruction: str, resolver: Resolver, extra: Sequence[str] = ()) -> SceneView:
     keypoints: dict[str, Keypoint] = {}
     for phrase in [*phrases_for(instruction), *extra]:
         try:

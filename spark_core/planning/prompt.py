@@ -65,4 +65,3 @@ def repair_prompt(errors: list[str]) -> str:
 
 def response_schema() -> dict:
     return plan_json_schema()
-

@@ -29,7 +29,7 @@ def label_table(world) -> tuple[dict[int, str], np.ndarray]:
     named += [(label, body) for label, (body, _) in world.scene.parts.items()]
     labels = {i: label for i, (label, _) in enumerate(named, start=1)}
     body_to_obj = np.zeros(m.nbody, dtype=np.int32)
-    depth = {}
+    depth: dict[int, int] = {}
     for i, (_label, body) in enumerate(named, start=1):
         if body in part_geoms:
             continue

@@ -12,9 +12,13 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING, Any, cast
 
 import mujoco
 import numpy as np
+
+if TYPE_CHECKING:
+    from av.video.stream import VideoStream
 
 
 @dataclass(frozen=True)
@@ -137,7 +141,7 @@ class EpisodeCapture:
             self.world.on_render_thread(self._renderer.close)
             self._renderer = None
         n = len(self.rows)
-        arrays = {
+        arrays: dict[str, Any] = {
             k: np.asarray([r[k] for r in self.rows], np.float32).reshape(n, -1)
             for k in ("state", "velocity", "ee_pose", "action")
         }
@@ -215,7 +219,7 @@ def encode_video(frames: list[np.ndarray], path: Path, fps: float, vcodec: str =
     os.environ.setdefault("SVT_LOG", "1")  # SVT-AV1: errors only
     rate = Fraction(fps).limit_denominator(1000)
     with av.open(str(path), "w") as out:
-        stream = out.add_stream(vcodec, rate=rate)
+        stream = cast("VideoStream", out.add_stream(vcodec, rate=rate))  # vcodec names a video codec
         h, w = frames[0].shape[:2] if frames else (16, 16)
         stream.width, stream.height, stream.pix_fmt = w, h, "yuv420p"
         stream.options = {"g": "2", "crf": "30"} if "av1" in vcodec else {"g": "2", "crf": "23", "preset": "veryfast"}

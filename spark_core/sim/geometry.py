@@ -4,6 +4,7 @@ their body frame) once, then body poses (world frame) per frame. Plain arrays, s
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import cast
 
 import mujoco
 import numpy as np
@@ -53,7 +54,7 @@ def visual_geoms(m: mujoco.MjModel) -> list[VisualGeom]:
             VisualGeom(
                 int(m.geom_bodyid[g]),
                 kind,
-                tuple(int(255 * c) for c in m.geom_rgba[g][:3]),
+                cast("tuple[int, int, int]", tuple(int(255 * c) for c in m.geom_rgba[g][:3])),
                 m.geom_pos[g].copy(),
                 m.geom_quat[g].copy(),
                 np.array(size, float),

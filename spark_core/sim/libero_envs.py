@@ -159,7 +159,8 @@ def objects(env) -> list[RobosuiteObject]:
     """Perception's view of a LIBERO scene: every object and fixture, labelled by its name ("akita_black_bowl_1"
     -> "akita black bowl"; a second of a kind is "akita black bowl 2")."""
     inner = env.env
-    out, seen = [], {}
+    out: list[RobosuiteObject] = []
+    seen: dict[str, int] = {}
     for name, obj in [*inner.objects_dict.items(), *inner.fixtures_dict.items()]:
         base = re.sub(r"_\d+$", "", name).replace("_", " ")
         seen[base] = seen.get(base, 0) + 1

@@ -129,6 +129,11 @@ class RobosuiteWorld(MujocoWorld):
     """A built and reset robosuite env behind the World protocol. `arms` maps our arm names to robosuite robot
     indices (one arm: `right`; two: `right`=robot0, `left`=robot1 unless given)."""
 
+    # Set by the suites that build such worlds, not here: LIBERO's language instruction (tasks/liberopro.py) and
+    # Wipe's referee (tasks/capbench.py).
+    instruction: str
+    referee: Any
+
     def __init__(
         self,
         env: Any,

@@ -106,6 +106,6 @@ def add_robot(scene: mujoco.MjSpec, robot: RobotDescription, prefix: str, T_worl
         tcp_site=prefix + "tcp",
         wrist_camera=prefix + "wrist",
         bodies=tuple(prefix + n for n in names),
-        finger_bodies=finger_bodies,  # type: ignore[arg-type]
+        finger_bodies=finger_bodies,
         base_body=base.name,
     )

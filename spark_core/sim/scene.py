@@ -160,9 +160,9 @@ def build_scene(
             body.add_freejoint(name=req.label + "/free")
         ospec.build(body, COLORS[req.color])
         objects[req.label] = PlacedObject(req.label, ospec, req.color, req.label, pos, yaw)
-        for part, desc in ospec.parts.items():
+        for part, part_desc in ospec.parts.items():
             # "drawer handle" of "cabinet" -> label "cabinet drawer handle", body "cabinet/handle"
-            parts[f"{req.label} {part}"] = (req.label + "/" + part.split()[-1], desc)
+            parts[f"{req.label} {part}"] = (req.label + "/" + part.split()[-1], part_desc)
     model = spec.compile()
     return Scene(
         model,

@@ -7,6 +7,7 @@ import threading
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import mujoco
 import numpy as np
@@ -15,6 +16,9 @@ from ..control.kinematics import ArmKinematics
 from ..control.pose import Pose
 from ..control.trajectory import JointTrajectory
 from .scene import Scene
+
+if TYPE_CHECKING:
+    from concurrent.futures import ThreadPoolExecutor
 
 CONTROL_DT_S = 0.01  # control period; physics runs at the scene's timestep underneath
 
@@ -72,7 +76,7 @@ class MujocoWorld:
         self.claims_lock = threading.Lock()  # arms check each other's targets and claim their own under it
         self.monitors: list[Callable[[MujocoWorld], None]] = []  # called every control period (task metrics)
         self.renderer = None
-        self._render_pool = None  # created on first use: see on_render_thread
+        self._render_pool: ThreadPoolExecutor | None = None  # created on first use: see on_render_thread
         self.wall_s = {"simulation": 0.0, "rendering": 0.0}  # wall seconds spent stepping physics / drawing cameras
         self.reset()
 

@@ -21,6 +21,7 @@ import time
 from dataclasses import dataclass, field
 from datetime import datetime
 from pathlib import Path
+from typing import Any, cast
 
 import numpy as np
 
@@ -473,7 +474,8 @@ class _ChunkedVideo:
     def __init__(self, root: Path, key: str, limit_mb: float, chunks_size: int, fps: float):
         self.root, self.key, self.limit, self.chunks_size, self.fps = root, key, limit_mb * 1e6, chunks_size, fps
         self.chunk = self.file = 0
-        self.container = self.stream = None
+        self.container: Any = None  # av OutputContainer of the current file
+        self.stream: Any = None
         self.frames = 0  # frames already in the current file
         self.path: Path | None = None
         self.files = 0
@@ -481,7 +483,8 @@ class _ChunkedVideo:
     def add(self, src: Path, n: int) -> tuple[int, int, float]:
         import av
 
-        if self.container is not None and self.path.stat().st_size + src.stat().st_size > self.limit:
+        # self.path is set with self.container
+        if self.container is not None and cast(Path, self.path).stat().st_size + src.stat().st_size > self.limit:
             self.close()
             self.file += 1
             if self.file == self.chunks_size:
@@ -498,12 +501,12 @@ class _ChunkedVideo:
                 self.frames = 0
                 self.files += 1
             t_from = self.frames / self.fps
-            offset = int(round(t_from / ist.time_base))
+            offset = int(round(t_from / ist.time_base))  # type: ignore[operator]  # a demuxed stream has one
             copied = 0
             for packet in inp.demux(ist):
                 if packet.dts is None:
                     continue  # the demuxer's end-of-stream marker
-                packet.pts += offset
+                packet.pts += offset  # type: ignore[operator]  # set whenever dts is (stream copy of an MP4)
                 packet.dts += offset
                 packet.stream = self.stream
                 self.container.mux(packet)

@@ -5,12 +5,15 @@ from __future__ import annotations
 import threading
 from collections.abc import Iterable
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any, cast
 
 from sqlalchemy import create_engine, delete, event, func, or_, select
 from sqlalchemy.orm import selectinload, sessionmaker
 
 from .models import BatchRow, EventRow, GroundingRow, PlanLibraryRow, TrialRow
+
+if TYPE_CHECKING:
+    from sqlalchemy import CursorResult
 
 MIGRATIONS_DIR = Path(__file__).resolve().parents[2] / "migrations"
 SORTABLE = {
@@ -102,7 +105,8 @@ class TraceStore:
         with self.Session.begin() as s:
             s.execute(delete(EventRow).where(EventRow.trial_id == trial_id))
             s.execute(delete(GroundingRow).where(GroundingRow.trial_id == trial_id))
-            return s.execute(delete(TrialRow).where(TrialRow.id == trial_id)).rowcount > 0
+            deleted = cast("CursorResult[Any]", s.execute(delete(TrialRow).where(TrialRow.id == trial_id)))
+            return deleted.rowcount > 0
 
     def interrupt_unfinished(self, reason: str = "the server stopped while the trial was running") -> int:
         """At start-up: trials left queued/running by a previous process are marked interrupted, not lost."""

@@ -38,7 +38,13 @@ def primitive_node(draw, arm_scope=None):
     if spec.name == "handoff":
         params["to_arm"] = "right" if params["from_arm"] == "left" else "left"
     node = {"primitive": spec.name}
-    if spec.arm is ArmUse.REQUIRED and arm_scope is None or spec.arm is not ArmUse.NONE and arm_scope is None and draw(st.booleans()):
+    if (
+        spec.arm is ArmUse.REQUIRED
+        and arm_scope is None
+        or spec.arm is not ArmUse.NONE
+        and arm_scope is None
+        and draw(st.booleans())
+    ):
         node["arm"] = draw(st.sampled_from(["left", "right"]))
     elif arm_scope is not None and spec.arm is not ArmUse.NONE and draw(st.booleans()):
         node["arm"] = arm_scope

@@ -12,7 +12,10 @@ from server.app import create_app
 from server.settings import Settings
 from tests.planning.fake_llm import FakeLLM
 
-PLAN = '{"task": "lift", "tree": {"type": "sequence", "children": [{"primitive": "pick", "params": {"keypoint_label": "red block"}}]}}'
+PLAN = (
+    '{"task": "lift", "tree": {"type": "sequence", "children": '
+    '[{"primitive": "pick", "params": {"keypoint_label": "red block"}}]}}'
+)
 
 
 @pytest.fixture()

@@ -63,9 +63,9 @@ def test_url_token_is_swapped_for_an_httponly_samesite_cookie_and_a_clean_url(tm
             pass
         c.cookies.clear()
         assert c.post("/api/plans/validate", json={"text": "x"}).status_code == 401
-        with pytest.raises(WebSocketDenialResponse) as refused:  # the token in a websocket URL is no credential
-            with c.websocket_connect(f"/api/events?token={TOKEN}"):
-                pass
+        # the token in a websocket URL is no credential
+        with pytest.raises(WebSocketDenialResponse) as refused, c.websocket_connect(f"/api/events?token={TOKEN}"):
+            pass
         assert refused.value.status_code == 401
         with c.websocket_connect("/api/events", headers={"Authorization": f"Bearer {TOKEN}"}):
             pass
@@ -123,9 +123,11 @@ def test_guessing_the_token_is_rate_limited_and_forwarded_for_from_loopback_does
 
 def test_cross_origin_pages_cannot_drive_a_loopback_console(tmp_path):
     with TestClient(create_app(_settings(tmp_path))) as c:  # loopback, no token: the default console
-        with pytest.raises(WebSocketDenialResponse) as refused:
-            with c.websocket_connect("/api/events", headers={"Origin": "http://evil.example"}):
-                pass
+        with (
+            pytest.raises(WebSocketDenialResponse) as refused,
+            c.websocket_connect("/api/events", headers={"Origin": "http://evil.example"}),
+        ):
+            pass
         assert refused.value.status_code == 403
         r = c.post("/api/trials", json={"task": "lift_block"}, headers={"Origin": "http://evil.example"})
         assert r.status_code == 403 and "evil.example" in r.json()["detail"]
@@ -183,9 +185,8 @@ def test_a_websocket_about_an_unknown_trial_is_answered_404_before_the_upgrade(t
         await websocket.close()
 
     with TestClient(app) as c:
-        with pytest.raises(WebSocketDenialResponse) as refused:
-            with c.websocket_connect("/api/trials/ghost-1/events"):
-                pass
+        with pytest.raises(WebSocketDenialResponse) as refused, c.websocket_connect("/api/trials/ghost-1/events"):
+            pass
         assert refused.value.status_code == 404 and "ghost-1" in refused.value.text
         for known in ("stored-1", "live-1"):
             with c.websocket_connect(f"/api/trials/{known}/events") as ws:

@@ -57,7 +57,7 @@ def test_camera_frame_contents(world):
 def test_depth_back_projects_onto_the_object(world):
     """Pixels of the red block, lifted to 3D with K, depth and T_world_camera, land on the block's surface."""
     f = world.render("agentview")
-    rid = next(i for i, l in f.labels.items() if l == "red block")
+    rid = next(i for i, label in f.labels.items() if label == "red block")
     v, u = np.nonzero(f.object_ids == rid)
     z = f.depth_m[v, u]
     pts_cam = np.stack([(u - f.K[0, 2]) * z / f.K[0, 0], (v - f.K[1, 2]) * z / f.K[1, 1], z], axis=1)

@@ -155,4 +155,3 @@ class Ctx:
 
     def fail(self, reason: str, kind: FailureKind = FailureKind.CONTROL) -> ActionOutcome:
         return ActionOutcome.fail(reason, kind)
-

@@ -8,6 +8,7 @@ from __future__ import annotations
 import threading
 from contextlib import contextmanager
 from dataclasses import replace
+from typing import cast
 
 import numpy as np
 
@@ -64,8 +65,8 @@ def _holds(ctx: Ctx, label: str) -> bool:
 @primitive("handoff")
 def handoff(ctx: Ctx) -> ActionOutcome:
     """The giver holds the object (it picks it first if needed, just inside one end, so the receiver has room;
-    see `_near_end`) and brings it between the arms, the rest of the object pointing at the receiver; the receiver grasps it
-    beside the giver's hand, as far along as the object allows; only once the receiver holds it does the giver
+    see `_near_end`) and brings it between the arms, the rest of the object pointing at the receiver; the receiver
+    grasps it beside the giver's hand, as far along as the object allows; only once the receiver holds it does the giver
     let go."""
     a = ctx.args
     label, giver, receiver = a["keypoint_label"], ctx.for_arm(a["from_arm"]), ctx.for_arm(a["to_arm"])
@@ -83,7 +84,9 @@ def handoff(ctx: Ctx) -> ActionOutcome:
     mid = (base[giver.arm] + base[receiver.arm]) / 2
     # Meet in front of arms standing side by side (their facing directions agree); between arms that face
     # each other across the table (the directions cancel), at the midpoint.
-    facing = sum(ctx.world.kinematics[arm].T_world_base[:3, 0] for arm in (giver.arm, receiver.arm)) / 2
+    facing = cast(
+        np.ndarray, sum(ctx.world.kinematics[arm].T_world_base[:3, 0] for arm in (giver.arm, receiver.arm)) / 2
+    )
     facing[2] = 0.0
     ahead = 0.5 * facing / np.linalg.norm(facing) if np.linalg.norm(facing) > 0.5 else np.zeros(3)
     meet = np.array([mid[0] + ahead[0], mid[1] + ahead[1], HANDOFF_HEIGHT_M])

@@ -110,7 +110,7 @@ def parse_instruction(instruction: str) -> list[Clause]:
     clauses: list[Clause] = []
     raw = split_clauses(text)
     # "put A in B and C in D": a second object/target pair after "and" with no verb of its own
-    expanded = []
+    expanded: list[str] = []
     for part in raw:
         # ("between the plate and the ramekin" is one phrase)
         expanded += (

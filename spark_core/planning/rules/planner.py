@@ -206,7 +206,7 @@ def _two_arm_branches(steps: list[dict], request: PlanRequest) -> list[dict] | N
             a: max(float(np.linalg.norm(scene[lb].position_m[:2] - np.asarray(request.arms[a]))) for lb in labels)
             for a in arms
         }
-        arm = min(arms, key=reach.get)
+        arm = min(arms, key=reach.__getitem__)
         branches[arm] += [{"primitive": "pick_with_arm", "params": dict(pick["params"])}, put]
     if not all(branches.values()):
         return None

@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from ..scene import ObjectRequest as O
 from ..world import MujocoWorld
 from .spec import TaskSpec
 
-FREE = dict(x=(0.38, 0.62), y=(-0.25, 0.25))
+FREE: dict[str, Any] = dict(x=(0.38, 0.62), y=(-0.25, 0.25))
 
 
 def _pos(w: MujocoWorld, body: str) -> np.ndarray:

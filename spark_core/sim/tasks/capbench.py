@@ -119,13 +119,15 @@ SUITE: dict[str, TaskSpec] = {
             "Stack",
             "stack the red cube on the green cube",
             _robosuite_success,
-            "robosuite Stack: red cube lifted, touching the green cube, not grasped (CaP-X placement x +-18, y +-12 cm)",
+            "robosuite Stack: red cube lifted, touching the green cube, not grasped "
+            "(CaP-X placement x +-18, y +-12 cm)",
         ),
         _task(
             "CubeRestack",
             "put the red cube on top of the green cube",
             _robosuite_success,
-            "robosuite Stack predicate on CaP-X CubeRestack: two 4 cm cubes, green starts on red; red ends on green, released",
+            "robosuite Stack predicate on CaP-X CubeRestack: two 4 cm cubes, green starts on red; "
+            "red ends on green, released",
         ),
         _task(
             "Wipe",

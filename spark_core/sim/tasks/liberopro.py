@@ -6,9 +6,15 @@ paper's step limit. Needs the benchmark extras (`make bench-deps`).
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import TYPE_CHECKING, cast
+
 from ..libero_envs import LiberoTask, make_env, objects, tasks
 from ..robosuite_world import RobosuiteWorld
 from .spec import TaskSpec
+
+if TYPE_CHECKING:
+    from ..world import MujocoWorld
 
 LIBERO_PANDA = "libero-panda"
 
@@ -25,16 +31,19 @@ def _success(world: RobosuiteWorld) -> bool:
 
 
 def _spec(t: LiberoTask) -> TaskSpec:
+    def world_factory(seed: int) -> RobosuiteWorld:
+        return _world(t, seed)
+
     return TaskSpec(
         t.name,
         t.instruction,
         (),
-        _success,
+        cast("Callable[[MujocoWorld], bool]", _success),  # its worlds are RobosuiteWorlds: see world_factory
         "LIBERO BDDL goal (env.check_success())",
         max_sim_s=t.horizon_s,
         tags=("liberopro", t.cell),
         embodiments=(LIBERO_PANDA,),
-        world_factory=lambda seed, t=t: _world(t, seed),
+        world_factory=world_factory,
     )
 
 
