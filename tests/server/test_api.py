@@ -148,11 +148,12 @@ def test_restart_interrupts_unfinished_trials(tmp_path):
         assert t["status"] == "interrupted" and "server stopped" in t["reason"]
 
 
-def test_api_benchmark_runs_on_a_bulk_store():
-    from server.bench_api import run, section
+def test_api_benchmark_runs_over_real_http_on_a_bulk_store():
+    from spark_cli.console_bench.api import run, section
 
-    r = run(n_trials=300, n_requests=5)
-    assert r["trials"] == 300 and all(0 < p50 <= p99 for p50, p99 in (r["list"], r["list_filtered"], r["get"]))
+    r = run(n_trials=300, n_requests=5, n_concurrent=10, trajectory_rows=50)
+    assert r["trials"] == 300 and r["within_1s"] <= 10
+    assert all(0 < p50 <= p99 <= mx for p50, p99, mx in r["ms"].values())
     assert "| get one trial with its events |" in section(r, "spark bench api")
 
 
@@ -233,14 +234,14 @@ def test_dashboard_stream_announces_every_status_change(client):
     assert seen == [("trial", "queued"), ("trial", "running"), ("trial", "done")]
 
 
-def test_a_crashing_trial_fails_with_its_reason_and_the_worker_lives_on(client):
-    bad = client.post("/api/trials", json={"task": "lift_block", "planner": "openai"}).json()["id"]  # no --model
+def test_a_planner_that_cannot_run_fails_its_trial_with_the_reason_and_the_worker_lives_on(client, monkeypatch):
+    no_model = client.post("/api/trials", json={"task": "lift_block", "planner": "openai"})
+    assert no_model.status_code == 422 and "model: the openai planner needs a model name" in no_model.text
+    monkeypatch.delenv("OPENAI_API_KEY", raising=False)  # before the first trial spawns a worker
+    bad = client.post("/api/trials", json={"task": "lift_block", "planner": "openai", "model": "m"}).json()["id"]
     trial = wait_done(client, bad)
-    assert trial["success"] is False and trial["failure"] == "planner"
-    assert (
-        trial["reason"]
-        == "planner 'openai' unavailable: the openai planner needs --model (e.g. gpt-4.1, or the name your local server serves)"
-    )
+    assert trial["success"] is False and trial["verdict"] == "planner_error" and trial["failure"] == "planner"
+    assert "planner 'openai' unavailable: the openai planner needs OPENAI_API_KEY" in trial["reason"]
     assert client.get("/api/health").json() == {"status": "ok"}
     again = client.post("/api/trials", json={"task": "lift_block", "segmenter": "privileged-keypoints"}).json()["id"]
     assert wait_done(client, again)["success"] is True  # the same worker processes keep serving
