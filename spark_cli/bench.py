@@ -154,9 +154,8 @@ def _cmd_bench(args: argparse.Namespace) -> int:
 
         rows, errors = paraphrases.run(args.seed)
         for r in rows:
-            print(
-                f"{'ok ' if r['success'] else 'FAIL'} {r['task']:<16} {r['instruction']!r} {'' if r['success'] else r['outcome']}"
-            )
+            mark, why = ("ok ", "") if r["success"] else ("FAIL", r["outcome"])
+            print(f"{mark} {r['task']:<16} {r['instruction']!r} {why}")
         for e in errors:
             print(f"{'refused' if e['refused'] else 'PLANNED'} {e['instruction']!r}: {e['error']}")
         title, body = "rules planner on paraphrased instructions", paraphrases.section(rows, errors, command)

@@ -217,9 +217,10 @@ def _cmd_run(args: argparse.Namespace) -> int:
     if not PLANNERS[config.planner].offline and plan_text is None:
         library = _library(args)
     out = run_trial(config, sinks, library=library)
+    limit_s = out.protocol.get("time_limit_s")
     print(
-        f"verdict: {out.verdict.value}; task predicate: {_yes_no(out.task_success)} ({out.protocol.get('time_limit_s')} s "
-        f"limit); behavior tree: {out.tree_status or 'not run'}"
+        f"verdict: {out.verdict.value}; task predicate: {_yes_no(out.task_success)} ({limit_s} s limit); "
+        f"behavior tree: {out.tree_status or 'not run'}"
     )
     if out.reason:
         print(f"reason: {out.reason}")

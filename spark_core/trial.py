@@ -272,9 +272,10 @@ def run_trial(
 
     task = TASKS[config.task]
     trial_id = trial_id or f"{task.name}-{config.seed}-{int(time.time() * 1000)}"
-    control = control or StepControl(config.breakpoints)
-    if config.start_paused:
-        control.pause()
+    if control is None:  # a caller's own control already carries its state (the console forwards it)
+        control = StepControl(config.breakpoints)
+        if config.start_paused:
+            control.pause()
     t0 = time.perf_counter()
     time_limit_s = config.time_limit_s or task.max_sim_s
     protocol = config.protocol(time_limit_s)

@@ -216,11 +216,11 @@ def section(r: dict, command: str) -> str:
         + "\n\n"
         + footer(
             command,
-            f"{r['within_1s']}/{r['concurrent']} concurrent list requests answered within 1 s (target: all; list p50 "
-            f"target <= 15 ms). Store: {r['trials']} trials ({r['trajectory_rows']} trajectory rows, {r['events']} events "
-            f"each), SQLite WAL; server: uvicorn in its own process on 127.0.0.1 (the defaults of `spark serve`: one "
-            f"process, sync routes in its thread pool); sequential rows: {r['requests']} requests each over one keep-alive "
-            f"connection (httpx); concurrent row: {r['concurrent']} connections opened first, then one request on each "
-            "at once (asyncio streams)",
+            f"{r['within_1s']}/{r['concurrent']} concurrent list requests answered within 1 s (target: all; "
+            f"list p50 target <= 15 ms). Store: {r['trials']} trials ({r['trajectory_rows']} trajectory rows, "
+            f"{r['events']} events each), SQLite WAL; server: uvicorn in its own process on 127.0.0.1 (the defaults "
+            f"of `spark serve`: one process, sync routes in its thread pool); sequential rows: {r['requests']} "
+            f"requests each over one keep-alive connection (httpx); concurrent row: {r['concurrent']} connections "
+            "opened first, then one request on each at once (asyncio streams)",
         )
     )

@@ -3,6 +3,7 @@ plans that do not type-check, usage and cost, and a clean failure that keeps the
 
 from __future__ import annotations
 
+import functools
 import json
 import time
 from collections.abc import Callable
@@ -76,7 +77,7 @@ def plan_with_llm(
     texts: list[str] = []
     for round_ in range(settings.repair_rounds + 1):
         try:
-            out = _with_retries(settings, lambda: call(system, turns, image))
+            out = _with_retries(settings, functools.partial(call, system, list(turns), image))
         except (TransientError, PlannerUnavailable) as e:
             return PlanResult(
                 backend,

@@ -48,7 +48,7 @@ class OpenAIPlanner:
             messages.append({"role": "user" if turn.role == "user" else "assistant", "content": content})
         o = self.openai
         try:
-            resp = self.client.chat.completions.create(
+            resp = self.client.chat.completions.create(  # type: ignore[call-overload]  # plain dicts, typed by the SDK as TypedDicts
                 model=self.settings.model,
                 messages=messages,
                 temperature=self.settings.temperature,

@@ -161,7 +161,7 @@ def test_reference_plan_solves_the_task(task):
 
     out = run_trial(TrialConfig(task, segmenter="privileged-keypoints", seed=0))
     assert out.success, f"{out.verdict}: {out.failed_node} {out.reason}"
-    assert "privileged:sim-state" in out.protocol["resolver"]
+    assert out.protocol["segmenter"] == "privileged-keypoints" and out.protocol["privileged"] is True
 
 
 @pytest.mark.parametrize("task", ["stack_two", pytest.param("block_in_drawer", marks=pytest.mark.slow)])
@@ -171,7 +171,8 @@ def test_reference_plan_through_cameras_and_the_sim_segmenter(task):
 
     out = run_trial(TrialConfig(task, segmenter="sim", seed=1))
     assert out.success, f"{out.verdict}: {out.failed_node} {out.reason}"
-    assert "sim segmenter (privileged masks)" in out.protocol["resolver"]
+    assert out.protocol["segmenter"] == "sim" and out.protocol["privileged"] is True
+    assert out.protocol["cameras"] == "scene default" and out.protocol["adaptive_prompts"] is True
 
 
 def test_a_seen_object_is_grasped_across_its_short_side_however_it_is_turned():
