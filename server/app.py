@@ -18,18 +18,24 @@ def create_app(settings: Settings | None = None) -> FastAPI:
 
     @asynccontextmanager
     async def lifespan(app: FastAPI):
-        from spark_core import TraceStore
+        from spark_core import StoreLease, TraceStore
 
+        from .purge import start_purging
         from .runner import TrialRunner
 
         store = TraceStore(settings.store_url)
-        store.interrupt_unfinished()
+        # One server per store: a second console refuses to start (LeaseHeld names the holder) before it touches
+        # a trial; the first one's live trials are its own.
+        lease = StoreLease(store)
+        lease.acquire()
+        lease.start_heartbeat()
+        store.interrupt_unfinished(lease=lease, keep_queued=True)  # running ones were cut off; queued ones run now
         scene = None
         if settings.viser:
             from .viser_scene import ViserScene
 
             scene = ViserScene("127.0.0.1", settings.viser_port)  # loopback only: browsers come through /viser
-        app.state.store, app.state.settings, app.state.scene = store, settings, scene
+        app.state.store, app.state.settings, app.state.scene, app.state.lease = store, settings, scene, lease
         app.state.runner = TrialRunner(
             store,
             settings.workers,
@@ -38,10 +44,16 @@ def create_app(settings: Settings | None = None) -> FastAPI:
             settings.hang_timeout_s,
             settings.spawn_workers_at_start,
         )
-        yield
-        app.state.runner.shutdown()
-        if scene is not None:
-            scene.stop()
+        app.state.runner.requeue_recorded()
+        stop_purging = start_purging(store, settings.delete_grace_s, settings.artifacts_dir, settings.purge_every_s)
+        try:
+            yield
+        finally:
+            stop_purging()
+            app.state.runner.shutdown(settings.shutdown_timeout_s)
+            lease.release()
+            if scene is not None:
+                scene.stop()
 
     app = FastAPI(
         title="SPARK console",

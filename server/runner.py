@@ -4,7 +4,11 @@ live subscribers, and the 3D view follows the most recently started trial.
 
 A worker that dies (crash, kill, out of memory) or stops responding (no message for `hang_timeout_s`; a running
 trial streams 3D poses at ~30 Hz, so silence means it is stuck) fails its trial with the reason; the slot
-starts a fresh process for the next trial and the console carries on."""
+starts a fresh process for the next trial and the console carries on.
+
+On shutdown, running trials are stopped and recorded as interrupted (within a deadline: a server must stop in
+seconds); queued ones stay queued in the store, and the next start queues them again from their recorded
+config."""
 
 from __future__ import annotations
 
@@ -17,7 +21,16 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
-from spark_core import StepControl, TraceStore, TrialConfig, Verdict, check_task
+from spark_core import (
+    StepControl,
+    TraceStore,
+    TrialConfig,
+    TrialConfigError,
+    Verdict,
+    check_task,
+    config_from_record,
+    config_record,
+)
 
 from .worker import WorkerProcess
 
@@ -76,6 +89,8 @@ class Live:
     history: list[dict] = field(default_factory=list)  # every event so far
     subscribers: list[Callable[[dict], None]] = field(default_factory=list)
     worker_pid: int | None = None
+    sent: bool = False  # handed to a worker process: it is running
+    stopped_by_shutdown: bool = False  # the server (not the operator) stopped it
 
 
 class TrialRunner:
@@ -126,11 +141,7 @@ class TrialRunner:
     # -- operator -----------------------------------------------------------------------------------------------
     def submit(self, trial_id: str, config: TrialConfig) -> None:
         """Queue a checked config; its row is recorded at once (status queued)."""
-        live = Live(config, RemoteControl(config.breakpoints))
-        if config.start_paused:
-            live.control.pause()  # stops before the first primitive: set breakpoints on the tree, then resume
-        with self._lock:
-            self.live[trial_id] = live
+        self._track(trial_id, config)
         self.store.create_trial(
             trial_id,
             status="queued",
@@ -144,6 +155,38 @@ class TrialRunner:
         )
         self._announce(trial_id, "queued", task=config.task)
         self.queue.put(trial_id)
+
+    def requeue_recorded(self) -> tuple[int, int]:
+        """At start-up: trials a previous server queued but never started run now, as they were asked for (from
+        the config recorded at queue time). One that cannot be rebuilt is marked interrupted with why.
+        Returns (queued again, interrupted)."""
+        again = lost = 0
+        for rec in self.store.queued_trials():
+            try:
+                config = config_from_record(rec["protocol"].get("config") or {})
+            except TrialConfigError as e:
+                self.store.update_trial(
+                    rec["id"],
+                    status="interrupted",
+                    outcome="aborted",
+                    verdict=Verdict.INTERRUPTED.value,
+                    success=False,
+                    reason=f"the server stopped before the trial started, and it cannot be queued again: {e}",
+                )
+                lost += 1
+                continue
+            self._track(rec["id"], config)
+            self.queue.put(rec["id"])
+            again += 1
+        return again, lost
+
+    def _track(self, trial_id: str, config: TrialConfig) -> Live:
+        live = Live(config, RemoteControl(config.breakpoints))
+        if config.start_paused:
+            live.control.pause()  # stops before the first primitive: set breakpoints on the tree, then resume
+        with self._lock:
+            self.live[trial_id] = live
+        return live
 
     def cancel(self, trial_id: str) -> bool:
         """A queued trial is dropped before it runs (recorded as cancelled); a running one is aborted."""
@@ -179,21 +222,44 @@ class TrialRunner:
         for cb in subs:
             cb(ev)
 
-    def shutdown(self) -> None:
+    def shutdown(self, timeout_s: float = 3.0) -> None:
+        """Stop within `timeout_s`: running trials are aborted and recorded as interrupted; queued ones stay
+        queued in the store (the next start runs them); worker processes exit, or are killed."""
+        deadline = time.monotonic() + timeout_s
         self._closing = True
         with self._lock:
-            running = list(self.live.values())
-        for live in running:
-            live.control.abort()
+            running = [(tid, live) for tid, live in self.live.items() if live.sent]
+        for _, live in running:
+            if not live.control.aborted:  # an operator's abort stays the operator's
+                live.stopped_by_shutdown = True
+                live.control.abort()
         for _ in self.threads:
             self.queue.put(None)
         for t in self.threads:
-            t.join(10.0)
+            t.join(max(0.0, deadline - time.monotonic() - 0.5))
         workers = [p for p in self.processes if p is not None]
         for p in workers:  # all at once: each exits in parallel
             p.send("stop")
         for p in workers:
-            p.stop()
+            p.process.join(max(0.1, deadline - time.monotonic()))
+            p.kill()
+        for trial_id, live in running:  # still not recorded (its slot did not finish in time): say so now
+            if live.stopped_by_shutdown:
+                self._mark_interrupted(trial_id)
+
+    def _mark_interrupted(self, trial_id: str) -> None:
+        """A trial the server stopped at shutdown: interrupted, unless it had already ended on its own."""
+        with contextlib.suppress(Exception):  # the store may be going away with the process
+            trial = self.store.get_trial(trial_id) or {}
+            if trial and trial.get("verdict") in (None, Verdict.ABORTED.value, Verdict.CRASHED.value):
+                self.store.update_trial(
+                    trial_id,
+                    status="interrupted",
+                    outcome="aborted",
+                    verdict=Verdict.INTERRUPTED.value,
+                    success=False,
+                    reason="the server shut down while the trial was running",
+                )
 
     # -- slots --------------------------------------------------------------------------------------------------
     def _slot(self, i: int, spawn_at_start: bool) -> None:
@@ -204,6 +270,11 @@ class TrialRunner:
                 self._worker(i)
         while (trial_id := self.queue.get()) is not None:
             live = self.live[trial_id]
+            if self._closing:  # not started: it stays queued in the store, and the next start runs it
+                with self._lock:
+                    self.live.pop(trial_id, None)
+                self._fan_out(live, {"kind": "closed"})
+                continue
             t0 = time.perf_counter()
             try:
                 if live.control.aborted:  # cancelled while queued: never starts
@@ -216,9 +287,15 @@ class TrialRunner:
                         reason="cancelled before it started",
                     )
                     continue
-                worker = self._worker(i)
+                try:
+                    worker = self._worker(i)
+                except RuntimeError:
+                    if self._closing:
+                        continue  # stopped while its worker warmed up: still queued, as above
+                    raise
                 live.worker_pid = worker.pid
                 state = live.control.attach(functools.partial(_forward, worker, trial_id))
+                live.sent = True
                 worker.send("run", trial_id, live.config, state)
                 failure = self._pump(trial_id, live, worker)
                 if failure:
@@ -230,6 +307,8 @@ class TrialRunner:
                     trial_id, live, f"internal error: {type(e).__name__}: {e}", time.perf_counter() - t0
                 )
             finally:
+                if live.stopped_by_shutdown:
+                    self._mark_interrupted(trial_id)
                 with self._lock:
                     self.live.pop(trial_id, None)
                 self._fan_out(live, {"kind": "closed"})
@@ -313,9 +392,6 @@ def _forward(worker: WorkerProcess, trial_id: str, action: str, arg: object) -> 
 
 
 def _config_record(config: TrialConfig) -> dict:
-    """The submitted config as JSON (what the operator asked for, kept even if the worker never starts)."""
-    from dataclasses import asdict
-
-    out = asdict(config)
-    out["noise"] = config.noise.describe() if config.segmenter == "sim-noisy" else None
-    return out
+    """The submitted config as JSON (what the operator asked for, kept even if the worker never starts), in full:
+    a restart queues the trial again from it."""
+    return config_record(config)

@@ -27,6 +27,9 @@ class Settings:
     # Proxies whose X-Forwarded-For names the real client (IPs or CIDRs). None by default: the header is ignored.
     trusted_proxies: tuple[str, ...] = field(default_factory=tuple)
     max_body_bytes: int = 1024 * 1024  # request bodies, streamed (chunked) ones included
+    delete_grace_s: float = 24 * 3600.0  # a deleted trial can be restored this long, then it is purged with its files
+    purge_every_s: float = 600.0
+    shutdown_timeout_s: float = 2.5  # running trials are stopped (recorded interrupted) within this on shutdown
 
     @classmethod
     def from_env(cls) -> Settings:
@@ -44,6 +47,7 @@ class Settings:
             artifacts_dir=e.get("SPARK_ARTIFACTS_DIR", cls.artifacts_dir),
             exports_dir=e.get("SPARK_EXPORTS_DIR", cls.exports_dir),
             viser_port=int(e.get("SPARK_VISER_PORT", 0)),
+            delete_grace_s=float(e.get("SPARK_DELETE_GRACE_S", cls.delete_grace_s)),
         )
 
     @property

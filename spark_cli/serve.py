@@ -41,6 +41,13 @@ def _cmd_serve(args: argparse.Namespace) -> int:
             file=sys.stderr,
         )
         return 2
+    from spark_core import LeaseHeld, StoreLease, TraceStore
+
+    try:  # one server per store: say so plainly here (the app's start-up takes the lease itself)
+        StoreLease(TraceStore(settings.store_url)).refuse_if_held()
+    except LeaseHeld as e:
+        print(f"refusing to serve: {e}", file=sys.stderr)
+        return 2
     os.environ.setdefault("MUJOCO_GL", "egl")
     print(f"SPARK console API on http://{settings.host}:{settings.port} (docs at /docs); store {settings.store_url}")
     uvicorn.run(create_app(settings), host=settings.host, port=settings.port, log_level="info", **uvicorn_options())

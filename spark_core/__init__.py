@@ -22,6 +22,8 @@ _EXPORTS: dict[str, str] = {
     "TrialContext": "spark_core.trial",
     "TrialOutcome": "spark_core.trial_outcome",
     "Verdict": "spark_core.trial_outcome",
+    "config_record": "spark_core.trial_record",
+    "config_from_record": "spark_core.trial_record",
     # the catalog
     "catalog_json": "spark_core.catalog",
     "CatalogError": "spark_core.catalog",
@@ -59,6 +61,8 @@ _EXPORTS: dict[str, str] = {
     "VisualGeom": "spark_core.sim.geometry",
     # trace store, its sink, exports
     "TraceStore": "spark_core.trace",
+    "StoreLease": "spark_core.trace.lease",
+    "LeaseHeld": "spark_core.trace.lease",
     "StoreSink": "spark_core.trace.sink",
     "StorePlanLibrary": "spark_core.trace.library_table",
     "export_lerobot": "spark_core.trace.lerobot",

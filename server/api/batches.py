@@ -4,18 +4,20 @@ progress, result table (JSON or CSV), per-trial export, cancel."""
 from __future__ import annotations
 
 import uuid
+from typing import Annotated
 
-from fastapi import APIRouter, HTTPException, Request
+from fastapi import APIRouter, HTTPException, Path, Request
 from fastapi.responses import PlainTextResponse
 from pydantic import BaseModel, ConfigDict, Field
 
 from spark_core import PLANNERS, SEGMENTERS, wilson
 from spark_core import suites as catalog_suites
 
-from .models import MAX_SEED, TrialCreate
+from .models import MAX_ID, MAX_NAME, MAX_SEED, TrialCreate
 from .trials import trial_config
 
 router = APIRouter(prefix="/api/batches", tags=["batches"])
+BatchId = Annotated[str, Path(max_length=MAX_ID)]
 
 
 class BatchTrial(BaseModel):
@@ -23,7 +25,7 @@ class BatchTrial(BaseModel):
 
     model_config = ConfigDict(extra="forbid")
 
-    task: str
+    task: str = Field(max_length=MAX_NAME)
     instruction: str | None = Field(None, max_length=2000, description="default: the task's own")
     seed: int = Field(0, ge=0, le=MAX_SEED, strict=True)
     planner: str | None = Field(None, json_schema_extra={"enum": list(PLANNERS)})
@@ -33,11 +35,13 @@ class BatchTrial(BaseModel):
 class BatchCreate(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
-    suite: str = Field("builtin", description="task suite (GET /api/catalog lists them)")
+    suite: str = Field("builtin", max_length=MAX_NAME, description="task suite (GET /api/catalog lists them)")
     specs: list[BatchTrial] | None = Field(
         None, max_length=2000, description="explicit trials (instead of tasks × trials from the suite)"
     )
-    tasks: list[str] | None = Field(None, max_length=2000, description="subset of the suite's tasks (default: all)")
+    tasks: list[Annotated[str, Field(max_length=MAX_NAME)]] | None = Field(
+        None, max_length=2000, description="subset of the suite's tasks (default: all)"
+    )
     trials: int = Field(1, ge=1, le=100, strict=True, description="seeds per task")
     seed: int = Field(0, ge=0, le=MAX_SEED, strict=True)
     planner: str = Field("reference", json_schema_extra={"enum": list(PLANNERS)})
@@ -113,7 +117,7 @@ def create_batch(body: BatchCreate, request: Request) -> dict:
 
 
 @router.get("/{batch_id}")
-def get_batch(batch_id: str, request: Request) -> dict:
+def get_batch(batch_id: BatchId, request: Request) -> dict:
     return _batch_with_results(request, batch_id)
 
 
@@ -137,7 +141,7 @@ CSV_TRIAL_COLUMNS = (
 
 
 @router.get("/{batch_id}/results.csv", response_class=PlainTextResponse)
-def batch_results_csv(batch_id: str, request: Request) -> PlainTextResponse:
+def batch_results_csv(batch_id: BatchId, request: Request) -> PlainTextResponse:
     """The per-task result table (success rate with its Wilson 95 % interval) as CSV."""
     b = _batch_with_results(request, batch_id)
     rows = [
@@ -158,7 +162,7 @@ def batch_results_csv(batch_id: str, request: Request) -> PlainTextResponse:
 
 
 @router.get("/{batch_id}/trials.csv", response_class=PlainTextResponse)
-def batch_trials_csv(batch_id: str, request: Request) -> PlainTextResponse:
+def batch_trials_csv(batch_id: BatchId, request: Request) -> PlainTextResponse:
     """One row per trial of the batch (outcome, failure attribution, timings, cost) as CSV."""
     b = _batch_with_results(request, batch_id)
     return _csv(b["trials"], CSV_TRIAL_COLUMNS, f"{batch_id}-trials.csv")
@@ -203,7 +207,7 @@ def _batch_with_results(request: Request, batch_id: str) -> dict:
 
 
 @router.post("/{batch_id}/cancel")
-def cancel_batch(batch_id: str, request: Request) -> dict:
+def cancel_batch(batch_id: BatchId, request: Request) -> dict:
     store, runner = request.app.state.store, request.app.state.runner
     batch = store.get_batch(batch_id)
     if batch is None:

@@ -6,16 +6,21 @@ import re
 import shutil
 import uuid
 from pathlib import Path
+from typing import Annotated
 
 from fastapi import APIRouter, HTTPException, Request
 from fastapi.responses import FileResponse
 from pydantic import BaseModel, Field
 
+from .models import MAX_ID
+
 router = APIRouter(prefix="/api/exports", tags=["exports"])
 
 
 class ExportCreate(BaseModel):
-    trial_ids: list[str] | None = Field(None, max_length=5000, description="these trials (history selection)")
+    trial_ids: list[Annotated[str, Field(max_length=MAX_ID)]] | None = Field(
+        None, max_length=5000, description="these trials (history selection)"
+    )
     batch: str | None = Field(None, max_length=64, description="or every trial of this batch")
     success_only: bool = Field(True, description="verified successes only (clean demonstrations)")
     format: str = Field("lerobot", pattern="^lerobot$")

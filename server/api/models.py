@@ -2,13 +2,19 @@
 
 from __future__ import annotations
 
-from typing import Any, Literal
+from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator
 
 from spark_core import EMBODIMENTS, PLANNERS, SEGMENTERS, CatalogError, check_embodiment, check_planner, check_segmenter
 
 MAX_SEED = 2**31 - 1  # a seed the simulators' RNGs take (np.random, robosuite, LIBERO init-state index)
+MAX_OFFSET = 10**9  # list paging: far past any store, well inside SQLite's 64-bit integers
+MAX_ID = 256  # trial ids: "{batch}-{n}-{task}-{seed}" at most ~170 characters
+MAX_NAME = 128  # task, suite and backend names
+
+
+NodePath = Annotated[str, Field(max_length=256)]  # e.g. tree.children[2].children[0]
 
 
 def _enum(names: Any) -> dict[str, Any]:
@@ -18,7 +24,7 @@ def _enum(names: Any) -> dict[str, Any]:
 class TrialCreate(BaseModel):
     model_config = ConfigDict(extra="forbid")  # a misspelt or retired field (base_url) is an error, not ignored
 
-    task: str = Field(description="task whose scene to run in (GET /api/catalog lists them)")
+    task: str = Field(max_length=MAX_NAME, description="task whose scene to run in (GET /api/catalog lists them)")
     instruction: str | None = Field(None, max_length=2000, description="default: the task's own instruction")
     planner: str = Field("reference", json_schema_extra=_enum(PLANNERS))
     segmenter: str = Field(
@@ -27,7 +33,7 @@ class TrialCreate(BaseModel):
         description="perception backend; GET /api/catalog says which are privileged",
     )
     seed: int = Field(0, ge=0, le=MAX_SEED, strict=True)
-    breakpoints: list[str] = Field(default_factory=list, max_length=200, description="node paths to pause before")
+    breakpoints: list[NodePath] = Field(default_factory=list, max_length=200, description="node paths to pause before")
     model: str | None = Field(None, max_length=200)
     endpoint: str | None = Field(
         None, max_length=100, description="an LLM endpoint the operator configured (GET /api/catalog lists them)"
@@ -80,9 +86,20 @@ class TrialPage(BaseModel):
     items: list[dict[str, Any]]
 
 
+class TrialDeleted(BaseModel):
+    id: str
+    purged: bool  # True: gone for good, files included
+    restore_until: str | None  # ISO time until which POST /api/trials/{id}/restore undoes the delete
+
+
+class TrialRestored(BaseModel):
+    id: str
+    restored: bool
+
+
 class Control(BaseModel):
     action: Literal["pause", "resume", "step", "abort", "breakpoints"]
-    breakpoints: list[str] | None = Field(None, max_length=200)
+    breakpoints: list[NodePath] | None = Field(None, max_length=200)
 
 
 class PlanText(BaseModel):

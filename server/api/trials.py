@@ -1,18 +1,23 @@
-"""Trials: create (queued for a worker), list, get, delete, step-through control, live events."""
+"""Trials: create (queued for a worker), list, get, delete (undoable for a grace period) and restore,
+step-through control, live events."""
 
 from __future__ import annotations
 
 import asyncio
 import uuid
+from datetime import timedelta
+from typing import Annotated
 
-from fastapi import APIRouter, HTTPException, Query, Request, WebSocket, WebSocketDisconnect
+from fastapi import APIRouter, HTTPException, Path, Query, Request, WebSocket, WebSocketDisconnect
 
 from spark_core import TrialConfig, TrialConfigError
 
 from .auth import websocket_allowed
-from .models import Control, TrialCreate, TrialCreated, TrialPage
+from .models import MAX_ID, MAX_OFFSET, Control, TrialCreate, TrialCreated, TrialDeleted, TrialPage, TrialRestored
+from .streams import GONE, finish, watch_disconnect
 
 router = APIRouter(prefix="/api/trials", tags=["trials"])
+TrialId = Annotated[str, Path(max_length=MAX_ID)]
 
 
 @router.post("", status_code=202, response_model=TrialCreated)
@@ -59,15 +64,15 @@ def trial_config(body: TrialCreate, batch_id: str | None = None) -> TrialConfig:
 @router.get("", response_model=TrialPage)
 def list_trials(
     request: Request,
-    status: str | None = None,
-    task: str | None = None,
+    status: str | None = Query(None, max_length=16),
+    task: str | None = Query(None, max_length=128),
     success: bool | None = None,
     verdict: str | None = Query(None, max_length=32),
     batch: str | None = Query(None, max_length=64),
     q: str | None = Query(None, max_length=200),
-    sort: str = "-created_at",
+    sort: str = Query("-created_at", max_length=32),
     limit: int = Query(50, ge=1, le=500),
-    offset: int = Query(0, ge=0),
+    offset: int = Query(0, ge=0, le=MAX_OFFSET),
 ) -> TrialPage:
     try:
         total, items = request.app.state.store.list_trials(
@@ -87,7 +92,7 @@ def list_trials(
 
 
 @router.get("/{trial_id}")
-def get_trial(trial_id: str, request: Request) -> dict:
+def get_trial(trial_id: TrialId, request: Request) -> dict:
     trial = request.app.state.store.get_trial(trial_id)
     if trial is None:
         raise HTTPException(404, f"no trial {trial_id!r}")
@@ -100,7 +105,7 @@ def get_trial(trial_id: str, request: Request) -> dict:
 
 
 @router.get("/{trial_id}/artifacts/{name}")
-def artifact(trial_id: str, name: str, request: Request):
+def artifact(trial_id: TrialId, name: Annotated[str, Path(max_length=256)], request: Request):
     """A file the trial record references (served only if the record names it; its hash is in the record)."""
     from fastapi.responses import FileResponse
 
@@ -111,16 +116,41 @@ def artifact(trial_id: str, name: str, request: Request):
     return FileResponse(entry["path"], media_type="image/png")
 
 
-@router.delete("/{trial_id}", status_code=204)
-def delete_trial(trial_id: str, request: Request) -> None:
+@router.delete("/{trial_id}", response_model=TrialDeleted)
+def delete_trial(
+    trial_id: TrialId,
+    request: Request,
+    purge: bool = Query(False, description="remove the record and its files now (cannot be undone)"),
+) -> TrialDeleted:
+    """Hide the trial from every list, page and export; `POST .../restore` brings it back within the grace
+    period (SPARK_DELETE_GRACE_S, 24 h by default), after which it is purged with its artifact files."""
     if trial_id in request.app.state.runner.live:
         raise HTTPException(409, f"trial {trial_id!r} is still running: abort it first")
-    if not request.app.state.store.delete_trial(trial_id):
+    store, settings = request.app.state.store, request.app.state.settings
+    if purge:
+        if not store.purge_trial(trial_id, settings.artifacts_dir):
+            raise HTTPException(404, f"no trial {trial_id!r}")
+        return TrialDeleted(id=trial_id, purged=True, restore_until=None)
+    deleted_at = store.delete_trial(trial_id)
+    if deleted_at is None:
         raise HTTPException(404, f"no trial {trial_id!r}")
+    until = deleted_at + timedelta(seconds=settings.delete_grace_s)
+    return TrialDeleted(id=trial_id, purged=False, restore_until=until.isoformat())
+
+
+@router.post("/{trial_id}/restore", response_model=TrialRestored)
+def restore_trial(trial_id: TrialId, request: Request) -> TrialRestored:
+    """Undo a delete made within the grace period."""
+    grace_s = request.app.state.settings.delete_grace_s
+    if not request.app.state.store.restore_trial(trial_id, grace_s):
+        raise HTTPException(
+            404, f"no deleted trial {trial_id!r} to restore (a deletion can be undone for {grace_s / 3600:g} h)"
+        )
+    return TrialRestored(id=trial_id, restored=True)
 
 
 @router.post("/{trial_id}/replay", status_code=202)
-def replay(trial_id: str, request: Request, speed: float = Query(1.0, gt=0.0, le=20.0)) -> dict:
+def replay(trial_id: TrialId, request: Request, speed: float = Query(1.0, gt=0.0, le=20.0)) -> dict:
     """Replay a finished trial in the 3D view from its recorded scene states (`speed`x real time)."""
     from ..replay import ReplayUnavailable, start_replay
 
@@ -136,7 +166,7 @@ def replay(trial_id: str, request: Request, speed: float = Query(1.0, gt=0.0, le
 
 
 @router.post("/{trial_id}/control")
-def control(trial_id: str, body: Control, request: Request) -> dict:
+def control(trial_id: TrialId, body: Control, request: Request) -> dict:
     live = request.app.state.runner.live.get(trial_id)
     if live is None:
         raise HTTPException(409, f"trial {trial_id!r} is not queued or running")
@@ -158,6 +188,7 @@ async def events(websocket: WebSocket, trial_id: str) -> None:
     loop = asyncio.get_running_loop()
     q: asyncio.Queue = asyncio.Queue()
     unsubscribe = runner.subscribe(trial_id, lambda ev: loop.call_soon_threadsafe(q.put_nowait, ev))
+    watcher = watch_disconnect(websocket, q)
     try:
         if trial_id not in runner.live:  # finished (or unknown): replay what the store has
             trial = websocket.app.state.store.get_trial(trial_id)
@@ -165,8 +196,7 @@ async def events(websocket: WebSocket, trial_id: str) -> None:
                 await websocket.send_json(ev)
             await websocket.send_json({"kind": "closed"})
             return
-        while True:
-            ev = await q.get()
+        while (ev := await q.get()) is not GONE:
             await websocket.send_json(ev)
             if ev.get("kind") == "closed":
                 return
@@ -174,7 +204,7 @@ async def events(websocket: WebSocket, trial_id: str) -> None:
         pass
     finally:
         unsubscribe()
-        await websocket.close()
+        await finish(websocket, watcher)
 
 
 dashboard = APIRouter(tags=["trials"])
@@ -189,10 +219,12 @@ async def all_events(websocket: WebSocket) -> None:
     loop = asyncio.get_running_loop()
     q: asyncio.Queue = asyncio.Queue()
     unwatch = websocket.app.state.runner.watch(lambda ev: loop.call_soon_threadsafe(q.put_nowait, ev))
+    watcher = watch_disconnect(websocket, q)
     try:
-        while True:
-            await websocket.send_json(await q.get())
+        while (ev := await q.get()) is not GONE:
+            await websocket.send_json(ev)
     except WebSocketDisconnect:
         pass
     finally:
         unwatch()
+        await finish(websocket, watcher)

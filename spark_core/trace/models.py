@@ -48,6 +48,8 @@ class TrialRow(Base):
     batch_id: Mapped[str | None] = mapped_column(String(64), nullable=True, index=True)
     # [(t_s, qpos)] every 40 ms of simulated time: enough to replay the trial in the 3D view. Loaded on demand.
     scene_states: Mapped[list | None] = mapped_column(JSON, nullable=True, deferred=True)
+    # Set by a delete: hidden from every read, restorable until the grace period ends, then purged (0007).
+    deleted_at: Mapped[datetime | None] = mapped_column(DateTime(timezone=True), nullable=True)
 
     events: Mapped[list[EventRow]] = relationship(
         back_populates="trial", cascade="all, delete-orphan", order_by="EventRow.seq"
@@ -106,3 +108,16 @@ class PlanLibraryRow(Base):
     plan_text: Mapped[str] = mapped_column(Text)
     scene_summary: Mapped[str] = mapped_column(Text, default="")
     trial_id: Mapped[str | None] = mapped_column(String(64), nullable=True)
+
+
+class LeaseRow(Base):
+    """Who holds a named lease on the store (the console: one server per store), kept alive by its heartbeat."""
+
+    __tablename__ = "leases"
+
+    name: Mapped[str] = mapped_column(String(64), primary_key=True)
+    owner: Mapped[str] = mapped_column(String(64))  # a random id per holder
+    pid: Mapped[int] = mapped_column(Integer)
+    host: Mapped[str] = mapped_column(String(255))
+    acquired_at: Mapped[float] = mapped_column(Float)  # epoch seconds
+    heartbeat_at: Mapped[float] = mapped_column(Float)  # epoch seconds

@@ -1,9 +1,14 @@
-"""TraceStore: create, update, list and read trial records. Migrations are applied when it opens."""
+"""TraceStore: create, update, list and read trial records. Migrations are applied when it opens.
+
+Deletion is soft: a deleted trial is hidden from every read (get, list, batches, ids for exports) and can be
+restored within a grace period; purging removes the record and its artifact directory for good."""
 
 from __future__ import annotations
 
+import shutil
 import threading
 from collections.abc import Iterable
+from datetime import UTC, datetime, timedelta
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, cast
 
@@ -14,6 +19,8 @@ from .models import BatchRow, EventRow, GroundingRow, PlanLibraryRow, TrialRow
 
 if TYPE_CHECKING:
     from sqlalchemy import CursorResult
+
+    from .lease import StoreLease
 
 MIGRATIONS_DIR = Path(__file__).resolve().parents[2] / "migrations"
 SORTABLE = {
@@ -101,22 +108,82 @@ class TraceStore:
         with self.Session.begin() as s:
             s.add_all(GroundingRow(trial_id=trial_id, label=g["label"], record=_jsonable(g)) for g in groundings)
 
-    def delete_trial(self, trial_id: str) -> bool:
+    # -- deletion -----------------------------------------------------------------------------------------------
+    def delete_trial(self, trial_id: str) -> datetime | None:
+        """Hide the trial from every read (restorable with `restore_trial`); when it was deleted, or None if
+        there is no such (visible) trial."""
+        now = _now()
         with self.Session.begin() as s:
+            row = s.get(TrialRow, trial_id)
+            if row is None or row.deleted_at is not None:
+                return None
+            row.deleted_at = now
+        return now
+
+    def restore_trial(self, trial_id: str, grace_s: float) -> bool:
+        """Undo a delete made within the last `grace_s` seconds; False if there is no such deleted trial."""
+        with self.Session.begin() as s:
+            row = s.get(TrialRow, trial_id)
+            if row is None or row.deleted_at is None or _aware(row.deleted_at) < _now() - timedelta(seconds=grace_s):
+                return False
+            row.deleted_at = None
+            return True
+
+    def purge_trial(self, trial_id: str, artifacts_dir: str | Path | None = None) -> bool:
+        """Remove the trial for good (deleted or not): its record, events, groundings and, given the artifacts
+        directory, its files there. False if there is no such record."""
+        with self.Session.begin() as s:
+            paths = s.scalar(select(TrialRow.artifacts).where(TrialRow.id == trial_id))
             s.execute(delete(EventRow).where(EventRow.trial_id == trial_id))
             s.execute(delete(GroundingRow).where(GroundingRow.trial_id == trial_id))
             deleted = cast("CursorResult[Any]", s.execute(delete(TrialRow).where(TrialRow.id == trial_id)))
-            return deleted.rowcount > 0
+            if deleted.rowcount == 0:
+                return False
+        if artifacts_dir is not None:
+            _remove_artifacts(Path(artifacts_dir), trial_id, paths or [])
+        return True
 
-    def interrupt_unfinished(self, reason: str = "the server stopped while the trial was running") -> int:
-        """At start-up: trials left queued/running by a previous process are marked interrupted, not lost."""
+    def purge_deleted(self, grace_s: float, artifacts_dir: str | Path | None = None) -> list[str]:
+        """Purge every trial deleted more than `grace_s` seconds ago; their ids."""
+        cutoff = _now() - timedelta(seconds=grace_s)
+        with self.Session() as s:
+            ids = list(
+                s.scalars(select(TrialRow.id).where(TrialRow.deleted_at.is_not(None), TrialRow.deleted_at < cutoff))
+            )
+        return [i for i in ids if self.purge_trial(i, artifacts_dir)]
+
+    # -- restarts -----------------------------------------------------------------------------------------------
+    def interrupt_unfinished(
+        self,
+        reason: str = "the server stopped while the trial was running",
+        *,
+        lease: StoreLease | None = None,
+        keep_queued: bool = False,
+    ) -> int:
+        """At start-up: trials left running by a previous process are marked interrupted, not lost; so are
+        queued ones unless `keep_queued` (the console re-queues them). Acts only for the holder of the console
+        lease, or when nobody live holds it: another server's trials are its own (LeaseHeld otherwise)."""
+        from .lease import StoreLease
+
+        (lease or StoreLease(self)).refuse_if_held()
+        states = ("running",) if keep_queued else ("queued", "running")
         with self.Session.begin() as s:
-            rows = s.scalars(select(TrialRow).where(TrialRow.status.in_(("queued", "running")))).all()
+            rows = s.scalars(select(TrialRow).where(TrialRow.status.in_(states), TrialRow.deleted_at.is_(None))).all()
             for row in rows:
                 never_started = row.status == "queued"
                 row.status, row.outcome, row.verdict = "interrupted", "aborted", "interrupted"
                 row.reason = "the server stopped before the trial started" if never_started else reason
             return len(rows)
+
+    def queued_trials(self) -> list[dict]:
+        """Trials recorded as queued that never started, oldest first: {id, protocol}."""
+        with self.Session() as s:
+            rows = s.execute(
+                select(TrialRow.id, TrialRow.protocol)
+                .where(TrialRow.status == "queued", TrialRow.deleted_at.is_(None))
+                .order_by(TrialRow.created_at, TrialRow.id)
+            ).all()
+        return [{"id": r.id, "protocol": r.protocol or {}} for r in rows]
 
     def create_batch(self, batch_id: str, spec: dict) -> None:
         with self.Session.begin() as s:
@@ -136,7 +203,9 @@ class TraceStore:
             if row is None:
                 return None
             trials = s.scalars(
-                select(TrialRow).where(TrialRow.batch_id == batch_id).order_by(TrialRow.task, TrialRow.seed)
+                select(TrialRow)
+                .where(TrialRow.batch_id == batch_id, TrialRow.deleted_at.is_(None))
+                .order_by(TrialRow.task, TrialRow.seed)
             ).all()
             items = [_row_dict(t, summary=True) for t in trials]
         return {
@@ -177,9 +246,10 @@ class TraceStore:
     def scene_states(self, trial_id: str) -> list | None:
         """The trial's recorded scene states [(t_s, qpos)], or None (unknown trial, or recorded before 0004)."""
         with self.Session() as s:
-            return s.scalar(select(TrialRow.scene_states).where(TrialRow.id == trial_id))
+            return s.scalar(select(TrialRow.scene_states).where(TrialRow.id == trial_id, TrialRow.deleted_at.is_(None)))
 
     def has_trial(self, trial_id: str) -> bool:
+        """Whether the id is taken (a deleted trial's too, until it is purged)."""
         with self.Session() as s:
             return s.scalar(select(TrialRow.id).where(TrialRow.id == trial_id)) is not None
 
@@ -187,7 +257,7 @@ class TraceStore:
         with self.Session() as s:
             row = s.scalars(
                 select(TrialRow)
-                .where(TrialRow.id == trial_id)
+                .where(TrialRow.id == trial_id, TrialRow.deleted_at.is_(None))
                 .options(selectinload(TrialRow.events), selectinload(TrialRow.groundings))
             ).first()
             if row is None:
@@ -204,7 +274,7 @@ class TraceStore:
         self, *, tasks=(), ids=(), batch: str | None = None, success: bool | None = None, since=None, until=None
     ) -> list[str]:
         """Ids of trials matching every given filter, oldest first (export, batch tools)."""
-        q = select(TrialRow.id)
+        q = select(TrialRow.id).where(TrialRow.deleted_at.is_(None))
         if tasks:
             q = q.where(TrialRow.task.in_(list(tasks)))
         if ids:
@@ -237,7 +307,7 @@ class TraceStore:
         key = sort.lstrip("-")
         if key not in SORTABLE:
             raise ValueError(f"cannot sort by {key!r}; sortable: {', '.join(sorted(SORTABLE))}")
-        where = []
+        where: list[Any] = [TrialRow.deleted_at.is_(None)]  # in the list's indexes (0007): still index-only
         if status:
             where.append(TrialRow.status == status)
         if task:
@@ -270,7 +340,8 @@ class TraceStore:
         return int(total or 0), items
 
 
-_HEAVY = frozenset({"plan_tree", "nodes", "trajectory", "plan_text", "artifacts", "scene_states"})  # not in summaries
+# not in summaries (deleted_at: always empty on what reads return)
+_HEAVY = frozenset({"plan_tree", "nodes", "trajectory", "plan_text", "artifacts", "scene_states", "deleted_at"})
 
 
 def _sqlite_pragmas(dbapi_conn, _record) -> None:
@@ -283,10 +354,37 @@ def _sqlite_pragmas(dbapi_conn, _record) -> None:
 
 def _row_dict(row: TrialRow, summary: bool = False) -> dict:
     heavy = {"plan_tree", "nodes", "trajectory", "plan_text", "artifacts"} if summary else set()
-    heavy.add("scene_states")  # deferred: read through scene_states()
+    heavy |= {"scene_states", "deleted_at"}  # scene states: deferred, read through scene_states()
     out = {c.name: getattr(row, c.name) for c in TrialRow.__table__.columns if c.name not in heavy}
     out["created_at"] = row.created_at.isoformat() if row.created_at else None
     return out
+
+
+def _now() -> datetime:
+    return datetime.now(UTC)
+
+
+def _aware(t: datetime) -> datetime:
+    """SQLite hands back naive datetimes for what was stored in UTC."""
+    return t if t.tzinfo is not None else t.replace(tzinfo=UTC)
+
+
+def _remove_artifacts(root: Path, trial_id: str, entries: list[dict]) -> None:
+    """The trial's directory under the artifacts root, and any file its record names under that root; never
+    anything outside it."""
+    root = root.resolve()
+    targets = [root / trial_id, *(Path(str(e.get("path", ""))) for e in entries if isinstance(e, dict))]
+    for target in targets:
+        try:
+            target = target.resolve()
+        except OSError:
+            continue
+        if target == root or not target.is_relative_to(root):
+            continue
+        if target.is_dir():
+            shutil.rmtree(target, ignore_errors=True)
+        elif target.exists():
+            target.unlink(missing_ok=True)
 
 
 def _jsonable(value: Any) -> Any:

@@ -76,6 +76,9 @@ def test_queries_filter_sort_paginate_and_delete(tmp_path):
     with pytest.raises(ValueError, match="cannot sort by 'nope'"):
         store.list_trials(sort="nope")
     assert store.delete_trial("t1") and store.get_trial("t1") is None and not store.delete_trial("t1")
+    assert store.list_trials()[0] == 6 and "t1" not in store.trial_ids()  # hidden, still restorable
+    assert store.restore_trial("t1", grace_s=60) and store.get_trial("t1")["id"] == "t1"
+    assert store.purge_trial("t1") and not store.restore_trial("t1", grace_s=60)  # purged: gone for good
     with sqlite3.connect(tmp_path / "t.db") as c:
         assert c.execute("select count(*) from events").fetchone()[0] == 0
 
