@@ -152,16 +152,24 @@ def task_entry(name: str) -> dict[str, Any]:
     }
 
 
-def enums() -> dict[str, list[str]]:
-    """The closed sets the API schema and the UI interpret."""
+def enums() -> dict[str, Any]:
+    """The closed sets the API schema and the UI interpret, and what each event kind makes of its node's status
+    (`paused` is shown, not a life-cycle state; `retrying` leaves the status as it is)."""
     from .execution import EventKind, NodeStatus, TreeStatus
     from .trial_outcome import Verdict
 
+    event_status = {
+        EventKind.STARTED: NodeStatus.RUNNING.value,
+        EventKind.SUCCEEDED: NodeStatus.SUCCEEDED.value,
+        EventKind.FAILED: NodeStatus.FAILED.value,
+        EventKind.PAUSED: "paused",
+    }
     return {
         "verdict": [v.value for v in Verdict],
         "node_status": [s.value for s in NodeStatus],
         "event_kind": [k.value for k in EventKind],
         "tree_status": [s.value for s in TreeStatus],
+        "event_node_status": {k.value: v for k, v in event_status.items()},
     }
 
 

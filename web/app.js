@@ -140,6 +140,7 @@ function timeline(trial) {
 }
 
 async function trialPage(view, id) {
+  const cat = await catalog();
   let trial = await api(`/api/trials/${id}`);
   const state = { status: {}, retries: {}, breakpoints: new Set(), events: [] };
   view.innerHTML = `<section><h3>Trial ${esc(id)}</h3><div id="summary"></div>
@@ -177,10 +178,9 @@ async function trialPage(view, id) {
     if (ev.kind === "closed") return;
     state.events.push(ev);
     const p = ev.node_path;
-    if (ev.kind === "started") state.status[p] = "running";
-    else if (ev.kind === "succeeded" || ev.kind === "failed") state.status[p] = ev.kind;
-    else if (ev.kind === "paused") state.status[p] = "paused";
-    else if (ev.kind === "retrying") state.retries[p] = (state.retries[p] || 0) + 1;
+    const nodeStatus = cat.event_node_status[ev.kind]; // the engine's own mapping (GET /api/catalog)
+    if (nodeStatus) state.status[p] = nodeStatus;
+    if (ev.kind === "retrying") state.retries[p] = (state.retries[p] || 0) + 1;
   };
   draw();
   api("/api/viser").then((v) => {
