@@ -59,6 +59,7 @@ def register(sub) -> None:
         help="perception backend: privileged-keypoints (simulator state, no cameras), the sim / sim-noisy "
         "oracles through the cameras, or sam3 (`spark catalog` says which are privileged)",
     )
+    b.add_argument("--sam3-model", help="SAM3 checkpoint directory for --segmenter sam3 (default: SPARK_SAM3_MODEL)")
     b.add_argument("--no-adaptive", action="store_true", help="one prompt per label (no adaptive self-consistency)")
     b.add_argument("--no-recovery", action="store_true", help="no retries (recovery tiers off)")
     b.add_argument("--miss-rate", type=float, default=0.2, help="sim-noisy detector miss rate")
@@ -186,6 +187,7 @@ def _cmd_bench(args: argparse.Namespace) -> int:
             model=args.model,
             base_url=args.base_url,
             endpoint=args.endpoint,
+            sam3_model=args.sam3_model,
             segmenter=args.segmenter,
             cameras=tuple(args.cameras) if args.cameras else None,
             noise=NoiseModel(miss_rate=args.miss_rate),

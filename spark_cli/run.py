@@ -23,6 +23,7 @@ def register(sub) -> None:
     r.add_argument("--capture-size", default="256x256", help="capture image size WxH (multiples of 8)")
     r.add_argument("--plan", help="plan file to run instead of the task's reference plan or a planner's")
     r.add_argument("--segmenter", choices=list(SEGMENTERS), help="perception backend (default: sim)")
+    r.add_argument("--sam3-model", help="SAM3 checkpoint directory for --segmenter sam3 (default: SPARK_SAM3_MODEL)")
     r.add_argument(
         "--planner",
         choices=list(PLANNERS),
@@ -59,6 +60,7 @@ def register(sub) -> None:
     pl.add_argument("--base-url", help="an ad-hoc LLM URL (a local OpenAI-compatible server); it gets no key")
     pl.add_argument("--endpoint", help="a named LLM endpoint from spark.yaml `endpoints:` (with its key)")
     pl.add_argument("--segmenter", choices=list(SEGMENTERS), help="perception backend (default: sim)")
+    pl.add_argument("--sam3-model", help="SAM3 checkpoint directory for --segmenter sam3 (default: SPARK_SAM3_MODEL)")
     pl.set_defaults(func=_cmd_plan)
 
 
@@ -102,7 +104,7 @@ def _cmd_plan(args: argparse.Namespace) -> int:
         return 2
     world = task.make_world(args.seed)
     try:
-        resolver = make_resolver(world, args.segmenter, args.seed)
+        resolver = make_resolver(world, args.segmenter, args.seed, sam3_model=args.sam3_model)
         view = observe(args.instruction, resolver)
         if args.planner != "rules":
             view = annotated_view(view, resolver)
@@ -193,6 +195,7 @@ def _cmd_run(args: argparse.Namespace) -> int:
         base_url=args.base_url,
         plan_text=plan_text,
         segmenter=args.segmenter,
+        sam3_model=args.sam3_model,
         endpoint=args.endpoint,
         embodiment=args.embodiment,
         seed=args.seed,

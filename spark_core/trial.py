@@ -85,6 +85,15 @@ class TrialConfig:
                 resolve_endpoint(self.endpoint, self.planner, self.model)
             except ValueError as e:
                 raise TrialConfigError(str(e)) from None
+        if self.segmenter == "sam3":  # the checkpoint must be on this machine: say so before building anything
+            import os
+
+            from .perception.sam3_segmenter import DEFAULT_MODEL, Sam3WeightsMissing, locate_checkpoint
+
+            try:
+                locate_checkpoint(self.sam3_model or os.environ.get("SPARK_SAM3_MODEL", DEFAULT_MODEL))
+            except Sam3WeightsMissing as e:
+                raise TrialConfigError(f"segmenter: {e}") from None
         if self.time_limit_s is not None and not 0 < self.time_limit_s <= 3600:
             raise TrialConfigError(f"time_limit_s: expected (0, 3600] simulated seconds, got {self.time_limit_s}")
         if self.pacing is not None and not 0.01 <= self.pacing <= 100:

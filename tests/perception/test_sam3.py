@@ -117,3 +117,33 @@ def test_missing_weights_say_what_and_how(tmp_path, monkeypatch):
     (tmp_path / "empty").mkdir()
     with pytest.raises(Sam3WeightsMissing, match="has no config.json"):
         locate_checkpoint(tmp_path / "empty")
+
+
+def test_sam3_is_a_segmenter_of_spark_run_and_of_the_trial_pipeline(tiny_checkpoint, capsys):
+    """The real loading path behind `--segmenter sam3`: a random tiny model sees nothing it is sure of, so the
+    trial ends on a perception failure; the record says the segmenter was not privileged."""
+    from spark_cli import main
+
+    code = main(
+        [
+            "run",
+            "lift_block",
+            "--segmenter",
+            "sam3",
+            "--sam3-model",
+            str(tiny_checkpoint),
+            "--no-store",
+            "--no-adaptive",
+        ]
+    )
+    out = capsys.readouterr().out
+    assert "segmenter sam3" in out and "PRIVILEGED" not in out
+    assert code == 1 and "verdict: tree_failed" in out and "failure=perception" in out
+
+
+def test_a_missing_sam3_checkpoint_is_refused_before_anything_runs(tmp_path, monkeypatch):
+    from spark_core.trial import TrialConfig, TrialConfigError
+
+    monkeypatch.setenv("HF_HOME", str(tmp_path / "empty-cache"))
+    with pytest.raises(TrialConfigError, match="segmenter: SAM3 weights not found: '/nowhere/sam3'"):
+        TrialConfig("lift_block", segmenter="sam3", sam3_model="/nowhere/sam3").check()
