@@ -8,7 +8,7 @@ from typing import Annotated
 
 from fastapi import APIRouter, HTTPException, Path, Request
 from fastapi.responses import PlainTextResponse
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from spark_core import PLANNERS, SEGMENTERS, wilson
 from spark_core import suites as catalog_suites
@@ -76,38 +76,35 @@ def create_batch(body: BatchCreate, request: Request) -> dict:
     batch_id = f"batch-{uuid.uuid4().hex[:10]}"
     if body.specs is not None:
         wanted = [
-            TrialCreate(
-                task=sp.task,
-                instruction=sp.instruction,
-                seed=sp.seed,
-                planner=sp.planner or body.planner,
-                segmenter=sp.segmenter or body.segmenter,
-                model=body.model,
-                endpoint=body.endpoint,
-                capture=body.capture,
+            (
+                f"specs[{i}]",
+                dict(
+                    task=sp.task,
+                    instruction=sp.instruction,
+                    seed=sp.seed,
+                    planner=sp.planner or body.planner,
+                    segmenter=sp.segmenter or body.segmenter,
+                ),
             )
-            for sp in body.specs
+            for i, sp in enumerate(body.specs)
         ]
     else:
         wanted = [
-            TrialCreate(
-                task=task,
-                seed=body.seed + k,
-                planner=body.planner,
-                segmenter=body.segmenter,
-                model=body.model,
-                endpoint=body.endpoint,
-                capture=body.capture,
+            (
+                f"{task} seed {body.seed + k}",
+                dict(task=task, seed=body.seed + k, planner=body.planner, segmenter=body.segmenter),
             )
             for task in (body.tasks or suites[body.suite])
             for k in range(body.trials)
         ]
     configs = []
-    for i, w in enumerate(wanted):
+    for where, fields in wanted:
         try:
-            configs.append(trial_config(w, batch_id))
+            trial = TrialCreate(**fields, model=body.model, endpoint=body.endpoint, capture=body.capture)
+            configs.append(trial_config(trial, batch_id))
+        except ValidationError as e:  # a catalog name the batch or one of its specs got wrong
+            raise HTTPException(422, f"{where}: " + "; ".join(str(x["msg"]) for x in e.errors())) from None
         except HTTPException as e:
-            where = f"specs[{i}]" if body.specs is not None else f"{w.task} seed {w.seed}"
             raise HTTPException(422, f"{where}: {e.detail}") from None
     store, runner = request.app.state.store, request.app.state.runner
     store.create_batch(batch_id, body.model_dump())

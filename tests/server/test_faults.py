@@ -163,8 +163,13 @@ def test_restarting_the_server_process_mid_trial_marks_the_trial_interrupted(tmp
         proc = _serve(port, db, log)
         _wait_up(url, proc, log)
         after = httpx.get(f"{url}/api/trials/{tid}").json()
-        assert after["status"] == "interrupted" and after["outcome"] == "aborted"
+        assert after["status"] == "interrupted" and after["outcome"] == "aborted" and after["verdict"] == "interrupted"
         assert "server stopped" in after["reason"]
+        # the events it streamed before the kill were written as they happened: none is lost
+        assert [(e["node_path"], e["kind"]) for e in after["events"]] == [
+            ("tree", "started"),
+            ("tree.children[0]", "paused"),
+        ]
         assert httpx.get(url + "/api/health").json() == {"status": "ok"}
     finally:
         proc.kill()
