@@ -93,6 +93,6 @@ def speed_section(r: dict, command: str) -> str:
         + footer(
             command,
             "MuJoCo 3.3.7, 2 ms physics step, 10 ms control period, one process on one core; "
-            "privileged resolver, so no rendering inside the trial",
+            "segmenter privileged-keypoints (PRIVILEGED, no cameras), so no rendering inside the trial",
         )
     )
