@@ -87,6 +87,7 @@ def section(r: dict, command: str) -> str:
             f"executor event published in the trial worker process -> pipe -> console -> WebSocket -> "
             f"headless chromium "
             f"(Debian chromium-headless-shell, same machine clock); stack_two reference plan, segmenter "
-            f"privileged-keypoints (PRIVILEGED), {r['trials']} trials; events replayed from history at connect are excluded",
+            f"privileged-keypoints (PRIVILEGED), {r['trials']} trials; "
+            "events replayed from history at connect are excluded",
         )
     )
