@@ -55,12 +55,18 @@ def _slot(name: str, raw: dict) -> SlotSpec:
     )
 
 
+RESERVED_SLOT_NAMES = frozenset({"arm"})  # `params.arm` is a plan's arm tag (the paper's form), never a slot
+
+
 def load_registry(text: str) -> Registry:
     data = yaml.safe_load(text)
     specs: list[PrimitiveSpec] = []
     for tier_name, prims in data.items():
         tier = Tier(tier_name)
         for name, raw in prims.items():
+            reserved = RESERVED_SLOT_NAMES & set(raw.get("slots") or {})
+            if reserved:
+                raise ValueError(f"primitive {name}: slot name(s) {', '.join(sorted(reserved))} are reserved")
             specs.append(
                 PrimitiveSpec(
                     name=name,

@@ -1,4 +1,8 @@
-"""JSON Schema of a plan, generated from the registry (for structured LLM output and API docs)."""
+"""JSON Schema of a plan in the paper's form, generated from the registry (for structured LLM output and API docs).
+
+A leaf is `{"type": <primitive>, "params": {"arm"?: "left"|"right", <slot>: <value>}}`; a composite is
+`{"type": "sequence"|"parallel"|"fallback", "arm"?: ..., "children": [...]}`. (The type-checker also reads the
+older leaf form, `{"primitive": <name>, "arm"?: ..., "params": {...}}`; the schema asks for the canonical one.)"""
 
 from __future__ import annotations
 
@@ -40,23 +44,21 @@ def plan_json_schema(registry: Registry = REGISTRY) -> dict[str, Any]:
     defs: dict[str, Any] = {}
     refs = []
     for spec in registry:
-        props: dict[str, Any] = {"primitive": {"const": spec.name}}
+        slots: dict[str, Any] = {}
         if spec.arm is not ArmUse.NONE:
-            props["arm"] = {"type": "string", "enum": list(ARMS)}
-        params = {
-            "type": "object",
-            "properties": {s.name: slot_schema(s) for s in spec.slots},
-            "additionalProperties": False,
-        }
+            need = "required here or on the enclosing branch" if spec.arm is ArmUse.REQUIRED else "optional"
+            doc = f"the arm that runs this step ({need})"
+            slots["arm"] = {"type": "string", "enum": list(ARMS), "description": doc}
+        slots.update({s.name: slot_schema(s) for s in spec.slots})
+        params: dict[str, Any] = {"type": "object", "properties": slots, "additionalProperties": False}
         required_slots = [s.name for s in spec.slots if s.required]
         if required_slots:
             params["required"] = required_slots
-        props["params"] = params
         node = {
             "type": "object",
             "description": spec.description,
-            "properties": props,
-            "required": ["primitive"] + (["params"] if required_slots else []),
+            "properties": {"type": {"const": spec.name}, "params": params},
+            "required": ["type"] + (["params"] if required_slots else []),
             "additionalProperties": False,
         }
         defs[f"primitive_{spec.name}"] = node

@@ -1,4 +1,9 @@
-"""Type-check plan data into a `Plan`, collecting every issue with its exact path."""
+"""Type-check plan data into a `Plan`, collecting every issue with its exact path.
+
+A leaf is written in the paper's form, `{type: <primitive>, params: {arm: left, <slot>: <value>}}`, or in the
+older `{primitive: <name>, params: {...}, arm: left}`; both give the same `PrimitiveCall`. `arm` may sit on the node
+or inside `params` (not both with different values). A `type` that names a composite (sequence, parallel,
+fallback) makes a composite node; any other `type` names a primitive."""
 
 from __future__ import annotations
 
@@ -15,7 +20,8 @@ from .tree import Composite, CompositeType, Node, Plan, PrimitiveCall, child_pat
 MAX_TREE_DEPTH = 24  # each tree level is two YAML containers; stays under loading.MAX_NESTING
 MAX_NODES = 2000
 _TOP_KEYS = ("task", "tree")
-_PRIMITIVE_KEYS = ("primitive", "params", "arm")
+_PRIMITIVE_KEYS = ("type", "params", "arm")  # the paper's leaf form; "primitive" replaces "type" in the old one
+_OLD_PRIMITIVE_KEYS = ("primitive", "params", "arm")
 _COMPOSITE_KEYS = ("type", "children", "arm")
 
 
@@ -56,27 +62,33 @@ class _Checker:
             self.err(path, f"expected a node (mapping with 'primitive' or 'type'), got {show(raw)}")
             return None
         if "primitive" in raw and "type" in raw:
-            self.err(path, "a node has either 'primitive' (leaf) or 'type' (composite), not both")
+            self.err(path, "a node names its kind once: 'type' (a composite or a primitive) or 'primitive', not both")
+            return None
+        if "primitive" not in raw and "type" not in raw:
+            self.err(path, f"node needs 'primitive' or 'type'; got keys {show(sorted(map(str, raw)))}")
             return None
         arm = self.arm_tag(raw, path, scope_arm)
         if "primitive" in raw:
-            return self.primitive(raw, path, arm if arm is not None else scope_arm, explicit_arm=arm)
-        if "type" in raw:
-            return self.composite(raw, path, depth, scope_arm, arm)
-        self.err(path, f"node needs 'primitive' or 'type'; got keys {show(sorted(map(str, raw)))}")
-        return None
+            return self.primitive(raw, path, "primitive", arm, scope_arm)
+        t = raw["type"]
+        kinds = [c.value for c in CompositeType]
+        if isinstance(t, str) and t not in kinds and (t in self.reg or "children" not in raw):
+            return self.primitive(raw, path, "type", arm, scope_arm)
+        return self.composite(raw, path, depth, scope_arm, arm)
 
     def arm_tag(self, raw: dict, path: str, scope_arm: str | None) -> str | None:
         if "arm" not in raw:
             return None
-        arm = raw["arm"]
+        return self.arm_value(raw["arm"], f"{path}.arm", scope_arm)
+
+    def arm_value(self, arm: Any, path: str, scope_arm: str | None) -> str | None:
         if arm not in ARMS:
-            self.err(f"{path}.arm", f"expected one of {', '.join(ARMS)}, got {show(arm)}")
+            self.err(path, f"expected one of {', '.join(ARMS)}, got {show(arm)}")
             return None
         if scope_arm is not None and arm != scope_arm:
-            self.err(f"{path}.arm", f"arm {arm!r} inside a branch that belongs to arm {scope_arm!r}")
+            self.err(path, f"arm {arm!r} inside a branch that belongs to arm {scope_arm!r}")
             return None
-        return arm
+        return cast(str, arm)
 
     def composite(self, raw: dict, path: str, depth: int, scope_arm: str | None, arm: str | None) -> Node | None:
         for key in raw:
@@ -133,36 +145,54 @@ class _Checker:
         if scope_arm is not None and len(nodes) > 1:
             self.err(path, f"a parallel with several branches cannot run inside arm {scope_arm!r}'s branch")
 
-    def primitive(self, raw: dict, path: str, arm: str | None, explicit_arm: str | None) -> PrimitiveCall | None:
+    def primitive(
+        self, raw: dict, path: str, name_key: str, node_arm: str | None, scope_arm: str | None
+    ) -> PrimitiveCall | None:
+        """A leaf; its name is under `name_key` ("type" in the paper's form, "primitive" in the old one)."""
+        keys = _PRIMITIVE_KEYS if name_key == "type" else _OLD_PRIMITIVE_KEYS
         for key in raw:
-            if key not in _PRIMITIVE_KEYS:
-                self.err(
-                    f"{path}.{key}", f"unknown key for a primitive node{_did_you_mean(str(key), list(_PRIMITIVE_KEYS))}"
-                )
-        name = raw["primitive"]
+            if key not in keys:
+                self.err(f"{path}.{key}", f"unknown key for a primitive node{_did_you_mean(str(key), list(keys))}")
+        name = raw[name_key]
         if not isinstance(name, str):
-            self.err(f"{path}.primitive", f"expected a primitive name, got {show(name)}")
+            self.err(f"{path}.{name_key}", f"expected a primitive name, got {show(name)}")
             return None
         spec = self.reg.get(name)
         if spec is None:
-            self.err(f"{path}.primitive", f"unknown primitive {name!r}{_did_you_mean(name, self.reg.names())}")
+            options = self.reg.names() + ([c.value for c in CompositeType] if name_key == "type" else [])
+            self.err(f"{path}.{name_key}", f"unknown primitive {name!r}{_did_you_mean(name, options)}")
             return None
-        ok = True
-        if explicit_arm is not None and spec.arm is ArmUse.NONE:
-            self.err(f"{path}.arm", f"{name} does not take an arm tag")
-            ok = False
-        if spec.arm is ArmUse.REQUIRED and arm is None:
-            self.err(f"{path}.arm", f"{name} needs an arm tag ({' or '.join(ARMS)}) on the node or its branch")
-            ok = False
-        if spec.uses_both_arms and arm is not None:
-            self.err(path, f"{name} drives both arms and cannot run inside arm {arm!r}'s branch")
-            ok = False
         params_raw = raw.get("params", {})
         if params_raw is None:
             params_raw = {}
         if not isinstance(params_raw, dict):
             self.err(f"{path}.params", f"expected a mapping of slot names to values, got {show(params_raw)}")
             return None
+        ok = True
+        explicit_arm, arm_path = node_arm, f"{path}.arm"
+        if "arm" in params_raw:  # the paper's form: the arm is one of the params
+            arm_path = f"{path}.params.arm"
+            in_params = self.arm_value(params_raw["arm"], arm_path, scope_arm)
+            if in_params is None:
+                ok = False
+            elif node_arm is not None and in_params != node_arm:
+                self.err(arm_path, f"arm {in_params!r} disagrees with the node's arm {node_arm!r}")
+                ok = False
+            explicit_arm = in_params if in_params is not None else node_arm
+            params_raw = {k: v for k, v in params_raw.items() if k != "arm"}
+        arm = explicit_arm if explicit_arm is not None else scope_arm
+        if explicit_arm is not None and spec.arm is ArmUse.NONE:
+            self.err(arm_path, f"{name} does not take an arm tag")
+            ok = False
+        if spec.arm is ArmUse.REQUIRED and arm is None:
+            self.err(
+                f"{path}.params.arm" if name_key == "type" else arm_path,
+                f"{name} needs an arm tag ({' or '.join(ARMS)}) in its params, on the node or on its branch",
+            )
+            ok = False
+        if spec.uses_both_arms and arm is not None:
+            self.err(path, f"{name} drives both arms and cannot run inside arm {arm!r}'s branch")
+            ok = False
         params: dict[str, Any] = {}
         slot_names = [s.name for s in spec.slots]
         for key, value in params_raw.items():

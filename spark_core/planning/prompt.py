@@ -31,10 +31,13 @@ def grammar_listing(registry: Registry = REGISTRY) -> str:
 def system_prompt(registry: Registry = REGISTRY) -> str:
     return (
         "You are the planner of a robot manipulation system. Write ONE behavior tree that accomplishes the task.\n"
-        'Answer with a JSON object {"task": <one line>, "tree": <node>} and nothing else. A node is either\n'
-        '{"type": "sequence"|"fallback"|"parallel", "children": [nodes], "arm"?: "left"|"right"} or\n'
-        '{"primitive": <name>, "params": {<slot>: <value>}, "arm"?: "left"|"right"}. Slots marked * are required;\n'
-        "others default to the value shown.\n\n" + grammar_listing(registry) + "\n\n" + GUIDANCE
+        'Answer with a JSON object {"task": <one line>, "tree": <node>} and nothing else. A node is either a\n'
+        'composite {"type": "sequence"|"fallback"|"parallel", "children": [nodes], "arm"?: "left"|"right"} or a\n'
+        'primitive {"type": <primitive name>, "params": {"arm"?: "left"|"right", <slot>: <value>}}.\n'
+        "Slots marked * are required; others default to the value shown.\n\n"
+        + grammar_listing(registry)
+        + "\n\n"
+        + GUIDANCE
     )
 
 

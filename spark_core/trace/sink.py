@@ -50,7 +50,10 @@ class StoreSink(BaseSink):
 
     def on_plan(self, ctx: TrialContext, plan: Plan | None, planning: dict[str, Any]) -> None:
         if plan is not None:
-            self.store.update_trial(ctx.trial_id, plan_text=to_yaml(plan), plan_tree=_jsonable(plan_to_dict(plan)))
+            # plan_text is the canonical (paper's) form; plan_tree keeps leaves as `primitive:` because the
+            # console's tree view (web/app.js renderTree) tells leaves by that key. Both forms parse.
+            tree = plan_to_dict(plan, form="primitive")
+            self.store.update_trial(ctx.trial_id, plan_text=to_yaml(plan), plan_tree=_jsonable(tree))
 
     def on_event(self, event: Event) -> None:
         if self._trial_id is not None:

@@ -161,7 +161,14 @@ class KinematicWorld:
         self.held[arm] = None
         return ActionOutcome.success(dt + 0.5)
 
-    _do_place_with_arm = _do_place
+    def _do_place_with_arm(self, a, keypoints, arm):
+        if a.get("target_label") is not None:
+            return self._do_place(a, keypoints, arm)
+        if not self.held[arm]:  # the paper's form: set it down where the hand is
+            return ActionOutcome.fail("place with an empty gripper")
+        self.objects[self.held[arm]] = self.tcp[arm].copy()
+        self.held[arm] = None
+        return ActionOutcome.success(0.5)
 
     def _do_push_object(self, a, keypoints, arm):
         label = a["keypoint_label"]

@@ -51,7 +51,7 @@ CASES = [
     (
         "node-both-kinds",
         plan({"type": "sequence", "primitive": "grasp"}),
-        [("tree", "either 'primitive' (leaf) or 'type' (composite), not both")],
+        [("tree", "'type' (a composite or a primitive) or 'primitive', not both")],
     ),
     ("unknown-primitive", plan(prim("grap")), [("tree.primitive", "unknown primitive 'grap' (did you mean 'grasp'?)")]),
     ("unknown-primitive-no-hint", plan(prim("teleport")), [("tree.primitive", "unknown primitive 'teleport'")]),

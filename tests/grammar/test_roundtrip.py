@@ -50,6 +50,10 @@ def primitive_node(draw, arm_scope=None):
         node["arm"] = arm_scope
     if params:
         node["params"] = params
+    if draw(st.booleans()):  # the paper's leaf form: `type: <primitive>`, the arm inside params
+        node = {"type": node.pop("primitive"), **node}
+        if "arm" in node:
+            node["params"] = {"arm": node.pop("arm"), **node.get("params", {})}
     return node
 
 

@@ -247,7 +247,7 @@ def test_cli_plans_through_an_openai_compatible_server(capsys):
             ]
         )
     out = capsys.readouterr().out
-    assert code == 0 and "primitive: place" in out and "usage: 120 in" in out
+    assert code == 0 and "type: place" in out and "usage: 120 in" in out
     content = fake.requests[0]["body"]["messages"][1]["content"]
     assert "red block: (" in content[0]["text"]  # what perception saw, from the scene's cameras
     assert content[1]["image_url"]["url"].startswith("data:image/png;base64,")  # the annotated agentview image

@@ -24,7 +24,7 @@ def scene(**objects):
 
 
 def prims(result):
-    return [(c["primitive"], c.get("params", {})) for c in plan_to_dict(result.plan)["tree"]["children"]]
+    return [(c["type"], c.get("params", {})) for c in plan_to_dict(result.plan)["tree"]["children"]]
 
 
 @pytest.mark.parametrize(

@@ -1,4 +1,5 @@
-"""Two-arm skills: hand an object from one arm to the other, and lift one object with both arms.
+"""Two-arm skills: hand an object from one arm to the other, and lift one object with both arms; and the paper's
+arm-routed pick and place (`pick_with_arm`, `place_with_arm`), which one arm of a two-arm robot runs in its branch.
 
 Both are cooperative: the hands are meant to come close, so the shared-workspace clearance is lowered for
 their duration. Simultaneous motions run on two threads (the world interleaves the arms' control steps)."""
@@ -17,7 +18,7 @@ from ...perception import Keypoint
 from ..protocols import ActionOutcome, FailureKind
 from .base import Ctx, primitive
 from .gripper import grasp, open_gripper
-from .pick_place import grasp_object, own_extent_xy, pick_and_lift
+from .pick_place import grasp_object, lift_held, own_extent_xy, pick_and_lift, put_down, set_down_here
 
 HANDOFF_HEIGHT_M = 0.25  # where the arms meet (TCP height above the table)
 HANDOFF_GAP_M = 0.10  # TCP to TCP along the object at the meeting point: two hands side by side on one object
@@ -56,6 +57,31 @@ def both(*steps) -> list[ActionOutcome]:
     for t in threads:
         t.join()
     return out  # type: ignore[return-value]
+
+
+@primitive("pick_with_arm")
+def pick_with_arm(ctx: Ctx) -> ActionOutcome:
+    """Grasp with the plan's force limit (and expected width, when given; an angled approach when preferred), then
+    lift."""
+    a = ctx.args
+    out = grasp_object(
+        ctx,
+        ctx.kp("keypoint_label"),
+        force=a["force"],
+        target_width=a.get("target_width"),
+        angled=bool(a.get("prefer_angled")),
+    )
+    return lift_held(ctx, a["lift_height"]) if out.ok else out
+
+
+@primitive("place_with_arm")
+def place_with_arm(ctx: Ctx) -> ActionOutcome:
+    """On the named target like `place`; with no target, straight down where the hand is (the paper's form)."""
+    a = ctx.args
+    tilt = float(a.get("tilt_angle") or 0.0)
+    if a.get("target_label") is None:
+        return set_down_here(ctx, tilt)
+    return put_down(ctx, ctx.kp("target_label"), tilt_rad=tilt)
 
 
 def _holds(ctx: Ctx, label: str) -> bool:

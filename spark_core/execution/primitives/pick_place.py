@@ -4,13 +4,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...control.pose import Pose, wrap_grasp_yaw
+from ...control.pose import Pose, rot_y, wrap_grasp_yaw
 from ...perception import Keypoint
 from ..protocols import ActionOutcome, FailureKind
 from .base import CONTACT_FORCE_N, TABLE_CLEARANCE_M, Ctx, primitive
 from .gripper import grasp, open_gripper
 
 APPROACH_M = 0.10
+ANGLED_LEAN_RAD = 0.5  # an angled grasp leans this far from vertical (about the fingers' closing axis)
 RIM_PRESHAPE_M = 0.04  # finger gap when going down over a rim
 SUPPORT_TOL_M = 0.012  # how far below the expected support height contact may come before the target is "gone"
 # Horizontal approach: TCP z = world +x, fingers close along world y (the hand's wide side stays horizontal,
@@ -34,9 +35,12 @@ def grasp_object(
     target_width: float | None = None,
     z: float | None = None,
     along_m: float = 0.0,
+    angled: bool = False,
 ) -> ActionOutcome:
     """Approach from above (or from the robot's side), descend straight, close, and remember what is held.
-    `along_m`: grasp that far from the centre along the object's long axis (a top-down grasp's hand x axis)."""
+    `along_m`: grasp that far from the centre along the object's long axis (a top-down grasp's hand x axis).
+    `angled`: a top-down grasp leans ANGLED_LEAN_RAD about the fingers' closing axis, fingertips pointing away from
+    the arm's base, and comes in along the fingers (reaches under an overhang, rests on less of the table)."""
     open_gripper(ctx)
     if strategy == "side":
         z = float(max(kp.position_m[2] + 0.01, 0.04))  # keep the hand's lower edge off the table
@@ -53,6 +57,9 @@ def grasp_object(
             ctx.world.set_gripper(ctx.arm, RIM_PRESHAPE_M, 20.0, duration_s=0.1)
         pre = ctx.top_down([at[0], at[1], kp.top_z_m + APPROACH_M], yaw)
         pose = ctx.top_down([at[0], at[1], z], yaw)
+        if angled:
+            pose = _leaned(ctx, pose)
+            pre = Pose(pose.position_m - APPROACH_M * pose.rotation[:, 2], pose.rotation)  # back along the fingers
     out = _seq(
         lambda: ctx.motion.move_to(pre, what=f"approach above {kp.label!r}"),
         lambda: ctx.motion.move_line(pose, speed_m_s=0.2, what=f"grasp pose of {kp.label!r}"),
@@ -68,6 +75,19 @@ def grasp_object(
         ctx.memory.grasp_offset_z_m = float(pose.position_m[2] - (kp.position_m[2] - kp.extent_m[2] / 2))
         ctx.memory.grasp_offset_xy_hand_m = _rot2(-_hand_yaw(pose.rotation)) @ (kp.position_m[:2] - pose.position_m[:2])
     return out
+
+
+def _leaned(ctx: Ctx, pose: Pose) -> Pose:
+    """`pose` leaned ANGLED_LEAN_RAD about the hand's y axis (the fingers' closing axis), the fingertips (hand z)
+    pointing away from the arm's base; raised by what the pads' lower corners drop."""
+    base = ctx.world.kinematics[ctx.arm].T_world_base[:2, 3]
+    out = pose.position_m[:2] - base
+    R = max(
+        (pose.rotation @ rot_y(s * ANGLED_LEAN_RAD) for s in (1.0, -1.0)),
+        key=lambda r: float(np.dot(r[:2, 2], out)),
+    )
+    lift = 0.01 * np.sin(ANGLED_LEAN_RAD)
+    return Pose(pose.position_m + [0.0, 0.0, lift], R)
 
 
 def own_extent_xy(kp: Keypoint):
@@ -122,18 +142,23 @@ def pick_and_lift(ctx: Ctx, kp: Keypoint, height: float, along_m: float = 0.0) -
 
 
 @primitive("pick")
-@primitive("pick_with_arm")
 def pick(ctx: Ctx) -> ActionOutcome:
     return pick_and_lift(ctx, ctx.kp("keypoint_label"), ctx.args["lift_height"])
 
 
 def put_down(
-    ctx: Ctx, target: Keypoint, offset_xy=(0.0, 0.0), floor_z: float | None = None, what: str = "target"
+    ctx: Ctx,
+    target: Keypoint,
+    offset_xy=(0.0, 0.0),
+    floor_z: float | None = None,
+    what: str = "target",
+    tilt_rad: float = 0.0,
 ) -> ActionOutcome:
     """Carry the held object above `target`, descend until the wrist feels support, release, retract.
 
     The expected support height is the target's top (or `floor_z` inside a container). Descending well past
     it without feeling anything means the target is not where perception said: fail instead of dropping.
+    `tilt_rad`: above the target, tilt the held object about the fingers' closing axis before the descent.
     """
     if not ctx.holding():
         return ctx.fail(f"nothing in the gripper to put on the {what}")
@@ -153,7 +178,8 @@ def put_down(
     out = ctx.motion.move_to(above, what=f"point above the {what} {target.label!r}")
     if not out.ok:
         return out
-    lowest = ctx.top_down([xy[0], xy[1], tcp_at_contact - 0.03], yaw)
+    rotation = _tilted(ctx, tilt_rad, above.rotation)
+    lowest = Pose(np.array([xy[0], xy[1], tcp_at_contact - 0.03]), rotation)
     out = ctx.motion.move_line(lowest, speed_m_s=0.06, stop=ctx.contact(CONTACT_FORCE_N), what="support", check=False)
     if not out.detail.get("stopped_early"):
         open_gripper(ctx)
@@ -172,6 +198,20 @@ def put_down(
             f"{target.label!r}: it moved or is not there",
             FailureKind.PERCEPTION,
         )
+    return _let_go(ctx, felt_z)
+
+
+def _tilted(ctx: Ctx, tilt_rad: float, rotation: np.ndarray) -> np.ndarray:
+    """`rotation` (the hand's), tilted by `tilt_rad` about the fingers' closing axis; the hand turns to it in place.
+    Unchanged (and no motion) when the tilt is 0."""
+    if tilt_rad:
+        rotation = rotation @ rot_y(tilt_rad)
+        ctx.motion.move_line(Pose(ctx.tcp.position_m, rotation), speed_m_s=0.1, what="release tilt", check=False)
+    return rotation
+
+
+def _let_go(ctx: Ctx, felt_z: float) -> ActionOutcome:
+    """Open on the felt support, forget the load, back straight up; fail when it stays between the fingers."""
     open_gripper(ctx)
     ctx.memory.held_label = None
     ctx.motion.move_line(ctx.tcp.translated([0, 0, 0.08]), what="retreat", check=False)
@@ -180,8 +220,24 @@ def put_down(
     return ActionOutcome.success(0.0, contact_tcp_z_m=round(felt_z, 4))
 
 
+def set_down_here(ctx: Ctx, tilt_rad: float = 0.0) -> ActionOutcome:
+    """Put the held object down right where the hand is: lower straight down until the wrist feels support (the
+    table, or whatever is below), release, retract. Nothing felt down to the table means nothing is carried."""
+    if not ctx.holding():
+        return ctx.fail("nothing in the gripper to set down")
+    rotation = _tilted(ctx, tilt_rad, ctx.tcp.rotation)
+    start = ctx.tcp.position_m
+    lowest = Pose(np.array([start[0], start[1], ctx.memory.grasp_offset_z_m - 0.03]), rotation)
+    out = ctx.motion.move_line(lowest, speed_m_s=0.06, stop=ctx.contact(CONTACT_FORCE_N), what="support", check=False)
+    if not out.detail.get("stopped_early"):
+        open_gripper(ctx)
+        ctx.memory.held_label = None
+        ctx.motion.move_line(ctx.tcp.translated([0, 0, 0.08]), check=False)
+        return ctx.fail("no support felt below the hand down to the table")
+    return _let_go(ctx, float(ctx.tcp.position_m[2]))
+
+
 @primitive("place")
-@primitive("place_with_arm")
 def place(ctx: Ctx) -> ActionOutcome:
     a = ctx.args
     return put_down(ctx, ctx.kp("target_label"), (a.get("offset_x", 0.0), a.get("offset_y", 0.0)))
