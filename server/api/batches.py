@@ -100,7 +100,9 @@ def create_batch(body: BatchCreate, request: Request) -> dict:
     configs = []
     for where, fields in wanted:
         try:
-            trial = TrialCreate(**fields, model=body.model, endpoint=body.endpoint, capture=body.capture)
+            trial = TrialCreate.model_validate(
+                {**fields, "model": body.model, "endpoint": body.endpoint, "capture": body.capture}
+            )
             configs.append(trial_config(trial, batch_id))
         except ValidationError as e:  # a catalog name the batch or one of its specs got wrong
             raise HTTPException(422, f"{where}: " + "; ".join(str(x["msg"]) for x in e.errors())) from None
