@@ -149,7 +149,8 @@ def test_restarting_the_server_process_mid_trial_marks_the_trial_interrupted(tmp
         ).json()["id"]
         for _ in range(1200):
             t = httpx.get(f"{url}/api/trials/{tid}").json()
-            if t["status"] == "running" and t.get("worker_pid"):
+            paused = any(e["kind"] == "paused" for e in t.get("events", []))
+            if t["status"] == "running" and t.get("worker_pid") and paused:  # it has streamed events by now
                 break
             time.sleep(0.1)
         worker = t["worker_pid"]
