@@ -243,12 +243,18 @@ def _plan(ctx: TrialContext, library: Any) -> tuple[Plan | None, dict[str, Any]]
             "error": f"planner {cfg.planner!r} unavailable: {e}",
             "latency_s": time.perf_counter() - t0,
         }
-    view = observe(ctx.instruction, ctx.resolver)
     llm = not PLANNERS[cfg.planner].offline
+    calls: list[dict[str, Any]] = []
+    if llm and cfg.adaptive and hasattr(ctx.resolver, "use_variants"):
+        calls = _synthesise_prompts(planner, ctx)  # the paper's first call: alternative prompts per object
+    view = observe(ctx.instruction, ctx.resolver)  # every prompt on every camera; the single confident one kept
     if llm:
         view = annotated_view(view, ctx.resolver)
     examples = library.examples(ctx.instruction) if (llm and library is not None) else ()
     result = planner.plan(PlanRequest(ctx.instruction, view, examples, arm_bases(ctx.world), arm_tools(ctx.world)))
+    usage = asdict(result.usage)
+    for call in calls:
+        usage = {k: usage.get(k, 0) + call["usage"].get(k, 0) for k in usage}
     info = {
         "source": cfg.planner,
         "model": result.detail.get("model"),
@@ -256,13 +262,42 @@ def _plan(ctx: TrialContext, library: Any) -> tuple[Plan | None, dict[str, Any]]
         "error": result.error,
         "issues": [str(i) for i in result.issues],
         "understood": result.detail.get("understood"),
-        "cost_usd": result.cost_usd,
-        "usage": asdict(result.usage),
+        "cost_usd": result.cost_usd + sum(c["cost_usd"] for c in calls),  # both calls, as the paper counts
+        "usage": usage,
+        "calls": [
+            *calls,
+            {
+                "kind": "behavior_tree",
+                "model": result.detail.get("model"),
+                "response": result.text,
+                "usage": asdict(result.usage),
+                "cost_usd": result.cost_usd,
+                "latency_s": round(result.latency_s, 3),
+            },
+        ],
         "scene_summary": view.summary,
         "latency_s": time.perf_counter() - t0,
         "examples": len(examples),
     }
     return result.plan, info
+
+
+def _synthesise_prompts(planner: Any, ctx: TrialContext) -> list[dict[str, Any]]:
+    """Ask the LLM for three alternative prompts per object the instruction names, and let perception try them;
+    a failed call leaves the offline synonym table in place (recorded, not fatal)."""
+    from .planning.observe import phrases_for
+
+    labels = phrases_for(ctx.instruction)
+    if not labels or not hasattr(planner, "prompt_variants"):
+        return []
+    try:
+        ctx.resolver.use_variants(planner.prompt_variants(labels, 3))
+    except Exception as e:
+        return [
+            *planner.calls,
+            {"kind": "prompt_synthesis", "error": f"{type(e).__name__}: {e}", "usage": {}, "cost_usd": 0.0},
+        ]
+    return list(planner.calls)
 
 
 def run_trial(

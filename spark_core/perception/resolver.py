@@ -49,6 +49,12 @@ class PerceptionResolver:
         self.groundings: list[dict] = []  # every resolution: label, prompt candidates, choice, keypoint
         self.detections: dict[str, dict[str, Detection]] = {}  # camera -> label -> latest chosen detection
 
+    def use_variants(self, table: dict[str, list[str]]) -> None:
+        """Alternative prompts per label from elsewhere (an LLM's prompt-synthesis call); labels it has none for
+        keep the offline synonym table."""
+        fallback = self.variants
+        self.variants = lambda label: table.get(label) or fallback(label)
+
     def refresh(self) -> None:
         self.refreshes += 1
         self._capture()

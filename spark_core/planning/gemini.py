@@ -33,6 +33,7 @@ class GeminiPlanner:
                 if not base_url
                 else f"no key for {base_url}: configure it as a named endpoint (spark.yaml endpoints:) with api_key_env"
             )
+        self.calls: list[dict] = []  # the prompt-synthesis calls made, as the trace keeps them
         self.settings = settings or LLMSettings(model)
         self.types = types
         self.errors = genai.errors
@@ -48,7 +49,7 @@ class GeminiPlanner:
 
     def prompt_variants(self, labels: list[str], k: int = 3) -> dict[str, list[str]]:
         """The variant call: k alternative text prompts per object label (colour, shape, material)."""
-        return variants_with_llm(self.settings, labels, k, self._call)
+        return variants_with_llm(self.settings, labels, k, self._call, self.calls.append)
 
     def _call(self, system: str, turns: list[Turn], image: bytes | None, schema: dict | None = None) -> CallOutcome:
         t = self.types

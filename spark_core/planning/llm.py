@@ -7,7 +7,7 @@ import functools
 import json
 import time
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import asdict, dataclass, field
 
 import cv2
 import numpy as np
@@ -141,17 +141,34 @@ VARIANTS_SYSTEM = (
 
 
 def variants_with_llm(
-    settings: LLMSettings, labels: list[str], k: int, call: Callable[..., CallOutcome]
+    settings: LLMSettings,
+    labels: list[str],
+    k: int,
+    call: Callable[..., CallOutcome],
+    record: Callable[[dict], None] | None = None,
 ) -> dict[str, list[str]]:
-    """One call; labels the model skipped or mangled get no variants (perception then uses the label alone)."""
+    """One call; labels the model skipped or mangled get no variants (perception then uses the label alone).
+    `record` receives the call as the trace keeps it: prompt, response, usage, cost, latency."""
     schema = {
         "type": "object",
         "properties": {label: {"type": "array", "items": {"type": "string"}} for label in labels},
         "required": list(labels),
     }
-    out = _with_retries(
-        settings, lambda: call(VARIANTS_SYSTEM.format(k=k), [Turn("user", json.dumps(labels))], None, schema)
-    )
+    system, user = VARIANTS_SYSTEM.format(k=k), json.dumps(labels)
+    t0 = time.perf_counter()
+    out = _with_retries(settings, functools.partial(call, system, [Turn("user", user)], None, schema))
+    if record is not None:
+        record(
+            {
+                "kind": "prompt_synthesis",
+                "model": settings.model,
+                "prompt": f"{system}\n\n{user}",
+                "response": out.text,
+                "usage": asdict(out.usage),
+                "cost_usd": cost_usd(settings.model, out.usage, settings.prices),
+                "latency_s": round(time.perf_counter() - t0, 3),
+            }
+        )
     try:
         data = json.loads(unfence(out.text))
     except json.JSONDecodeError:

@@ -27,6 +27,7 @@ class OpenAIPlanner:
                 "the openai planner needs OPENAI_API_KEY, or --base-url of a local "
                 "OpenAI-compatible server (Ollama, vLLM, llama.cpp)"
             )
+        self.calls: list[dict] = []  # the prompt-synthesis calls made, as the trace keeps them
         self.settings = settings or LLMSettings(model)
         self.openai = openai
         self.client = openai.OpenAI(api_key=key, base_url=base_url, timeout=self.settings.timeout_s, max_retries=0)
@@ -36,7 +37,7 @@ class OpenAIPlanner:
 
     def prompt_variants(self, labels: list[str], k: int = 3) -> dict[str, list[str]]:
         """The variant call: k alternative text prompts per object label (colour, shape, material)."""
-        return variants_with_llm(self.settings, labels, k, self._call)
+        return variants_with_llm(self.settings, labels, k, self._call, self.calls.append)
 
     def _call(self, system: str, turns: list[Turn], image: bytes | None, schema: dict | None = None) -> CallOutcome:
         messages: list[dict] = [{"role": "system", "content": system}]
