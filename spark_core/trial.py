@@ -126,6 +126,9 @@ class TrialConfig:
             "noise": self.noise.describe() if self.segmenter == "sim-noisy" else None,
             "endpoint": self.endpoint,
             "success_rule": "the task's predicate within the time limit AND the behavior tree succeeded",
+            "wording": "the task's own instruction (official wording; LIBERO: the env's)"
+            if self.instruction is None
+            else "an instruction given with the trial",
         }
 
 
@@ -230,11 +233,10 @@ def _plan(ctx: TrialContext, library: Any) -> tuple[Plan | None, dict[str, Any]]
         return parse_plan(ctx.task.reference_plan_text()), {"source": "reference"}
     from .planning import PlanRequest
     from .planning.backends import make_planner
+    from .planning.llm import PlannerUnavailable
     from .planning.observe import annotated_view, arm_bases, arm_tools, observe
 
     t0 = time.perf_counter()
-    from .planning.llm import PlannerUnavailable
-
     try:
         planner = make_planner(cfg.planner, cfg.model, cfg.base_url, cfg.endpoint)
     except (ValueError, PlannerUnavailable) as e:  # a missing key or server

@@ -24,7 +24,10 @@ def protocol(config: TrialConfig) -> str:
     if p["noise"]:
         seg += f", noise: {p['noise']}, misses independent per prompt and per view"
     rec = "recovery tiers 1-2 on (2 retries per node), replan off" if config.recovery else "recovery off"
-    return f"planner: {p['planner']}; segmenter: {seg}; {rec}; success: {p['success_rule']} (the task's own time limit)"
+    return (
+        f"planner: {p['planner']}; wording: {p['wording']}; segmenter: {seg}; {rec}; "
+        f"success: {p['success_rule']} (the task's own time limit)"
+    )
 
 
 def _one(job: tuple[TrialConfig, str | None]) -> dict:

@@ -49,6 +49,9 @@ def run(
 
 
 def section(r: dict, command: str) -> str:
+    from ..catalog import SEGMENTERS
+
+    privileged = "PRIVILEGED" if SEGMENTERS[r["segmenter"]].privileged else "non-privileged"
     lines = ["| suite | executor | trials | success | wall time | trials per hour |", "|---|---|---|---|---|---|"]
     for suite, s in r["suites"].items():
         for name, x in s["runs"].items():
@@ -66,7 +69,8 @@ def section(r: dict, command: str) -> str:
         + "\n\n"
         + footer(
             command,
-            f"{what}; segmenter {r['segmenter']}; Ray: a local cluster started by the command (start-up and "
-            "shutdown included); every trial builds its scene (robosuite/LIBERO env) afresh",
+            f"{what}; segmenter {r['segmenter']} ({privileged}); wording: each task's own instruction (official); "
+            "seeds 0 and up; Ray: a local cluster started by the command (start-up and shutdown included); every "
+            "trial builds its scene (robosuite/LIBERO env) afresh",
         )
     )
