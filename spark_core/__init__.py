@@ -31,7 +31,6 @@ _EXPORTS: dict[str, str] = {
     "SEGMENTERS": "spark_core.catalog",
     "EMBODIMENTS": "spark_core.catalog",
     "check_task": "spark_core.catalog",
-    "check_suite": "spark_core.catalog",
     "suites": "spark_core.catalog",
     "task_entry": "spark_core.catalog",
     "check_planner": "spark_core.catalog",

@@ -123,10 +123,6 @@ def suites() -> dict[str, list[str]]:
     return {suite: list(tasks) for suite, tasks in SUITES.items()}
 
 
-def check_suite(name: str) -> str:
-    return _check("suite", name, suites())
-
-
 def check_task(name: str):
     """The TaskSpec named `name`."""
     from .sim.tasks import TASKS
@@ -203,7 +199,6 @@ __all__ = [
     "check_embodiment",
     "check_planner",
     "check_segmenter",
-    "check_suite",
     "check_task",
     "enums",
     "suites",

@@ -423,7 +423,6 @@ def _run(
     result: TrialResult | None = None
     limit = SimTimeLimit(sim_start_s, time_limit_s, control.abort)
     if plan is not None:
-        ctx.extra["plan"] = plan
         monitors = [limit] + ([Pacer(cfg.pacing)] if cfg.pacing else [])
         world.monitors.extend(monitors)
         try:
