@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Install the Debian packages SPARK needs (headless EGL rendering for MuJoCo, chromium for browser tests),
-# when run as root with apt.
+# Install the Debian packages SPARK needs (headless EGL rendering for MuJoCo, chromium for browser tests,
+# postgresql: the trace store's tests start a throwaway server), when run as root with apt.
 set -euo pipefail
-PKGS=(libegl1 libgl1-mesa-dri libegl-mesa0 chromium-headless-shell)
+PKGS=(libegl1 libgl1-mesa-dri libegl-mesa0 chromium-headless-shell postgresql)
 missing=()
 for p in "${PKGS[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done
 [ ${#missing[@]} -eq 0 ] && exit 0

@@ -318,8 +318,12 @@ class TraceStore:
             where.append(TrialRow.verdict == verdict)
         if success is not None:
             # Beside a task, test success on the task's rows: SQLite (no statistics) would otherwise walk the
-            # 2-valued success index, ~10x the rows. ifnull() keeps the planner off that index.
-            where.append(TrialRow.success == success if not task else func.ifnull(TrialRow.success, -1) == int(success))
+            # 2-valued success index, ~10x the rows. ifnull() keeps its planner off that index; PostgreSQL has
+            # statistics (and no ifnull on booleans).
+            sqlite_task = task and self.engine.dialect.name == "sqlite"
+            where.append(
+                func.ifnull(TrialRow.success, -1) == int(success) if sqlite_task else TrialRow.success == success
+            )
         if search:
             like = f"%{search}%"
             where.append(or_(TrialRow.instruction.ilike(like), TrialRow.task.ilike(like), TrialRow.reason.ilike(like)))

@@ -6,8 +6,8 @@ from spark_core.trace import TraceStore
 from spark_core.trace.library_table import StorePlanLibrary
 
 
-def test_store_library_keeps_plans_and_retrieves_similar_ones(tmp_path):
-    url = f"sqlite:///{tmp_path / 'lib.db'}"
+def test_store_library_keeps_plans_and_retrieves_similar_ones(store_url):
+    url = store_url
     lib = StorePlanLibrary(TraceStore(url))
     lib.add(
         "stack the red block on the blue block", "task: stack\ntree: {primitive: wait}\n", "2 blocks", trial_id="t-1"

@@ -1,40 +1,47 @@
-"""The trace store on a real SQLite file: migrations both ways, a recorded physics trial, queries, deletion."""
+"""The trace store on a real SQLite file and on a real PostgreSQL server (the same SQLAlchemy URL): migrations
+both ways, a recorded physics trial, queries, deletion."""
 
 import sqlite3
 
 import pytest
+from sqlalchemy import func, inspect, select
 
 from spark_core.trace import TraceStore
+from spark_core.trace.models import EventRow
 
 
-def tables(path):
-    with sqlite3.connect(path) as c:
-        return {r[0] for r in c.execute("select name from sqlite_master where type='table'")}
+def tables(store):
+    return set(inspect(store.engine).get_table_names())
 
 
-def test_migrations_empty_to_head_down_and_up_again(tmp_path):
-    db = tmp_path / "trace.db"
-    store = TraceStore(f"sqlite:///{db}")
-    assert {"trials", "events", "groundings", "alembic_version"} <= tables(db)
-    with sqlite3.connect(db) as c:
-        assert c.execute("pragma journal_mode").fetchone()[0] == "wal"
-    with sqlite3.connect(db) as c:
-        assert "artifacts" in {r[1] for r in c.execute("pragma table_info(trials)")}
-    store.downgrade("0001")  # one step back: the artifacts column goes, the data model of 0001 stays
-    with sqlite3.connect(db) as c:
-        assert "artifacts" not in {r[1] for r in c.execute("pragma table_info(trials)")}
+def columns(store, table):
+    return {c["name"] for c in inspect(store.engine).get_columns(table)}
+
+
+def test_migrations_empty_to_head_down_and_up_again(store_url):
+    store = TraceStore(store_url)
+    assert {"trials", "events", "groundings", "batches", "plan_library", "leases", "alembic_version"} <= tables(store)
+    if store_url.startswith("sqlite"):
+        with sqlite3.connect(store_url[len("sqlite:///") :]) as c:
+            assert c.execute("pragma journal_mode").fetchone()[0] == "wal"
+    assert {"artifacts", "deleted_at", "verdict", "scene_states"} <= columns(store, "trials")
+    store.create_trial("kept", task="lift_block", status="done", success=True)
+    store.downgrade("0001")  # back to the first schema with a row in it: the later columns go, the row stays
+    assert "artifacts" not in columns(store, "trials") and "leases" not in tables(store)
     store.downgrade("base")
-    assert tables(db) & {"trials", "events", "groundings"} == set()
+    assert tables(store) & {"trials", "events", "groundings"} == set()
     store.upgrade("head")
-    assert {"trials", "events", "groundings"} <= tables(db)
+    assert {"trials", "events", "groundings", "leases"} <= tables(store)
+    store.create_trial("again", task="lift_block", status="done", success=False)
+    assert store.list_trials(task="lift_block", success=False)[0] == 1
 
 
-@pytest.fixture(scope="module")
-def recorded(tmp_path_factory):
+@pytest.fixture
+def recorded(store_url):
     from spark_core.trace.sink import StoreSink
     from spark_core.trial import TrialConfig, run_trial
 
-    store = TraceStore(f"sqlite:///{tmp_path_factory.mktemp('db') / 'trace.db'}")
+    store = TraceStore(store_url)
     out = run_trial(TrialConfig("lift_block", segmenter="sim"), [StoreSink(store)])
     return store, out
 
@@ -56,8 +63,8 @@ def test_a_physics_trial_is_recorded_completely(recorded):
     assert trial["nodes"]["tree.children[0]"]["kind"] == "pick"
 
 
-def test_queries_filter_sort_paginate_and_delete(tmp_path):
-    store = TraceStore(f"sqlite:///{tmp_path / 't.db'}")
+def test_queries_filter_sort_paginate_and_delete(store_url):
+    store = TraceStore(store_url)
     for i in range(7):
         store.create_trial(
             f"t{i}",
@@ -70,6 +77,7 @@ def test_queries_filter_sort_paginate_and_delete(tmp_path):
     store.add_events("t1", [{"seq": 0, "t": 0.0, "node_path": "tree", "kind": "started", "detail": {}}])
     assert store.list_trials(task="stack_two")[0] == 3
     assert store.list_trials(success=False)[0] == 3
+    assert store.list_trials(task="stack_two", success=True)[0] == 2  # success beside a task: its own SQL on SQLite
     assert [r["id"] for r in store.list_trials(search="job 5")[1]] == ["t5"]
     total, page = store.list_trials(sort="wall_time_s", limit=3, offset=3)
     assert total == 7 and [r["id"] for r in page] == ["t3", "t4", "t5"]
@@ -79,12 +87,12 @@ def test_queries_filter_sort_paginate_and_delete(tmp_path):
     assert store.list_trials()[0] == 6 and "t1" not in store.trial_ids()  # hidden, still restorable
     assert store.restore_trial("t1", grace_s=60) and store.get_trial("t1")["id"] == "t1"
     assert store.purge_trial("t1") and not store.restore_trial("t1", grace_s=60)  # purged: gone for good
-    with sqlite3.connect(tmp_path / "t.db") as c:
-        assert c.execute("select count(*) from events").fetchone()[0] == 0
+    with store.Session() as s:
+        assert s.scalar(select(func.count()).select_from(EventRow)) == 0
 
 
-def test_unfinished_trials_are_interrupted_not_lost(tmp_path):
-    url = f"sqlite:///{tmp_path / 't.db'}"
+def test_unfinished_trials_are_interrupted_not_lost(store_url):
+    url = store_url
     store = TraceStore(url)
     store.create_trial("a", status="running")
     store.create_trial("b", status="queued")
