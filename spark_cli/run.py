@@ -89,7 +89,7 @@ def _cmd_plan(args: argparse.Namespace) -> int:
     from spark_core.planning import PlanRequest
     from spark_core.planning.backends import make_planner
     from spark_core.planning.llm import PlannerUnavailable
-    from spark_core.planning.observe import annotated_view, arm_bases, arm_tools, observe
+    from spark_core.planning.observe import arm_bases, arm_tools, observe, perceive_for_llm
 
     try:
         task = check_task(args.task)
@@ -105,12 +105,21 @@ def _cmd_plan(args: argparse.Namespace) -> int:
     world = task.make_world(args.seed)
     try:
         resolver = make_resolver(world, args.segmenter, args.seed, sam3_model=args.sam3_model)
-        view = observe(args.instruction, resolver)
-        if args.planner != "rules":
-            view = annotated_view(view, resolver)
+        calls: list[dict] = []
+        if args.planner == "rules":
+            view = observe(args.instruction, resolver)
+        else:  # the paper's loop: the prompt-synthesis call, then perception, then the BT call
+            view, calls = perceive_for_llm(planner, args.instruction, resolver, adaptive=True)
         result = planner.plan(PlanRequest(args.instruction, view, (), arm_bases(world), arm_tools(world)))
     finally:
         world.close()
+    for call in calls:  # the synthesis call: what it asked perception to look for
+        if "error" in call:
+            print(f"prompt synthesis failed ({call['error']}); perception used its synonym table")
+        else:
+            print(f"prompt synthesis: objects {', '.join(call.get('objects', [])) or 'none'}")
+            for obj, prompts in call.get("variants", {}).items():
+                print(f"  {obj}: {', '.join(prompts)}")
     print("perception saw:\n" + "\n".join("  " + line for line in view.summary.splitlines()))
     if result.detail.get("understood"):
         print("understood: " + "; ".join(result.detail["understood"]))
@@ -128,6 +137,9 @@ def _cmd_plan(args: argparse.Namespace) -> int:
             f"usage: {u.input_tokens} in, {u.output_tokens} out, {u.reasoning_tokens} reasoning tokens; "
             f"${result.cost_usd:.4f}; {result.latency_s:.1f} s"
         )
+    if calls:  # the trial's cost counts both calls, as the paper does
+        total = result.cost_usd + sum(c.get("cost_usd", 0.0) for c in calls)
+        print(f"cost of both calls (synthesis + BT): ${total:.4f}")
     return 0 if result.ok else 1
 
 

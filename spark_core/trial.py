@@ -108,8 +108,10 @@ class TrialConfig:
             if self.plan_text is not None
             else PLANNERS[self.planner].description
             if PLANNERS[self.planner].offline
-            else f"{self.planner} ({self.model or PLANNERS[self.planner].default_model}); one call; it saw the "
-            "instruction, what perception found for its phrases and the annotated image"
+            else f"{self.planner} ({self.model or PLANNERS[self.planner].default_model}); two calls: prompt "
+            "synthesis (task language + agentview image -> objects to detect"
+            + (", 3 alternative prompts each" if self.adaptive else "")
+            + "), then the BT call (what perception found, the annotated image, the task language)"
         )
         return {
             "planner": planner,
@@ -234,7 +236,7 @@ def _plan(ctx: TrialContext, library: Any) -> tuple[Plan | None, dict[str, Any]]
     from .planning import PlanRequest
     from .planning.backends import make_planner
     from .planning.llm import PlannerUnavailable
-    from .planning.observe import annotated_view, arm_bases, arm_tools, observe
+    from .planning.observe import arm_bases, arm_tools, image_reference, observe, perceive_for_llm
 
     t0 = time.perf_counter()
     try:
@@ -247,11 +249,10 @@ def _plan(ctx: TrialContext, library: Any) -> tuple[Plan | None, dict[str, Any]]
         }
     llm = not PLANNERS[cfg.planner].offline
     calls: list[dict[str, Any]] = []
-    if llm and cfg.adaptive and hasattr(ctx.resolver, "use_variants"):
-        calls = _synthesise_prompts(planner, ctx)  # the paper's first call: alternative prompts per object
-    view = observe(ctx.instruction, ctx.resolver)  # every prompt on every camera; the single confident one kept
-    if llm:
-        view = annotated_view(view, ctx.resolver)
+    if llm:  # the paper's loop: synthesis call, every prompt on every camera, the annotated image
+        view, calls = perceive_for_llm(planner, ctx.instruction, ctx.resolver, adaptive=cfg.adaptive)
+    else:
+        view = observe(ctx.instruction, ctx.resolver)
     examples = library.examples(ctx.instruction) if (llm and library is not None) else ()
     result = planner.plan(PlanRequest(ctx.instruction, view, examples, arm_bases(ctx.world), arm_tools(ctx.world)))
     usage = asdict(result.usage)
@@ -271,7 +272,9 @@ def _plan(ctx: TrialContext, library: Any) -> tuple[Plan | None, dict[str, Any]]
             {
                 "kind": "behavior_tree",
                 "model": result.detail.get("model"),
+                "prompt": result.detail.get("prompt"),
                 "response": result.text,
+                "image": image_reference(view, next(iter(getattr(ctx.resolver, "frames", {}) or {}), None)),
                 "usage": asdict(result.usage),
                 "cost_usd": result.cost_usd,
                 "latency_s": round(result.latency_s, 3),
@@ -282,24 +285,6 @@ def _plan(ctx: TrialContext, library: Any) -> tuple[Plan | None, dict[str, Any]]
         "examples": len(examples),
     }
     return result.plan, info
-
-
-def _synthesise_prompts(planner: Any, ctx: TrialContext) -> list[dict[str, Any]]:
-    """Ask the LLM for three alternative prompts per object the instruction names, and let perception try them;
-    a failed call leaves the offline synonym table in place (recorded, not fatal)."""
-    from .planning.observe import phrases_for
-
-    labels = phrases_for(ctx.instruction)
-    if not labels or not hasattr(planner, "prompt_variants"):
-        return []
-    try:
-        ctx.resolver.use_variants(planner.prompt_variants(labels, 3))
-    except Exception as e:
-        return [
-            *planner.calls,
-            {"kind": "prompt_synthesis", "error": f"{type(e).__name__}: {e}", "usage": {}, "cost_usd": 0.0},
-        ]
-    return list(planner.calls)
 
 
 def run_trial(

@@ -1,41 +1,65 @@
-"""The paper's perception loop for LLM planners, through the trial pipeline: a prompt-synthesis call first (three
-alternative prompts per object), perception tries every prompt and keeps the single confident detection, then
-the behavior-tree call; both calls are in the trace and the trial's cost counts both."""
+"""The paper's perception loop for LLM planners, through the trial pipeline and `spark plan`, against a loopback
+server that answers like OpenAI: (a) the prompt-synthesis call on the task language and the agentview image gives
+the objects to detect and three alternative prompts each; (b, c) perception tries every prompt on every camera and
+keeps the single confident detection; (d) the BT call gets the annotated image. Both calls are in the trace
+(prompt, response, usage, cost, latency; the BT call's image by SHA-256) and the trial's cost counts both."""
 
 from __future__ import annotations
 
+import base64
+import hashlib
 import json
 
 from spark_core.trial import TrialConfig, Verdict, run_trial
-from tests.planning.fake_llm import FakeLLM
+from tests.doubles.fake_openai import FakeOpenAI
 
 PLAN = {
     "task": "pick up the red block",
     "tree": {"type": "sequence", "children": [{"type": "pick", "params": {"keypoint_label": "red block"}}]},
 }
+SYNTHESIS = [{"object": "red block", "prompts": ["crimson cube", "red wooden cube", "scarlet block"]}]
 
 
-def test_the_synthesis_call_comes_first_its_prompts_reach_perception_and_both_calls_are_costed():
-    variants = {"red block": ["crimson cube", "red wooden cube", "scarlet block"]}
-    with FakeLLM("openai") as fake:
-        fake.script = [("ok", json.dumps(variants), (50, 20, 0)), ("ok", json.dumps(PLAN), (900, 60, 0))]
-        out = run_trial(
-            # a model with a price in the table: an OpenAI-compatible proxy serving Gemini
-            TrialConfig(
-                "lift_block", planner="openai", model="gemini-3.1-pro", base_url=fake.url + "/v1", segmenter="sim"
-            )
-        )
+def _config(fake, **kw) -> TrialConfig:
+    kw.setdefault("model", "m")
+    return TrialConfig("lift_block", planner="openai", base_url=fake.url + "/v1", segmenter="sim", **kw)
+
+
+def _images(body: dict) -> list[bytes]:
+    content = body["messages"][1]["content"]
+    if isinstance(content, str):
+        return []
+    return [base64.b64decode(p["image_url"]["url"].split(",", 1)[1]) for p in content if p["type"] == "image_url"]
+
+
+def _prompts_tried(store, trial_id: str) -> set[str]:
+    groundings = store.get_trial(trial_id)["groundings"]
+    return {c["prompt"] for g in groundings for cam in g["cameras"].values() for c in cam["candidates"]}
+
+
+def test_the_synthesis_call_comes_first_with_the_image_and_both_calls_are_traced_and_costed():
+    with FakeOpenAI() as fake:
+        fake.script = [("ok", json.dumps(SYNTHESIS), (50, 20, 0)), ("ok", json.dumps(PLAN), (900, 60, 0))]
+        # a model with a price in the table: an OpenAI-compatible proxy serving Gemini
+        out = run_trial(_config(fake, model="gemini-3.1-pro"))
     assert out.verdict is Verdict.SUCCESS, out.reason
     first, second = (r["body"] for r in fake.requests)
-    assert "alternative short text prompts" in first["messages"][0]["content"]  # the synthesis call, first
-    assert "red block" in first["messages"][1]["content"]
-    content = second["messages"][1]["content"]  # the BT call carries the annotated image
-    assert isinstance(content, list) and any(part["type"] == "image_url" for part in content)
+    assert "open-vocabulary object detector" in first["messages"][0]["content"]  # the synthesis call, first
+    assert first["max_tokens"] == 512 and first["response_format"]["json_schema"]["schema"]["type"] == "array"
+    assert "Task: pick up the red block" in first["messages"][1]["content"][0]["text"]
+    (agentview,) = _images(first)  # the raw agentview image goes with the synthesis call
+    (annotated,) = _images(second)  # the annotated one with the BT call
+    assert agentview[:4] == annotated[:4] == b"\x89PNG" and agentview != annotated
     calls = out.protocol["planning"]["calls"]
     assert [c["kind"] for c in calls] == ["prompt_synthesis", "behavior_tree"]
-    assert calls[0]["response"] == json.dumps(variants) and calls[0]["usage"]["input_tokens"] == 50
-    assert out.cost_usd == calls[0]["cost_usd"] + calls[1]["cost_usd"] > 0
+    syn, bt = calls
+    assert syn["response"] == json.dumps(SYNTHESIS) and syn["usage"]["input_tokens"] == 50 and syn["image_attached"]
+    assert syn["objects"] == ["red block"] and syn["variants"] == {"red block": SYNTHESIS[0]["prompts"]}
+    assert bt["image"]["sha256"] == hashlib.sha256(annotated).hexdigest() and bt["image"]["camera"] == "agentview"
+    assert "Task: pick up the red block" in bt["prompt"] and bt["response"] == json.dumps(PLAN)
+    assert out.cost_usd == syn["cost_usd"] + bt["cost_usd"] and syn["cost_usd"] > 0 and bt["cost_usd"] > 0
     assert out.usage["input_tokens"] == 950 and out.usage["output_tokens"] == 80
+    assert "two calls" in out.protocol["planner"]
 
 
 def test_perception_tries_the_llms_prompts(tmp_path):
@@ -43,24 +67,72 @@ def test_perception_tries_the_llms_prompts(tmp_path):
     from spark_core.trace.sink import StoreSink
 
     store = TraceStore(f"sqlite:///{tmp_path / 'p.db'}")
-    variants = {"red block": ["crimson cube", "red wooden cube", "scarlet block"]}
-    with FakeLLM("openai") as fake:
-        fake.script = [("ok", json.dumps(variants)), ("ok", json.dumps(PLAN))]
-        out = run_trial(
-            TrialConfig("lift_block", planner="openai", model="m", base_url=fake.url + "/v1", segmenter="sim"),
-            [StoreSink(store)],
-        )
+    with FakeOpenAI() as fake:
+        fake.script = [("ok", json.dumps(SYNTHESIS)), ("ok", json.dumps(PLAN))]
+        out = run_trial(_config(fake), [StoreSink(store, tmp_path / "artifacts")])
+    assert {"red block", "crimson cube", "red wooden cube", "scarlet block"} <= _prompts_tried(store, out.trial_id)
     grounding = store.get_trial(out.trial_id)["groundings"][0]
-    prompts = {c["prompt"] for cam in grounding["cameras"].values() for c in cam["candidates"]}
-    assert {"red block", "crimson cube", "red wooden cube", "scarlet block"} <= prompts
+    chosen = [cam["chosen"] for cam in grounding["cameras"].values()]
+    assert any(c is not None for c in chosen)  # the one kept is named, with every candidate's score
+    assert all("best_score" in c for cam in grounding["cameras"].values() for c in cam["candidates"])
+
+
+def test_bad_phrases_are_filtered_and_perception_falls_back_to_its_table(tmp_path):
+    from spark_core.trace import TraceStore
+    from spark_core.trace.sink import StoreSink
+
+    store = TraceStore(f"sqlite:///{tmp_path / 'p.db'}")
+    bad = [{"object": "red block", "prompts": ["", 7, "a " * 30, "red block", "Red  Block"]}]
+    with FakeOpenAI() as fake:
+        fake.script = [("ok", json.dumps(bad)), ("ok", json.dumps(PLAN))]
+        out = run_trial(_config(fake), [StoreSink(store, tmp_path / "artifacts")])
+    assert out.verdict is Verdict.SUCCESS, out.reason
+    syn = out.protocol["planning"]["calls"][0]
+    assert syn["variants"] == {} and len(syn["dropped"]) == 5
+    assert {"red cube", "red wooden block"} <= _prompts_tried(store, out.trial_id)  # the synonym table's
 
 
 def test_a_failed_synthesis_call_is_recorded_and_perception_falls_back_to_its_table():
-    with FakeLLM("openai") as fake:
+    with FakeOpenAI() as fake:
         fake.script = [("status", 400), ("ok", json.dumps(PLAN))]
-        out = run_trial(
-            TrialConfig("lift_block", planner="openai", model="m", base_url=fake.url + "/v1", segmenter="sim")
-        )
+        out = run_trial(_config(fake))
     calls = out.protocol["planning"]["calls"]
-    assert calls[0]["kind"] == "prompt_synthesis" and "error" in calls[0]
+    assert calls[0]["kind"] == "prompt_synthesis" and "HTTP 400" in calls[0]["error"]
     assert out.verdict is Verdict.SUCCESS, out.reason
+
+
+def test_an_instruction_the_rules_parser_cannot_read_still_gives_the_llm_detections():
+    from spark_core.planning.observe import phrases_for
+
+    instruction = "make the red block fly"
+    assert phrases_for(instruction) == []  # nothing for perception without the synthesis call
+    with FakeOpenAI() as fake:
+        fake.script = [("ok", json.dumps(SYNTHESIS)), ("ok", json.dumps(PLAN))]
+        out = run_trial(_config(fake, instruction=instruction))
+    assert "red block: (" in fake.requests[1]["body"]["messages"][1]["content"][0]["text"]
+    assert out.verdict is Verdict.SUCCESS, out.reason
+
+
+def test_without_adaptive_prompts_the_synthesis_call_asks_for_objects_only():
+    with FakeOpenAI() as fake:
+        fake.script = [("ok", json.dumps([{"object": "red block"}])), ("ok", json.dumps(PLAN))]
+        out = run_trial(_config(fake, adaptive=False))
+    assert out.verdict is Verdict.SUCCESS, out.reason
+    schema = fake.requests[0]["body"]["response_format"]["json_schema"]["schema"]
+    assert "prompts" not in schema["items"]["properties"]
+
+
+def test_spark_plan_makes_the_synthesis_call_too(capsys):
+    from spark_cli import main
+
+    with FakeOpenAI() as fake:
+        fake.script = [("ok", json.dumps(SYNTHESIS), (40, 10, 0)), ("ok", json.dumps(PLAN))]
+        code = main(
+            ["plan", "make the red block fly", "--task", "lift_block", "--planner", "openai", "--model", "m"]
+            + ["--base-url", fake.url + "/v1"]
+        )
+    out = capsys.readouterr().out
+    assert code == 0 and len(fake.requests) == 2
+    assert "prompt synthesis: objects red block" in out and "crimson cube, red wooden cube, scarlet block" in out
+    assert "red block: (" in out and "type: pick" in out and "cost of both calls" in out
+    assert len(_images(fake.requests[0]["body"])) == 1

@@ -4,7 +4,17 @@ from __future__ import annotations
 
 import os
 
-from .llm import CallOutcome, LLMSettings, PlannerUnavailable, TransientError, Turn, plan_with_llm, variants_with_llm
+from .llm import (
+    CallOutcome,
+    LLMSettings,
+    PlannerUnavailable,
+    Synthesis,
+    TransientError,
+    Turn,
+    plan_with_llm,
+    synthesise_with_llm,
+    variants_with_llm,
+)
 from .prompt import response_schema
 from .protocol import PlanRequest, PlanResult, Usage
 
@@ -51,7 +61,19 @@ class GeminiPlanner:
         """The variant call: k alternative text prompts per object label (colour, shape, material)."""
         return variants_with_llm(self.settings, labels, k, self._call, self.calls.append)
 
-    def _call(self, system: str, turns: list[Turn], image: bytes | None, schema: dict | None = None) -> CallOutcome:
+    def synthesise(self, instruction: str, image_png: bytes | None, k: int = 3) -> Synthesis:
+        """The paper's prompt-synthesis call: the objects to detect (and k alternative prompts each when k > 0)
+        from the task language and the agentview image; recorded in `calls`."""
+        return synthesise_with_llm(self.settings, instruction, image_png, k, self._call, self.calls.append)
+
+    def _call(
+        self,
+        system: str,
+        turns: list[Turn],
+        image: bytes | None,
+        schema: dict | None = None,
+        max_output_tokens: int | None = None,
+    ) -> CallOutcome:
         t = self.types
         contents = []
         for i, turn in enumerate(turns):
@@ -62,7 +84,7 @@ class GeminiPlanner:
         config = t.GenerateContentConfig(
             system_instruction=system,
             temperature=self.settings.temperature,
-            max_output_tokens=self.settings.max_output_tokens,
+            max_output_tokens=max_output_tokens or self.settings.max_output_tokens,
             response_mime_type="application/json",
             response_json_schema=schema or response_schema(),
         )
@@ -72,6 +94,8 @@ class GeminiPlanner:
             if e.code == 429 or (e.code or 0) >= 500:
                 raise TransientError(f"HTTP {e.code} from Gemini: {e.message or e.status}") from None
             raise PlannerUnavailable(f"HTTP {e.code} from Gemini: {e.message or e.status}") from None
+        except ValueError as e:  # a 200 whose body is not JSON (a proxy's error page): report, do not crash
+            raise PlannerUnavailable(f"Gemini answered with a body that is not JSON ({e})") from None
         except Exception as e:
             if "timeout" in type(e).__name__.lower() or "timed out" in str(e).lower():
                 raise TransientError(f"Gemini did not answer within {self.settings.timeout_s:g} s") from None

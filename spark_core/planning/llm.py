@@ -87,7 +87,7 @@ def plan_with_llm(
                 usage=total,
                 cost_usd=cost_usd(settings.model, total, settings.prices),
                 latency_s=time.perf_counter() - t0,
-                detail={"model": settings.model, "rounds": round_},
+                detail={"model": settings.model, "rounds": round_, "prompt": turns[0].text},
             )
         total = Usage(
             total.input_tokens + out.usage.input_tokens,
@@ -104,7 +104,7 @@ def plan_with_llm(
                 usage=total,
                 cost_usd=cost_usd(settings.model, total, settings.prices),
                 latency_s=time.perf_counter() - t0,
-                detail={"model": settings.model, "rounds": round_ + 1, "attempts": texts},
+                detail={"model": settings.model, "rounds": round_ + 1, "attempts": texts, "prompt": turns[0].text},
             )
         turns += [Turn("model", out.text), Turn("user", repair_prompt([str(i) for i in issues]))]
     return PlanResult(
@@ -116,7 +116,7 @@ def plan_with_llm(
         usage=total,
         cost_usd=cost_usd(settings.model, total, settings.prices),
         latency_s=time.perf_counter() - t0,
-        detail={"model": settings.model, "attempts": texts},
+        detail={"model": settings.model, "attempts": texts, "prompt": turns[0].text},
     )
 
 
@@ -133,11 +133,128 @@ def _with_retries(settings: LLMSettings, fn: Callable[[], CallOutcome]) -> CallO
     raise AssertionError("unreachable")
 
 
-VARIANTS_SYSTEM = (
-    "You help an open-vocabulary object detector. For each object label, give {k} alternative short "
-    "text prompts that describe the same object by colour, shape or material. Answer with a JSON object "
-    "mapping each label to a list of {k} strings, and nothing else."
+# The paper's prompt-synthesis call: image + task language -> the objects to detect and, in the adaptive
+# configuration, three alternative colour-and-shape prompts per object; a JSON list, at most 512 output tokens.
+SYNTHESIS_MAX_OUTPUT_TOKENS = 512
+MAX_PHRASE_WORDS = 6  # SAM3 reads short noun phrases (its CLIP text encoder takes 32 tokens)
+MAX_PHRASE_CHARS = 48
+
+SYNTHESIS_SYSTEM = (
+    "You prepare the prompts of an open-vocabulary object detector (SAM3) for a robot. From the task and the "
+    "camera image, list every object the robot must find to do the task, each as a short noun phrase (at most "
+    f"{MAX_PHRASE_WORDS} words) the way the task names it."
 )
+SYNTHESIS_VARIANTS = (
+    " For each object also give {k} alternative short prompts that describe the same object by its colour and "
+    "shape as seen in the image (never the object's own phrase again)."
+)
+SYNTHESIS_ANSWER = ' Answer with a JSON list of {{"object": <phrase>{prompts}}} entries, and nothing else.'
+
+
+@dataclass(frozen=True)
+class Synthesis:
+    """What the prompt-synthesis call gave, after filtering: objects to detect, alternative prompts per object,
+    and every phrase refused with the reason (empty, too long, not a string, duplicate)."""
+
+    objects: tuple[str, ...] = ()
+    variants: dict[str, list[str]] = field(default_factory=dict)
+    dropped: tuple[str, ...] = ()
+
+
+def synthesis_schema(k: int) -> dict:
+    """The JSON list the synthesis call must answer with (`prompts` only when k > 0)."""
+    item: dict = {"type": "object", "properties": {"object": {"type": "string"}}, "required": ["object"]}
+    if k:
+        item["properties"]["prompts"] = {"type": "array", "items": {"type": "string"}}
+        item["required"].append("prompts")
+    return {"type": "array", "items": item}
+
+
+def synthesise_with_llm(
+    settings: LLMSettings,
+    instruction: str,
+    image_png: bytes | None,
+    k: int,
+    call: Callable[..., CallOutcome],
+    record: Callable[[dict], None] | None = None,
+) -> Synthesis:
+    """One call (retried on 429/5xx/timeouts like every call; raises TransientError or PlannerUnavailable when
+    it fails). `k` = 0: objects only (the fair and bddl configurations). `record` receives the call as the trace
+    keeps it: prompt, whether the image went with it, response, usage, cost, latency, what was dropped."""
+    system = SYNTHESIS_SYSTEM + (SYNTHESIS_VARIANTS.format(k=k) if k else "")
+    system += SYNTHESIS_ANSWER.format(prompts=f', "prompts": [{k} strings]' if k else "")
+    user = f"Task: {instruction.strip()}"
+    t0 = time.perf_counter()
+    turns = [Turn("user", user)]
+    out = _with_retries(
+        settings, functools.partial(call, system, turns, image_png, synthesis_schema(k), SYNTHESIS_MAX_OUTPUT_TOKENS)
+    )
+    result = parse_synthesis(out.text, k)
+    if record is not None:
+        record(
+            {
+                "kind": "prompt_synthesis",
+                "model": settings.model,
+                "prompt": f"{system}\n\n{user}",
+                "image_attached": image_png is not None,
+                "max_output_tokens": SYNTHESIS_MAX_OUTPUT_TOKENS,
+                "response": out.text,
+                "objects": list(result.objects),
+                "variants": result.variants,
+                "dropped": list(result.dropped),
+                "usage": asdict(out.usage),
+                "cost_usd": cost_usd(settings.model, out.usage, settings.prices),
+                "latency_s": round(time.perf_counter() - t0, 3),
+            }
+        )
+    return result
+
+
+def parse_synthesis(text: str, k: int) -> Synthesis:
+    """The model's answer as a Synthesis. Accepts the JSON list asked for, or an object mapping each object to
+    its prompts; anything else gives no objects (perception then looks for the instruction's own phrases)."""
+    try:
+        data = json.loads(unfence(text))
+    except (json.JSONDecodeError, TypeError):
+        return Synthesis(dropped=(f"response: not JSON ({text[:60]!r})",))
+    if isinstance(data, dict):
+        data = [{"object": name, "prompts": prompts} for name, prompts in data.items()]
+    if not isinstance(data, list):
+        return Synthesis(dropped=(f"response: expected a JSON list, got {type(data).__name__}",))
+    dropped: list[str] = []
+    objects: dict[str, list[str]] = {}
+    for i, entry in enumerate(data):
+        name = entry.get("object") if isinstance(entry, dict) else entry
+        phrase, why = _phrase(name)
+        if phrase is None or phrase.lower() in (o.lower() for o in objects):
+            dropped.append(f"[{i}].object: {why or 'duplicate'}")
+            continue
+        prompts: list[str] = []
+        raw = entry.get("prompts", []) if isinstance(entry, dict) else []
+        if not isinstance(raw, list):
+            dropped.append(f"[{i}].prompts: expected a list, got {type(raw).__name__}")
+            raw = []
+        for j, value in enumerate(raw):
+            p, why = _phrase(value)
+            seen = {phrase.lower(), *(q.lower() for q in prompts)}
+            if p is None or p.lower() in seen:
+                dropped.append(f"[{i}].prompts[{j}]: {why or 'duplicate'}")
+            elif len(prompts) < k:
+                prompts.append(p)
+        objects[phrase] = prompts
+    return Synthesis(tuple(objects), {o: v for o, v in objects.items() if v}, tuple(dropped))
+
+
+def _phrase(value: object) -> tuple[str | None, str]:
+    """A usable detector prompt, or None and why not."""
+    if not isinstance(value, str):
+        return None, f"not a string ({type(value).__name__})"
+    phrase = " ".join(value.split())
+    if not phrase:
+        return None, "empty"
+    if len(phrase) > MAX_PHRASE_CHARS or len(phrase.split()) > MAX_PHRASE_WORDS:
+        return None, f"too long for the detector ({len(phrase.split())} words, {len(phrase)} characters)"
+    return phrase, ""
 
 
 def variants_with_llm(
@@ -147,16 +264,20 @@ def variants_with_llm(
     call: Callable[..., CallOutcome],
     record: Callable[[dict], None] | None = None,
 ) -> dict[str, list[str]]:
-    """One call; labels the model skipped or mangled get no variants (perception then uses the label alone).
-    `record` receives the call as the trace keeps it: prompt, response, usage, cost, latency."""
+    """Alternative prompts for labels already known (no image, no object discovery): the synthesis call's
+    filtering applied to labels the model skipped or mangled, which get no variants."""
     schema = {
         "type": "object",
         "properties": {label: {"type": "array", "items": {"type": "string"}} for label in labels},
         "required": list(labels),
     }
-    system, user = VARIANTS_SYSTEM.format(k=k), json.dumps(labels)
+    system = SYNTHESIS_VARIANTS.format(k=k).strip() + " Answer with a JSON object mapping each object to its list."
+    user = json.dumps(labels)
     t0 = time.perf_counter()
-    out = _with_retries(settings, functools.partial(call, system, [Turn("user", user)], None, schema))
+    out = _with_retries(
+        settings, functools.partial(call, system, [Turn("user", user)], None, schema, SYNTHESIS_MAX_OUTPUT_TOKENS)
+    )
+    result = parse_synthesis(out.text, k)
     if record is not None:
         record(
             {
@@ -164,17 +285,10 @@ def variants_with_llm(
                 "model": settings.model,
                 "prompt": f"{system}\n\n{user}",
                 "response": out.text,
+                "dropped": list(result.dropped),
                 "usage": asdict(out.usage),
                 "cost_usd": cost_usd(settings.model, out.usage, settings.prices),
                 "latency_s": round(time.perf_counter() - t0, 3),
             }
         )
-    try:
-        data = json.loads(unfence(out.text))
-    except json.JSONDecodeError:
-        return {label: [] for label in labels}
-    result = {}
-    for label in labels:
-        raw = data.get(label, []) if isinstance(data, dict) else []
-        result[label] = [v.strip() for v in raw if isinstance(v, str) and v.strip() and v.strip() != label][:k]
-    return result
+    return {label: result.variants.get(label, []) for label in labels}

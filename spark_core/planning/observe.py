@@ -7,6 +7,7 @@ action needs, e.g. a drawer's handle) is handed to perception, and only what per
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import Any
 
 from ..perception import Keypoint, LabelNotFound
 from ..perception.resolver_protocol import Resolver
@@ -38,7 +39,7 @@ def phrases_for(instruction: str) -> list[str]:
 
 def observe(instruction: str, resolver: Resolver, extra: Sequence[str] = ()) -> SceneView:
     keypoints: dict[str, Keypoint] = {}
-    for phrase in [*phrases_for(instruction), *extra]:
+    for phrase in dict.fromkeys([*phrases_for(instruction), *extra]):
         try:
             keypoints[phrase] = resolver.resolve(phrase)
         except LabelNotFound:
@@ -70,3 +71,62 @@ def annotated_view(view: SceneView, resolver: Resolver) -> SceneView:
 
     frame = next(iter(frames.values()))
     return SceneView(view.keypoints, view.summary, annotate(frame, [], view.keypoints))
+
+
+def agentview_png(resolver: Resolver) -> bytes | None:
+    """The first perception camera's current image (PNG), as the prompt-synthesis call receives it; None when
+    the resolver looks through no cameras (privileged keypoints)."""
+    cameras = getattr(resolver, "cameras", ())
+    world = getattr(resolver, "world", None)
+    if not cameras or world is None:
+        return None
+    from .llm import png_bytes
+
+    w, h = getattr(resolver, "size", (640, 480))
+    return png_bytes(world.render(cameras[0], w, h).rgb)
+
+
+def perceive_for_llm(
+    planner: Any, instruction: str, resolver: Resolver, *, adaptive: bool, k: int = 3, extra: Sequence[str] = ()
+) -> tuple[SceneView, list[dict]]:
+    """The paper's perception loop before an LLM's BT call, in its order: (a) the prompt-synthesis call on the
+    task language and the agentview image gives the objects to detect and, when `adaptive`, `k` alternative
+    prompts per object; (b, c) perception runs every prompt on every camera and keeps the single confident
+    detection, for the instruction's own phrases, the LLM's objects and `extra` names; (d) the view carries the
+    annotated image for the BT call. A failed synthesis call is recorded and perception keeps its synonym table.
+    Returns the view and the synthesis call as the trace keeps it."""
+    from .llm import PlannerUnavailable, TransientError
+
+    objects: tuple[str, ...] = ()
+    if hasattr(planner, "synthesise"):
+        use_variants = getattr(resolver, "use_variants", None)
+        try:
+            synthesis = planner.synthesise(instruction, agentview_png(resolver), k if adaptive and use_variants else 0)
+        except (TransientError, PlannerUnavailable) as e:
+            planner.calls.append(
+                {"kind": "prompt_synthesis", "error": f"{type(e).__name__}: {e}", "usage": {}, "cost_usd": 0.0}
+            )
+        else:
+            objects = synthesis.objects
+            if use_variants is not None and synthesis.variants:
+                use_variants(synthesis.variants)
+    view = annotated_view(observe(instruction, resolver, [*objects, *extra]), resolver)
+    return view, list(getattr(planner, "calls", []))
+
+
+def image_reference(view: SceneView, camera: str | None = None) -> dict | None:
+    """What the trace keeps of the image attached to the BT call: its camera, size and the SHA-256 of the PNG
+    sent (the annotated agentview image written as a trial artifact carries the same picture)."""
+    if view.image is None:
+        return None
+    import hashlib
+
+    from .llm import png_bytes
+
+    h, w = view.image.shape[:2]
+    return {
+        "artifact": f"planner-input-{camera}" if camera else "planner-input",
+        "camera": camera,
+        "size_px": [w, h],
+        "sha256": hashlib.sha256(png_bytes(view.image)).hexdigest(),
+    }

@@ -6,7 +6,17 @@ from __future__ import annotations
 import base64
 import os
 
-from .llm import CallOutcome, LLMSettings, PlannerUnavailable, TransientError, Turn, plan_with_llm, variants_with_llm
+from .llm import (
+    CallOutcome,
+    LLMSettings,
+    PlannerUnavailable,
+    Synthesis,
+    TransientError,
+    Turn,
+    plan_with_llm,
+    synthesise_with_llm,
+    variants_with_llm,
+)
 from .prompt import response_schema
 from .protocol import PlanRequest, PlanResult, Usage
 
@@ -39,7 +49,19 @@ class OpenAIPlanner:
         """The variant call: k alternative text prompts per object label (colour, shape, material)."""
         return variants_with_llm(self.settings, labels, k, self._call, self.calls.append)
 
-    def _call(self, system: str, turns: list[Turn], image: bytes | None, schema: dict | None = None) -> CallOutcome:
+    def synthesise(self, instruction: str, image_png: bytes | None, k: int = 3) -> Synthesis:
+        """The paper's prompt-synthesis call: the objects to detect (and k alternative prompts each when k > 0)
+        from the task language and the agentview image; recorded in `calls`."""
+        return synthesise_with_llm(self.settings, instruction, image_png, k, self._call, self.calls.append)
+
+    def _call(
+        self,
+        system: str,
+        turns: list[Turn],
+        image: bytes | None,
+        schema: dict | None = None,
+        max_output_tokens: int | None = None,
+    ) -> CallOutcome:
         messages: list[dict] = [{"role": "system", "content": system}]
         for i, turn in enumerate(turns):
             content: object = turn.text
@@ -53,7 +75,7 @@ class OpenAIPlanner:
                 model=self.settings.model,
                 messages=messages,
                 temperature=self.settings.temperature,
-                max_tokens=self.settings.max_output_tokens,
+                max_tokens=max_output_tokens or self.settings.max_output_tokens,
                 response_format={
                     "type": "json_schema",
                     "json_schema": {"name": "spark_output", "schema": schema or response_schema()},
@@ -69,6 +91,10 @@ class OpenAIPlanner:
             raise TransientError(f"cannot reach {self.client.base_url}: {e}") from None
         except o.APIStatusError as e:
             raise PlannerUnavailable(f"HTTP {e.status_code} from {self.client.base_url}: {_message(e)}") from None
+        if isinstance(resp, str) or not getattr(resp, "choices", None):  # a body that is not a completion
+            raise PlannerUnavailable(
+                f"{self.client.base_url} answered with a body that is not JSON: {str(resp)[:80]!r}"
+            )
         u = resp.usage
         reasoning = getattr(getattr(u, "completion_tokens_details", None), "reasoning_tokens", 0) or 0 if u else 0
         usage = Usage(u.prompt_tokens if u else 0, (u.completion_tokens - reasoning) if u else 0, reasoning)

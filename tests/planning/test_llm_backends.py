@@ -231,7 +231,7 @@ def test_cli_plans_through_an_openai_compatible_server(capsys):
     from spark_cli import main
 
     with FakeLLM("openai") as fake:
-        fake.script = [("ok", GOOD)]
+        fake.script = [("ok", json.dumps([{"object": "red block"}, {"object": "plate"}])), ("ok", GOOD)]
         code = main(
             [
                 "plan",
@@ -248,6 +248,6 @@ def test_cli_plans_through_an_openai_compatible_server(capsys):
         )
     out = capsys.readouterr().out
     assert code == 0 and "type: place" in out and "usage: 120 in" in out
-    content = fake.requests[0]["body"]["messages"][1]["content"]
+    content = fake.requests[1]["body"]["messages"][1]["content"]  # after the prompt-synthesis call
     assert "red block: (" in content[0]["text"]  # what perception saw, from the scene's cameras
     assert content[1]["image_url"]["url"].startswith("data:image/png;base64,")  # the annotated agentview image
