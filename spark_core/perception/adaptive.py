@@ -1,5 +1,11 @@
 """Adaptive prompt self-consistency: try K prompts for one object, keep the one that yields exactly one
-confident detection, discard ambiguous ones, and record every candidate and the choice."""
+confident detection, discard ambiguous ones, and record every candidate and the choice.
+
+The paper's threshold rule: the segmenter reports detections at its model's default threshold (SAM3: 0.3, see
+sam3_segmenter.MODEL_SCORE_THRESHOLD). With alternative prompts (the adaptive configuration) the adaptive rule
+supersedes that threshold: a prompt counts only when it gives exactly one detection (two reported instances make
+it ambiguous) and that detection is confident (>= CONFIDENT); the most confident such prompt is kept. With the
+label alone (fair, bddl) its single detection is kept at the segmenter's own threshold."""
 
 from __future__ import annotations
 
@@ -40,12 +46,15 @@ def select_prompt(
     frame: CameraFrame,
     label: str,
     variants: list[str],
-    confident: float = CONFIDENT,
+    confident: float | None = None,
     keep_apart: frozenset[str] = frozenset(),
 ) -> PromptSelection:
     """Segment with the label and its variants in one call (split masks of one object merged first, except for
-    prompts in `keep_apart`); keep the best single confident detection."""
+    prompts in `keep_apart`); keep the best single confident detection. `confident` None: the threshold rule
+    above (CONFIDENT with alternatives, the segmenter's own threshold for the label alone)."""
     prompts = list(dict.fromkeys([label, *variants]))
+    if confident is None:
+        confident = detection_threshold(segmenter, adaptive=len(prompts) > 1)
     dets = merge_duplicates(segmenter.segment(frame, prompts), keep_apart=keep_apart)
     by_prompt: dict[str, list[Detection]] = {p: [] for p in prompts}
     for d in dets:
@@ -72,3 +81,11 @@ def select_prompt(
         for c in candidates
     ]
     return PromptSelection(label, chosen.with_label(label), tuple(candidates))
+
+
+def detection_threshold(segmenter: Segmenter, adaptive: bool) -> float:
+    """The score a prompt's single detection needs to be kept: CONFIDENT when the adaptive rule chooses among
+    alternative prompts; otherwise the segmenter's own reporting threshold (SAM3: its model's default), or
+    CONFIDENT for segmenters without one."""
+    own = getattr(segmenter, "score_threshold", None)
+    return CONFIDENT if adaptive or own is None else float(own)

@@ -18,6 +18,12 @@ from .frame import CameraFrame
 
 DEFAULT_MODEL = "facebook/sam3"
 TEXT_TOKENS = 32  # SAM3's CLIP text encoder takes 32 tokens
+# The paper's detection threshold rule: SAM3 reports instances at the model's own default threshold (the one of
+# transformers' Sam3Processor.post_process_instance_segmentation: score 0.3, masks binarised at 0.5); which of
+# them a label keeps is then decided by the selection rule in adaptive.py, which supersedes the threshold when
+# there are alternative prompts (the adaptive configuration).
+MODEL_SCORE_THRESHOLD = 0.3
+MODEL_MASK_THRESHOLD = 0.5
 
 
 class Sam3WeightsMissing(FileNotFoundError):
@@ -57,8 +63,8 @@ class Sam3Segmenter:
         self,
         model: str | os.PathLike | None = None,
         device: str | None = None,
-        score_threshold: float = 0.5,
-        mask_threshold: float = 0.5,
+        score_threshold: float = MODEL_SCORE_THRESHOLD,
+        mask_threshold: float = MODEL_MASK_THRESHOLD,
         max_detections: int = 10,
     ):
         import torch

@@ -147,3 +147,65 @@ def test_a_missing_sam3_checkpoint_is_refused_before_anything_runs(tmp_path, mon
     monkeypatch.setenv("HF_HOME", str(tmp_path / "empty-cache"))
     with pytest.raises(TrialConfigError, match="segmenter: SAM3 weights not found: '/nowhere/sam3'"):
         TrialConfig("lift_block", segmenter="sam3", sam3_model="/nowhere/sam3").check()
+
+
+class _Scored:
+    """The tiny model's real forward pass with its scores and masks set per prompt (in call order): the
+    detection rule is then tested on SAM3's own output path (sigmoid(logit) x sigmoid(presence), mask > 0.5)."""
+
+    def __init__(self, model, scores_per_call: list[list[float]]):
+        self.model, self.scores = model, list(scores_per_call)
+
+    def get_vision_features(self, **kw):
+        return self.model.get_vision_features(**kw)
+
+    def __call__(self, **kw):
+        import torch
+
+        res = self.model(**kw)
+        scores = self.scores.pop(0)
+        n = res.pred_logits.shape[1]
+        logits = torch.full((1, n), -20.0)
+        masks = torch.full(res.pred_masks.shape, -20.0)
+        side = masks.shape[-1]
+        for q, s in enumerate(scores):  # instance q: its own patch of the image, well apart from the others
+            logits[0, q] = float(np.log(s / (1 - s)))
+            masks[0, q, side // 2 - 4 : side // 2 + 4, q * side // 5 : q * side // 5 + 8] = 20.0
+        res.pred_logits, res.presence_logits, res.pred_masks = logits, torch.full((1, 1), 20.0), masks
+        return res
+
+
+def test_the_paper_threshold_rule_is_the_models_default(tiny_checkpoint, frame):
+    import inspect
+
+    from transformers.models.sam3.processing_sam3 import Sam3Processor
+
+    from spark_core.perception.sam3_segmenter import MODEL_MASK_THRESHOLD, MODEL_SCORE_THRESHOLD
+
+    defaults = inspect.signature(Sam3Processor.post_process_instance_segmentation).parameters
+    assert MODEL_SCORE_THRESHOLD == defaults["threshold"].default == 0.3
+    assert MODEL_MASK_THRESHOLD == defaults["mask_threshold"].default == 0.5
+    seg = Sam3Segmenter(tiny_checkpoint, device="cpu")
+    assert seg.score_threshold == MODEL_SCORE_THRESHOLD
+    seg.model = _Scored(seg.model, [[0.9, 0.4, 0.2]])
+    dets = seg.segment(frame, ["red block"])
+    assert [round(d.score, 3) for d in dets] == [0.9, 0.4]  # reported down to 0.3, no lower
+
+
+def test_the_adaptive_rule_supersedes_the_threshold(tiny_checkpoint, frame):
+    from spark_core.perception.adaptive import CONFIDENT, detection_threshold, select_prompt
+
+    seg = Sam3Segmenter(tiny_checkpoint, device="cpu")
+    assert detection_threshold(seg, adaptive=True) == CONFIDENT == 0.5 and detection_threshold(seg, False) == 0.3
+    # label: two instances (ambiguous); variant 1: one weak (0.45 < 0.5); variant 2: one confident; variant 3: none
+    seg.model = _Scored(seg.model, [[0.9, 0.4], [0.45], [0.7], []])
+    sel = select_prompt(seg, frame, "red block", ["crimson cube", "red cube", "the block"])
+    verdicts = {c.prompt: c.verdict for c in sel.candidates}
+    assert verdicts == {"red block": "ambiguous", "crimson cube": "weak", "red cube": "chosen", "the block": "none"}
+    assert sel.chosen_prompt == "red cube" and sel.detection.label == "red block"
+    # the label alone (fair, bddl): its single detection is kept at the model's threshold, though not confident
+    seg.model = _Scored(seg.model.model, [[0.45]])
+    sel = select_prompt(seg, frame, "red block", [])
+    assert sel.chosen_prompt == "red block" and sel.candidates[0].best_score == 0.45
+    seg.model = _Scored(seg.model.model, [[0.25]])
+    assert select_prompt(seg, frame, "red block", []).detection is None  # under 0.3: never reported
