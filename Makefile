@@ -10,13 +10,17 @@ export HF_HUB_OFFLINE := 1
 
 install: $(STAMP)
 
+# The console's front end (web/: TypeScript, React, Vite), built into web/dist which the server serves.
+WEB_SOURCES := $(shell find web/src web/index.html web/vite.config.ts web/tsconfig.json web/public -type f 2>/dev/null)
+
 # torch first and explicitly: 2.13.0 is the CPU wheel on local disk; a loose torch pulls a CUDA build.
-$(STAMP): pyproject.toml requirements.lock scripts/apt-deps.sh
+$(STAMP): pyproject.toml requirements.lock scripts/apt-deps.sh web/package.json web/package-lock.json $(WEB_SOURCES)
 	@bash scripts/apt-deps.sh
 	@test -x $(BIN)/python || $(PY) -m venv $(VENV)
 	$(BIN)/pip install -q torch==2.13.0
 	$(BIN)/pip install -q -r requirements.lock
 	$(BIN)/pip install -q --no-deps -e .
+	cd web && npm ci --no-audit --no-fund && npm run build
 	@touch $@
 
 # Benchmark extras into the same venv, one pinned mujoco for everything: robosuite (capbench), LIBERO and the

@@ -36,6 +36,10 @@ def create_app(settings: Settings | None = None) -> FastAPI:
 
             scene = ViserScene("127.0.0.1", settings.viser_port)  # loopback only: browsers come through /viser
         app.state.store, app.state.settings, app.state.scene, app.state.lease = store, settings, scene, lease
+        if scene is not None:
+            from .replay import ReplayCursors
+
+            app.state.replays = ReplayCursors(store, scene)
         app.state.runner = TrialRunner(
             store,
             settings.workers,
@@ -53,12 +57,14 @@ def create_app(settings: Settings | None = None) -> FastAPI:
             app.state.runner.shutdown(settings.shutdown_timeout_s)
             lease.release()
             if scene is not None:
+                app.state.replays.close()
                 scene.stop()
 
     app = FastAPI(
         title="SPARK console",
         version="0.1.0",
         lifespan=lifespan,
+        docs_url=None,  # /docs below: Swagger UI from our own origin (works offline), not from a CDN
         description="Typed behavior trees over anchored keypoints: trials, plans, grammar, live events.",
     )
     # Every request and websocket passes the Guard (security/guard.py) before any route reads it; CORS, when
@@ -78,9 +84,39 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.include_router(batches.router)
     app.include_router(exports.router)
     app.include_router(trials.dashboard)
-    web = Path(__file__).resolve().parents[1] / "web"
-    if web.is_dir():
-        from fastapi.staticfiles import StaticFiles
-
-        app.mount("/", StaticFiles(directory=web, html=True), name="web")  # after the API: /api wins
+    _mount_web(app, Path(__file__).resolve().parents[1] / "web" / "dist")
     return app
+
+
+def _mount_web(app: FastAPI, dist: Path) -> None:
+    """The built front end (web/dist, from `make install`: npm ci && npm run build) and Swagger UI's assets,
+    which the build copies from the swagger-ui-dist package into dist/swagger."""
+    from fastapi.openapi.docs import get_swagger_ui_html
+    from fastapi.responses import HTMLResponse
+    from fastapi.staticfiles import StaticFiles
+
+    @app.get("/docs", include_in_schema=False)
+    def docs() -> HTMLResponse:
+        if not (dist / "swagger" / "swagger-ui-bundle.js").is_file():
+            return HTMLResponse(_NOT_BUILT, status_code=503)
+        return get_swagger_ui_html(
+            openapi_url=app.openapi_url or "/openapi.json",
+            title=f"{app.title} - API",
+            swagger_js_url="/swagger/swagger-ui-bundle.js",
+            swagger_css_url="/swagger/swagger-ui.css",
+            swagger_favicon_url="/favicon.svg",
+        )
+
+    if (dist / "index.html").is_file():
+        app.mount("/", StaticFiles(directory=dist, html=True), name="web")  # after the API: /api wins
+    else:
+
+        @app.get("/", include_in_schema=False)
+        def not_built() -> HTMLResponse:
+            return HTMLResponse(_NOT_BUILT, status_code=503)
+
+
+_NOT_BUILT = (
+    "<!doctype html><title>SPARK console</title><p>The console's front end is not built: run <code>make install</code>"
+    " (npm ci &amp;&amp; npm run build in web/). The API is up at <code>/api</code>.</p>"
+)

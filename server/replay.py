@@ -82,3 +82,78 @@ def _play(scene, key: str, trial_id: str, world, states: list, keypoints: dict, 
         scene.active(key, f"**Replay:** {trial_id}  \nfinished ({states[-1][0]:.1f} s simulated)")
     finally:
         world.close()
+
+
+class ReplayCursors:
+    """Show a finished trial in the 3D view at one instant (a page's time cursor): its recorded scene state at or
+    before `t_sim_s`, and the keypoints grounded by then. Worlds of the last few trials stay built, so scrubbing
+    costs one forward-kinematics pass per call."""
+
+    def __init__(self, store, scene, keep: int = 2):
+        self.store, self.scene, self.keep = store, scene, keep
+        self._open: dict[str, dict] = {}  # trial id -> {world, data, states, times, groundings, origin}
+        self._lock = threading.Lock()
+
+    def seek(self, trial_id: str, t_sim_s: float) -> dict:
+        """Raises KeyError for an unknown trial, ReplayUnavailable with the reason."""
+        import bisect
+
+        from spark_core import body_poses, visual_geoms
+
+        key = f"replay:{trial_id}"
+        with self._lock:
+            r = self._open.get(trial_id) or self._load(trial_id)
+            i = max(0, bisect.bisect_right(r["times"], t_sim_s) - 1)
+            t, qpos = r["states"][i]
+            if self.scene.current != key:
+                self.scene.show(key, visual_geoms(r["world"].model), title=f"replay of {trial_id}")
+            self.scene.pinned = key
+            xpos, xquat = body_poses(r["world"].model, r["data"], np.asarray(qpos, float))
+            self.scene.update(key, xpos - r["origin"], xquat)
+            grounded = {
+                g["label"]: g["keypoint"]["position_m"]
+                for g in r["groundings"]
+                if g.get("keypoint") and (g.get("t_sim_s") or 0.0) <= t_sim_s
+            }
+            self.scene.markers(key, grounded)
+            self.scene.active(key, f"**Replay:** {trial_id}  \nt = {t:.2f} / {r['times'][-1]:.2f} s (simulated)")
+        return {"id": trial_id, "key": key, "t_sim_s": round(t, 3), "index": i, "states": len(r["states"])}
+
+    def _load(self, trial_id: str) -> dict:
+        import mujoco
+
+        from spark_core import TASKS
+
+        trial = self.store.get_trial(trial_id)
+        if trial is None:
+            raise KeyError(trial_id)
+        if trial["status"] != "done":
+            raise ReplayUnavailable(f"trial {trial_id!r} is {trial['status']}: replay needs a finished trial")
+        states = self.store.scene_states(trial_id)
+        if not states:
+            raise ReplayUnavailable(f"trial {trial_id!r} has no recorded scene states")
+        task = TASKS.get(trial["task"])
+        if task is None:
+            raise ReplayUnavailable(f"trial {trial_id!r} ran task {trial['task']!r}, which this build does not have")
+        world = task.make_world(trial["seed"])
+        if len(states[0][1]) != world.model.nq:
+            world.close()
+            raise ReplayUnavailable(f"trial {trial_id!r} was recorded with a different scene model")
+        while len(self._open) >= self.keep:
+            self._open.pop(next(iter(self._open)))["world"].close()
+        r = {
+            "world": world,
+            "data": mujoco.MjData(world.model),
+            "states": states,
+            "times": [s[0] for s in states],
+            "groundings": trial.get("groundings", []),
+            "origin": np.asarray(getattr(world, "origin_m", np.zeros(3)), float),
+        }
+        self._open[trial_id] = r
+        return r
+
+    def close(self) -> None:
+        with self._lock:
+            for r in self._open.values():
+                r["world"].close()
+            self._open.clear()

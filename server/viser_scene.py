@@ -1,4 +1,5 @@
-"""The live 3D view (viser): whichever trial the console shows (the most recently started one, or a replay).
+"""The live 3D view (viser): the trial a console page is bound to (`focus`), or else the most recently started
+one, or a replay.
 
 The view never touches a simulation: it is fed plain arrays (`VisualGeom`s once, then body poses) by a
 `SceneFeed` running next to the world, in a worker process or in a replay thread. Drawn: robot links, objects
@@ -28,6 +29,12 @@ class ViserScene:
         self.host = host
         self.rate_hz = rate_hz  # what feeds are asked to publish at
         self.current: str | None = None  # key (trial id, or "replay:<id>") of what is on screen
+        # The key a trial page bound the view to: while set, other feeds do not take the view (they are cached,
+        # so focusing one later draws it at once). None: the most recently started trial takes the view.
+        self.pinned: str | None = None
+        self._feeds: dict[str, dict[str, Any]] = {}  # key -> latest scene/title/poses/markers/image of its feed
+        self._markers: list[Any] = []  # keypoint spheres on screen
+        self._labels: dict[str, Any] = {}  # label -> its text handle (a child of its marker)
         self._frames: dict[int, Any] = {}  # body id -> viser frame
         self._targets: dict[str, Any] = {}
         self._lock = threading.Lock()
@@ -53,7 +60,7 @@ class ViserScene:
                 if g.body not in frames:
                     frames[g.body] = scene.add_frame(f"/world/b{g.body}", show_axes=False)
                 _add_geom(scene, g, f"/world/b{g.body}/g{i}")
-            self._frames, self._targets = frames, {}
+            self._frames, self._targets, self._markers, self._labels = frames, {}, [], {}
             self._active.content = f"**Trial:** {title or key}"
 
     def update(self, key: str, xpos: np.ndarray, xquat: np.ndarray, targets: dict | None = None) -> None:
@@ -73,14 +80,22 @@ class ViserScene:
             self.ticks += 1
 
     def markers(self, key: str, keypoints: dict[str, list[float]]) -> None:
-        """Resolved keypoints (world frame, m) as small spheres with their labels."""
+        """Resolved keypoints (world frame, m) as small spheres with their labels; only those given are shown."""
         with self._lock:
             if key != self.current:
                 return
+            for handle in self._markers:  # only the keypoints given: a replay scrubbed back shows fewer
+                handle.remove()
+            self._markers, self._labels = [], {}
             for i, (label, position) in enumerate(keypoints.items()):
                 p = np.asarray(position, float)
-                self.server.scene.add_icosphere(f"/keypoints/k{i}", radius=0.008, color=(255, 40, 200), position=p)
-                self.server.scene.add_label(f"/keypoints/k{i}/label", text=label, position=p + [0, 0, 0.03])
+                marker = self.server.scene.add_icosphere(
+                    f"/keypoints/k{i}", radius=0.008, color=(255, 40, 200), position=p
+                )
+                # a child of its marker: its position is in the marker's frame (3 cm above it), not the world's
+                label_handle = self.server.scene.add_label(f"/keypoints/k{i}/label", text=label, position=(0, 0, 0.03))
+                self._markers.append(marker)
+                self._labels[label] = label_handle
 
     def image(self, key: str, rgb: np.ndarray) -> None:
         with self._lock:
@@ -93,10 +108,17 @@ class ViserScene:
                 self._active.content = text
 
     def sink(self, key: str, title: str = ""):
-        """A SceneFeed sink drawing into this view under `key` (the feed's first message takes the view)."""
+        """A SceneFeed sink drawing into this view under `key`. The feed's first message takes the view unless a
+        page pinned another key; every message is kept (latest of each kind) so `focus(key)` can draw it later."""
 
         def draw(kind: str, payload) -> None:
-            if kind == "scene":
+            with self._lock:
+                feed = self._feeds.setdefault(key, {"title": title})
+                feed[kind] = payload
+                while len(self._feeds) > MAX_FEEDS:  # oldest first: dicts keep insertion order
+                    self._feeds.pop(next(iter(self._feeds)))
+                take = kind == "scene" and (self.pinned is None or self.pinned == key)
+            if take:
                 self.show(key, payload, title)
             elif kind == "poses":
                 self.update(key, *payload)
@@ -107,6 +129,23 @@ class ViserScene:
 
         return draw
 
+    def focus(self, key: str | None) -> bool:
+        """Bind the view to `key` (a trial page opened it); None unbinds. A live feed already seen under `key` is
+        drawn at once from its latest messages. Returns whether that happened."""
+        with self._lock:
+            self.pinned = key
+            feed = dict(self._feeds.get(key or "", {}))
+        if "scene" not in feed or key is None:
+            return False
+        self.show(key, feed["scene"], feed.get("title", ""))
+        if "poses" in feed:
+            self.update(key, *feed["poses"])
+        if "markers" in feed:
+            self.markers(key, feed["markers"])
+        if "image" in feed:
+            self.image(key, feed["image"])
+        return True
+
     def stop(self) -> None:
         with contextlib.redirect_stdout(io.StringIO()):
             self.server.stop()
@@ -115,6 +154,9 @@ class ViserScene:
             thread = getattr(getattr(self.server, "_websock_server", None), "_server_thread", None)
             if thread is not None:
                 thread.join(10.0)
+
+
+MAX_FEEDS = 8  # live feeds whose latest scene is kept for focus()
 
 
 def _add_geom(scene, g: VisualGeom, name: str) -> None:

@@ -6,14 +6,14 @@ from __future__ import annotations
 import uuid
 from typing import Annotated
 
-from fastapi import APIRouter, HTTPException, Path, Request
+from fastapi import APIRouter, HTTPException, Path, Query, Request
 from fastapi.responses import PlainTextResponse
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from spark_core import PLANNERS, SEGMENTERS, wilson
 from spark_core import suites as catalog_suites
 
-from .models import MAX_ID, MAX_NAME, MAX_SEED, TrialCreate
+from .models import MAX_ID, MAX_NAME, MAX_OFFSET, MAX_SEED, TrialCreate
 from .trials import trial_config
 
 router = APIRouter(prefix="/api/batches", tags=["batches"])
@@ -113,6 +113,44 @@ def create_batch(body: BatchCreate, request: Request) -> dict:
     for n, config in enumerate(configs):
         runner.submit(f"{batch_id}-{n:04d}-{config.task}-{config.seed}", config)
     return {"id": batch_id, "trials": len(configs)}
+
+
+@router.get("")
+def list_batches(
+    request: Request, limit: int = Query(100, ge=1, le=500), offset: int = Query(0, ge=0, le=MAX_OFFSET)
+) -> dict:
+    """Every batch, newest first: its settings, status and progress (done / total, successes)."""
+    from sqlalchemy import text
+
+    store = request.app.state.store
+    # The store has no batch listing (spark_core is not ours to change): one read-only aggregate over its tables.
+    sql = text(
+        "SELECT b.id, b.created_at, b.status, b.spec, COUNT(t.id) AS total,"
+        " SUM(CASE WHEN t.status IN ('done', 'interrupted') THEN 1 ELSE 0 END) AS done,"
+        " SUM(CASE WHEN t.success THEN 1 ELSE 0 END) AS successes"
+        " FROM batches b LEFT JOIN trials t ON t.batch_id = b.id AND t.deleted_at IS NULL"
+        " GROUP BY b.id ORDER BY b.created_at DESC, b.id DESC LIMIT :limit OFFSET :offset"
+    )
+    import json
+
+    with store.Session() as s:
+        total = s.execute(text("SELECT COUNT(*) FROM batches")).scalar() or 0
+        rows = s.execute(sql, {"limit": limit, "offset": offset}).mappings().all()
+    items = []
+    for r in rows:
+        spec = json.loads(r["spec"]) if isinstance(r["spec"], str) else (r["spec"] or {})
+        done, n = int(r["done"] or 0), int(r["total"] or 0)
+        status = r["status"] if r["status"] == "cancelled" or done < n else "done"
+        items.append(
+            {
+                "id": r["id"],
+                "created_at": str(r["created_at"]),
+                "status": status,
+                "spec": spec,
+                "progress": {"done": done, "total": n, "successes": int(r["successes"] or 0)},
+            }
+        )
+    return {"total": int(total), "limit": limit, "offset": offset, "items": items}
 
 
 @router.get("/{batch_id}")

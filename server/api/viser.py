@@ -7,7 +7,7 @@ import asyncio
 import contextlib
 from pathlib import Path
 
-from fastapi import APIRouter, HTTPException, Request, WebSocket, WebSocketDisconnect
+from fastapi import APIRouter, HTTPException, Query, Request, WebSocket, WebSocketDisconnect
 from fastapi.responses import FileResponse
 
 from .auth import websocket_allowed
@@ -82,5 +82,35 @@ async def viser_relay(websocket: WebSocket) -> None:
             for t in tasks:
                 t.cancel()
             await asyncio.gather(*tasks, return_exceptions=True)
-    with contextlib.suppress(RuntimeError):  # already closed by the browser
+    with contextlib.suppress(RuntimeError, WebSocketDisconnect):  # already closed by the browser
         await websocket.close()
+
+
+@router.post("/api/viser/focus")
+def focus(
+    request: Request,
+    trial: str | None = Query(None, max_length=256),
+    t_sim_s: float | None = Query(None, ge=0, le=1e6),
+) -> dict:
+    """Bind the 3D view to the trial a page shows: a live trial's own feed (other trials stop taking the view),
+    or a finished trial's recorded scene at `t_sim_s` simulated seconds (default: its last state). No trial:
+    unbind (the most recently started trial takes the view again)."""
+    from ..replay import ReplayUnavailable
+
+    scene = request.app.state.scene
+    if scene is None:
+        raise HTTPException(409, "the 3D view is off (SPARK_VISER=0)")
+    if trial is None:
+        scene.focus(None)
+        return {"showing": scene.current, "pinned": None, "live": False}
+    if trial in request.app.state.runner.live:
+        scene.focus(trial)  # its feed draws as soon as it has a scene (a queued trial: when it starts)
+        return {"showing": scene.current, "pinned": scene.pinned, "live": True}
+    try:
+        r = request.app.state.replays.seek(trial, 1e9 if t_sim_s is None else t_sim_s)
+    except KeyError:
+        raise HTTPException(404, f"no trial {trial!r}") from None
+    except ReplayUnavailable as e:
+        scene.focus(None)
+        raise HTTPException(409, str(e)) from None
+    return {"showing": scene.current, "pinned": scene.pinned, "live": False, **r}

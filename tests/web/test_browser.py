@@ -1,16 +1,30 @@
-"""The console in a real browser: Playwright driving Debian's headless chromium against a real server."""
+"""The console in a real browser: Playwright driving Debian's headless chromium against a real server (uvicorn,
+trial workers, the 3D view), through the built front end (web/dist, from `make install`)."""
 
+import io
+import json
 import shutil
 import socket
 import threading
 import time
+import urllib.request
+import zipfile
 from pathlib import Path
 
+import numpy as np
 import pytest
 
-ARTIFACTS = Path(__file__).resolve().parents[2] / "test-artifacts"
+ROOT = Path(__file__).resolve().parents[2]
+ARTIFACTS = ROOT / "test-artifacts"
 APPS = []  # the app behind the `server` fixture, to look at its 3D view
 CHROMIUM = shutil.which("chromium-headless-shell") or shutil.which("chromium")
+NUDGE = """task: nudge the hand up
+tree:
+  type: sequence
+  children:
+    - type: move_relative
+      params: {dz: 0.05}
+"""
 
 
 @pytest.fixture(scope="module")
@@ -20,6 +34,7 @@ def server(tmp_path_factory):
     from server.app import create_app
     from server.settings import Settings
 
+    assert (ROOT / "web" / "dist" / "index.html").is_file(), "the front end is not built: run `make install`"
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
         port = s.getsockname()[1]
@@ -40,91 +55,164 @@ def server(tmp_path_factory):
 
 
 @pytest.fixture(scope="module")
-def page(server):
+def browser():
     from playwright.sync_api import sync_playwright
 
     assert CHROMIUM, "Debian's chromium-headless-shell is missing: make test installs it (scripts/apt-deps.sh)"
     with sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=CHROMIUM, args=[
+        b = p.chromium.launch(executable_path=CHROMIUM, args=[
             "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--disable-background-networking"])
-        pg = browser.new_page(viewport={"width": 1280, "height": 1000})
-        yield pg
-        browser.close()
+        yield b
+        b.close()
+
+
+@pytest.fixture
+def page(browser, server):
+    ctx = browser.new_context(viewport={"width": 1400, "height": 1000})
+    # every WebSocket the page opens, to check that leaving a trial closes its stream
+    ctx.add_init_script("""(() => { const W = window.WebSocket; window.sparkSockets = [];
+        window.WebSocket = function (...a) { const s = new W(...a); window.sparkSockets.push(s); return s; };
+        window.WebSocket.prototype = W.prototype; Object.assign(window.WebSocket, W); })();""")
+    pg = ctx.new_page()
+    yield pg
+    ctx.close()
 
 
 def shot(page, name):
     ARTIFACTS.mkdir(exist_ok=True)
-    page.screenshot(path=str(ARTIFACTS / f"{name}.png"), full_page=True)
+    page.screenshot(path=str(ARTIFACTS / f"{name}.png"))
 
 
-def test_submit_step_breakpoint_resume_and_history(server, page):
+def _post(server, path, body):
+    req = urllib.request.Request(server + path, method="POST", headers={"content-type": "application/json"},
+                                 data=json.dumps(body).encode())
+    return json.loads(urllib.request.urlopen(req).read())
+
+
+def _wait_done(server, tid, timeout_s=180):
+    for _ in range(int(timeout_s * 10)):
+        t = json.loads(urllib.request.urlopen(f"{server}/api/trials/{tid}").read())
+        if t["status"] == "done":
+            return t
+        time.sleep(0.1)
+    raise AssertionError(f"{tid} did not finish")
+
+
+def test_workspace_steps_breakpoints_then_scrubs_tree_camera_and_3d_together(server, page):
     page.goto(server + "/")
-    page.select_option("select[name=task]", "stack_two")
-    page.select_option("select[name=segmenter]", "sim")  # cameras + masks: the trial has detection images
-    page.check("input[name=start_paused]")
-    page.click("button[type=submit]")
+    page.click("button[data-task=stack_two]")
+    page.select_option("#new-trial select[name=segmenter]", "sim")  # cameras + masks: the trial has detection images
+    page.check("#new-trial input[name=start_paused]")
+    page.click("#new-trial button[type=submit]")
     page.wait_for_url("**/#/trial/stack_two-*")
-    first = page.locator(".node[data-path='tree.children[0]']")
-    first.wait_for()
     page.wait_for_selector(".node.paused[data-path='tree.children[0]']", timeout=120_000)
-    # set a breakpoint by clicking a node of the tree
-    page.click(".node[data-path='tree.children[3]']")
+    assert page.locator("#status").inner_text() == "paused"
+    assert page.is_enabled("#step") and page.is_enabled("#resume") and not page.is_enabled("#pause")
+    page.click(".node[data-path='tree.children[3]']")  # a breakpoint
     page.wait_for_selector(".node.breakpoint[data-path='tree.children[3]']")
     shot(page, "1-paused-with-breakpoint")
-    # step: exactly one primitive runs, then it pauses again
-    page.click("#step")
-    page.wait_for_selector(".node.succeeded[data-path='tree.children[0]']", timeout=120_000)
+    page.click("#step")  # exactly one primitive runs, then it pauses again
     page.wait_for_selector(".node.paused[data-path='tree.children[1]']", timeout=120_000)
-    assert page.locator(".node.succeeded").count() == 1
-    # resume: runs until the breakpoint
-    page.click("#resume")
+    assert page.locator("#tree .node.succeeded").count() == 1
+    page.click("#resume")  # runs until the breakpoint
     page.wait_for_selector(".node.paused[data-path='tree.children[3]']", timeout=120_000)
-    assert page.locator(".node.succeeded[data-path='tree.children[2]']").count() == 1
-    shot(page, "2-at-breakpoint")
     page.click("#resume")
-    page.wait_for_selector("#verdict.ok", timeout=120_000)
-    page.wait_for_selector("#timeline rect")
-    # the 3D view comes from the console's own origin, and the browser's viser client connects through the relay
-    assert page.locator("#viser-frame").get_attribute("src") == "/viser/"
-    scene = APPS[-1].state.scene
-    for _ in range(300):
-        if scene.server.get_clients():
-            break
-        time.sleep(0.1)
-    assert scene.server.get_clients(), "the embedded viser client never connected through /viser"
+    page.wait_for_selector("#verdict[data-verdict=success]", timeout=120_000)
+    # finished: every control that can no longer act is disabled
+    for b in ("#pause", "#step", "#resume", "#abort"):
+        assert not page.is_enabled(b)
     trial_id = page.url.split("/trial/")[1]
-    page.click("#replay")
-    for _ in range(100):
+    scene = APPS[-1].state.scene
+    for _ in range(100):  # the 3D view is bound to this trial's recorded scene
         if scene.current == f"replay:{trial_id}":
             break
         time.sleep(0.05)
-    assert scene.current == f"replay:{trial_id}"
-    shot(page, "3-finished")
-    trial_url = page.url
-    # history: the finished trial is listed and opens with its tree and timeline
+    assert scene.current == f"replay:{trial_id}" and page.locator("#viser-frame").get_attribute("src") == "/viser/"
+    assert page.locator("#timeline").get_attribute("data-bars") == "5"
+    shot(page, "2-workspace-finished")
+    at_end = {b: np.array(f.position) for b, f in scene._frames.items()}
+    n_groundings_end = int(page.locator("#camera-panel").get_attribute("data-groundings"))
+    assert n_groundings_end >= 2 and page.locator("#detections img").count() >= 1
+    assert page.eval_on_selector("#detections img", "img => img.complete && img.naturalWidth") > 0
+    # scrub to the start of the second node: the tree, the camera panel and the 3D view go back together
+    t1 = float(page.eval_on_selector("#event-table", "t => [...t.querySelectorAll('tr[data-kind=started]')][2].cells[0].innerText"))
+    page.locator("#scrub").fill(str(t1 + 1e-4))
+    page.wait_for_selector(".node.running[data-path='tree.children[1]']")
+    assert page.locator(".node.succeeded[data-path='tree.children[0]']").count() == 1
+    assert page.locator(".node.pending[data-path='tree.children[4]']").count() == 1
+    assert int(page.locator("#camera-panel").get_attribute("data-groundings")) < n_groundings_end
+    assert page.locator("#detections img").count() == 0  # the recorded image belongs to a later grounding
+    for _ in range(100):
+        moved = max(np.abs(np.array(f.position) - at_end[b]).max() for b, f in scene._frames.items())
+        if moved > 0.01:
+            break
+        time.sleep(0.05)
+    assert moved > 0.01, "the 3D view did not follow the cursor"
+    assert page.locator("#event-table tr.future").count() > 0
+    shot(page, "3-workspace-scrubbed")
+    # leaving the page closes its event stream
     page.goto(server + "/#/history")
     page.wait_for_selector("#rows table")
-    page.click(f"#rows a[href='#/trial/{trial_url.split('/trial/')[1]}']")
-    page.wait_for_selector(".node.succeeded[data-path='tree.children[4]']")
-    assert page.locator("#timeline rect").count() >= 5
-    assert "move_to_keypoint" in page.locator("#timeline").text_content()
-    page.wait_for_selector("#detections img")
-    assert page.eval_on_selector("#detections img", "img => img.complete && img.naturalWidth") > 0  # served, decodes
-    assert "red block" in page.locator("#groundings").inner_text()
-    shot(page, "4-history-detail")
+    assert page.evaluate("window.sparkSockets.filter(s => s.url.includes('/api/trials/')).every(s => s.readyState >= 2)")
 
 
-def test_form_reports_server_errors(server, page):
+def test_abort_shows_aborted_everywhere(server, page):
+    tid = _post(server, "/api/trials", {"task": "stack_three", "segmenter": "privileged-keypoints", "pacing": 0.25})["id"]
+    page.goto(f"{server}/#/trial/{tid}")
+    page.wait_for_selector("#tree .node.running[data-path='tree.children[0]']", timeout=120_000)
+    page.click("#abort")
+    page.wait_for_selector("#verdict[data-verdict=aborted]", timeout=60_000)
+    assert page.locator("#status").inner_text() == "done"
+    assert page.locator("#tree .node.running, #tree .node.paused").count() == 0
+    assert page.locator("#tree .node.aborted").count() >= 1
+    assert "Aborted" in page.locator("#explanation").inner_text()
+    assert not page.is_enabled("#abort") and not page.is_enabled("#pause")
+    page.goto(f"{server}/#/history")
+    page.wait_for_selector(f"#rows tr[data-id='{tid}'] [data-verdict=aborted]")
+
+
+def test_planner_error_and_unmet_condition_are_explained(server, page):
     page.goto(server + "/")
-    page.wait_for_selector("select[name=task]")
-    page.evaluate("document.querySelector('select[name=task]').add(new Option('juggle', 'juggle'))")
-    page.select_option("select[name=task]", "juggle")
-    page.click("button[type=submit]")
-    page.wait_for_selector("#form-error:has-text(\"unknown task 'juggle'\")")
+    page.click("button[data-task=lift_block]")
+    page.select_option("#new-trial select[name=planner]", "rules")
+    page.fill("#new-trial input[name=instruction]", "sing the anthem loudly")
+    page.click("#new-trial button[type=submit]")
+    page.wait_for_selector("#verdict[data-verdict=planner_error]", timeout=120_000)
+    assert "What it said: no plan" in page.locator("#explanation").inner_text()
+    assert "No plan" in page.locator("#no-plan").inner_text() and "waiting" not in page.locator("#no-plan").inner_text()
+    shot(page, "4-planner-error")
+    # your own plan, validated as you type, the error on its own line; every node passes, the task is unmet
+    page.goto(server + "/")
+    page.click("button[data-task=lift_block]")
+    page.select_option("#new-trial select[name=segmenter]", "privileged-keypoints")
+    page.click("#new-trial summary:has-text('Run your own plan')")
+    page.fill("#new-trial textarea[name=plan]", NUDGE.replace("dz: 0.05", "dz: 9"))
+    page.wait_for_selector("#plan-errors li")
+    assert page.locator(".plan-lines li.error-line").get_attribute("data-path").startswith("tree.children[0].params")
+    assert not page.is_enabled("#new-trial button[type=submit]")
+    page.fill("#new-trial textarea[name=plan]", NUDGE)
+    page.wait_for_selector("#plan-ok")
+    page.click("#new-trial button[type=submit]")
+    page.wait_for_selector("#verdict[data-verdict=task_unmet]", timeout=120_000)
+    text = page.locator("#explanation").inner_text()
+    assert "Every node of the tree passed" in text and "red block bottom > 5 cm above the table and held" in text
+    assert page.locator("#tree .node.failed").count() == 0
+    shot(page, "5-task-unmet")
 
 
+def test_dashboard_groups_and_searches_tasks(server, page):
+    page.goto(server + "/")
+    page.wait_for_selector("#task-browser details[data-suite=builtin]")
+    assert page.locator("#task-browser details").count() >= 3
+    page.fill("input[name=task-search]", "drawer")
+    names = page.eval_on_selector_all("#task-browser button.task-item", "bs => bs.map(b => b.dataset.task)")
+    assert {"open_drawer", "close_drawer", "block_in_drawer"} <= set(names) and "lift_block" not in names
+    page.click("button[data-task=open_drawer]")
+    assert "open_drawer" in page.locator("#task-card h3").inner_text() and page.locator("#task-predicate").inner_text()
+    shot(page, "6-dashboard")
 
-def test_batch_from_the_form_shows_progress_and_results(server, page):
+
+def test_batch_is_found_again_from_the_batch_list(server, page):
     page.goto(server + "/")
     page.wait_for_selector("#new-batch select[name=tasks]")
     page.select_option("#new-batch select[name=tasks]", ["lift_block", "push_to_zone"])
@@ -132,39 +220,87 @@ def test_batch_from_the_form_shows_progress_and_results(server, page):
     page.select_option("#new-batch select[name=segmenter]", "privileged-keypoints")
     page.click("#new-batch button[type=submit]")
     page.wait_for_url("**/#/batch/batch-*")
-    page.wait_for_selector("#batch-count:has-text('4 / 4 · done')", timeout=120_000)
-    assert page.eval_on_selector("#batch-progress", "p => p.value / p.max") == 1
-    rows = page.locator("#batch-table tr")
-    assert rows.count() == 3 and "100.0 %" in rows.nth(1).inner_text()
-    shot(page, "5-batch")
-    # the result table downloads as CSV from the page's link
+    batch_id = page.url.split("/batch/")[1]
+    page.wait_for_selector("#batch-count:has-text('4 / 4 · done')", timeout=180_000)
+    assert not page.is_enabled("#batch-cancel") and page.is_enabled("#export-selected")
+    page.goto(server + "/#/")
+    page.click("a[href='#/batches']")
+    page.click(f"#batch-list a[href='#/batch/{batch_id}']")
+    page.wait_for_selector("#batch-table tbody tr")
+    rows = page.locator("#batch-table tbody tr")
+    assert rows.count() == 2 and "100.0 %" in rows.nth(0).inner_text() and "%" in rows.nth(0).locator("td").nth(3).inner_text()
+    assert page.locator("#batch-trials a[href^='#/trial/']").count() == 4
+    assert "privileged-keypoints" in page.locator("#batch-settings").inner_text()
+    shot(page, "7-batch")
     with page.expect_download() as dl:
         page.click("#batch-results-csv")
     text = Path(dl.value.path()).read_text()
     assert text.startswith("task,done,total,successes") and "lift_block,2,2,2" in text
+    page.click("#batch-trials a[href^='#/trial/']")
+    page.wait_for_selector("#verdict")
+
+
+def test_history_sorts_filters_pages_and_compares(server, page):
+    a = _post(server, "/api/trials", {"task": "lift_block", "segmenter": "privileged-keypoints", "seed": 1})["id"]
+    b = _post(server, "/api/trials", {"task": "lift_block", "segmenter": "privileged-keypoints", "plan": NUDGE})["id"]
+    _wait_done(server, a), _wait_done(server, b)
+    page.goto(server + "/#/history")
+    page.wait_for_selector("#rows table")
+    page.click("th[data-sort=seed]")
+    page.wait_for_selector("th[data-sort=seed]:has-text('▲')")
+    seeds = page.eval_on_selector_all("#rows tbody tr", "rs => rs.map(r => +r.cells[6].innerText)")
+    assert seeds == sorted(seeds)
+    page.click("#verdict-filters button[data-verdict=task_unmet]")
+    page.wait_for_selector(f"#rows tr[data-id='{b}']")
+    assert all(v == "task_unmet" for v in page.eval_on_selector_all("#rows tbody [data-verdict]", "vs => vs.map(v => v.dataset.verdict)"))
+    page.click("#verdict-filters button:has-text('any')")
+    page.wait_for_selector(f"#rows tr[data-id='{a}']")
+    page.check(f"#rows .pick[value='{a}']")
+    page.check(f"#rows .pick[value='{b}']")
+    page.click("#compare")
+    page.wait_for_selector("#divergence")
+    assert "tree.children[0]" in page.locator("#divergence").inner_text()
+    assert page.locator("#plan-diff .added").count() > 0 and page.locator("#plan-diff .removed").count() > 0
+    assert int(page.locator("#compare-timeline").get_attribute("data-bars")) >= 2
+    shot(page, "8-compare")
 
 
 def test_history_selection_exports_a_lerobot_dataset(server, page):
-    import io
-    import json
-    import urllib.request
-    import zipfile
-
-    req = urllib.request.Request(server + "/api/trials", method="POST", headers={"content-type": "application/json"},
-                                 data=json.dumps({"task": "lift_block", "segmenter": "privileged-keypoints", "capture": True}).encode())
-    tid = json.loads(urllib.request.urlopen(req).read())["id"]
-    for _ in range(1200):
-        if json.loads(urllib.request.urlopen(f"{server}/api/trials/{tid}").read())["status"] == "done":
-            break
-        time.sleep(0.1)
+    tid = _post(server, "/api/trials", {"task": "lift_block", "segmenter": "privileged-keypoints", "capture": True})["id"]
+    _wait_done(server, tid)
     page.goto(server + "/#/history")
     page.wait_for_selector(f"#rows .pick[value='{tid}']")
     page.check(f"#rows .pick[value='{tid}']")
     page.click("#export-selected")
     page.wait_for_selector("#export-download", timeout=120_000)
     assert "1 episode(s)" in page.locator("#export-result").inner_text()
-    shot(page, "6-history-export")
     with page.expect_download() as dl:
         page.click("#export-download")
     z = zipfile.ZipFile(io.BytesIO(Path(dl.value.path()).read_bytes()))
     assert json.loads(z.read("meta/info.json"))["total_episodes"] == 1
+
+
+def test_form_reports_server_errors(server, page):
+    page.goto(server + "/")
+    page.wait_for_selector("#new-trial")
+    page.evaluate("document.querySelector('#new-trial input[name=seed]').removeAttribute('min')")
+    page.fill("#new-trial input[name=seed]", "-3")
+    page.click("#new-trial button[type=submit]")
+    page.wait_for_selector("#form-error:has-text('seed')")
+
+
+def test_api_docs_work_offline(server, page):
+    requested = []
+
+    def only_local(route):
+        requested.append(route.request.url)
+        if route.request.url.startswith(server):
+            route.continue_()
+        else:
+            route.abort()
+
+    page.route("**/*", only_local)
+    page.goto(server + "/docs")
+    page.wait_for_selector(".swagger-ui .info .title", timeout=30_000)
+    assert "SPARK console" in page.locator(".swagger-ui .info .title").inner_text()
+    assert all(u.startswith(server) for u in requested), [u for u in requested if not u.startswith(server)]

@@ -1,0 +1,61 @@
+// Shapes of what the API returns as free-form JSON (trial records, the catalog, batches): the OpenAPI document
+// types these as objects, so they are spelt out here from the store's record (spark_core/trace/store.py).
+
+export interface CatalogEntry { name: string; description: string }
+export interface Planner extends CatalogEntry { offline: boolean; needs_model: boolean; default_model: string | null }
+export interface Segmenter extends CatalogEntry { privileged: boolean; cameras: boolean; needs: string }
+export interface Embodiment extends CatalogEntry { arms: string[] }
+export interface Endpoint { name: string; planner: string; [k: string]: unknown }
+export interface Task {
+  name: string; suite: string; instruction: string; predicate: string; embodiments: string[];
+  has_reference_plan: boolean; max_sim_s: number; tags: string[]; objects: string[];
+}
+export interface Catalog {
+  planners: Planner[]; segmenters: Segmenter[]; embodiments: Embodiment[]; endpoints: Endpoint[];
+  suites: Record<string, string[]>; tasks: Task[];
+  verdict: string[]; node_status: string[]; event_kind: string[]; tree_status: string[];
+  event_node_status: Record<string, string>;
+}
+
+export interface TrialEvent { seq?: number; t: number; node_path: string; kind: string; detail?: Record<string, unknown> }
+
+export interface NodeRecord {
+  path: string; kind: string; arm: string | null; status: string; attempts: number; retries: number;
+  started_t: number | null; finished_t: number | null; sim_time_s: number | null;
+  failure: string | null; reason: string; recoveries: unknown[]; duration_s?: number | null;
+}
+
+export interface Candidate { prompt: string; n_detections: number; best_score: number | null; verdict: string }
+export interface Grounding {
+  label: string; t_sim_s: number | null;
+  cameras: Record<string, { label: string; chosen: string | null; candidates: Candidate[] }>;
+  keypoint?: { position_m: number[]; score?: number; source?: string } | null;
+}
+
+export interface PlanNode {
+  type?: string; primitive?: string; arm?: string | null; params?: Record<string, unknown>; children?: PlanNode[];
+}
+
+export interface TrialSummary {
+  id: string; created_at: string | null; status: string; task: string; instruction: string; seed: number;
+  planner: string; segmenter: string; outcome: string; success: boolean | null; verdict: string | null;
+  failure: string | null; failed_node: string | null; reason: string; wall_time_s: number | null;
+  sim_time_s: number | null; cost_usd: number | null; batch_id: string | null;
+}
+
+export interface Trial extends TrialSummary {
+  protocol: Record<string, unknown> & { privileged?: boolean; config?: Record<string, unknown> };
+  plan_text: string; plan_tree: { task: string; tree: PlanNode } | null;
+  nodes: Record<string, NodeRecord>; events: TrialEvent[]; groundings: Grounding[];
+  artifacts: { name: string; kind: string; camera?: string }[];
+  control_state?: string; usage?: Record<string, unknown>;
+}
+
+export interface Page<T> { total: number; limit: number; offset: number; items: T[] }
+
+export interface BatchSummary {
+  id: string; created_at: string; status: string; spec: Record<string, unknown>;
+  progress: { done: number; total: number; successes?: number };
+}
+export interface BatchResult { task: string; done: number; total: number; successes: number; success_rate: number | null; ci95: [number, number] }
+export interface Batch extends BatchSummary { trials: TrialSummary[]; results: BatchResult[] }

@@ -1,0 +1,28 @@
+// Export trials as a LeRobot dataset (POST /api/exports), then offer the zip.
+import { useState } from "react";
+import { post } from "../api/client";
+
+interface Result { episodes: number; frames: number; bytes: number; download: string; skipped: { reason: string }[] }
+
+export function ExportButton({ body, disabled, label }: { body: Record<string, unknown>; disabled: boolean; label: string }) {
+  const [failures, setFailures] = useState(false);
+  const [state, setState] = useState<{ busy?: boolean; error?: string; result?: Result }>({});
+  const run = async () => {
+    setState({ busy: true });
+    try { setState({ result: await post<Result>("/api/exports", { ...body, success_only: !failures }) }); }
+    catch (e) { setState({ error: (e as Error).message }); }
+  };
+  const r = state.result;
+  return (
+    <span className="export">
+      <button id="export-selected" disabled={disabled || state.busy} onClick={run}>{label}</button>
+      <label><input type="checkbox" id="export-failures" checked={failures} onChange={(e) => setFailures(e.target.checked)} /> include failures</label>
+      <span id="export-result">
+        {state.busy && "exporting…"}
+        {state.error && <span className="fail">{state.error}</span>}
+        {r && <>{r.episodes} episode(s), {r.frames} frames, {(r.bytes / 1e6).toFixed(1)} MB <a id="export-download" href={r.download}>download (zip)</a>
+          {r.skipped.length > 0 && ` · ${r.skipped.length} skipped (${r.skipped[0].reason})`}</>}
+      </span>
+    </span>
+  );
+}

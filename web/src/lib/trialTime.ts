@@ -1,0 +1,88 @@
+// One trial's time model for the shared cursor. Events carry wall seconds since the trial started (`t`); the
+// recorded scene states and groundings carry simulated seconds. Leaves run one after another (a parallel node's
+// arms share the clock), so a leaf's simulated span is placed after the simulated time of those before it; wall
+// time maps to simulated time linearly inside each leaf.
+import type { Catalog, NodeRecord, Trial, TrialEvent } from "../api/types";
+
+export interface Anchor { wall: number; sim: number }
+
+const COMPOSITES = new Set(["sequence", "parallel", "fallback"]);
+
+export function leaves(nodes: Record<string, NodeRecord>): NodeRecord[] {
+  return Object.values(nodes)
+    .filter((n) => !COMPOSITES.has(n.kind) && n.started_t !== null)
+    .sort((a, b) => (a.started_t ?? 0) - (b.started_t ?? 0));
+}
+
+/** (wall s, simulated s) pairs, increasing in both. */
+export function anchors(trial: Trial): Anchor[] {
+  const out: Anchor[] = [{ wall: 0, sim: 0 }];
+  let sim = 0;
+  let wallEnd = 0;
+  for (const n of leaves(trial.nodes ?? {})) {
+    const start = Math.max(n.started_t ?? 0, wallEnd);
+    const end = Math.max(n.finished_t ?? start, start);
+    if (start > out[out.length - 1].wall) out.push({ wall: start, sim });
+    if (n.started_t !== null && n.started_t < wallEnd) continue; // overlaps the previous leaf: same clock
+    sim += n.sim_time_s ?? 0;
+    out.push({ wall: end, sim });
+    wallEnd = end;
+  }
+  return out;
+}
+
+export function wallToSim(a: Anchor[], wall: number): number {
+  if (wall <= a[0].wall) return a[0].sim;
+  for (let i = 1; i < a.length; i++) {
+    if (wall <= a[i].wall) {
+      const f = (wall - a[i - 1].wall) / Math.max(1e-9, a[i].wall - a[i - 1].wall);
+      return a[i - 1].sim + f * (a[i].sim - a[i - 1].sim);
+    }
+  }
+  return a[a.length - 1].sim;
+}
+
+/** Wall seconds the trial ran, not counting the time it spent paused (paused until its next event). */
+export function activeWall(events: TrialEvent[], end: number | null): number {
+  const last = end ?? (events.length ? events[events.length - 1].t : 0);
+  let paused = 0;
+  events.forEach((e, i) => {
+    if (e.kind !== "paused") return;
+    const next = events.slice(i + 1).find((x) => x.t >= e.t);
+    paused += (next ? next.t : last) - e.t;
+  });
+  return Math.max(0, last - paused);
+}
+
+export interface NodeState { status: string; retries: number; attempts: number; reason?: string; failure?: string | null }
+
+/** Each node's state once every event up to `t` (wall s) has happened; `final`: the trial's recorded end. */
+export function treeStateAt(cat: Catalog, trial: Trial, events: TrialEvent[], t: number, final: boolean): Record<string, NodeState> {
+  const out: Record<string, NodeState> = {};
+  for (const e of events) {
+    if (e.t > t) break;
+    const s = (out[e.node_path] ??= { status: "pending", retries: 0, attempts: 0 });
+    const status = cat.event_node_status[e.kind];
+    if (status) s.status = status;
+    if (e.kind === "started") s.attempts += 1;
+    if (e.kind === "retrying") s.retries += 1;
+    if (e.kind === "failed") s.reason = String(e.detail?.reason ?? e.detail?.error ?? "");
+  }
+  if (final) {
+    // The record is the truth at the end: an abort leaves nodes "aborted" (no event says so), reasons are kept.
+    for (const [path, n] of Object.entries(trial.nodes ?? {})) {
+      out[path] = { status: n.status, retries: n.retries, attempts: n.attempts, reason: n.reason, failure: n.failure };
+    }
+    if (trial.verdict === "aborted" || trial.verdict === "interrupted" || trial.verdict === "crashed" || trial.verdict === "timeout") {
+      for (const s of Object.values(out)) if (s.status === "running" || s.status === "paused") s.status = "aborted";
+    }
+  }
+  return out;
+}
+
+/** The trial's last instant on the cursor (wall s). */
+export function endOf(trial: Trial, events: TrialEvent[]): number {
+  const lastEvent = events.length ? events[events.length - 1].t : 0;
+  const lastNode = Math.max(0, ...Object.values(trial.nodes ?? {}).map((n) => n.finished_t ?? 0));
+  return Math.max(lastEvent, lastNode, 0.001);
+}

@@ -1,0 +1,56 @@
+// One batch: settings, progress, per-task success with its 95 % interval (a chart and a table), every trial
+// linked; cancel only while it runs, export only once something succeeded.
+import { useEffect, useState } from "react";
+import { api, post } from "../api/client";
+import type { Batch } from "../api/types";
+import { ExportButton } from "../components/ExportButton";
+import { TrialTable } from "../components/TrialTable";
+import { settingsOf } from "./Batches";
+
+const pct = (x: number | null) => (x === null ? "" : `${(100 * x).toFixed(1)} %`);
+
+export function BatchPage({ id }: { id: string }) {
+  const [b, setB] = useState<Batch | null>(null);
+  const [error, setError] = useState("");
+  useEffect(() => {
+    let alive = true;
+    let timer = 0;
+    const load = async () => {
+      try {
+        const x = await api<Batch>(`/api/batches/${encodeURIComponent(id)}`);
+        if (!alive) return;
+        setB(x);
+        if (x.status === "running") timer = window.setTimeout(load, 700);
+      } catch (e) { if (alive) setError((e as Error).message); }
+    };
+    load();
+    return () => { alive = false; clearTimeout(timer); };
+  }, [id]);
+  if (error && !b) return <section className="fail">{error}</section>;
+  if (!b) return <section>loading…</section>;
+  const running = b.status === "running";
+  const successes = b.results.reduce((s, r) => s + r.successes, 0);
+  return (
+    <div>
+      <section><h3>Batch {b.id}</h3>
+        <p id="batch-settings">{settingsOf(b.spec)} · created {b.created_at?.slice(0, 19)}</p>
+        <progress id="batch-progress" max={Math.max(1, b.progress.total)} value={b.progress.done} />
+        <span id="batch-count"> {b.progress.done} / {b.progress.total} · {b.status}</span>{" "}
+        <button id="batch-cancel" disabled={!running} onClick={() => post(`/api/batches/${encodeURIComponent(id)}/cancel`).then(() => api<Batch>(`/api/batches/${encodeURIComponent(id)}`).then(setB)).catch((e) => setError(e.message))}>Cancel</button>
+        <a id="batch-results-csv" href={`/api/batches/${id}/results.csv`}>results (CSV)</a>{" "}
+        <a id="batch-trials-csv" href={`/api/batches/${id}/trials.csv`}>trials (CSV)</a>{" "}
+        <ExportButton body={{ batch: id }} disabled={successes === 0} label="Export successes (LeRobot)" />
+        {error && <span className="fail">{error}</span>}
+      </section>
+      <section><h3>Success per task (95 % Wilson interval)</h3>
+        <table id="batch-table"><thead><tr><th>task</th><th>done</th><th>success</th><th>95 % CI</th><th className="chart-col">chart</th></tr></thead>
+          <tbody>{b.results.map((r) => (
+            <tr key={r.task}><td>{r.task}</td><td>{r.done}/{r.total}</td><td>{pct(r.success_rate)}</td><td>{pct(r.ci95[0])} – {pct(r.ci95[1])}</td>
+              <td className="chart-col"><div className="ci-bar">
+                <div className="ci" style={{ left: `${100 * r.ci95[0]}%`, width: `${100 * (r.ci95[1] - r.ci95[0])}%` }} />
+                {r.success_rate !== null && <div className="rate" style={{ left: `${100 * r.success_rate}%` }} />}</div></td></tr>))}</tbody></table>
+      </section>
+      <section><h3>Trials</h3><div id="batch-trials"><TrialTable items={b.trials} /></div></section>
+    </div>
+  );
+}

@@ -1,0 +1,161 @@
+// Start trials and batches: tasks grouped by suite with search, the chosen task's card, planner fields (model,
+// one of the operator's endpoints), and an optional plan of your own, validated as you type.
+import { useState } from "react";
+import { post } from "../api/client";
+import type { BatchCreate, TrialCreate } from "../api/client";
+import { useCatalog } from "../api/catalog";
+import type { Catalog, Task } from "../api/types";
+import { PlanEditor } from "../components/PlanEditor";
+import { go } from "../lib/route";
+
+const PACING: [string, string][] = [["", "as fast as possible"], ["1", "real time"], ["0.5", "0.5x"], ["0.25", "0.25x"]];
+
+export function Dashboard() {
+  const cat = useCatalog();
+  const [task, setTask] = useState("");
+  if (!cat) return <section>loading…</section>;
+  const chosen = cat.tasks.find((t) => t.name === task) ?? cat.tasks[0];
+  return (
+    <div className="dashboard">
+      <section className="task-browser"><h3>Tasks</h3><TaskBrowser cat={cat} value={chosen.name} onChange={setTask} /></section>
+      <div className="dash-main">
+        <TaskCard task={chosen} cat={cat} />
+        <TrialForm cat={cat} task={chosen} />
+        <BatchForm cat={cat} />
+      </div>
+    </div>
+  );
+}
+
+function TaskBrowser({ cat, value, onChange }: { cat: Catalog; value: string; onChange: (t: string) => void }) {
+  const [q, setQ] = useState("");
+  const match = (t: Task) => !q || `${t.name} ${t.instruction}`.toLowerCase().includes(q.toLowerCase());
+  return (
+    <div id="task-browser">
+      <input type="search" name="task-search" placeholder="search tasks…" value={q} onChange={(e) => setQ(e.target.value)} />
+      {Object.keys(cat.suites).map((suite) => {
+        const tasks = cat.tasks.filter((t) => t.suite === suite && match(t));
+        if (!tasks.length) return null;
+        return (
+          <details key={suite} open={suite === "builtin" || !!q} data-suite={suite}>
+            <summary>{suite} <span className="muted">({tasks.length})</span></summary>
+            <ul>{tasks.map((t) => (
+              <li key={t.name}><button className={`task-item${t.name === value ? " chosen" : ""}`} data-task={t.name} title={t.name} onClick={() => onChange(t.name)}>
+                {t.name.includes(":") ? t.name.split(":")[1].replace(/_/g, " ") : t.name}</button></li>))}</ul>
+          </details>
+        );
+      })}
+    </div>
+  );
+}
+
+function TaskCard({ task }: { task: Task; cat: Catalog }) {
+  return (
+    <section className="task-card" id="task-card" data-task={task.name}>
+      <h3>{task.name} <span className="muted">({task.suite})</span></h3>
+      <p>“{task.instruction}”</p>
+      <dl>
+        <dt>objects</dt><dd>{task.objects.join(", ") || "—"}</dd>
+        <dt>success condition</dt><dd id="task-predicate">{task.predicate}</dd>
+        <dt>embodiments</dt><dd>{task.embodiments.join(", ")}</dd>
+        <dt>time limit</dt><dd>{task.max_sim_s} s simulated</dd>
+        <dt>reference plan</dt><dd>{task.has_reference_plan ? "yes" : "no"}</dd>
+      </dl>
+    </section>
+  );
+}
+
+function PlannerFields({ cat, planner, setPlanner }: { cat: Catalog; planner: string; setPlanner: (p: string) => void }) {
+  const p = cat.planners.find((x) => x.name === planner);
+  const endpoints = cat.endpoints.filter((e) => e.planner === planner);
+  return (
+    <>
+      <label>Planner <select name="planner" value={planner} onChange={(e) => setPlanner(e.target.value)}>
+        {cat.planners.map((x) => <option key={x.name} value={x.name} title={x.description}>{x.name}</option>)}</select></label>
+      {p && !p.offline && <>
+        <label>Model <input name="model" placeholder={p.default_model ?? "required"} required={p.needs_model} /></label>
+        <label title="LLM endpoints the operator configured (spark.yaml endpoints:)">Endpoint <select name="endpoint">
+          <option value="">vendor default</option>
+          {endpoints.map((e) => <option key={e.name} value={e.name}>{e.name}</option>)}</select></label>
+      </>}
+    </>
+  );
+}
+
+const segLabel = (s: { name: string; privileged: boolean }) => `${s.name}${s.privileged ? " (privileged)" : ""}`;
+
+function TrialForm({ cat, task }: { cat: Catalog; task: Task }) {
+  const [planner, setPlanner] = useState(cat.planners[0]?.name ?? "");
+  const [plan, setPlan] = useState("");
+  const [planOk, setPlanOk] = useState(true);
+  const [error, setError] = useState("");
+  const [busy, setBusy] = useState(false);
+  const submit = async (e: React.FormEvent<HTMLFormElement>) => {
+    e.preventDefault();
+    const f = new FormData(e.currentTarget);
+    const s = (k: string) => (f.get(k) as string | null) || null;
+    const body: TrialCreate = {
+      task: task.name, planner, segmenter: s("segmenter") ?? cat.segmenters[0].name, seed: Number(f.get("seed") ?? 0),
+      start_paused: f.get("start_paused") === "on", capture: f.get("capture") === "on", breakpoints: [],
+      recovery: true, adaptive: true,
+    } as TrialCreate;
+    if (s("instruction")) body.instruction = s("instruction");
+    if (s("embodiment")) body.embodiment = s("embodiment");
+    if (s("model")) body.model = s("model");
+    if (s("endpoint")) body.endpoint = s("endpoint");
+    if (s("pacing")) body.pacing = Number(s("pacing"));
+    if (plan.trim()) body.plan = plan;
+    setBusy(true);
+    try { go(`#/trial/${(await post<{ id: string }>("/api/trials", body)).id}`); }
+    catch (err) { setError((err as Error).message); }
+    finally { setBusy(false); }
+  };
+  return (
+    <section><h3>New trial</h3>
+      <form id="new-trial" onSubmit={submit}>
+        <input type="hidden" name="task" value={task.name} />
+        <label>Instruction <input name="instruction" placeholder={task.instruction} className="wide" /></label><br />
+        <PlannerFields cat={cat} planner={planner} setPlanner={setPlanner} />
+        <label>Segmenter <select name="segmenter">{cat.segmenters.map((s) => <option key={s.name} value={s.name} title={s.description}>{segLabel(s)}</option>)}</select></label>
+        <label>Robot <select name="embodiment"><option value="">task default</option>
+          {cat.embodiments.filter((x) => task.embodiments.includes(x.name)).map((x) => <option key={x.name} value={x.name}>{x.name}</option>)}</select></label>
+        <label>Seed <input type="number" name="seed" defaultValue={0} min={0} className="narrow" /></label>
+        <label>Pace <select name="pacing">{PACING.map(([v, l]) => <option key={v} value={v}>{l}</option>)}</select></label>
+        <label><input type="checkbox" name="start_paused" /> start paused</label>
+        <label title="agentview + wrist video and per-frame labels, for LeRobot export"><input type="checkbox" name="capture" /> record training data</label>
+        <details><summary>Run your own plan</summary><PlanEditor text={plan} onChange={setPlan} onValid={setPlanOk} /></details>
+        <button type="submit" disabled={busy || !planOk}>Run</button> <span id="form-error" className="fail">{error}</span>
+      </form>
+    </section>
+  );
+}
+
+function BatchForm({ cat }: { cat: Catalog }) {
+  const [planner, setPlanner] = useState(cat.planners[0]?.name ?? "");
+  const [suite, setSuite] = useState(Object.keys(cat.suites)[0] ?? "builtin");
+  const [error, setError] = useState("");
+  const submit = async (e: React.FormEvent<HTMLFormElement>) => {
+    e.preventDefault();
+    const f = new FormData(e.currentTarget);
+    const body: BatchCreate = { suite, trials: Number(f.get("trials")), seed: 0, planner, segmenter: String(f.get("segmenter")), capture: f.get("capture") === "on" } as BatchCreate;
+    const tasks = f.getAll("tasks") as string[];
+    if (tasks.length) body.tasks = tasks;
+    if (f.get("model")) body.model = String(f.get("model"));
+    if (f.get("endpoint")) body.endpoint = String(f.get("endpoint"));
+    try { go(`#/batch/${(await post<{ id: string }>("/api/batches", body)).id}`); }
+    catch (err) { setError((err as Error).message); }
+  };
+  return (
+    <section><h3>New batch</h3>
+      <form id="new-batch" onSubmit={submit}>
+        <label>Suite <select name="suite" value={suite} onChange={(e) => setSuite(e.target.value)}>{Object.keys(cat.suites).map((s) => <option key={s}>{s}</option>)}</select></label>
+        <label>Tasks <select name="tasks" multiple size={4}>{cat.suites[suite].map((t) => <option key={t} value={t}>{t}</option>)}</select></label>
+        <label>Trials per task <input type="number" name="trials" defaultValue={2} min={1} max={100} className="narrow" /></label>
+        <PlannerFields cat={cat} planner={planner} setPlanner={setPlanner} />
+        <label>Segmenter <select name="segmenter">{cat.segmenters.map((s) => <option key={s.name} value={s.name}>{segLabel(s)}</option>)}</select></label>
+        <label><input type="checkbox" name="capture" /> record training data</label>
+        <button type="submit">Run batch</button> <span id="batch-error" className="fail">{error}</span>
+      </form>
+    </section>
+  );
+}
