@@ -1,0 +1,126 @@
+"""What the console's pages rely on from the server: the 3D view bound to the trial a page shows (live feeds
+cached, finished trials at a cursor), keypoint labels on their markers, every batch listed, /docs without a CDN,
+and client types that match the live OpenAPI document."""
+
+import json
+import shutil
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+from fastapi.testclient import TestClient
+
+from server.app import create_app
+from server.settings import Settings
+from server.viser_scene import ViserScene
+from spark_core import visual_geoms
+from spark_core.sim.tasks import BUILTIN
+
+from .test_api import wait_done
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _app(tmp_path, **kw):
+    kw.setdefault("workers", 1)
+    return create_app(Settings(store_url=f"sqlite:///{tmp_path / 'c.db'}", artifacts_dir=str(tmp_path / "a"), **kw))
+
+
+def test_keypoint_labels_sit_on_their_markers():
+    scene = ViserScene()
+    try:
+        scene.show("k", [])
+        scene.markers("k", {"red block": [0.5, -0.1, 0.02], "plate": [0.6, 0.2, 0.01]})
+        # each label is a child of its marker: its position is relative to the marker, 3 cm above it
+        for label in ("red block", "plate"):
+            np.testing.assert_allclose(scene._labels[label].position, [0.0, 0.0, 0.03])
+        scene.markers("k", {"red block": [0.5, -0.1, 0.02]})  # fewer keypoints (scrubbed back): the other goes
+        assert list(scene._labels) == ["red block"] and len(scene._markers) == 1
+    finally:
+        scene.stop()
+
+
+def test_a_pinned_view_is_not_taken_by_another_trial_and_focus_draws_a_cached_feed():
+    world = BUILTIN["lift_block"].make_world(0)
+    scene = ViserScene()
+    try:
+        geoms = visual_geoms(world.model)
+        scene.focus("a")
+        scene.sink("b", "trial b")("scene", geoms)  # b starts while a page shows a: the view stays with a
+        assert scene.current != "b"
+        xpos = np.zeros((world.model.nbody, 3))
+        xpos[:, 2] = 0.7
+        xquat = np.tile([1.0, 0, 0, 0], (world.model.nbody, 1))
+        scene.sink("b", "trial b")("poses", (xpos, xquat, {}))
+        assert scene.focus("b") and scene.current == "b"  # opening b's page draws its latest state at once
+        b = next(iter(scene._frames))
+        np.testing.assert_allclose(scene._frames[b].position, xpos[b])
+    finally:
+        scene.stop()
+        world.close()
+
+
+def test_focus_binds_the_view_to_a_finished_trial_at_the_cursor(tmp_path):
+    with TestClient(_app(tmp_path)) as c:
+        tid = c.post("/api/trials", json={"task": "lift_block", "segmenter": "sim"}).json()["id"]
+        assert wait_done(c, tid)["success"]
+        scene = c.app.state.scene
+        block = BUILTIN["lift_block"].make_world(0)
+        bid = block.model.body("red block").id
+        block.close()
+        start = c.post("/api/viser/focus", params={"trial": tid, "t_sim_s": 0}).json()
+        assert start["showing"] == f"replay:{tid}" and start["index"] == 0
+        z0 = float(scene._frames[bid].position[2])
+        assert not scene._labels  # nothing grounded yet at t = 0
+        end = c.post("/api/viser/focus", params={"trial": tid}).json()
+        assert end["index"] == end["states"] - 1
+        assert float(scene._frames[bid].position[2]) > z0 + 0.05  # lifted by the end
+        assert list(scene._labels) == ["red block"]
+        assert c.post("/api/viser/focus", params={"trial": "nope"}).status_code == 404
+        assert c.post("/api/viser/focus").json()["pinned"] is None
+
+
+def test_every_batch_is_listed_with_settings_and_progress(tmp_path):
+    with TestClient(_app(tmp_path, viser=False)) as c:
+        ids = [
+            c.post(
+                "/api/batches", json={"tasks": ["lift_block"], "trials": 1, "segmenter": "privileged-keypoints"}
+            ).json()["id"]
+            for _ in range(2)
+        ]
+        for bid in ids:
+            for t in c.get(f"/api/batches/{bid}").json()["trials"]:
+                wait_done(c, t["id"])
+        listed = c.get("/api/batches").json()
+        assert listed["total"] == 2 and {b["id"] for b in listed["items"]} == set(ids)
+        for b in listed["items"]:
+            assert b["status"] == "done" and b["progress"] == {"done": 1, "total": 1, "successes": 1}
+            assert b["spec"]["segmenter"] == "privileged-keypoints"
+        assert len(c.get("/api/batches", params={"limit": 1}).json()["items"]) == 1
+
+
+def test_docs_load_swagger_from_our_own_origin(tmp_path):
+    with TestClient(_app(tmp_path, viser=False)) as c:
+        html = c.get("/docs")
+        if not (ROOT / "web" / "dist" / "swagger").is_dir():
+            assert html.status_code == 503 and "make install" in html.text
+            pytest.skip("front end not built")
+        assert html.status_code == 200 and "cdn" not in html.text.lower()
+        assert '"/swagger/swagger-ui-bundle.js"' in html.text
+        assert c.get("/swagger/swagger-ui-bundle.js").status_code == 200
+
+
+@pytest.mark.skipif(not (ROOT / "web" / "node_modules" / "openapi-typescript").is_dir(), reason="npm ci not run")
+def test_the_committed_client_types_match_the_live_openapi_document(tmp_path):
+    """Regenerate: node web/scripts/gen-api.mjs OPENAPI.json web/src/api/schema.d.ts"""
+    app = _app(tmp_path, viser=False)
+    doc = tmp_path / "openapi.json"
+    doc.write_text(json.dumps(app.openapi()))
+    out = tmp_path / "schema.d.ts"
+    subprocess.run(
+        [shutil.which("node") or "node", "scripts/gen-api.mjs", str(doc), str(out)], cwd=ROOT / "web", check=True
+    )
+    assert out.read_text() == (ROOT / "web" / "src" / "api" / "schema.d.ts").read_text(), (
+        "web/src/api/schema.d.ts is stale: regenerate it (see this test's docstring)"
+    )
