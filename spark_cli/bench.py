@@ -68,6 +68,18 @@ def register(sub) -> None:
         nargs="+",
         help="cameras perception fuses (default: agentview side; robosuite suites: agentview sideview)",
     )
+    b.add_argument(
+        "--protocol",
+        choices=list(_protocol_names()),
+        help="a named evaluation configuration of the paper (sets adaptive prompts and cameras; refuses a "
+        "privileged segmenter): " + "; ".join(f"{n}: {d}" for n, d in _protocol_names().items()),
+    )
+    b.add_argument(
+        "--llm-loopback",
+        action="store_true",
+        help="run --planner gemini against a loopback stand-in on 127.0.0.1 (spark_core.bench.loopback_llm: the "
+        "real google-genai client; answers from the rules parser and planner): smoke runs without a key",
+    )
     b.add_argument("--title", help="BENCHMARKS.md section title (default derived from the segmenter)")
     b.add_argument("--workers", type=int, default=1, help="worker processes (local pool) or CPUs (a local Ray cluster)")
     b.add_argument(
@@ -90,6 +102,29 @@ def register(sub) -> None:
     b.add_argument("--write", metavar="BENCHMARKS.md", help="replace this benchmark's section in the file")
     b.add_argument("--json", metavar="FILE", help="also write per-trial rows as JSON")
     b.set_defaults(func=_cmd_bench)
+
+
+def _protocol_names() -> dict[str, str]:
+    from spark_core.bench.protocols import PROTOCOLS
+
+    return {p.name: p.description for p in PROTOCOLS.values()}
+
+
+def _protocol_line(args: argparse.Namespace) -> str:
+    """The named protocol, and why a smoke figure here is not the paper's."""
+    from spark_core.bench.protocols import describe
+
+    line = describe(args.protocol) + (
+        "; SMOKE FIGURE: this machine has no SAM3 weights (segmenter "
+        + (f"sam3 with the checkpoint at {args.sam3_model}" if args.segmenter == "sam3" else args.segmenter)
+        + ") and no Gemini key, so these configurations cannot reach real success here"
+    )
+    if args.llm_loopback:
+        line += (
+            "; planner: the google-genai client against the loopback stand-in (spark_core.bench.loopback_llm: "
+            "objects from the rules parser, plans from the rules planner), not Gemini"
+        )
+    return line
 
 
 def _simple_benches(args: argparse.Namespace) -> dict:
@@ -140,6 +175,21 @@ def _export_section(r: dict, command: str) -> str:
 
 
 def _cmd_bench(args: argparse.Namespace) -> int:
+    if not args.llm_loopback:
+        return _bench(args)
+    if args.planner != "gemini" or args.endpoint or args.base_url:
+        print(
+            "--llm-loopback stands in for Gemini: --planner gemini, without --endpoint or --base-url", file=sys.stderr
+        )
+        return 2
+    from spark_core.bench.loopback_llm import ENDPOINT, LoopbackGemini
+
+    with LoopbackGemini():
+        args.endpoint = ENDPOINT
+        return _bench(args)
+
+
+def _bench(args: argparse.Namespace) -> int:
     from spark_core.bench import reference_suite
     from spark_core.bench.report import write_section
 
@@ -194,6 +244,21 @@ def _cmd_bench(args: argparse.Namespace) -> int:
             recovery=not args.no_recovery,
             adaptive=not args.no_adaptive,
         )
+        if args.protocol:  # the paper's configuration: its prompts and cameras; never a privileged segmenter
+            from spark_core.bench.protocols import PROTOCOLS, ProtocolError, apply
+
+            if args.suite not in PROTOCOLS[args.protocol].suites:
+                print(
+                    f"--protocol {args.protocol} is defined on {', '.join(PROTOCOLS[args.protocol].suites)}, "
+                    f"not {args.suite}",
+                    file=sys.stderr,
+                )
+                return 2
+            try:
+                template = apply(args.protocol, template)
+            except ProtocolError as e:
+                print(f"--protocol {args.protocol}: {e}", file=sys.stderr)
+                return 2
         suite = SUITES[args.suite if args.suite in ("bimanual", "capbench", "liberopro") else "builtin"]
         tasks = args.tasks or list(suite)
         unknown = [t for t in tasks if t not in suite]
@@ -242,6 +307,9 @@ def _cmd_bench(args: argparse.Namespace) -> int:
             plans = "reference plans" if args.planner == "reference" else f"{args.planner} planner"
             title = args.title or f"{args.suite} {plans} ({args.segmenter} segmenter{suffix})"
             body = reference_suite.section(rows, command, template, args.executor)
+            if args.protocol:  # every report names its protocol
+                title = args.title or f"{args.suite}, protocol {args.protocol} ({plans}, {args.segmenter} segmenter)"
+                body = body.replace("Protocol: ", "Protocol: " + _protocol_line(args) + "; ", 1)
         if args.json:
             Path(args.json).write_text(json.dumps(rows, indent=1))
     if args.write:

@@ -179,8 +179,10 @@ def catalog_json(with_tasks: bool = True) -> dict[str, Any]:
         "suites": suites(),
         **enums(),
     }
+    from .bench.protocols import protocols_json
     from .planning.endpoints import configured_endpoints
 
+    out["protocols"] = protocols_json()  # the paper's evaluation configurations (spark bench --protocol)
     out["endpoints"] = [e.public() for e in configured_endpoints().values()]
     if with_tasks:
         out["tasks"] = [task_entry(t) for names in out["suites"].values() for t in names]

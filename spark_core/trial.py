@@ -50,6 +50,7 @@ class TrialConfig:
     start_paused: bool = False
     batch_id: str | None = None
     endpoint: str | None = None  # a named LLM endpoint the operator configured (spark.yaml endpoints:)
+    eval_protocol: str | None = None  # a named evaluation configuration (bench.protocols: fair, bddl, ...)
 
     def check(self) -> TrialConfig:
         """Raise TrialConfigError naming what is wrong; return self. Cheap: builds no world."""
@@ -94,6 +95,13 @@ class TrialConfig:
                 locate_checkpoint(self.sam3_model or os.environ.get("SPARK_SAM3_MODEL", DEFAULT_MODEL))
             except Sam3WeightsMissing as e:
                 raise TrialConfigError(f"segmenter: {e}") from None
+        if self.eval_protocol is not None:  # never a privileged figure under the paper's configuration names
+            from .bench.protocols import ProtocolError, check_config
+
+            try:
+                check_config(self)
+            except ProtocolError as e:
+                raise TrialConfigError(f"protocol: {e}") from None
         if self.time_limit_s is not None and not 0 < self.time_limit_s <= 3600:
             raise TrialConfigError(f"time_limit_s: expected (0, 3600] simulated seconds, got {self.time_limit_s}")
         if self.pacing is not None and not 0.01 <= self.pacing <= 100:
@@ -127,10 +135,14 @@ class TrialConfig:
             "pacing": f"{self.pacing:g}x real time" if self.pacing else "as fast as possible",
             "noise": self.noise.describe() if self.segmenter == "sim-noisy" else None,
             "endpoint": self.endpoint,
+            "eval_protocol": self.eval_protocol,
             "success_rule": "the task's predicate within the time limit AND the behavior tree succeeded",
-            "wording": "the task's own instruction (official wording; LIBERO: the env's)"
-            if self.instruction is None
-            else "an instruction given with the trial",
+            "wording": (
+                "the task's own instruction (official wording; LIBERO: the env's)"
+                if self.instruction is None
+                else "an instruction given with the trial"
+            )
+            + ("; plus LIBERO's canonical object names (BDDL categories)" if self.eval_protocol == "bddl" else ""),
         }
 
 
@@ -250,7 +262,12 @@ def _plan(ctx: TrialContext, library: Any) -> tuple[Plan | None, dict[str, Any]]
     llm = not PLANNERS[cfg.planner].offline
     calls: list[dict[str, Any]] = []
     if llm:  # the paper's loop: synthesis call, every prompt on every camera, the annotated image
-        view, calls = perceive_for_llm(planner, ctx.instruction, ctx.resolver, adaptive=cfg.adaptive)
+        extra: list[str] = []
+        if cfg.eval_protocol == "bddl":  # LIBERO's canonical object names, for perception to look for too
+            from .bench.protocols import bddl_object_names
+
+            extra = bddl_object_names(cfg.task)
+        view, calls = perceive_for_llm(planner, ctx.instruction, ctx.resolver, adaptive=cfg.adaptive, extra=extra)
     else:
         view = observe(ctx.instruction, ctx.resolver)
     examples = library.examples(ctx.instruction) if (llm and library is not None) else ()

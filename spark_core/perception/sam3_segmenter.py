@@ -131,3 +131,64 @@ class Sam3Segmenter:
                         )
                     )
         return out
+
+
+TINY_VOCAB = ["<pad>", "<s>", "</s>", "<unk>", "red", "block", "blue", "plate", "the", "bowl", "white", "cube"]
+
+
+def build_tiny_checkpoint(path: str | os.PathLike, seed: int = 0) -> Path:
+    """A tiny randomly initialised SAM3 (hidden 32, 2 layers, 224 px) with a word-level tokenizer, saved with
+    `save_pretrained` so `Sam3Segmenter(path)` loads it on the real checkpoint's path. It detects nothing
+    meaningful: for tests and smoke runs of the pipeline on a machine without the real weights (~1 MB)."""
+    import torch
+    from tokenizers import Tokenizer, models, pre_tokenizers
+    from transformers import PreTrainedTokenizerFast, Sam3Config, Sam3Model
+
+    torch.manual_seed(seed)
+    small = dict(hidden_size=32, num_attention_heads=2, intermediate_size=64)
+    cfg = Sam3Config(
+        vision_config=dict(
+            backbone_config=dict(
+                model_type="sam3_vit_model",
+                num_hidden_layers=2,
+                image_size=224,
+                patch_size=14,
+                window_size=8,
+                global_attn_indexes=[1],
+                pretrain_image_size=224,
+                **small,
+            ),
+            fpn_hidden_size=32,
+            backbone_feature_sizes=[[64, 64], [32, 32], [16, 16]],
+        ),
+        text_config=dict(
+            vocab_size=len(TINY_VOCAB),
+            projection_dim=32,
+            num_hidden_layers=2,
+            max_position_embeddings=32,
+            bos_token_id=1,
+            eos_token_id=2,
+            pad_token_id=0,
+            **small,
+        ),
+        geometry_encoder_config=dict(num_layers=1, **small),
+        detr_encoder_config=dict(num_layers=1, **small),
+        detr_decoder_config=dict(num_layers=1, num_queries=20, **small),
+        mask_decoder_config=dict(hidden_size=32, num_attention_heads=2),
+    )
+    out = Path(path)
+    Sam3Model(cfg).save_pretrained(out)
+    tok = Tokenizer(models.WordLevel({w: i for i, w in enumerate(TINY_VOCAB)}, unk_token="<unk>"))
+    tok.pre_tokenizer = pre_tokenizers.Whitespace()
+    PreTrainedTokenizerFast(
+        tokenizer_object=tok, pad_token="<pad>", unk_token="<unk>", bos_token="<s>", eos_token="</s>"
+    ).save_pretrained(out)
+    return out
+
+
+if __name__ == "__main__":  # python -m spark_core.perception.sam3_segmenter --tiny DIR
+    import argparse
+
+    parser = argparse.ArgumentParser(description="build the tiny random SAM3 checkpoint for smoke runs")
+    parser.add_argument("--tiny", required=True, metavar="DIR", help="where to save it")
+    print(build_tiny_checkpoint(parser.parse_args().tiny))

@@ -4,62 +4,17 @@
 import numpy as np
 import pytest
 
-from spark_core.perception.sam3_segmenter import Sam3Segmenter, Sam3WeightsMissing, locate_checkpoint
-
-VOCAB = ["<pad>", "<s>", "</s>", "<unk>", "red", "block", "blue", "plate", "the", "bowl", "white", "cube"]
+from spark_core.perception.sam3_segmenter import (
+    Sam3Segmenter,
+    Sam3WeightsMissing,
+    build_tiny_checkpoint,
+    locate_checkpoint,
+)
 
 
 @pytest.fixture(scope="module")
 def tiny_checkpoint(tmp_path_factory):
-    import torch
-    from tokenizers import Tokenizer, models, pre_tokenizers
-    from transformers import PreTrainedTokenizerFast, Sam3Config, Sam3Model
-
-    torch.manual_seed(0)
-    cfg = Sam3Config(
-        vision_config=dict(
-            backbone_config=dict(
-                model_type="sam3_vit_model",
-                hidden_size=32,
-                intermediate_size=64,
-                num_hidden_layers=2,
-                num_attention_heads=2,
-                image_size=224,
-                patch_size=14,
-                window_size=8,
-                global_attn_indexes=[1],
-                pretrain_image_size=224,
-            ),
-            fpn_hidden_size=32,
-            backbone_feature_sizes=[[64, 64], [32, 32], [16, 16]],
-        ),
-        text_config=dict(
-            vocab_size=len(VOCAB),
-            hidden_size=32,
-            intermediate_size=64,
-            projection_dim=32,
-            num_hidden_layers=2,
-            num_attention_heads=2,
-            max_position_embeddings=32,
-            bos_token_id=1,
-            eos_token_id=2,
-            pad_token_id=0,
-        ),
-        geometry_encoder_config=dict(hidden_size=32, num_layers=1, num_attention_heads=2, intermediate_size=64),
-        detr_encoder_config=dict(hidden_size=32, num_layers=1, num_attention_heads=2, intermediate_size=64),
-        detr_decoder_config=dict(
-            hidden_size=32, num_layers=1, num_queries=20, num_attention_heads=2, intermediate_size=64
-        ),
-        mask_decoder_config=dict(hidden_size=32, num_attention_heads=2),
-    )
-    path = tmp_path_factory.mktemp("sam3-tiny")
-    Sam3Model(cfg).save_pretrained(path)
-    tok = Tokenizer(models.WordLevel({w: i for i, w in enumerate(VOCAB)}, unk_token="<unk>"))
-    tok.pre_tokenizer = pre_tokenizers.Whitespace()
-    PreTrainedTokenizerFast(
-        tokenizer_object=tok, pad_token="<pad>", unk_token="<unk>", bos_token="<s>", eos_token="</s>"
-    ).save_pretrained(path)
-    return path
+    return build_tiny_checkpoint(tmp_path_factory.mktemp("sam3-tiny"))
 
 
 @pytest.fixture(scope="module")

@@ -1,0 +1,93 @@
+"""The paper's evaluation configurations as named protocols: what each sets, that a privileged segmenter can
+never be reported under them, that every report names its protocol, and a smoke run of each through `spark bench`
+with the gemini client against the loopback stand-in and the tiny random SAM3 checkpoint."""
+
+from __future__ import annotations
+
+import pytest
+
+from spark_core.bench.protocols import LIBERO_CAMERAS, PROTOCOLS, ProtocolError, apply, bddl_object_names
+from spark_core.catalog import SEGMENTERS, catalog_json
+from spark_core.trial import TrialConfig, TrialConfigError
+
+LIBERO_TASK = "libero_spatial_swap:pick_up_the_black_bowl_between_the_plate_and_the_ramekin_and_place_it_on_the_plate"
+
+
+@pytest.fixture(scope="module")
+def tiny_sam3(tmp_path_factory):
+    from spark_core.perception.sam3_segmenter import build_tiny_checkpoint
+
+    return str(build_tiny_checkpoint(tmp_path_factory.mktemp("sam3-tiny")))
+
+
+@pytest.mark.parametrize("name", list(PROTOCOLS))
+@pytest.mark.parametrize("segmenter", [s for s, e in SEGMENTERS.items() if e.privileged])
+def test_a_privileged_segmenter_is_never_reported_under_a_protocol(name, segmenter):
+    task = LIBERO_TASK if "liberopro" in PROTOCOLS[name].suites else "Lift"
+    with pytest.raises(ProtocolError, match=f"segmenter: '{segmenter}' is privileged"):
+        apply(name, TrialConfig(task, planner="gemini", segmenter=segmenter))
+    config = TrialConfig(
+        task, planner="gemini", segmenter=segmenter, eval_protocol=name, adaptive=PROTOCOLS[name].adaptive
+    )
+    with pytest.raises(TrialConfigError, match="protocol: segmenter: .* is privileged"):
+        config.check()  # also when a config names the protocol itself (a batch, the API)
+
+
+def test_what_each_protocol_sets(tmp_path, monkeypatch):
+    monkeypatch.setenv("SPARK_SAM3_MODEL", str(tmp_path))  # check() only needs a config.json there
+    (tmp_path / "config.json").write_text("{}")
+    base = TrialConfig(LIBERO_TASK, planner="gemini", segmenter="sam3")
+    fair, bddl, adaptive = (apply(n, base) for n in ("fair", "bddl", "adaptive"))
+    assert (fair.adaptive, bddl.adaptive, adaptive.adaptive) == (False, False, True)
+    assert fair.cameras == bddl.cameras == adaptive.cameras == LIBERO_CAMERAS == ("agentview", "robot0_eye_in_hand")
+    assert fair.eval_protocol == "fair" and fair.protocol(60.0)["eval_protocol"] == "fair"
+    assert "canonical object names" in bddl.protocol(60.0)["wording"]
+    assert "canonical object names" not in fair.protocol(60.0)["wording"]
+    with pytest.raises(ProtocolError, match="planner: under protocol 'fair' a planner writes the plan"):
+        apply("fair", TrialConfig(LIBERO_TASK, planner="reference", segmenter="sam3"))
+    with pytest.raises(ProtocolError, match="task: protocol 's2' is defined on capbench, not liberopro"):
+        apply("s2", base)
+    s2 = apply("s2", TrialConfig("Lift", planner="rules", segmenter="sam3"))
+    assert s2.adaptive and s2.cameras is None  # CaP-Bench's own cameras
+    with pytest.raises(ProtocolError, match="unknown protocol 'paper'; available: fair, bddl, adaptive, s2"):
+        apply("paper", base)
+
+
+def test_bddl_names_are_the_tasks_object_categories():
+    assert bddl_object_names(LIBERO_TASK) == ["akita black bowl", "cookies", "glazed rim porcelain ramekin", "plate"]
+    assert bddl_object_names("lift_block") == []
+
+
+def test_the_catalog_lists_the_protocols():
+    served = {p["name"]: p for p in catalog_json(with_tasks=False)["protocols"]}
+    assert list(served) == ["fair", "bddl", "adaptive", "s2"]
+    assert served["s2"]["suites"] == ["capbench"] and served["adaptive"]["adaptive"] is True
+
+
+def test_spark_bench_refuses_a_privileged_segmenter_under_a_protocol(capsys):
+    from spark_cli import main
+
+    code = main(["bench", "capbench", "--protocol", "s2", "--planner", "rules", "--segmenter", "sim", "--trials", "1"])
+    err = capsys.readouterr().err
+    assert code == 2 and "--protocol s2: segmenter: 'sim' is privileged" in err
+    code = main(["bench", "capbench", "--protocol", "fair", "--planner", "rules", "--segmenter", "sam3"])
+    assert code == 2 and "--protocol fair is defined on liberopro, not capbench" in capsys.readouterr().err
+
+
+def test_s2_smoke_run_through_the_loopback_gemini_names_its_protocol(tiny_sam3, tmp_path, capsys):
+    """One CaP-Bench trial under S2: the real google-genai client against the loopback stand-in (both calls),
+    SAM3's tiny random checkpoint through the cameras; the written section names the protocol and says why the
+    figure is a smoke figure."""
+    from spark_cli import main
+
+    out = tmp_path / "BENCHMARKS.md"
+    code = main(
+        ["bench", "capbench", "--protocol", "s2", "--planner", "gemini", "--llm-loopback", "--segmenter", "sam3"]
+        + ["--sam3-model", tiny_sam3, "--tasks", "Lift", "--trials", "1", "--write", str(out)]
+    )
+    assert code == 0
+    text = out.read_text()
+    assert "## capbench, protocol s2 (gemini planner, sam3 segmenter)" in text
+    assert "Protocol: protocol `s2`: CaP-Bench under CaP-X's S2 rules" in text and "SMOKE FIGURE" in text
+    assert "non-privileged" in text and "loopback stand-in" in text
+    assert "| Lift |" in text
