@@ -8,14 +8,14 @@ import sys
 
 from spark_core import __version__
 
-from . import bench, catalog, grammar, run, serve, trials
+from . import bench, catalog, grammar, perception, run, serve, trials
 
 
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="spark", description="SPARK: typed behavior trees over anchored keypoints.")
     p.add_argument("--version", action="version", version=f"spark {__version__}")
     sub = p.add_subparsers(dest="command", metavar="COMMAND")
-    for module in (grammar, catalog, run, serve, trials, bench):
+    for module in (grammar, catalog, run, serve, trials, bench, perception):
         module.register(sub)
     return p
 

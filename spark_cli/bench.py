@@ -30,6 +30,7 @@ def register(sub) -> None:
             "viser",
             "export",
             "throughput",
+            "perception",
         ],
     )
     b.add_argument("--embodiment", choices=list(EMBODIMENTS), help="robot set-up (default: the task's own)")
@@ -96,6 +97,12 @@ def register(sub) -> None:
         default=["builtin"],
         choices=["builtin", "capbench", "liberopro"],
         help="suites the throughput bench measures",
+    )
+    b.add_argument(
+        "--scenes-per-task",
+        type=int,
+        default=3,
+        help="held-out scenes per builtin task (perception suite; random scenes: 7x as many)",
     )
     b.add_argument("--targets", type=int, default=200, help="IK targets (ik suite)")
     b.add_argument("--store-size", type=int, default=10_000, help="trials in the trace store (api suite)")
@@ -210,6 +217,12 @@ def _bench(args: argparse.Namespace) -> int:
         for e in errors:
             print(f"{'refused' if e['refused'] else 'PLANNED'} {e['instruction']!r}: {e['error']}")
         title, body = "rules planner on paraphrased instructions", paraphrases.section(rows, errors, command)
+        print(body)
+    elif args.suite == "perception":
+        from spark_core.bench import perception_bench
+
+        result = perception_bench.run(n_seeds=args.scenes_per_task, progress=lambda s: print(s, flush=True))
+        title, body = "perception on held-out scenes (learned segmenter)", perception_bench.section(result, command)
         print(body)
     elif args.suite == "grounding":
         from spark_core.bench import grounding

@@ -52,6 +52,7 @@ _EXPORTS: dict[str, str] = {
     # perception (drawing)
     "Keypoint": "spark_core.perception",
     "annotate": "spark_core.perception.annotate",
+    "LearnedSegmenter": "spark_core.perception.learned.segmenter",
     # simulation (scenes for the 3D view)
     "TASKS": "spark_core.sim.tasks",
     "CaptureConfig": "spark_core.sim.capture",

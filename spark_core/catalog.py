@@ -70,6 +70,12 @@ SEGMENTERS: dict[str, SegmenterEntry] = {
             privileged=True,
         ),
         SegmenterEntry(
+            "learned",
+            "camera-only: a compact RGB-D network trained here on our own renders (per-pixel category, colour, "
+            "instance boundaries); prompts grounded against its category names and descriptions",
+            privileged=False,
+        ),
+        SegmenterEntry(
             "sam3",
             "SAM3 (transformers Sam3Model) on RGB; depth and camera parameters lift masks to 3D",
             privileged=False,

@@ -100,6 +100,7 @@ def test_the_api_serves_the_catalog_the_cli_offers(tmp_path):
     assert {s["name"]: s["privileged"] for s in served["segmenters"]} == {
         "sim": True,
         "sim-noisy": True,
+        "learned": False,
         "sam3": False,
         "privileged-keypoints": True,
     }

@@ -3,6 +3,7 @@
 from .detection import Detection
 from .frame import CameraFrame
 from .keypoint import Keypoint, LabelNotFound
+from .learned.segmenter import LearnedSegmenter
 from .noisy_segmenter import NoiseModel, SimNoisySegmenter
 from .resolver import PerceptionResolver
 from .segmenter import Segmenter
@@ -13,6 +14,7 @@ __all__ = [
     "Detection",
     "Keypoint",
     "LabelNotFound",
+    "LearnedSegmenter",
     "NoiseModel",
     "PerceptionResolver",
     "Segmenter",

@@ -16,12 +16,17 @@ DEFAULT_CAMERAS = ("agentview", "side")
 def make_segmenter(
     name: str, world: Any, seed: int = 0, noise: NoiseModel = NoiseModel(), sam3_model: str | None = None
 ):
-    """The named camera segmenter. `sim` and `sim-noisy` are oracles (the scene's object catalog); `sam3`
-    reads RGB only (its checkpoint from `sam3_model` or SPARK_SAM3_MODEL; a clear error when it is absent)."""
+    """The named camera segmenter. `sim` and `sim-noisy` are oracles (the scene's object catalog); `learned`
+    reads RGB-D only (weights shipped in the package); `sam3` reads RGB only (its checkpoint from `sam3_model`
+    or SPARK_SAM3_MODEL; a clear error when it is absent)."""
     if name == "sim":
         return SimSegmenter(world.scene.catalog())
     if name == "sim-noisy":
         return SimNoisySegmenter(SimSegmenter(world.scene.catalog()), noise, seed)
+    if name == "learned":
+        from .learned.segmenter import LearnedSegmenter
+
+        return LearnedSegmenter()
     if name == "sam3":
         from .sam3_segmenter import Sam3Segmenter
 

@@ -1,0 +1,83 @@
+"""`spark perception dataset|train`: render training data for the learned segmenter and train it."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+
+def register(sub) -> None:
+    p = sub.add_parser("perception", help="training data and training for the learned (camera-only) segmenter")
+    ps = p.add_subparsers(dest="perception_command", metavar="SUBCOMMAND", required=True)
+    d = ps.add_parser("dataset", help="render randomised labelled scenes (labels from the renderer: training only)")
+    d.add_argument("--out", required=True, help="dataset directory (keep it out of git, e.g. under var/)")
+    d.add_argument("--scenes", type=int, default=1200, help="scenes to render")
+    d.add_argument("--shard-scenes", type=int, default=200, help="scenes per shard file")
+    d.add_argument("--seed", type=int, default=None, help="first scene seed (default: the training range, 1,000,000)")
+    d.add_argument("--cameras", nargs="+", default=["agentview", "side", "wrist"], help="views per scene")
+    d.set_defaults(func=_cmd_dataset)
+    t = ps.add_parser("train", help="train the segmenter on a dataset directory")
+    t.add_argument("--data", required=True, help="dataset directory from `spark perception dataset`")
+    t.add_argument("--out", required=True, help="weights file to write (.pt)")
+    t.add_argument("--minutes", type=float, default=45.0, help="wall-time budget")
+    t.add_argument("--steps", type=int, default=100_000, help="step budget (whichever comes first)")
+    t.add_argument("--batch", type=int, default=12)
+    t.add_argument("--crop", type=int, nargs=2, default=[192, 256], metavar=("H", "W"), help="training crop size")
+    t.add_argument("--lr", type=float, default=2e-3)
+    t.add_argument("--seed", type=int, default=0)
+    t.add_argument("--threads", type=int, default=2, help="torch CPU threads")
+    t.set_defaults(func=_cmd_train)
+
+
+def _positive(name: str, value: float) -> None:
+    if value <= 0:
+        raise ValueError(f"--{name} must be positive, got {value}")
+
+
+def _cmd_dataset(args: argparse.Namespace) -> int:
+    from spark_core.perception.learned.dataset import TRAIN_SEED0, generate
+
+    try:
+        _positive("scenes", args.scenes)
+        _positive("shard-scenes", args.shard_scenes)
+    except ValueError as e:
+        print(e, file=sys.stderr)
+        return 2
+    seed0 = TRAIN_SEED0 if args.seed is None else args.seed
+    out = Path(args.out)
+    for start in range(0, args.scenes, args.shard_scenes):
+        n = min(args.shard_scenes, args.scenes - start)
+        print(json.dumps(generate(out, n, seed0 + start, tuple(args.cameras))), flush=True)
+    return 0
+
+
+def _cmd_train(args: argparse.Namespace) -> int:
+    from spark_core.perception.learned.train import TrainConfig, train
+
+    try:
+        for name in ("minutes", "steps", "batch", "lr", "threads"):
+            _positive(name, getattr(args, name))
+        if min(args.crop) <= 0 or any(c % 32 for c in args.crop):
+            raise ValueError(f"--crop must be two positive multiples of 32, got {args.crop}")
+    except ValueError as e:
+        print(e, file=sys.stderr)
+        return 2
+    cfg = TrainConfig(
+        args.data,
+        args.out,
+        steps=args.steps,
+        minutes=args.minutes,
+        batch=args.batch,
+        crop=(args.crop[0], args.crop[1]),
+        lr=args.lr,
+        seed=args.seed,
+        threads=args.threads,
+    )
+    try:
+        train(cfg, log=lambda s: print(s, flush=True))
+    except (FileNotFoundError, ValueError) as e:
+        print(e, file=sys.stderr)
+        return 2
+    return 0

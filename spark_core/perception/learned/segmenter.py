@@ -1,0 +1,246 @@
+"""`learned` segmenter: camera-only perception with a network trained here on our own renders (see MODEL_CARD.md).
+
+It reads a frame's RGB and depth only (plus intrinsics/extrinsics for spatial qualifiers): never object ids,
+never the simulator's object names. The network labels every pixel with a category, a colour and an
+instance-boundary probability; instances are the connected parts of each category split at predicted boundaries
+and depth edges. A prompt's colour words filter instances by their predicted colour; its other words pick the
+category by sentence similarity with the category names and descriptions.
+"""
+
+from __future__ import annotations
+
+import re
+import threading
+from collections.abc import Sequence
+from dataclasses import dataclass
+from importlib import resources
+from pathlib import Path
+
+import cv2
+import numpy as np
+
+from ..colors import BASE_COLOURS, normalise_colours
+from ..detection import Detection
+from ..frame import CameraFrame
+from ..qualifiers import split_qualifier, split_relation
+from ..sim_segmenter import calibrated_score, pick_by_qualifier
+from ..text_encoder import SHARED_ENCODER, TextEncoder
+from .categories import CATEGORIES, COLOURS
+
+WEIGHTS = "weights/learned_segmenter.pt"  # package data, next to MODEL_CARD.md
+HEAD_NOUN_BONUS = 0.08
+MATERIAL_WORDS = {"wooden", "wood", "metal", "plastic", "ceramic", "wicker"}  # not colour filters
+DEPTH_EDGE_M = 0.015  # a depth jump between neighbouring pixels larger than this (and 2 %) splits instances
+_NETS: dict[str, object] = {}
+_LOCK = threading.Lock()
+
+
+@dataclass(frozen=True)
+class Instance:
+    """One predicted object instance in a frame."""
+
+    category: int  # index into CATEGORIES
+    mask: np.ndarray  # (H, W) bool
+    score: float  # mean category probability over the mask, [0, 1]
+    colour: str  # predicted colour name (COLOURS)
+
+
+def default_weights() -> Path:
+    return Path(str(resources.files(__package__).joinpath(WEIGHTS)))
+
+
+def _net(path: Path):
+    from .train import load_net
+
+    key = str(path)
+    with _LOCK:
+        if key not in _NETS:
+            if not path.is_file():
+                raise FileNotFoundError(
+                    f"learned segmenter weights not found at {path}: train them with `spark perception train`"
+                )
+            _NETS[key] = load_net(path)
+        return _NETS[key]
+
+
+def _words(text: str) -> list[str]:
+    return re.sub(r"[^a-z ]", " ", text.lower()).split()
+
+
+class LearnedSegmenter:
+    """Camera-only segmenter. `threshold`: minimum cosine of a prompt with a category; categories within
+    `margin` of the best one also count; instances smaller than `min_area_px` are dropped."""
+
+    name = "learned"
+    privileged = False
+
+    def __init__(
+        self,
+        weights: str | Path | None = None,
+        threshold: float = 0.3,
+        margin: float = 0.04,
+        min_area_px: int = 20,
+        encoder: TextEncoder | None = None,
+    ):
+        self.weights = Path(weights) if weights else default_weights()
+        self.threshold = threshold
+        self.margin = margin
+        self.min_area_px = min_area_px
+        self.encoder = encoder or SHARED_ENCODER
+        self._things = [i for i, c in enumerate(CATEGORIES) if c.thing]
+        self._doc_vecs = self.encoder.encode(
+            [f"{CATEGORIES[i].name}: {CATEGORIES[i].description}" for i in self._things]
+        )
+        self._cache: dict[tuple, list[Instance]] = {}
+
+    # -- grounding ---------------------------------------------------------------------------------------------
+    def ground(self, text: str) -> tuple[dict[int, float], set[str]]:
+        """(category index -> cosine for the categories a prompt names, colours it asks for). Colour words are
+        taken out before matching the category (categories carry no colour); a trailing instance number
+        ("bowl 2") is no visual property and is ignored."""
+        words = [w for w in _words(normalise_colours(text)) if w not in ("the", "a", "an")]
+        colours = {w for w in words if w in BASE_COLOURS and w not in MATERIAL_WORDS}
+        raw = set(_words(text))
+        colours -= {normalise_colours(m) for m in MATERIAL_WORDS & raw}  # "wooden" is a material here
+        core = " ".join(w for w in words if w not in BASE_COLOURS) or " ".join(words)
+        if not core:
+            return {}, colours
+        cos = self._doc_vecs @ self.encoder.encode([core])[0]
+        head = core.split()[-1]
+        scores = {}
+        for i, c in zip(self._things, cos.tolist()):
+            name = CATEGORIES[i].name
+            if head == name.split()[-1] or head.rstrip("s") == name.split()[-1]:
+                c += HEAD_NOUN_BONUS
+            scores[i] = c
+        best = max(scores.values())
+        return {i: s for i, s in scores.items() if s >= self.threshold and s >= best - self.margin}, colours
+
+    # -- pixels -> instances -----------------------------------------------------------------------------------
+    def predict(self, frame: CameraFrame) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Per pixel: category index, its probability, boundary probability and colour probabilities (C, H, W)."""
+        import torch
+
+        from .model import network_input
+
+        net = _net(self.weights)
+        H, W = frame.shape
+        ph, pw = (-H) % 32, (-W) % 32  # the network halves the image five times
+        rgb = np.pad(frame.rgb, ((0, ph), (0, pw), (0, 0)), mode="edge")
+        depth = np.pad(
+            np.nan_to_num(frame.depth_m.astype(np.float32), nan=0.0, posinf=10.0), ((0, ph), (0, pw)), mode="edge"
+        )
+        with torch.no_grad():
+            x = network_input(torch.from_numpy(rgb[None]), torch.from_numpy(depth[None]))
+            cat_logits, bnd_logit, col_logits = net.split(net(x))
+            cat_p = torch.softmax(cat_logits[0, :, :H, :W], 0)
+            prob, cat = cat_p.max(0)
+            bnd = torch.sigmoid(bnd_logit[0, :H, :W])
+            col = torch.softmax(col_logits[0, :, :H, :W], 0)
+        return cat.numpy().astype(np.int32), prob.numpy(), bnd.numpy(), col.numpy()
+
+    def instances(self, frame: CameraFrame) -> list[Instance]:
+        """Every object instance the network sees in this frame (cached per frame: one prompt set per frame
+        usually arrives in several calls)."""
+        key = (id(frame.rgb), frame.camera, frame.sim_time_s)
+        if key in self._cache:
+            return self._cache[key]
+        cat, prob, bnd, col = self.predict(frame)
+        split = (bnd > 0.5) | _depth_edges(frame.depth_m)
+        out: list[Instance] = []
+        for c in np.unique(cat):
+            if not CATEGORIES[c].thing:
+                continue
+            region = cat == c
+            n, comp = cv2.connectedComponents((region & ~split).astype(np.uint8), connectivity=4)
+            comp = _grow_into(comp, region)
+            for k in range(1, n):
+                m = comp == k
+                area = int(m.sum())
+                if area < self.min_area_px:
+                    continue
+                colour_p = col[1:, m].mean(1)
+                out.append(Instance(int(c), m, float(prob[m].mean()), COLOURS[1 + int(colour_p.argmax())]))
+        if len(self._cache) > 8:
+            self._cache.clear()
+        self._cache[key] = out
+        return out
+
+    # -- the Segmenter protocol --------------------------------------------------------------------------------
+    def segment(self, frame: CameraFrame, prompts: Sequence[str]) -> list[Detection]:
+        out: list[Detection] = []
+        for prompt in prompts:
+            head, relation, anchors = split_relation(prompt)
+            if relation is not None:
+                out.extend(self._related(frame, prompt, head, anchors, negated=relation.startswith("not ")))
+                continue
+            qualifier, core = split_qualifier(prompt)
+            dets = self._matches(frame, prompt, core)
+            if qualifier and len(dets) > 1:
+                dets = [pick_by_qualifier(dets, frame, qualifier)]
+            out.extend(dets)
+        return out
+
+    def _matches(self, frame: CameraFrame, prompt: str, core: str) -> list[Detection]:
+        cats, colours = self.ground(core)
+        if not cats:
+            return []
+        dets = []
+        for k, inst in enumerate(self.instances(frame)):
+            if inst.category not in cats or (colours and inst.colour not in colours):
+                continue
+            score = calibrated_score(cats[inst.category], self.threshold) * inst.score
+            detail = {"category": CATEGORIES[inst.category].name, "colour": inst.colour, "instance": k}
+            dets.append(Detection(prompt, prompt, inst.mask, round(score, 4), frame.camera, False, detail))
+        return dets
+
+    def _related(
+        self, frame: CameraFrame, prompt: str, head: str, anchors: list[str], negated: bool = False
+    ) -> list[Detection]:
+        """Instances of `head`; when several, the one nearest the anchor objects (their midpoint for "between"),
+        or the farthest when negated; "the table center" is the middle of every instance in view."""
+        dets = self.segment(frame, [head])
+        taken = {d.detail["instance"] for d in dets}
+        found = []
+        for a in anchors:
+            cands = [d for d in self.segment(frame, [a]) if d.detail.get("instance") not in taken]
+            if cands:
+                found.append(_centroid_xy(max(cands, key=lambda d: d.score).mask, frame))
+        if len(dets) > 1 and not found and any(w in a for a in anchors for w in ("center", "centre", "middle")):
+            found = [np.mean([_centroid_xy(i.mask, frame) for i in self.instances(frame)], axis=0)]
+        if len(dets) > 1 and found:
+            target = np.mean(found, axis=0)
+            pick = max if negated else min
+            dets = [pick(dets, key=lambda d: float(np.linalg.norm(_centroid_xy(d.mask, frame) - target)))]
+        return [
+            Detection(prompt, prompt, d.mask, d.score, d.camera, False, {**d.detail, "relation_anchors": anchors})
+            for d in dets
+        ]
+
+
+def _depth_edges(depth_m: np.ndarray) -> np.ndarray:
+    """Pixels next to a depth jump: where one object ends in front of another of the same category."""
+    d = np.nan_to_num(depth_m.astype(np.float32), nan=0.0, posinf=10.0)
+    gx = np.abs(np.diff(d, axis=1, append=d[:, -1:]))
+    gy = np.abs(np.diff(d, axis=0, append=d[-1:, :]))
+    jump = np.maximum(gx, gy)
+    return jump > np.maximum(DEPTH_EDGE_M, 0.02 * d)
+
+
+def _grow_into(comp: np.ndarray, region: np.ndarray, iterations: int = 4) -> np.ndarray:
+    """Give the region's pixels cut away as boundary back to the neighbouring component (a few pixels deep)."""
+    comp = comp.astype(np.int32)
+    kernel = np.ones((3, 3), np.uint8)
+    for _ in range(iterations):
+        free = region & (comp == 0)
+        if not free.any():
+            break
+        grown = cv2.dilate(comp.astype(np.float32), kernel).astype(np.int32)
+        comp = np.where(free & (grown > 0), grown, comp)
+    return comp
+
+
+def _centroid_xy(mask: np.ndarray, frame: CameraFrame) -> np.ndarray:
+    vs, us = np.nonzero(mask)
+    pts = frame.backproject(us.astype(float), vs.astype(float), frame.depth_m[vs, us])
+    return np.median(pts[:, :2], axis=0)

@@ -1,0 +1,174 @@
+"""Train the learned segmenter on a rendered dataset (see dataset.py): cross-entropy on categories and colours,
+binary cross-entropy on instance boundaries, random crops and flips, a wall-time or step budget."""
+
+from __future__ import annotations
+
+import json
+import time
+from collections.abc import Callable
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+import cv2
+import numpy as np
+import torch
+from torch.nn import functional as F
+
+from .categories import CATEGORIES
+from .dataset import load_shards
+from .model import SegNet, network_input
+
+THING_WEIGHT = 3.0  # category loss weight of object pixels (few, and what matters) relative to background
+
+
+@dataclass(frozen=True)
+class TrainConfig:
+    data_dir: str
+    out: str  # weights file (.pt)
+    steps: int = 100_000
+    minutes: float = 45.0  # wall-time budget; training stops at whichever of steps/minutes comes first
+    batch: int = 12
+    crop: tuple[int, int] = (192, 256)  # (height, width) of the random training crops
+    lr: float = 2e-3
+    seed: int = 0
+    val_fraction: float = 0.05  # the dataset's last crops (highest scene seeds) held out for validation
+    threads: int = 2
+
+
+def boundary_target(instance: np.ndarray, band_px: int = 2) -> np.ndarray:
+    """Pixels of an object within `band_px` of a DIFFERENT object (where two touching instances must be split)."""
+    k = np.ones((2 * band_px + 1, 2 * band_px + 1), np.uint8)
+    inst = instance.astype(np.uint8)
+    hi = cv2.dilate(inst, k)
+    lo = cv2.erode(np.where(inst == 0, 255, inst).astype(np.uint8), k)
+    return (inst > 0) & (((hi != inst) & (hi > 0)) | ((lo != inst) & (lo < 255)))
+
+
+def _batch(data: dict[str, np.ndarray], idx: np.ndarray, crop: tuple[int, int], rng: np.random.Generator):
+    h, w = crop
+    H, W = data["category"].shape[1:]
+    rgb, depth, cat, bnd, col = [], [], [], [], []
+    for i in idx:
+        r0, c0 = int(rng.integers(0, H - h + 1)), int(rng.integers(0, W - w + 1))
+        win = (slice(r0, r0 + h), slice(c0, c0 + w))
+        flip = rng.random() < 0.5
+        f = (lambda a: a[:, ::-1]) if flip else (lambda a: a)
+        im = f(data["rgb"][i][win]).astype(np.float32)
+        im = im * rng.uniform(0.75, 1.25) + rng.normal(0, 6, 3)  # lighting and white-balance jitter
+        rgb.append(np.clip(im, 0, 255).astype(np.uint8))
+        depth.append(f(data["depth_mm"][i][win]).astype(np.float32) / 1000.0)
+        cat.append(f(data["category"][i][win]))
+        inst = f(data["instance"][i][win])
+        bnd.append(boundary_target(np.ascontiguousarray(inst)))
+        col.append(f(data["colour"][i][win]))
+    t = lambda xs, dt: torch.from_numpy(np.ascontiguousarray(np.stack(xs))).to(dt)
+    return (
+        network_input(t(rgb, torch.uint8), t(depth, torch.float32)),
+        t(cat, torch.long),
+        t(bnd, torch.float32),
+        t(col, torch.long),
+    )
+
+
+def losses(net: SegNet, x, cat, bnd, col) -> dict[str, torch.Tensor]:
+    cat_logits, bnd_logit, col_logits = net.split(net(x))
+    weight = torch.ones(net.n_categories)
+    weight[[i for i, c in enumerate(CATEGORIES) if c.thing]] = THING_WEIGHT
+    obj = col > 0
+    out = {
+        "category": F.cross_entropy(cat_logits, cat, weight=weight),
+        "boundary": F.binary_cross_entropy_with_logits(bnd_logit, bnd, pos_weight=torch.tensor(4.0)),
+        "colour": F.cross_entropy(col_logits.permute(0, 2, 3, 1)[obj], col[obj]) if obj.any() else cat_logits.sum() * 0,
+    }
+    out["total"] = out["category"] + 0.5 * out["boundary"] + 0.5 * out["colour"]
+    return out
+
+
+def thing_iou(net: SegNet, data: dict[str, np.ndarray], idx: np.ndarray) -> dict[str, float]:
+    """Pixel IoU per object category over the validation crops (full crops, no augmentation)."""
+    net.eval()
+    inter = np.zeros(net.n_categories)
+    union = np.zeros(net.n_categories)
+    with torch.no_grad():
+        for s in range(0, len(idx), 8):
+            ii = idx[s : s + 8]
+            x = network_input(
+                torch.from_numpy(data["rgb"][ii]), torch.from_numpy(data["depth_mm"][ii].astype(np.float32) / 1000)
+            )
+            pred = net.split(net(x))[0].argmax(1).numpy()
+            gt = data["category"][ii]
+            for c in range(net.n_categories):
+                p, g = pred == c, gt == c
+                inter[c] += (p & g).sum()
+                union[c] += (p | g).sum()
+    net.train()
+    return {CATEGORIES[c].name: round(float(inter[c] / union[c]), 4) for c in range(net.n_categories) if union[c] > 0}
+
+
+def save(net: SegNet, path: Path, meta: dict) -> None:
+    """Weights in float16 (half the bytes; inference casts back) with the architecture and training metadata."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    state = {k: (v.half() if v.is_floating_point() else v) for k, v in net.state_dict().items()}
+    torch.save({"widths": net.widths, "full_res": net.full_res, "state": state, "meta": meta}, path)
+
+
+def train(cfg: TrainConfig, log: Callable[[str], None] = print) -> dict:
+    torch.manual_seed(cfg.seed)
+    torch.set_num_threads(cfg.threads)
+    rng = np.random.default_rng(cfg.seed)
+    data = load_shards(Path(cfg.data_dir))
+    if cfg.crop[0] > data["category"].shape[1] or cfg.crop[1] > data["category"].shape[2]:
+        raise ValueError(f"crop {cfg.crop} is larger than the dataset's crops {data['category'].shape[1:]}")
+    order = np.argsort(data["seeds"], kind="stable")
+    n_val = max(1, int(len(order) * cfg.val_fraction)) if len(order) > 1 else 0
+    train_idx, val_idx = order[: len(order) - n_val], order[len(order) - n_val :]
+    if len(train_idx) == 0:
+        raise ValueError(f"dataset {cfg.data_dir} has too few crops ({len(order)}) to train on")
+    log(f"{len(train_idx)} training crops, {len(val_idx)} validation crops")
+    net = SegNet()
+    opt = torch.optim.AdamW(net.parameters(), lr=cfg.lr, weight_decay=1e-4)
+    t0 = time.perf_counter()
+    budget_s = cfg.minutes * 60
+    step, seen = 0, 0
+    run: dict[str, float] = {}
+    while step < cfg.steps and time.perf_counter() - t0 < budget_s:
+        frac = min(1.0, max(step / cfg.steps, (time.perf_counter() - t0) / budget_s))
+        for g in opt.param_groups:  # cosine decay over whichever budget runs out first
+            g["lr"] = cfg.lr * 0.5 * (1 + np.cos(np.pi * frac))
+        idx = rng.choice(train_idx, size=min(cfg.batch, len(train_idx)), replace=False)
+        x, cat, bnd, col = _batch(data, idx, cfg.crop, rng)
+        loss = losses(net, x, cat, bnd, col)
+        opt.zero_grad()
+        loss["total"].backward()
+        opt.step()
+        step += 1
+        seen += len(idx)
+        for k, v in loss.items():
+            run[k] = 0.95 * run.get(k, v.item()) + 0.05 * v.item()
+        if step % 50 == 0:
+            el = time.perf_counter() - t0
+            log(f"step {step} ({el:.0f} s, {seen / el:.1f} img/s) " + " ".join(f"{k} {v:.3f}" for k, v in run.items()))
+        if step % 1000 == 0:
+            save(net, Path(cfg.out), {"config": asdict(cfg), "steps": step, "partial": True})
+    elapsed = time.perf_counter() - t0
+    val = thing_iou(net, data, val_idx) if len(val_idx) else {}
+    meta = {
+        "config": asdict(cfg),
+        "steps": step,
+        "images_seen": seen,
+        "train_minutes": round(elapsed / 60, 2),
+        "train_crops": int(len(train_idx)),
+        "val_crops": int(len(val_idx)),
+        "val_pixel_iou": val,
+        "final_loss": {k: round(v, 4) for k, v in run.items()},
+    }
+    save(net, Path(cfg.out), meta)
+    log(json.dumps(meta))
+    return meta
+
+
+def load_net(path: Path) -> SegNet:
+    ckpt = torch.load(path, map_location="cpu", weights_only=True)
+    net = SegNet(tuple(ckpt["widths"]), int(ckpt["full_res"]))
+    net.load_state_dict({k: v.float() if v.is_floating_point() else v for k, v in ckpt["state"].items()})
+    return net.eval()
