@@ -120,10 +120,11 @@ def _protocol_names() -> dict[str, str]:
 def _protocol_line(args: argparse.Namespace) -> str:
     """The named protocol, and why a smoke figure here is not the paper's."""
     from spark_core.bench.protocols import describe
+    from spark_core.perception.sam3_segmenter import describe_checkpoint
 
     line = describe(args.protocol) + (
         "; SMOKE FIGURE: this machine has no SAM3 weights (segmenter "
-        + (f"sam3 with the checkpoint at {args.sam3_model}" if args.segmenter == "sam3" else args.segmenter)
+        + (f"sam3 with {describe_checkpoint(args.sam3_model)}" if args.segmenter == "sam3" else args.segmenter)
         + ") and no Gemini key, so these configurations cannot reach real success here"
     )
     if args.llm_loopback:

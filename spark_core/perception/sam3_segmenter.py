@@ -186,6 +186,24 @@ def build_tiny_checkpoint(path: str | os.PathLike, seed: int = 0) -> Path:
     return out
 
 
+def describe_checkpoint(model: str | os.PathLike | None) -> str:
+    """The checkpoint in words, for protocol lines: whether it is the tiny random one (no real weights)."""
+    import json
+
+    model = model or os.environ.get("SPARK_SAM3_MODEL", DEFAULT_MODEL)
+    try:
+        cfg = json.loads((locate_checkpoint(model) / "config.json").read_text())
+        hidden = cfg["vision_config"]["backbone_config"]["hidden_size"]
+    except (Sam3WeightsMissing, KeyError, ValueError):
+        return f"the checkpoint {model}"
+    if hidden <= 64:
+        return (
+            f"a tiny randomly initialised checkpoint at {model} (hidden size {hidden}; built by "
+            f"`python -m spark_core.perception.sam3_segmenter --tiny {model}`), not SAM3's weights"
+        )
+    return f"the checkpoint at {model} (hidden size {hidden})"
+
+
 if __name__ == "__main__":  # python -m spark_core.perception.sam3_segmenter --tiny DIR
     import argparse
 

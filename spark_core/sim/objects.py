@@ -377,6 +377,41 @@ def ball(color: str, radius: float = 0.007) -> ObjectSpec:
     return ObjectSpec("ball", "food", f"tiny {color} bead", radius, 2 * radius, True, build)
 
 
+def fork(color: str) -> ObjectSpec:
+    """A 13 cm table fork lying flat: a handle (the middle of the fork, where a hand takes it) and a wider head
+    with four tines."""
+
+    def build(body, rgba):
+        _geom(body, BOX, [0.04, 0.006, 0.007], (-0.025, 0, 0.007), rgba, mass=0.03)
+        _geom(body, BOX, [0.012, 0.013, 0.005], (0.027, 0, 0.005), rgba, mass=0.01)
+        for k in range(4):  # tines
+            _geom(body, BOX, [0.013, 0.002, 0.004], (0.052, -0.0105 + 0.007 * k, 0.004), rgba, mass=0.002)
+
+    return ObjectSpec(
+        "fork", "tableware", f"{color} metal table fork with four tines", 0.07, 0.014, True, build, grasp_width_m=0.012
+    )
+
+
+def knife(color: str) -> ObjectSpec:
+    """A 13 cm table knife lying flat: a thick handle (the middle of the knife, where a hand takes it) and a thin
+    blade."""
+
+    def build(body, rgba):
+        _geom(body, BOX, [0.04, 0.007, 0.007], (-0.025, 0, 0.007), rgba, mass=0.03)
+        _geom(body, BOX, [0.025, 0.009, 0.003], (0.04, 0, 0.003), rgba, mass=0.01)
+
+    return ObjectSpec(
+        "knife",
+        "tableware",
+        f"{color} metal table knife with a flat blade",
+        0.07,
+        0.014,
+        True,
+        build,
+        grasp_width_m=0.014,
+    )
+
+
 KINDS: dict[str, Callable[[str], ObjectSpec]] = {
     "block": block,
     "bowl": bowl,
@@ -395,4 +430,6 @@ KINDS: dict[str, Callable[[str], ObjectSpec]] = {
     "ball": ball,
     "bar": bar,
     "carry_tray": carry_tray,
+    "fork": fork,
+    "knife": knife,
 }
