@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
-from fastapi import APIRouter
+import threading
+from typing import Annotated
 
-from .models import PlanText, PlanValidation
+from fastapi import APIRouter, HTTPException, Path, Response
+
+from .models import MAX_NAME, PlanText, PlanValidation
 
 router = APIRouter(prefix="/api", tags=["meta"])
 
@@ -78,3 +81,31 @@ def validate_plan(body: PlanText) -> PlanValidation:
     if plan is None:
         return PlanValidation(ok=False, errors=[{"path": i.path, "message": i.message} for i in issues])
     return PlanValidation(ok=True, plan=plan_to_dict(plan), canonical_yaml=to_yaml(plan))
+
+
+_PREVIEWS: dict[str, bytes] = {}  # task name -> PNG of its scene (seed 0): scenes are deterministic
+_PREVIEW_LOCK = threading.Lock()
+
+
+@router.get("/tasks/{name}/preview.png", response_class=Response, responses={200: {"content": {"image/png": {}}}})
+def task_preview(name: Annotated[str, Path(max_length=MAX_NAME)]) -> Response:
+    """A picture of the task's scene at its start (seed 0, its first camera, 320 x 240), for the task card."""
+    import cv2
+
+    from spark_core import TASKS
+
+    task = TASKS.get(name)
+    if task is None:
+        raise HTTPException(404, f"no task {name!r}")
+    with _PREVIEW_LOCK:  # one scene built at a time (robosuite and LIBERO scenes take seconds and memory)
+        if name not in _PREVIEWS:
+            world = task.make_world(0)
+            try:
+                if world.model.ncam == 0:
+                    raise HTTPException(404, f"task {name!r} has no camera to draw its scene from")
+                frame = world.render(world.model.camera(0).name, 320, 240)
+                ok, png = cv2.imencode(".png", cv2.cvtColor(frame.rgb, cv2.COLOR_RGB2BGR))
+                _PREVIEWS[name] = png.tobytes()
+            finally:
+                world.close()
+    return Response(_PREVIEWS[name], media_type="image/png", headers={"cache-control": "max-age=3600"})

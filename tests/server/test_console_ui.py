@@ -124,3 +124,14 @@ def test_the_committed_client_types_match_the_live_openapi_document(tmp_path):
     assert out.read_text() == (ROOT / "web" / "src" / "api" / "schema.d.ts").read_text(), (
         "web/src/api/schema.d.ts is stale: regenerate it (see this test's docstring)"
     )
+
+
+def test_a_task_preview_is_a_picture_of_its_scene(tmp_path):
+    import cv2
+
+    with TestClient(_app(tmp_path, viser=False)) as c:
+        r = c.get("/api/tasks/lift_block/preview.png")
+        assert r.status_code == 200 and r.headers["content-type"] == "image/png"
+        img = cv2.imdecode(np.frombuffer(r.content, np.uint8), cv2.IMREAD_COLOR)
+        assert img.shape == (240, 320, 3) and img.std() > 10  # a drawn scene, not a blank frame
+        assert c.get("/api/tasks/juggle/preview.png").status_code == 404

@@ -209,6 +209,7 @@ def test_dashboard_groups_and_searches_tasks(server, page):
     assert {"open_drawer", "close_drawer", "block_in_drawer"} <= set(names) and "lift_block" not in names
     page.click("button[data-task=open_drawer]")
     assert "open_drawer" in page.locator("#task-card h3").inner_text() and page.locator("#task-predicate").inner_text()
+    page.wait_for_function("() => { const i = document.querySelector('#task-card img.preview'); return i && i.complete && i.naturalWidth > 0; }")
     shot(page, "6-dashboard")
 
 

@@ -33,6 +33,7 @@ export function Timeline({ bars, end, cursor, onSeek, id = "timeline", label = "
       hooks: {
         draw: [(u) => {
           const ctx = u.ctx;
+          ctx.save();
           const h = Math.max(4, (u.bbox.height / Math.max(1, rows.length)) * 0.6);
           for (const b of bars) {
             const x0 = u.valToPos(b.start, "x", true), x1 = u.valToPos(Math.max(b.end, b.start), "x", true);
@@ -43,6 +44,7 @@ export function Timeline({ bars, end, cursor, onSeek, id = "timeline", label = "
           const cx = u.valToPos(cursorRef.current, "x", true);
           ctx.strokeStyle = "#d32f2f"; ctx.lineWidth = 2;
           ctx.beginPath(); ctx.moveTo(cx, u.bbox.top); ctx.lineTo(cx, u.bbox.top + u.bbox.height); ctx.stroke();
+          ctx.restore();
         }],
       },
     };

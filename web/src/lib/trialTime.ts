@@ -86,3 +86,33 @@ export function endOf(trial: Trial, events: TrialEvent[]): number {
   const lastNode = Math.max(0, ...Object.values(trial.nodes ?? {}).map((n) => n.finished_t ?? 0));
   return Math.max(lastEvent, lastNode, 0.001);
 }
+
+/** Paused spans [from, to] (wall s): from a "paused" event to the trial's next event. */
+export function pausedSpans(events: TrialEvent[]): [number, number][] {
+  const out: [number, number][] = [];
+  events.forEach((e, i) => {
+    if (e.kind !== "paused") return;
+    const next = events.slice(i + 1).find((x) => x.t > e.t);
+    if (next) out.push([e.t, next.t]);
+  });
+  return out;
+}
+
+/** Wall time with the paused spans cut out (what the timeline and the cursor use). */
+export function unpaused(spans: [number, number][], t: number): number {
+  let cut = 0;
+  for (const [a, b] of spans) {
+    if (t >= b) cut += b - a;
+    else if (t > a) cut += t - a;
+  }
+  return t - cut;
+}
+
+/** The trial and its events on the unpaused clock. */
+export function withoutPauses(trial: Trial, events: TrialEvent[]): { trial: Trial; events: TrialEvent[] } {
+  const spans = pausedSpans(events);
+  if (!spans.length) return { trial, events };
+  const f = (t: number | null) => (t === null ? null : unpaused(spans, t));
+  const nodes = Object.fromEntries(Object.entries(trial.nodes ?? {}).map(([p, n]) => [p, { ...n, started_t: f(n.started_t), finished_t: f(n.finished_t) }]));
+  return { trial: { ...trial, nodes }, events: events.map((e) => ({ ...e, t: unpaused(spans, e.t) })) };
+}

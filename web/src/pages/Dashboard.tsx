@@ -1,11 +1,12 @@
 // Start trials and batches: tasks grouped by suite with search, the chosen task's card, planner fields (model,
 // one of the operator's endpoints), and an optional plan of your own, validated as you type.
-import { useState } from "react";
-import { post } from "../api/client";
+import { useEffect, useState } from "react";
+import { api, post, wsUrl } from "../api/client";
 import type { BatchCreate, TrialCreate } from "../api/client";
 import { useCatalog } from "../api/catalog";
-import type { Catalog, Task } from "../api/types";
+import type { Catalog, Page, Task, TrialSummary } from "../api/types";
 import { PlanEditor } from "../components/PlanEditor";
+import { TrialTable } from "../components/TrialTable";
 import { go } from "../lib/route";
 
 const PACING: [string, string][] = [["", "as fast as possible"], ["1", "real time"], ["0.5", "0.5x"], ["0.25", "0.25x"]];
@@ -22,6 +23,7 @@ export function Dashboard() {
         <TaskCard task={chosen} cat={cat} />
         <TrialForm cat={cat} task={chosen} />
         <BatchForm cat={cat} />
+        <RecentTrials />
       </div>
     </div>
   );
@@ -53,6 +55,7 @@ function TaskCard({ task }: { task: Task; cat: Catalog }) {
   return (
     <section className="task-card" id="task-card" data-task={task.name}>
       <h3>{task.name} <span className="muted">({task.suite})</span></h3>
+      <img className="preview" key={task.name} src={`/api/tasks/${encodeURIComponent(task.name)}/preview.png`} alt={`the ${task.name} scene at its start`} />
       <p>“{task.instruction}”</p>
       <dl>
         <dt>objects</dt><dd>{task.objects.join(", ") || "—"}</dd>
@@ -158,4 +161,17 @@ function BatchForm({ cat }: { cat: Catalog }) {
       </form>
     </section>
   );
+}
+
+/** The latest trials, refreshed whenever one is queued, starts or ends (the dashboard stream). */
+function RecentTrials() {
+  const [items, setItems] = useState<TrialSummary[]>([]);
+  useEffect(() => {
+    const load = () => api<Page<TrialSummary>>("/api/trials?limit=10").then((p) => setItems(p.items)).catch(() => {});
+    load();
+    const ws = new WebSocket(wsUrl("/api/events"));
+    ws.onmessage = load;
+    return () => ws.close();
+  }, []);
+  return <section><h3>Recent trials</h3><div id="recent"><TrialTable items={items} /></div></section>;
 }

@@ -12,14 +12,14 @@ import { type Bar, Timeline } from "../components/Timeline";
 import { TreeView } from "../components/TreeView";
 import { VerdictBadge } from "../components/VerdictBadge";
 import { ViserView } from "../components/ViserView";
-import { activeWall, anchors, endOf, leaves, treeStateAt, wallToSim } from "../lib/trialTime";
+import { activeWall, anchors, endOf, leaves, treeStateAt, wallToSim, withoutPauses } from "../lib/trialTime";
 
 const SPEEDS = [0.25, 0.5, 1, 2, 4];
 
 export function TrialPage({ id }: { id: string }) {
   const cat = useCatalog();
-  const [trial, setTrial] = useState<Trial | null>(null);
-  const [events, setEvents] = useState<TrialEvent[]>([]);
+  const [rawTrial, setTrial] = useState<Trial | null>(null);
+  const [rawEvents, setEvents] = useState<TrialEvent[]>([]);
   const [closed, setClosed] = useState(false);
   const [error, setError] = useState("");
   const [loadError, setLoadError] = useState("");
@@ -57,6 +57,12 @@ export function TrialPage({ id }: { id: string }) {
     return () => ws.close(); // leaving the page (or opening another trial) ends this trial's stream
   }, [id]); // eslint-disable-line react-hooks/exhaustive-deps
 
+  // one clock for the cursor, the timeline and the table: wall seconds with the paused spans cut out
+  const evsRaw = rawEvents.length ? rawEvents : rawTrial?.events ?? [];
+  const { trial, events } = useMemo(
+    () => (rawTrial ? withoutPauses(rawTrial, evsRaw) : { trial: null, events: evsRaw }),
+    [rawTrial, evsRaw],
+  );
   const finished = trial?.status === "done" || trial?.status === "interrupted";
   const live = !!trial && !finished && !closed;
   const end = trial ? endOf(trial, events) : 1;
@@ -87,8 +93,8 @@ export function TrialPage({ id }: { id: string }) {
   if (!trial || !cat) return <section>loading…</section>;
 
   const atEnd = !live && t >= end - 1e-9;
-  const states = treeStateAt(cat, trial, events.length ? events : trial.events ?? [], t, atEnd);
-  const evs = events.length ? events : trial.events ?? [];
+  const states = treeStateAt(cat, trial, events, t, atEnd);
+  const evs = events;
   const bars: Bar[] = leaves(trial.nodes ?? {}).map((n) => ({
     row: `${n.kind} ${n.path.replace("tree", "").replace(/children/g, "")}`, start: n.started_t ?? 0, end: n.finished_t ?? end,
     status: n.status, title: `${n.path} ${n.kind} ${(n.duration_s ?? 0).toFixed(3)} s`,
@@ -110,7 +116,7 @@ export function TrialPage({ id }: { id: string }) {
 
   return (
     <div className="workspace">
-      <Header trial={trial} cat={cat} status={shownStatus} activeS={activeWall(evs, finished ? trial.wall_time_s : null)} />
+      <Header trial={trial} cat={cat} status={shownStatus} activeS={activeWall(evsRaw, finished ? rawTrial!.wall_time_s : null)} />
       <div className="controls" id="controls">
         <button id="pause" disabled={!live || paused} onClick={() => act("pause")}>Pause</button>
         <button id="step" disabled={!paused} onClick={() => act("step")}>Step</button>
@@ -123,7 +129,7 @@ export function TrialPage({ id }: { id: string }) {
         </select>
         <input id="scrub" type="range" aria-label="time cursor" min={0} max={end} step={end / 1000} value={t} disabled={live}
           onChange={(e) => { setPlaying(false); setCursor(Number(e.target.value)); }} />
-        <span id="cursor-time">{t.toFixed(2)} s wall · {toSim(t).toFixed(2)} s sim</span>
+        <span id="cursor-time">{t.toFixed(2)} s wall (pauses cut) · {toSim(t).toFixed(2)} s sim</span>
         <a href={`/api/trials/${encodeURIComponent(id)}`} download={`${id}.json`}>trace (JSON)</a>
         {error && <span className="fail" id="control-error">{error}</span>}
       </div>
@@ -141,7 +147,7 @@ export function TrialPage({ id }: { id: string }) {
           <PanelGroup direction="vertical" autoSaveId="spark-workspace-mid">
             <Panel defaultSize={62} minSize={20}><div className="pane"><h4>3D view</h4><ViserView trialId={id} live={live} simTime={live ? null : toSim(t)} /></div></Panel>
             <PanelResizeHandle className="handle horizontal" />
-            <Panel minSize={15}><div className="pane"><h4>Timeline</h4><Timeline bars={bars} end={end} cursor={t} onSeek={(x) => { setPlaying(false); setCursor(x); }} /></div></Panel>
+            <Panel minSize={15}><div className="pane"><h4>Timeline</h4><Timeline label="wall time since start, pauses cut out (s)" bars={bars} end={end} cursor={t} onSeek={(x) => { setPlaying(false); setCursor(x); }} /></div></Panel>
           </PanelGroup>
         </Panel>
         <PanelResizeHandle className="handle" />
