@@ -116,6 +116,9 @@ class ReplayCursors:
                 if g.get("keypoint") and (g.get("t_sim_s") or 0.0) <= t_sim_s
             }
             self.scene.markers(key, grounded)
+            # the engine keeps one detection image per camera, of the last grounding: shown from that time on
+            last = max((g.get("t_sim_s") or 0.0 for g in r["groundings"]), default=None)
+            self.scene.image(key, r["image"] if last is not None and t_sim_s >= last else None)
             self.scene.active(key, f"**Replay:** {trial_id}  \nt = {t:.2f} / {r['times'][-1]:.2f} s (simulated)")
         return {"id": trial_id, "key": key, "t_sim_s": round(t, 3), "index": i, "states": len(r["states"])}
 
@@ -148,6 +151,7 @@ class ReplayCursors:
             "times": [s[0] for s in states],
             "groundings": trial.get("groundings", []),
             "origin": np.asarray(getattr(world, "origin_m", np.zeros(3)), float),
+            "image": _detection_image(trial),
         }
         self._open[trial_id] = r
         return r
@@ -157,3 +161,15 @@ class ReplayCursors:
             for r in self._open.values():
                 r["world"].close()
             self._open.clear()
+
+
+def _detection_image(trial: dict, width: int = 320) -> np.ndarray | None:
+    """The trial's first recorded detection image (RGB, `width` px wide), or None."""
+    import cv2
+
+    entry = next((a for a in trial.get("artifacts", []) if a.get("kind") == "detections"), None)
+    img = cv2.imread(str(entry["path"])) if entry else None
+    if img is None:
+        return None
+    h = int(round(img.shape[0] * width / img.shape[1]))
+    return cv2.cvtColor(cv2.resize(img, (width, h), interpolation=cv2.INTER_AREA), cv2.COLOR_BGR2RGB)

@@ -43,7 +43,8 @@ class ViserScene:
         cam.position, cam.look_at = (1.7, -1.1, 1.2), (0.5, 0.0, 0.25)
         gui = self.server.gui
         self._active = gui.add_markdown("**Trial:** none")
-        self._image = gui.add_image(np.zeros((240, 320, 3), np.uint8), label="detections (masks, boxes, keypoints)")
+        self._image = gui.add_image(BLANK, label="detections (masks, boxes, keypoints)")
+        self.image_key: str | None = None  # whose detection image is on screen (None: blank)
 
     @property
     def port(self) -> int:
@@ -62,6 +63,8 @@ class ViserScene:
                 _add_geom(scene, g, f"/world/b{g.body}/g{i}")
             self._frames, self._targets, self._markers, self._labels = frames, {}, [], {}
             self._active.content = f"**Trial:** {title or key}"
+            self._image.image = BLANK  # the previous trial's detections are not this one's
+            self.image_key = None
 
     def update(self, key: str, xpos: np.ndarray, xquat: np.ndarray, targets: dict | None = None) -> None:
         """Body poses (world frame, wxyz) and, per arm, the (position_m, wxyz) its TCP is moving to."""
@@ -97,10 +100,12 @@ class ViserScene:
                 self._markers.append(marker)
                 self._labels[label] = label_handle
 
-    def image(self, key: str, rgb: np.ndarray) -> None:
+    def image(self, key: str, rgb: np.ndarray | None) -> None:
+        """The annotated detection image of `key`'s trial (None: blank)."""
         with self._lock:
             if key == self.current:
-                self._image.image = rgb
+                self._image.image = BLANK if rgb is None else rgb
+                self.image_key = None if rgb is None else key
 
     def active(self, key: str, text: str) -> None:
         with self._lock:
@@ -156,6 +161,7 @@ class ViserScene:
                 thread.join(10.0)
 
 
+BLANK = np.zeros((240, 320, 3), np.uint8)
 MAX_FEEDS = 8  # live feeds whose latest scene is kept for focus()
 
 

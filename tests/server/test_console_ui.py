@@ -77,6 +77,13 @@ def test_focus_binds_the_view_to_a_finished_trial_at_the_cursor(tmp_path):
         assert end["index"] == end["states"] - 1
         assert float(scene._frames[bid].position[2]) > z0 + 0.05  # lifted by the end
         assert list(scene._labels) == ["red block"]
+        assert scene.image_key == f"replay:{tid}"  # its own detection image, from its grounding on
+        # another trial, with no detections (no cameras): the view shows no image, not the previous trial's
+        other = c.post("/api/trials", json={"task": "lift_block", "segmenter": "privileged-keypoints"}).json()["id"]
+        wait_done(c, other)
+        c.post("/api/viser/focus", params={"trial": other})
+        assert scene.current == f"replay:{other}" and scene.image_key is None
+        assert not scene._image.image.any()
         assert c.post("/api/viser/focus", params={"trial": "nope"}).status_code == 404
         assert c.post("/api/viser/focus").json()["pinned"] is None
 

@@ -24,7 +24,7 @@ export function Timeline({ bars, end, cursor, onSeek, id = "timeline", label = "
     const opts: uPlot.Options = {
       width, height: 40 + 22 * Math.max(1, rows.length),
       legend: { show: false }, cursor: { y: false, drag: { x: false, y: false } },
-      scales: { x: { time: false, range: [0, end] }, y: { range: [-0.5, Math.max(0.5, rows.length - 0.5)] } },
+      scales: { x: { time: false, auto: false, range: () => [0, end] }, y: { auto: false, range: () => [-0.5, Math.max(0.5, rows.length - 0.5)] } },
       axes: [
         { label, labelSize: 18, size: 34 },
         { size: 160, splits: () => rows.map((_, i) => i), values: (_u, splits) => splits.map((i) => rows[i] ?? "") },
@@ -48,7 +48,7 @@ export function Timeline({ bars, end, cursor, onSeek, id = "timeline", label = "
         }],
       },
     };
-    const u = new uPlot(opts, [[0, end], [null, null]], el.current);
+    const u = new uPlot(opts, [[0, end], [0, 0]], el.current);
     plot.current = u;
     let dragging = false;
     const seek = (e: MouseEvent) => seekRef.current(Math.min(end, Math.max(0, u.posToVal(e.offsetX, "x"))));

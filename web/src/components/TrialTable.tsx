@@ -34,7 +34,7 @@ export function TrialTable({ items, columns = COLUMNS, sort, onSort, picked, onP
         {columns.map((c) => (
           <th key={c.key} data-sort={c.sortKey} className={c.sortKey && onSort ? "sortable" : ""}
             onClick={() => c.sortKey && onSort?.(key === c.sortKey && !sort?.startsWith("-") ? `-${c.sortKey}` : c.sortKey)}>
-            {c.label}{key === c.sortKey ? (sort?.startsWith("-") ? " ▼" : " ▲") : ""}
+            {c.label}{c.sortKey && key === c.sortKey ? (sort?.startsWith("-") ? " ▼" : " ▲") : ""}
           </th>))}
       </tr></thead>
       <tbody>

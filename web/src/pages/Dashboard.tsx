@@ -43,7 +43,7 @@ function TaskBrowser({ cat, value, onChange }: { cat: Catalog; value: string; on
             <summary>{suite} <span className="muted">({tasks.length})</span></summary>
             <ul>{tasks.map((t) => (
               <li key={t.name}><button className={`task-item${t.name === value ? " chosen" : ""}`} data-task={t.name} title={t.name} onClick={() => onChange(t.name)}>
-                {t.name.includes(":") ? t.name.split(":")[1].replace(/_/g, " ") : t.name}</button></li>))}</ul>
+                {t.name.includes(":") ? <><span className="muted">{t.name.split(":")[0]}</span> {t.name.split(":")[1].replace(/_/g, " ")}</> : t.name}</button></li>))}</ul>
           </details>
         );
       })}

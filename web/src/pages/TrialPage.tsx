@@ -191,7 +191,8 @@ function Explanation({ trial, predicate }: { trial: Trial; predicate?: string })
   if (!trial.verdict || trial.verdict === "success") return null;
   let text = trial.reason || "";
   if (trial.verdict === "task_unmet") {
-    text = `Every node of the tree passed, but the task's success condition was not met: ${predicate ?? "(unknown task)"}.${trial.reason ? ` ${trial.reason}` : ""}`;
+    const extra = trial.reason && !(predicate && trial.reason.includes(predicate)) ? ` ${trial.reason}` : "";
+    text = `Every node of the tree passed, but the task's success condition was not met: ${predicate ?? "(unknown task)"}.${extra}`;
   } else if (trial.verdict === "planner_error") {
     text = `The planner produced no plan. What it said: ${trial.reason || "(nothing)"}`;
   } else if (trial.verdict === "aborted") {
