@@ -1,6 +1,11 @@
 """Where a batch's trials run: a local process pool (the default), or Ray, either a local cluster started for
 the batch or an existing cluster at an address (evaluation beyond one machine). Results stream back in
-completion order to `progress`; the returned list is in job order."""
+completion order to `progress`; the returned list is in job order, one row per job.
+
+On Ray nothing is lost: a job whose worker process or node dies is run again (up to RAY_RETRIES times) on what
+is left of the cluster. A job must therefore be idempotent: the bench's jobs carry a trial id decided before
+submission, and the trace store's `begin_attempt` makes a retry overwrite its own record, so every trial ends up
+stored exactly once. An exception raised by the job itself is a result, not a crash: it is not retried."""
 
 from __future__ import annotations
 
@@ -11,6 +16,7 @@ from concurrent.futures import ProcessPoolExecutor, as_completed
 from typing import Any
 
 EXECUTORS = ("local", "ray")
+RAY_RETRIES = 3  # a worker or node lost mid-job: run the job again, at most this many times
 
 
 def run_jobs(
@@ -66,12 +72,21 @@ def _run_ray(fn, jobs, workers: int, address: str | None, done: Callable[[int, d
             runtime_env={"env_vars": env},
         )
     try:
-        remote = ray.remote(num_cpus=1, max_retries=1)(fn)
+        from ray.exceptions import NodeDiedError, WorkerCrashedError
+
+        remote = ray.remote(num_cpus=1, max_retries=RAY_RETRIES, retry_exceptions=False)(fn)
         pending = {remote.remote(job): i for i, job in enumerate(jobs)}
         while pending:
             ready, _ = ray.wait(list(pending), num_returns=1)
             ref = ready[0]
-            done(pending.pop(ref), ray.get(ref))
+            i = pending.pop(ref)
+            try:
+                row = ray.get(ref)
+            except (WorkerCrashedError, NodeDiedError) as e:
+                raise RuntimeError(
+                    f"job {i} lost its Ray worker {RAY_RETRIES + 1} times (the cluster is losing workers or nodes): {e}"
+                ) from None
+            done(i, row)
     finally:
         if started:
             ray.shutdown()

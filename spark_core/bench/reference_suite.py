@@ -30,15 +30,15 @@ def protocol(config: TrialConfig) -> str:
     )
 
 
-def _one(job: tuple[TrialConfig, str | None]) -> dict:
-    config, store_url = job
+def _one(job: tuple[TrialConfig, str | None, str]) -> dict:
+    config, store_url, trial_id = job
     sinks = []
     if store_url:
         from ..trace import TraceStore
         from ..trace.sink import StoreSink
 
         sinks.append(StoreSink(TraceStore(store_url, migrate=False)))  # the driver migrated it
-    return run_trial(config, sinks).row()
+    return run_trial(config, sinks, trial_id=trial_id).row()
 
 
 def run(
@@ -51,21 +51,23 @@ def run(
     executor: str = "local",
     ray_address: str | None = None,
     store_url: str | None = None,
+    batch_id: str | None = None,
+    manifest: dict | None = None,
 ) -> list[dict]:
     """Every task x seed with `template`'s settings; `executor` local (process pool of `workers`) or ray (see
-    bench.executors). With `store_url` every trial is recorded in that trace store under one batch."""
+    bench.executors). With `store_url` every trial is recorded in that trace store under one batch (`batch_id`,
+    default a new one; its spec keeps `manifest`, see bench.manifest)."""
+    import uuid
+
     from .executors import run_jobs
 
     template = template or TrialConfig(task="", segmenter="privileged-keypoints")
     tasks = list(tasks)
-    batch_id = None
+    batch_id = batch_id or f"bench-{uuid.uuid4().hex[:10]}"
     configs = [replace(template, task=t, seed=seed + k).check() for t in tasks for k in range(trials)]
     if store_url:
-        import uuid
-
         from ..trace import TraceStore
 
-        batch_id = f"bench-{uuid.uuid4().hex[:10]}"
         TraceStore(store_url).create_batch(
             batch_id,
             {
@@ -76,10 +78,13 @@ def run(
                 "segmenter": template.segmenter,
                 "planner": template.planner,
                 "executor": executor,
+                **({"manifest": manifest} if manifest else {}),
             },
         )
         configs = [replace(c, batch_id=batch_id) for c in configs]
-    return run_jobs(_one, [(c, store_url) for c in configs], executor, workers, ray_address, progress)
+    # Ids decided before submission: a trial retried after its worker died writes the same record again
+    jobs = [(c, store_url, f"{batch_id}-{i:04d}-s{c.seed}") for i, c in enumerate(configs)]
+    return run_jobs(_one, jobs, executor, workers, ray_address, progress)
 
 
 def table(rows: list[dict]) -> str:

@@ -21,7 +21,7 @@ class TrialRow(Base):
 
     __tablename__ = "trials"
 
-    id: Mapped[str] = mapped_column(String(64), primary_key=True)
+    id: Mapped[str] = mapped_column(String(255), primary_key=True)
     created_at: Mapped[datetime] = mapped_column(DateTime(timezone=True), default=utcnow, index=True)
     status: Mapped[str] = mapped_column(String(16), default="queued", index=True)  # queued|running|done|interrupted
     instruction: Mapped[str] = mapped_column(Text, default="")
@@ -45,7 +45,7 @@ class TrialRow(Base):
     nodes: Mapped[dict] = mapped_column(JSON, default=dict)  # per-node durations, retries, recoveries
     trajectory: Mapped[list] = mapped_column(JSON, default=list)  # joint states at the control rate
     artifacts: Mapped[list] = mapped_column(JSON, default=list)  # [{name, kind, camera, path, sha256}] files on disk
-    batch_id: Mapped[str | None] = mapped_column(String(64), nullable=True, index=True)
+    batch_id: Mapped[str | None] = mapped_column(String(255), nullable=True, index=True)
     # [(t_s, qpos)] every 40 ms of simulated time: enough to replay the trial in the 3D view. Loaded on demand.
     scene_states: Mapped[list | None] = mapped_column(JSON, nullable=True, deferred=True)
     # Set by a delete: hidden from every read, restorable until the grace period ends, then purged (0007).
@@ -91,7 +91,7 @@ class BatchRow(Base):
 
     __tablename__ = "batches"
 
-    id: Mapped[str] = mapped_column(String(64), primary_key=True)
+    id: Mapped[str] = mapped_column(String(255), primary_key=True)
     created_at: Mapped[datetime] = mapped_column(DateTime(timezone=True), default=utcnow)
     status: Mapped[str] = mapped_column(String(16), default="running")  # running|cancelled|done
     spec: Mapped[dict] = mapped_column(JSON, default=dict)
@@ -107,7 +107,7 @@ class PlanLibraryRow(Base):
     instruction: Mapped[str] = mapped_column(Text, index=True)
     plan_text: Mapped[str] = mapped_column(Text)
     scene_summary: Mapped[str] = mapped_column(Text, default="")
-    trial_id: Mapped[str | None] = mapped_column(String(64), nullable=True)
+    trial_id: Mapped[str | None] = mapped_column(String(255), nullable=True)
 
 
 class LeaseRow(Base):

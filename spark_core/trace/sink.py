@@ -24,6 +24,7 @@ class StoreSink(BaseSink):
         self.artifacts_dir = Path(artifacts_dir)
         self.extra_protocol = extra_protocol or {}
         self._trial_id: str | None = None
+        self._attempt = 1  # > 1: a retry after an attempt that died mid-trial (its events were dropped)
 
     @staticmethod
     def _config_fields(config: Any) -> dict[str, Any]:
@@ -43,10 +44,9 @@ class StoreSink(BaseSink):
             instruction=ctx.instruction,
             protocol=_jsonable({**ctx.protocol, **self.extra_protocol}),
         )
-        if not self.store.has_trial(ctx.trial_id):
-            self.store.create_trial(ctx.trial_id, **fields)
-        else:
-            self.store.update_trial(ctx.trial_id, **fields)
+        # The row may exist: queued by the console, or left "running" by an attempt whose worker died (a Ray
+        # retry). Either way this attempt takes it over, so the trial is stored once with one attempt's events.
+        self._attempt = self.store.begin_attempt(ctx.trial_id, **fields)
 
     def on_plan(self, ctx: TrialContext, plan: Plan | None, planning: dict[str, Any]) -> None:
         if plan is not None:
@@ -83,6 +83,7 @@ class StoreSink(BaseSink):
                     "task_success": outcome.task_success,
                     "tree_status": outcome.tree_status,
                     "unmet": outcome.unmet,
+                    **({"attempt": self._attempt} if self._attempt > 1 else {}),
                 }
             ),
         )

@@ -90,6 +90,34 @@ class TraceStore:
             for k, v in fields.items():
                 setattr(row, k, v)
 
+    def begin_attempt(self, trial_id: str, **fields: Any) -> int:
+        """Start (another) attempt at a trial whose id was decided before it was submitted: create its row, or,
+        if a previous attempt left one (a worker killed mid-trial, then retried), drop that attempt's events and
+        groundings and overwrite the row. Either way the store ends with the trial once. The attempt number
+        (1 for the first) is returned. A concurrent first write of the same id (IntegrityError) counts as a
+        previous attempt."""
+        from sqlalchemy import exc
+
+        for _ in range(2):
+            with self.Session.begin() as s:
+                row = s.get(TrialRow, trial_id)
+                if row is not None:
+                    attempt = int((row.protocol or {}).get("attempt", 1)) + 1 if row.status == "running" else 1
+                    s.execute(delete(EventRow).where(EventRow.trial_id == trial_id))
+                    s.execute(delete(GroundingRow).where(GroundingRow.trial_id == trial_id))
+                    for k, v in fields.items():
+                        setattr(row, k, v)
+                    if attempt > 1:  # said in the record: this trial's worker died once and it ran again
+                        row.protocol = {**(row.protocol or {}), "attempt": attempt}
+                    return attempt
+            try:
+                with self.Session.begin() as s:
+                    s.add(TrialRow(id=trial_id, **fields))
+                return 1
+            except exc.IntegrityError:
+                continue
+        raise RuntimeError(f"trial {trial_id!r}: could neither create nor take over its row")
+
     def add_events(self, trial_id: str, events: Iterable[dict]) -> None:
         with self.Session.begin() as s:
             s.add_all(

@@ -117,3 +117,28 @@ def test_spark_run_records_and_spark_trials_lists(tmp_path, capsys):
     assert main(["trials", "--store", url, "--id", trial_id]) == 0
     assert '"outcome": "success"' in capsys.readouterr().out
     assert main(["trials", "--store", url, "--id", "nope"]) == 1
+
+
+def test_long_ids_fit_on_every_backend(store_url):
+    store = TraceStore(store_url)  # PostgreSQL enforces VARCHAR lengths: a LIBERO-PRO task name alone is 108
+    task = "libero_spatial_swap:pick_up_the_black_bowl_between_the_plate_and_the_ramekin_and_place_it_on_the_plate"
+    trial_id = f"batch-0123456789-0042-{task}-49"
+    store.create_batch("batch-0123456789", {"suite": "liberopro"})
+    store.create_trial(trial_id, task=task, seed=49, batch_id="batch-0123456789", status="done")
+    assert store.get_batch("batch-0123456789")["trials"][0]["id"] == trial_id
+
+
+def test_a_retried_attempt_takes_over_its_trial_once(store_url):
+    store = TraceStore(store_url)
+    started = {"task": "lift_block", "seed": 3, "status": "running", "protocol": {"segmenter": "sim"}}
+    assert store.begin_attempt("t-1", **started) == 1
+    store.add_events("t-1", [{"seq": i, "t": 0.1 * i, "node_path": "tree", "kind": "started"} for i in range(3)])
+    store.add_groundings("t-1", [{"label": "red block"}])
+    # the worker died mid-trial; Ray runs it again under the same id
+    assert store.begin_attempt("t-1", **started) == 2
+    trial = store.get_trial("t-1")
+    assert trial["events"] == [] and trial["groundings"] == [] and trial["protocol"]["attempt"] == 2
+    assert store.list_trials()[0] == 1
+    store.update_trial("t-1", status="done")
+    store.create_trial("q-1", status="queued")  # the console's queue: its row is taken over as a first attempt
+    assert store.begin_attempt("q-1", **started) == 1 and "attempt" not in store.get_trial("q-1")["protocol"]
