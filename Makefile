@@ -20,6 +20,9 @@ $(STAMP): pyproject.toml requirements.lock scripts/apt-deps.sh web/package.json 
 	$(BIN)/pip install -q torch==2.13.0
 	$(BIN)/pip install -q -r requirements.lock
 	$(BIN)/pip install -q --no-deps -e .
+	@command -v npm >/dev/null || { [ "$$(id -u)" -eq 0 ] && command -v apt-get >/dev/null && apt-get update -qq \
+		&& DEBIAN_FRONTEND=noninteractive apt-get install -y -qq nodejs npm; } \
+		|| { echo "error: the console's front end needs Node.js and npm (sudo apt-get install nodejs npm)" >&2; exit 1; }
 	cd web && npm ci --no-audit --no-fund && npm run build
 	@touch $@
 

@@ -28,6 +28,10 @@ export function anchors(trial: Trial): Anchor[] {
     out.push({ wall: end, sim });
     wallEnd = end;
   }
+  // the record's simulated total also counts time outside the leaves' own spans (perception between them):
+  // spread it so the cursor's end is the trial's end
+  const total = trial.sim_time_s ?? 0;
+  if (sim > 0 && total > sim) for (const a of out) a.sim *= total / sim;
   return out;
 }
 
