@@ -236,3 +236,25 @@ def test_a_one_trial_bench_with_gemini_and_sam3_traces_both_calls(tmp_path, monk
     assert code == 0
     (trial,) = TraceStore(store).list_trials()[1]
     _check_trace(TraceStore(store).get_trial(trial["id"]), fake)
+
+
+def test_the_bt_calls_image_has_the_kept_masks_and_labels_drawn_on_it():
+    import numpy as np
+
+    from spark_core.perception.annotate import annotate
+    from spark_core.perception.factory import make_resolver
+    from spark_core.planning.observe import annotated_view, observe
+    from spark_core.sim.tasks import TASKS
+
+    world = TASKS["lift_block"].make_world(0)
+    try:
+        resolver = make_resolver(world, "sim")
+        view = annotated_view(observe("pick up the red block", resolver), resolver)
+        frame = resolver.frames["agentview"]
+        mask = resolver.detections["agentview"]["red block"].mask
+        crosses_only = annotate(frame, [], view.keypoints)
+    finally:
+        world.close()
+    assert view.image is not None and view.image.shape == frame.rgb.shape
+    tinted = np.any(view.image[mask] != crosses_only[mask], axis=1).mean()
+    assert tinted > 0.5  # the kept detection's mask is tinted (and outlined, labelled), not just a cross

@@ -62,15 +62,18 @@ def arm_tools(world) -> dict[str, str]:
 
 
 def annotated_view(view: SceneView, resolver: Resolver) -> SceneView:
-    """Multimodal planners also get the first camera's image with the detections drawn on it (when the
-    resolver looks through cameras at all)."""
+    """Multimodal planners also get the first camera's image (agentview) with what perception kept drawn on it,
+    as in the paper: each chosen detection's mask tinted and labelled, and the 3D keypoints (when the resolver
+    looks through cameras at all)."""
     frames = getattr(resolver, "frames", None)
     if not frames:
         return view
     from ..perception.annotate import annotate
 
-    frame = next(iter(frames.values()))
-    return SceneView(view.keypoints, view.summary, annotate(frame, [], view.keypoints))
+    camera, frame = next(iter(frames.items()))
+    kept = getattr(resolver, "detections", {}).get(camera, {})
+    detections = [d for label, d in kept.items() if label in view.keypoints]
+    return SceneView(view.keypoints, view.summary, annotate(frame, detections, view.keypoints))
 
 
 def agentview_png(resolver: Resolver) -> bytes | None:
