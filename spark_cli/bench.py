@@ -10,11 +10,14 @@ from pathlib import Path
 
 from spark_core.catalog import EMBODIMENTS, PLANNERS, SEGMENTERS
 
+from . import bench_manifest
+
 
 def register(sub) -> None:
     b = sub.add_parser("bench", help="run a benchmark and optionally write its section of BENCHMARKS.md")
     b.add_argument(
         "suite",
+        nargs="?",  # none with --from-manifest: the manifest names it
         choices=[
             "builtin",
             "bimanual",
@@ -41,7 +44,7 @@ def register(sub) -> None:
         choices=list(EMBODIMENTS),
         help="robot set-ups compared by the embodiments suite",
     )
-    b.add_argument("--trials", type=int, default=20, help="trials (seeds) per task")
+    b.add_argument("--trials", type=int, help="trials (seeds) per task (default 20, or the whole --split)")
     b.add_argument("--tasks", nargs="*", help="subset of task names")
     b.add_argument("--seed", type=int, default=0, help="first seed")
     b.add_argument(
@@ -108,6 +111,7 @@ def register(sub) -> None:
     b.add_argument("--store-size", type=int, default=10_000, help="trials in the trace store (api suite)")
     b.add_argument("--write", metavar="BENCHMARKS.md", help="replace this benchmark's section in the file")
     b.add_argument("--json", metavar="FILE", help="also write per-trial rows as JSON")
+    bench_manifest.add_arguments(b)
     b.set_defaults(func=_cmd_bench)
 
 
@@ -183,6 +187,9 @@ def _export_section(r: dict, command: str) -> str:
 
 
 def _cmd_bench(args: argparse.Namespace) -> int:
+    bad = bench_manifest.prepare(args)  # --split, --from-manifest
+    if bad is not None:
+        return bad
     if not args.llm_loopback:
         return _bench(args)
     if args.planner != "gemini" or args.endpoint or args.base_url:
@@ -202,6 +209,7 @@ def _bench(args: argparse.Namespace) -> int:
     from spark_core.bench.report import write_section
 
     command = "spark bench " + " ".join(sys.argv[2:]) if sys.argv[1:2] == ["bench"] else "spark bench " + args.suite
+    exit_code = 0  # 1: a --from-manifest re-run whose verdicts differ
     simple = _simple_benches(args)  # suites whose result is one dict: print it, then its section
     if args.suite in simple:
         title, run, section = simple[args.suite]
@@ -273,6 +281,7 @@ def _bench(args: argparse.Namespace) -> int:
             except ProtocolError as e:
                 print(f"--protocol {args.protocol}: {e}", file=sys.stderr)
                 return 2
+        template = bench_manifest.template_for(args, template)
         suite = SUITES[args.suite if args.suite in ("bimanual", "capbench", "liberopro") else "builtin"]
         tasks = args.tasks or list(suite)
         unknown = [t for t in tasks if t not in suite]
@@ -305,6 +314,7 @@ def _bench(args: argparse.Namespace) -> int:
             rows = [dict(r, embodiment=e) for e, rs in by_emb.items() for r in rs]
         else:
             template = replace(template, embodiment=args.embodiment)
+            manifest = bench_manifest.start(args, tasks, template, command)
             rows = reference_suite.run(
                 tasks,
                 args.trials,
@@ -315,6 +325,8 @@ def _bench(args: argparse.Namespace) -> int:
                 args.executor,
                 args.ray_address,
                 args.store,
+                batch_id=manifest["batch_id"],
+                manifest=manifest,
             )
             print(reference_suite.table(rows))
             suffix = "" if args.embodiment in (None, "panda") else f", {args.embodiment}"
@@ -324,9 +336,10 @@ def _bench(args: argparse.Namespace) -> int:
             if args.protocol:  # every report names its protocol
                 title = args.title or f"{args.suite}, protocol {args.protocol} ({plans}, {args.segmenter} segmenter)"
                 body = body.replace("Protocol: ", "Protocol: " + _protocol_line(args) + "; ", 1)
+            body, exit_code = bench_manifest.finish(args, manifest, rows, body)
         if args.json:
             Path(args.json).write_text(json.dumps(rows, indent=1))
     if args.write:
         write_section(Path(args.write), title, body)
         print(f"wrote section {title!r} of {args.write}")
-    return 0
+    return exit_code

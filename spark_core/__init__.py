@@ -70,6 +70,7 @@ _EXPORTS: dict[str, str] = {
     "ExportFilter": "spark_core.trace.lerobot",
     # reports
     "wilson": "spark_core.bench.report",
+    "batch_manifest": "spark_core.bench.manifest",
 }
 
 

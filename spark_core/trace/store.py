@@ -217,6 +217,14 @@ class TraceStore:
         with self.Session.begin() as s:
             s.add(BatchRow(id=batch_id, spec=_jsonable(spec)))
 
+    def set_batch_manifest(self, batch_id: str, manifest: dict) -> None:
+        """Keep the run's manifest (spark_core.bench.manifest) in the batch's spec, under `manifest`."""
+        with self.Session.begin() as s:
+            row = s.get(BatchRow, batch_id)
+            if row is None:
+                raise KeyError(f"no batch {batch_id!r}")
+            row.spec = {**(row.spec or {}), "manifest": _jsonable(manifest)}
+
     def set_batch_status(self, batch_id: str, status: str) -> None:
         with self.Session.begin() as s:
             row = s.get(BatchRow, batch_id)

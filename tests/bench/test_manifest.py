@@ -1,0 +1,146 @@
+"""Run manifests: what a `spark bench` run records (code, packages, task files, seeds, settings, per-trial
+results), re-running a run from its manifest gives the same verdicts, and the dev / held-out splits."""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from pathlib import Path
+
+import pytest
+
+from spark_cli import main
+from spark_core.bench import manifest as mf
+from spark_core.bench.splits import SPLITS, split_of, split_seeds
+from spark_core.trace import TraceStore
+from spark_core.trial import TrialConfig
+
+ROOT = Path(__file__).resolve().parents[2]
+RUN = ["--tasks", "lift_block", "push_to_zone", "--trials", "2", "--segmenter", "privileged-keypoints"]
+
+
+def sha(path: Path) -> str:
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def test_a_run_from_its_manifest_gets_the_same_verdicts(tmp_path, capsys):
+    import mujoco
+
+    out, rows_1, rows_2 = tmp_path / "run.manifest.json", tmp_path / "rows1.json", tmp_path / "rows2.json"
+    url = f"sqlite:///{tmp_path / 'bench.db'}"
+    assert main(["bench", "builtin", *RUN, "--manifest-out", str(out), "--json", str(rows_1), "--store", url]) == 0
+    first = capsys.readouterr().out
+    m = json.loads(out.read_text())
+    assert m["run"]["tasks"] == ["lift_block", "push_to_zone"] and m["run"]["seeds"] == [0, 1]
+    assert m["environment"]["packages"]["mujoco"] == mujoco.__version__
+    assert len(m["environment"]["git"]["commit"]) == 40 and isinstance(m["environment"]["git"]["dirty"], bool)
+    assert m["run"]["segmenter"] == {
+        "name": "privileged-keypoints",
+        "privileged": True,
+        "description": m["run"]["segmenter"]["description"],
+    }
+    assert m["run"]["planner"]["name"] == "reference" and m["run"]["memory"] == {"plan_library": "off"}
+    plan = "spark_core/sim/tasks/reference/lift_block.yaml"
+    assert m["files"][plan] == sha(ROOT / plan) and m["files"]["spark_core/sim/tasks/builtin.py"]
+    assert [(t["task"], t["seed"]) for t in m["trials"]] == [
+        ("lift_block", 0),
+        ("lift_block", 1),
+        ("push_to_zone", 0),
+        ("push_to_zone", 1),
+    ]
+    assert all(t["wall_time_s"] > 0 and "tokens" in t and t["cost_usd"] == 0.0 for t in m["trials"])
+    assert f"manifest {m['id']}" in first  # printed with the report
+    rows = json.loads(rows_1.read_text())
+    assert {r["manifest_id"] for r in rows} == {m["id"]}
+    batch = TraceStore(url).get_batch(m["batch_id"])  # stored with the batch, complete
+    assert batch["spec"]["manifest"]["id"] == m["id"] and len(batch["spec"]["manifest"]["trials"]) == 4
+
+    assert main(["bench", "--from-manifest", str(out), "--json", str(rows_2)]) == 0
+    again = capsys.readouterr().out
+    assert "all 4 verdicts as recorded" in again
+    assert [(r["task"], r["seed"], r["verdict"]) for r in json.loads(rows_2.read_text())] == [
+        (t["task"], t["seed"], t["verdict"]) for t in m["trials"]
+    ]
+    assert f"as {m['id']}" in again  # same run definition, same code and files: same id
+
+
+def test_a_rerun_names_changed_verdicts_and_environment():
+    recorded = {
+        "environment": {"git": {"commit": "a" * 40, "dirty": False}, "packages": {"mujoco": "3.3.7"}},
+        "files": {"liberopro/x.bddl": "1"},
+        "trials": [{"task": "lift_block", "seed": 0, "verdict": "success"}],
+    }
+    current = {
+        "environment": {"git": {"commit": "b" * 40, "dirty": True}, "packages": {"mujoco": "3.5.0"}},
+        "files": {"liberopro/x.bddl": "2"},
+    }
+    assert mf.drift(recorded, current) == [
+        f"git commit {'a' * 40} -> {'b' * 40}",
+        "the working tree has uncommitted changes",
+        "mujoco 3.3.7 -> 3.5.0",
+        "file liberopro/x.bddl changed",
+    ]
+    assert mf.drift(recorded, recorded) == []
+    rows = [{"task": "lift_block", "seed": 0, "verdict": "timeout"}]
+    assert mf.compare_verdicts(recorded, rows) == ["lift_block seed 0: success -> timeout"]
+
+
+def test_liberopro_manifest_hashes_the_task_and_init_state_files():
+    from spark_core.sim.libero_envs import data_dir, tasks
+
+    task = tasks()[0]
+    files = mf.task_files([task.name])
+    sums = {
+        line.split()[1][2:]: line.split()[0] for line in (data_dir() / "SHA256SUMS").read_text().splitlines() if line
+    }
+    assert len(files) == 2
+    for key, digest in files.items():
+        assert digest == sums[key.removeprefix("liberopro/")]  # the data set's own checksums
+    template = TrialConfig("", planner="rules", segmenter="sim")
+    m = mf.build(suite="liberopro", tasks=[task.name], seeds=split_seeds("heldout"), template=template, split="heldout")
+    assert m["run"]["seeds"] == list(range(10, 50)) and m["run"]["seed_meaning"] == "LIBERO-PRO init-state index"
+    assert m["run"]["cameras"]["resolution"] == "640x480"
+
+
+def test_the_manifest_id_follows_what_defines_the_run():
+    template = TrialConfig("", segmenter="privileged-keypoints")
+    a = mf.build(suite="builtin", tasks=["lift_block"], seeds=range(2), template=template)
+    b = mf.build(suite="builtin", tasks=["lift_block"], seeds=range(2), template=template, command="other words")
+    c = mf.build(suite="builtin", tasks=["lift_block"], seeds=range(3), template=template)
+    assert a["id"] == b["id"] != c["id"] and len(a["id"]) == 12
+
+
+def test_splits_are_the_documented_ranges():
+    assert SPLITS["dev"] == range(0, 10) and SPLITS["heldout"] == range(10, 50) and SPLITS["all"] == range(50)
+    assert split_of(range(10, 50)) == "heldout" and split_of(range(0, 5)) is None
+    with pytest.raises(ValueError, match="unknown split 'test'; available: dev, heldout, all"):
+        split_seeds("test")
+
+
+@pytest.mark.parametrize(
+    "flags,seed,trials",
+    [(["--split", "dev"], 0, 10), (["--split", "heldout"], 10, 40), (["--split", "heldout", "--trials", "3"], 10, 3)],
+)
+def test_split_flag_sets_the_seeds(flags, seed, trials):
+    import argparse
+
+    from spark_cli.bench import register
+    from spark_cli.bench_manifest import prepare
+
+    parser = argparse.ArgumentParser()
+    register(parser.add_subparsers())
+    args = parser.parse_args(["bench", "liberopro", *flags])
+    assert prepare(args) is None and (args.seed, args.trials) == (seed, trials)
+
+
+def test_bad_manifests_are_refused_naming_the_file(tmp_path, capsys):
+    bad = tmp_path / "bad.json"
+    bad.write_text("{not json")
+    assert main(["bench", "--from-manifest", str(bad)]) == 2
+    assert "manifest" in capsys.readouterr().err and "not JSON" in str(
+        pytest.raises(mf.ManifestError, mf.load, bad).value
+    )
+    bad.write_text(json.dumps({"manifest_version": 99}))
+    with pytest.raises(mf.ManifestError, match="manifest_version 99, this version reads 1"):
+        mf.load(bad)
+    assert main(["bench"]) == 2 and "give a suite, or --from-manifest" in capsys.readouterr().err
