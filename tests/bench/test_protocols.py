@@ -91,3 +91,39 @@ def test_s2_smoke_run_through_the_loopback_gemini_names_its_protocol(tiny_sam3, 
     assert "Protocol: protocol `s2`: CaP-Bench under CaP-X's S2 rules" in text and "SMOKE FIGURE" in text
     assert "non-privileged" in text and "loopback stand-in" in text
     assert "| Lift |" in text
+
+
+@pytest.mark.slow  # a LIBERO env and SAM3 on two 640x480 cameras: ~40 s on 2 cores
+def test_bddl_names_reach_perception_through_the_papers_libero_cameras(tiny_sam3, tmp_path, monkeypatch):
+    """A LIBERO-PRO trial under `bddl`: perception also looks for the BDDL object categories, on agentview and
+    the wrist camera at 640x480 (the synthesis call names only the instruction's objects)."""
+    import json
+
+    from spark_core.trace import TraceStore
+    from spark_core.trace.sink import StoreSink
+    from spark_core.trial import run_trial
+    from tests.doubles.fake_gemini import FakeGemini
+
+    store = TraceStore(f"sqlite:///{tmp_path / 'b.db'}")
+    with FakeGemini() as fake:
+        config = tmp_path / "spark.yaml"
+        config.write_text(f"endpoints:\n  fake: {{planner: gemini, base_url: '{fake.url}', api_key_env: FAKE_KEY}}\n")
+        monkeypatch.setenv("SPARK_CONFIG", str(config))
+        monkeypatch.setenv("FAKE_KEY", "k")
+        fake.script = [("ok", json.dumps([{"object": "black bowl"}])), ("ok", "not a plan"), ("ok", "not a plan")]
+        base = TrialConfig(LIBERO_TASK, planner="gemini", endpoint="fake", segmenter="sam3", sam3_model=tiny_sam3)
+        out = run_trial(apply("bddl", base), [StoreSink(store, tmp_path / "art")])
+    trial = store.get_trial(out.trial_id)
+    labels = [g["label"] for g in trial["groundings"]]
+    assert {"black bowl", "akita black bowl", "glazed rim porcelain ramekin", "plate", "cookies"} <= set(labels)
+    assert all(set(g["cameras"]) == {"agentview", "robot0_eye_in_hand"} for g in trial["groundings"])
+    assert out.protocol["eval_protocol"] == "bddl" and not out.protocol["privileged"]
+    image = fake.requests[0]["body"]["contents"][0]["parts"][1]["inlineData"]["data"]
+    import base64
+
+    import cv2
+    import numpy as np
+
+    data = base64.urlsafe_b64decode(image.replace("+", "-").replace("/", "_"))  # the SDK sends URL-safe base64
+    png = cv2.imdecode(np.frombuffer(data, np.uint8), cv2.IMREAD_COLOR)
+    assert png.shape[:2] == (480, 640)  # the synthesis call's agentview image, 640x480

@@ -77,12 +77,7 @@ class Vendor:
 
     def images(self, body: dict) -> list[bytes]:
         if self.name == "gemini":
-            return [
-                base64.b64decode(p["inlineData"]["data"])
-                for c in body["contents"]
-                for p in c["parts"]
-                if "inlineData" in p
-            ]
+            return [_b64(p["inlineData"]["data"]) for c in body["contents"] for p in c["parts"] if "inlineData" in p]
         out = []
         for m in body["messages"]:
             if isinstance(m["content"], list):
@@ -100,6 +95,11 @@ class Vendor:
             text = m["content"] if isinstance(m["content"], str) else m["content"][0]["text"]
             out.append(({"assistant": "model"}.get(m["role"], m["role"]), text))
         return out
+
+
+def _b64(data: str) -> bytes:
+    """google-genai sends URL-safe base64 (OpenAI's data URLs the standard alphabet)."""
+    return base64.urlsafe_b64decode(data.replace("+", "-").replace("/", "_"))
 
 
 VENDORS = [Vendor("gemini"), Vendor("openai")]
