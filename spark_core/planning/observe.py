@@ -118,8 +118,8 @@ def perceive_for_llm(
 
 
 def image_reference(view: SceneView, camera: str | None = None) -> dict | None:
-    """What the trace keeps of the image attached to the BT call: its camera, size and the SHA-256 of the PNG
-    sent (the annotated agentview image written as a trial artifact carries the same picture)."""
+    """What the trace keeps of the image attached to the BT call: its camera, size and the SHA-256 of the exact
+    PNG sent (the image itself is not stored: the trial's detection artifacts show the same camera at the end)."""
     if view.image is None:
         return None
     import hashlib
@@ -128,7 +128,6 @@ def image_reference(view: SceneView, camera: str | None = None) -> dict | None:
 
     h, w = view.image.shape[:2]
     return {
-        "artifact": f"planner-input-{camera}" if camera else "planner-input",
         "camera": camera,
         "size_px": [w, h],
         "sha256": hashlib.sha256(png_bytes(view.image)).hexdigest(),
