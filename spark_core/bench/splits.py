@@ -24,10 +24,16 @@ def split_seeds(split: str) -> range:
 
 def describe(split: str | None, seeds: range) -> str:
     """How a report names its seeds: the split and its range, or the ad-hoc range."""
-    span = f"{seeds.start}-{seeds.stop - 1}" if len(seeds) > 1 else f"{seeds.start}"
+
+    def span(r: range) -> str:
+        return f"{r.start}-{r.stop - 1}" if len(r) > 1 else f"{r.start}"
+
     if split is None:
-        return f"seeds {span} (no named split)"
-    return f"split {split} (seeds / init states {span})"
+        return f"seeds {span(seeds)} (no named split)"
+    whole = split_seeds(split)
+    if seeds == whole:
+        return f"split {split} (seeds / init states {span(whole)})"
+    return f"split {split} (seeds / init states {span(whole)}), of it seeds {span(seeds)}"
 
 
 def split_of(seeds: range) -> str | None:

@@ -27,15 +27,19 @@ def run(
     trials: int = 2, workers: int = 2, segmenter: str = "privileged-keypoints", suites: tuple[str, ...] = ("builtin",)
 ) -> dict:
     from ..trial import TrialConfig
-    from . import reference_suite
+    from . import manifest, reference_suite
 
     out: dict[str, Any] = {"trials_per_task": trials, "workers": workers, "segmenter": segmenter, "suites": {}}
     for suite in suites:
         tasks = tasks_of(suite)
         runs = {}
+        template = TrialConfig("", planner=PLANNER.get(suite, "reference"), segmenter=segmenter)
+        # one manifest per suite: both executors run the same tasks x seeds with the same settings
+        m = manifest.build(
+            suite=suite, tasks=tasks, seeds=range(trials), template=template, executor="local and ray", workers=workers
+        )
         for executor in ("local", "ray"):
             t0 = time.perf_counter()
-            template = TrialConfig("", planner=PLANNER.get(suite, "reference"), segmenter=segmenter)
             rows = reference_suite.run(tasks, trials, 0, workers, None, template, executor=executor)
             wall = time.perf_counter() - t0
             runs[executor] = {
@@ -44,7 +48,12 @@ def run(
                 "wall_s": wall,
                 "per_hour": len(rows) / wall * 3600,
             }
-        out["suites"][suite] = {"tasks": len(tasks), "planner": PLANNER.get(suite, "reference"), "runs": runs}
+        out["suites"][suite] = {
+            "tasks": len(tasks),
+            "planner": PLANNER.get(suite, "reference"),
+            "runs": runs,
+            "manifest": {"id": m["id"], "git": m["environment"]["git"], "files": len(m["files"])},
+        }
     return out
 
 
@@ -71,6 +80,7 @@ def section(r: dict, command: str) -> str:
             command,
             f"{what}; segmenter {r['segmenter']} ({privileged}); wording: each task's own instruction (official); "
             "seeds 0 and up; Ray: a local cluster started by the command (start-up and shutdown included); every "
-            "trial builds its scene (robosuite/LIBERO env) afresh",
+            "trial builds its scene (robosuite/LIBERO env) afresh; run manifests: "
+            + ", ".join(f"{suite} `{s['manifest']['id']}`" for suite, s in r["suites"].items() if "manifest" in s),
         )
     )

@@ -11,7 +11,7 @@ import pytest
 
 from spark_cli import main
 from spark_core.bench import manifest as mf
-from spark_core.bench.splits import SPLITS, split_of, split_seeds
+from spark_core.bench.splits import SPLITS, describe, split_of, split_seeds
 from spark_core.trace import TraceStore
 from spark_core.trial import TrialConfig
 
@@ -113,6 +113,9 @@ def test_the_manifest_id_follows_what_defines_the_run():
 def test_splits_are_the_documented_ranges():
     assert SPLITS["dev"] == range(0, 10) and SPLITS["heldout"] == range(10, 50) and SPLITS["all"] == range(50)
     assert split_of(range(10, 50)) == "heldout" and split_of(range(0, 5)) is None
+    assert describe("heldout", range(10, 50)) == "split heldout (seeds / init states 10-49)"
+    assert describe("heldout", range(10, 13)) == "split heldout (seeds / init states 10-49), of it seeds 10-12"
+    assert describe(None, range(0, 2)) == "seeds 0-1 (no named split)"
     with pytest.raises(ValueError, match="unknown split 'test'; available: dev, heldout, all"):
         split_seeds("test")
 
@@ -144,3 +147,23 @@ def test_bad_manifests_are_refused_naming_the_file(tmp_path, capsys):
     with pytest.raises(mf.ManifestError, match="manifest_version 99, this version reads 1"):
         mf.load(bad)
     assert main(["bench"]) == 2 and "give a suite, or --from-manifest" in capsys.readouterr().err
+
+
+def test_throughput_report_names_its_manifest():
+    from spark_core.bench import throughput
+
+    run = {"trials": 2, "successes": 2, "wall_s": 10.0, "per_hour": 720.0}
+    result = {
+        "trials_per_task": 2,
+        "workers": 2,
+        "segmenter": "privileged-keypoints",
+        "suites": {
+            "builtin": {
+                "tasks": 1,
+                "planner": "reference",
+                "runs": {"local": run, "ray": run},
+                "manifest": {"id": "0123456789ab"},
+            }
+        },
+    }
+    assert "run manifests: builtin `0123456789ab`" in throughput.section(result, "spark bench throughput")
