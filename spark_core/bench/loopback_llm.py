@@ -42,10 +42,7 @@ def answer(body: dict[str, Any]) -> str:
 
         with_prompts = "prompts" in schema.get("items", {}).get("properties", {})
         return json.dumps(
-            [
-                {"object": p, **({"prompts": prompt_variants(p, 3)} if with_prompts else {})}
-                for p in phrases_for(task)
-            ]
+            [{"object": p, **({"prompts": prompt_variants(p, 3)} if with_prompts else {})} for p in phrases_for(task)]
         )
     from ..grammar.serialize import plan_to_dict
     from ..perception import Keypoint
