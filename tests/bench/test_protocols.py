@@ -127,3 +127,33 @@ def test_bddl_names_reach_perception_through_the_papers_libero_cameras(tiny_sam3
     data = base64.urlsafe_b64decode(image.replace("+", "-").replace("/", "_"))  # the SDK sends URL-safe base64
     png = cv2.imdecode(np.frombuffer(data, np.uint8), cv2.IMREAD_COLOR)
     assert png.shape[:2] == (480, 640)  # the synthesis call's agentview image, 640x480
+
+
+def test_the_loopback_stand_in_answers_from_the_offline_parts():
+    import json
+
+    from spark_core.bench.loopback_llm import answer
+    from spark_core.grammar import validate
+    from spark_core.planning.llm import synthesis_schema
+
+    def request(text: str, schema: dict | None = None) -> dict:
+        config = {"responseJsonSchema": schema} if schema else {}
+        return {"contents": [{"role": "user", "parts": [{"text": text}]}], "generationConfig": config}
+
+    syn = json.loads(answer(request("Task: put the red block on the plate", synthesis_schema(3))))
+    assert [e["object"] for e in syn] == ["red block", "plate"] and syn[0]["prompts"] == [
+        "red cube",
+        "red wooden block",
+        "the block",
+    ]
+    assert "prompts" not in json.loads(answer(request("Task: pick up the red block", synthesis_schema(0))))[0]
+    seen = (
+        "What perception sees now:\nobjects (label: centre xyz m, size xyz m):\n"
+        "- red block: (0.500, 0.000, 0.020), size (0.040, 0.040, 0.040)\n"
+        "- plate: (0.500, 0.200, 0.008), size (0.180, 0.180, 0.016)\n\nTask: put the red block on the plate"
+    )
+    plan, issues = validate(answer(request(seen)))
+    assert plan is not None, issues
+    assert [n.primitive for _, n, _ in plan.primitives()][-1] in ("place", "release")
+    nothing = answer(request("What perception sees now:\n(nothing reported)\n\nTask: put the red block on the plate"))
+    assert validate(nothing)[0] is None  # no keypoints: an answer that does not type-check, as a model's would
