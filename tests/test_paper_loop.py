@@ -258,3 +258,13 @@ def test_the_bt_calls_image_has_the_kept_masks_and_labels_drawn_on_it():
     assert view.image is not None and view.image.shape == frame.rgb.shape
     tinted = np.any(view.image[mask] != crosses_only[mask], axis=1).mean()
     assert tinted > 0.5  # the kept detection's mask is tinted (and outlined, labelled), not just a cross
+
+
+def test_an_unknown_primitive_twice_ends_the_trial_as_a_clear_planner_error():
+    bad = {"task": "t", "tree": {"type": "sequence", "children": [{"type": "pick_up", "params": {}}]}}
+    with FakeOpenAI() as fake:
+        fake.script = [("ok", json.dumps(SYNTHESIS)), ("ok", json.dumps(bad)), ("ok", json.dumps(bad))]
+        out = run_trial(_config(fake))
+    assert len(fake.requests) == 3  # the synthesis call, the BT call and exactly one repair round
+    assert out.verdict is Verdict.PLANNER_ERROR
+    assert "did not type-check after 1 repair round" in out.reason and "unknown primitive 'pick_up'" in out.reason
