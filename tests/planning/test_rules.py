@@ -41,7 +41,7 @@ def prims(result):
         ("open the drawer of the cabinet", [("open", "cabinet drawer", None, None)]),
         (
             "open the drawer and then drop the red block into it",
-            [("open", "drawer", None, None), ("put", "red block", "in", "it")],
+            [("open", "drawer", None, None), ("put", "red block", "in", "drawer")],  # "it": what was opened
         ),
         (
             "put the red block in the green tray and the blue block in the yellow tray",
@@ -163,7 +163,8 @@ def test_an_object_located_by_others_keeps_its_relation_in_the_phrase():
             "pick the akita black bowl between the plate and the ramekin and place it on the plate"
         )
     ]
-    assert got == [("pick", "akita black bowl between plate and ramekin", None), ("put", "it", "plate")]
+    bowl = "akita black bowl between plate and ramekin"
+    assert got == [("pick", bowl, None), ("put", bowl, "plate")]  # "it" resolved to the picked bowl
     assert parse_instruction("pick the bowl next to the cookie box")[0].obj == "bowl next to cookie box"
 
 

@@ -1,14 +1,51 @@
-"""Words the rules planner understands: verbs (with synonyms), prepositions, directions."""
+"""Words the rules planner understands: verbs (with synonyms), prepositions, directions, and the small closed
+word classes it needs to read goals, trailing clauses and noun phrases."""
 
 from __future__ import annotations
 
-# action -> surface forms, longest first within each list is not required (matching picks the longest)
+# action -> surface forms (matching picks the longest form that starts the clause)
 VERBS: dict[str, tuple[str, ...]] = {
-    "pick": ("pick up", "pick", "lift up", "lift", "grab", "grasp", "take", "raise", "hold up", "get"),
-    "put": ("put", "place", "set", "move", "drop", "transfer", "bring", "carry", "relocate", "store", "stick", "lay"),
+    "pick": (
+        "pick up",
+        "pick",
+        "lift up",
+        "lift",
+        "grab",
+        "grasp",
+        "take",
+        "raise",
+        "hold up",
+        "get",
+        "find",
+        "fetch",
+        "retrieve",
+    ),
+    "put": (
+        "put",
+        "place",
+        "set",
+        "move",
+        "drop",
+        "transfer",
+        "bring",
+        "carry",
+        "relocate",
+        "store",
+        "stick",
+        "lay",
+        "toss",
+        "pop",
+        "fit",
+        "stash",
+        "tuck",
+        "insert",
+        "load",
+        "pack",
+        "return",
+    ),
     "stack": ("stack", "pile"),
     "push": ("push", "shove", "nudge", "slide"),
-    "open": ("open", "pull open", "slide open"),
+    "open": ("open", "pull open", "slide open", "pull out"),
     "close": ("close", "shut", "push closed", "push shut"),
     "turn_on": ("turn on", "switch on", "ignite", "start", "light"),
     "turn_off": ("turn off", "switch off"),
@@ -36,14 +73,16 @@ DIRECTIONS: dict[str, tuple[str, ...]] = {
     "left": ("to the left", "left", "leftward", "leftwards"),
     "right": ("to the right", "right", "rightward", "rightwards"),
 }
-DETERMINERS = ("the", "a", "an", "this", "that", "these", "those", "some", "all")
-PRONOUNS = ("it", "them", "there")
-# Words that carry no action. ("then" is not one: it separates clauses.)
+DETERMINERS = ("the", "a", "an", "this", "that", "these", "those", "some", "all", "both")
+PRONOUNS = ("it", "them", "there", "that one", "this one")
+# Words and phrases that carry no action. ("then" is not one: it separates clauses.)
 FILLERS = (
     "please",
+    "kindly",
     "carefully",
     "gently",
     "slowly",
+    "quickly",
     "now",
     "also",
     "first",
@@ -51,8 +90,95 @@ FILLERS = (
     "next",
     "can you",
     "could you",
+    "would you mind",
     "would you",
+    "will you",
     "i want you to",
+    "i need you to",
+    "i would like you to",
     "go ahead and",
     "robot,",
+    "for me",
+    "all the way",
+    "fully",
+    "up there",
+    "over there",
+)
+# Things that hold other things: "to the basket" means into it; "basket: the butter" puts the butter in it.
+CONTAINERS = ("bowl", "basket", "tray", "drawer", "box", "bin", "mug", "cup", "pot", "hamper", "jar", "crate", "sink")
+# Flat regions an object is pushed into rather than carried to.
+REGIONS = ("area", "zone", "region", "square", "spot", "mark")
+# Surfaces the objects stand on anyway: "off the table" or "from the table" says nothing about which object.
+TABLE = ("table", "tabletop", "table top", "counter", "where it is", "where it sits", "its place")
+# Parts of an object that name the object itself as a destination ("the plate's centre" is the plate).
+SELF_PARTS = ("centre", "center", "middle", "surface", "top face", "top side", "top surface", "inside", "interior")
+# What a container holds: "the mug's beads", "the mug's contents" pour from the mug.
+CONTENTS = ("contents", "content", "beads", "liquid", "water")
+# Goal words after the object: the state the instruction wants, and the action that makes it.
+STATE_ACTIONS: tuple[tuple[str, str], ...] = (
+    ("switched on", "turn_on"),
+    ("turned on", "turn_on"),
+    ("switched off", "turn_off"),
+    ("turned off", "turn_off"),
+    ("pulled open", "open"),
+    ("opened", "open"),
+    ("open", "open"),
+    ("closed", "close"),
+    ("shut", "close"),
+    ("on", "turn_on"),
+    ("off", "turn_off"),
+    ("running", "turn_on"),
+    ("lit", "turn_on"),
+)
+HELD = ("up in the air", "in the air", "up in the gripper", "in the gripper", "in the hand", "up", "held up", "raised")
+# Participles that join an object to its goal in a wish ("I'd like the cup placed on the saucer").
+PARTICIPLES: dict[str, str] = {
+    "stacked": "stack",
+    "piled": "stack",
+    "pushed": "push",
+    "slid": "push",
+    "nudged": "push",
+    "placed": "put",
+    "put": "put",
+    "set": "put",
+    "sitting": "put",
+    "resting": "put",
+    "lying": "put",
+    "standing": "put",
+    "moved": "put",
+    "dropped": "put",
+    "stored": "put",
+    "lifted": "pick",
+    "held": "pick",
+    "raised": "pick",
+    "picked up": "pick",
+    "scrubbed": "scrub",
+    "wiped": "scrub",
+    "cleaned": "scrub",
+    "poured": "pour",
+    "emptied": "pour",
+}
+# Words that state a goal between the object and the place ("the apple belongs in the bowl").
+COPULAS = (
+    "should end up",
+    "should be",
+    "should go",
+    "should sit",
+    "should rest",
+    "should stay",
+    "must be",
+    "must go",
+    "needs to be",
+    "needs to go",
+    "has to be",
+    "has to go",
+    "ought to be",
+    "is supposed to be",
+    "belongs",
+    "belong",
+    "goes",
+    "go",
+    "ends up",
+    "end up",
+    "needs",
 )

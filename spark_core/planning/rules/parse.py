@@ -1,11 +1,16 @@
-"""Instruction -> clauses (action, object phrase, target phrase, tool, direction), with what was understood."""
+"""Instruction -> clauses (action, object phrase, target phrase, tool, source, direction), with pronouns
+resolved across clauses and sentences. Wording is first brought to imperative clauses (rewrite.py); each clause's
+action comes from its verb, its destination from the last destination preposition (what comes before it, including
+where the object is now, locates the object)."""
 
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
-from .lexicon import DETERMINERS, DIRECTIONS, FILLERS, FROM, IN, ON, PARTICLE_VERBS, PRONOUNS, VERBS, WITH
+from .lexicon import CONTAINERS, DIRECTIONS, FROM, IN, ON, PARTICLE_VERBS, PRONOUNS, VERBS, WITH
+from .phrases import noun_phrase, object_phrase
+from .rewrite import goal_to_action, imperatives
 
 
 class ParseError(ValueError):
@@ -14,10 +19,10 @@ class ParseError(ValueError):
 
 @dataclass(frozen=True)
 class Clause:
-    action: str  # a key of lexicon.VERBS
+    action: str  # a key of lexicon.VERBS, or "mention" (an object introduced for a later pronoun)
     obj: str | None = None  # object phrase (determiners stripped), or a pronoun
     target: str | None = None  # where it goes / what is poured into / what is scrubbed
-    relation: str | None = None  # on | in (for put/stack/push into)
+    relation: str | None = None  # on | in | near (for put/stack/push)
     tool: str | None = None  # scrub with
     source: str | None = None  # pour from
     direction: str | None = None  # forward | backward | left | right
@@ -25,35 +30,13 @@ class Clause:
     text: str = field(default="", compare=False)
 
 
-def normalise(text: str) -> str:
-    text = text.lower().strip()
-    text = re.sub(r"[!?.;:]+", " , ", text)
-    text = re.sub(r"\s+", " ", text)
-    text = text.replace("next to", "next_to")  # a relation, not the filler "next"
-    for f in sorted(FILLERS, key=len, reverse=True):
-        text = re.sub(rf"(^|\s|,){re.escape(f)}(\s|,|$)", r"\1 \2", text)
-    text = text.replace("next_to", "next to")
-    text = re.sub(r"\s+", " ", text).strip(" ,")
-    # "use the sponge to scrub the plate" -> "scrub the plate with the sponge"
-    return re.sub(r"^(?:use|take) (.+?) (?:to|and) (\w+) (.+)$", r"\2 \3 with \1", text)
-
-
-def noun_phrase(words: str) -> str:
-    """Strip determiners and tidy "drawer of the cabinet" -> "cabinet drawer"."""
-    ws = [w for w in words.replace(",", " ").split() if w not in DETERMINERS]
-    text = " ".join(ws).strip()
-    m = re.fullmatch(r"(.+?) (?:of|on|from) (.+)", text)
-    if m and m.group(2).split()[-1] not in ("stove", "table") or m and "drawer" in m.group(1):
-        text = f"{m.group(2)} {m.group(1)}"
-    return text
-
-
-def object_phrase(words: str) -> str:
-    """An object phrase that may locate the object by another ("bowl next to the plate"): determiners go, the
-    relation stays in place (noun_phrase's "drawer of the cabinet" reordering would scramble it)."""
-    if re.search(r"\b(between|next to|beside|near|on top of|on|in|inside|at|from)\b", words):
-        return " ".join(w for w in words.replace(",", " ").split() if w not in DETERMINERS)
-    return noun_phrase(words)
+# Destination prepositions, longest first; the last one in a clause starts its destination.
+_DEST = re.compile(
+    r"(?<!next )(?<!close )\b(to the front of|in front of|to the top of|on top of|onto|on to|into|inside of|inside|"
+    r"within|atop|over|in|on|to)\b"
+)
+_RELATION_OF = {"onto": "on", "on to": "on", "on top of": "on", "atop": "on", "over": "on", "on": "on"}
+_RELATIONS = ("between", "next to", "beside", "near", "by", "on top of", "on", "in", "inside")
 
 
 def _split_on(phrase: str, preps: tuple[str, ...]) -> tuple[str, str] | None:
@@ -82,9 +65,18 @@ def _distance(phrase: str) -> tuple[float | None, str]:
 
 
 def _match_verb(clause: str) -> tuple[str, str] | None:
-    m = re.fullmatch(r"(?:turn|switch) (.+) (on|off)", clause)  # "turn the stove on"
+    m = re.fullmatch(r"(?:turn|switch) (.+?) (?:to )?(on|off)", clause)  # "turn the stove on", "... knob to on"
     if m:
         return ("turn_on" if m.group(2) == "on" else "turn_off"), m.group(1)
+    m = re.fullmatch(r"(?:pull|slide) (.+) open", clause)
+    if m:
+        return "open", m.group(1)
+    m = re.fullmatch(r"push (.+) (?:closed|shut)", clause)
+    if m:
+        return "close", m.group(1)
+    m = re.fullmatch(r"there (?:is|are) (.+)", clause)
+    if m:
+        return "mention", m.group(1)
     best = None
     for action, forms in VERBS.items():
         for f in forms:
@@ -94,43 +86,106 @@ def _match_verb(clause: str) -> tuple[str, str] | None:
 
 
 def split_clauses(text: str) -> list[str]:
+    verbs = "|".join(re.escape(f) for forms in VERBS.values() for f in forms)
     parts = re.split(
         r"\s*,\s*(?:and\s+)?(?:then\s+)?|\s+(?:and\s+)?then\s+|\s+and\s+(?=(?:"
-        + "|".join(re.escape(f) for forms in VERBS.values() for f in forms)
-        + r")\b)|\s+after that\s+|\s+before\s+",
+        + verbs
+        + r"|turn|switch|use)\b)|\s+(?:and\s+)?after that\s+|\s+afterwards\s+|\s+before\s+",
         text,
     )
-    return [p.strip() for p in parts if p and p.strip()]
+    out: list[str] = []
+    for part in (p.strip() for p in parts if p and p.strip()):
+        if part in ("after that", "afterwards", "then", "and"):
+            continue
+        # "put A in B and C in D": a second object/target pair after "and" ("between the plate and the
+        # ramekin" is one phrase)
+        if " between " in f" {part} ":
+            out.append(part)
+        else:
+            out += [p for p in re.split(r"\s+and\s+(?=(?:the|a|an)\s)", part) if p.strip()]
+    return out
 
 
 def parse_instruction(instruction: str) -> list[Clause]:
-    text = normalise(instruction)
-    if not text:
+    texts = imperatives(instruction)
+    if not texts:
         raise ParseError("the instruction is empty")
     clauses: list[Clause] = []
-    raw = split_clauses(text)
-    # "put A in B and C in D": a second object/target pair after "and" with no verb of its own
-    expanded: list[str] = []
-    for part in raw:
-        # ("between the plate and the ramekin" is one phrase)
-        expanded += (
-            [p for p in re.split(r"\s+and\s+(?=(?:the|a|an)\s)", part) if p.strip()]
-            if " between " not in f" {part} "
-            else [part]
-        )
     previous: str | None = None
-    for part in expanded:
+    for part in (p for t in texts for p in split_clauses(t)):
+        part = re.sub(r"^use (.+?) to (\w+) (.+)$", r"\2 \3 with \1", part)  # "use the sponge to scrub the plate"
         verb = _match_verb(part)
         if verb is None:
-            if previous is None:
+            goal = goal_to_action(part)
+            verb = _match_verb(goal) if goal else None
+        verbless_carry = re.match(r"(?:the|a|an) \w.* (?:into|onto|on top of|inside|in|on) (?:the|a|an) \w", part)
+        if verb is None and previous in (None, "mention") and verbless_carry:
+            verb = ("put", part)  # "first the red block into the green tray", "I want the cup on the saucer"
+        if verb is None:
+            if previous is None or previous == "mention":
                 known = ", ".join(sorted({f for forms in VERBS.values() for f in forms[:2]}))
                 raise ParseError(f"no action I know in {part!r}; I understand verbs such as {known}")
-            action, rest = previous, part  # ellipsis: "..., then the red block on the green block"
-        else:
-            action, rest = verb
-        previous = action
-        clauses.append(_clause(action, rest, part))
+            verb = (previous, part)  # ellipsis: "..., then the red block on the green block"
+        action, rest = verb
+        clause = _clause(action, rest, part)
+        clause = _resolve(clause, clauses)
+        previous = clause.action
+        clauses.append(clause)
+    if all(c.action == "mention" for c in clauses):
+        raise ParseError(f"{instruction.strip()!r} names {', '.join(c.obj or '?' for c in clauses)} but no action")
     return clauses
+
+
+def _anchor(phrase: str | None) -> str | None:
+    """The object a phrase locates its object by ("bowl next to plate" -> "plate")."""
+    if not phrase:
+        return None
+    m = re.search(r"\b(?:" + "|".join(_RELATIONS) + r")\s+(.+)$", phrase)
+    return m.group(1).split(" and ")[0] if m else None
+
+
+def _resolve(c: Clause, before: list[Clause]) -> Clause:
+    """Pronouns across clauses: "it" as the object is the previous clause's object; as a destination, the most
+    recent thing mentioned that is not the object itself (the previous object, its destination, or what it was
+    located by); as a tool, the previous object. A push of something just picked up is a carry."""
+    if not before:
+        return c
+    prev = before[-1]
+    updates: dict = {}
+    obj = c.obj
+    if is_pronoun(obj):
+        obj = prev.obj
+        updates["obj"] = obj
+        if c.action == "push" and prev.action == "pick":
+            updates["action"] = "put"
+            if c.relation is None and c.target:
+                updates["relation"] = "on"
+    if is_pronoun(c.target):
+        for cand in (prev.obj, prev.target, _anchor(prev.obj)):
+            if cand and cand != obj and not is_pronoun(cand):
+                updates["target"] = cand
+                break
+    if is_pronoun(c.tool):
+        updates["tool"] = prev.obj
+    return replace(c, **updates) if updates else c
+
+
+def _destination(rest: str) -> tuple[str, str, str] | None:
+    """(object words, relation, destination words) at the last destination preposition, or None."""
+    matches = list(_DEST.finditer(rest))
+    if not matches:
+        return None
+    m = matches[-1]
+    prep, obj, target = m.group(1), re.sub(r"\s+and$", "", rest[: m.start()].strip()), rest[m.end() :].strip()
+    if not target:
+        return obj, ("in" if prep in IN else "on"), ""
+    if prep in ("to the front of", "in front of"):
+        return obj, "near", target
+    if prep == "to the top of":
+        return obj, "on", f"top of {target}"
+    if prep == "to":
+        return obj, ("in" if noun_phrase(target).split()[-1:] in ([c] for c in CONTAINERS) else "on"), target
+    return obj, ("in" if prep in IN else _RELATION_OF.get(prep, "on")), target
 
 
 def _clause(action: str, rest: str, text: str) -> Clause:
@@ -139,13 +194,20 @@ def _clause(action: str, rest: str, text: str) -> Clause:
         rest = rest[: -len(particle) - 1]
     if action == "pick" and rest.startswith("up "):
         rest = rest[3:]
+    rest = re.sub(r"\s+down(?=\s+(?:on|onto|in|into|from|with|to)\b|$)|^down\s+", " ", rest).strip()
+    rest = re.sub(r"\bover to\b", "to", rest)
+    rest = re.sub(r"\s+in front of (?:it|them)$", "", rest)
     distance, rest = _distance(rest)
-    direction, rest = _direction(rest)
+    direction = None
+    if action == "push":  # elsewhere "left" and "closer" pick out an object, not a way to move it
+        direction, rest = _direction(rest)
+    if action == "mention":
+        return Clause(action, obj=object_phrase(rest) or None, text=text)
     if action == "scrub":
         split = _split_on(rest, WITH)
         obj, tool = split if split else (rest, None)
         off = _split_on(obj, ("off of", "off", "from"))
-        obj = re.sub(r"\s+clean$", "", off[0] if off else obj)  # "wipe the dirt off the table": the dirt goes
+        obj = re.sub(r"\s+(?:clean|down)$", "", off[0] if off else obj)  # "wipe the dirt off the table": the dirt
         return Clause(action, target=noun_phrase(obj), tool=noun_phrase(tool) if tool else None, text=text)
     if action == "pour":
         into = _split_on(rest, IN) or _split_on(rest, ON)
@@ -160,34 +222,41 @@ def _clause(action: str, rest: str, text: str) -> Clause:
             source=source,
             text=text,
         )
-    if action == "pick":  # "pick the bowl on the stove": where it is picks out which bowl; keep it in the phrase
-        return Clause(action, obj=object_phrase(rest) or None, direction=direction, distance_m=distance, text=text)
-    for relation, preps in (("in", IN), ("on", ON)):
-        split = _split_on(rest, preps)
+    if action == "pick":
+        # "take the block into the basket": a destination makes it a carry; "pick the bowl on the stove": where
+        # it is picks out which bowl, and stays in the phrase
+        if not re.search(r"(?<!next )(?<!close )\b(into|onto|to)\b", rest):
+            return Clause(action, obj=object_phrase(rest) or None, direction=direction, distance_m=distance, text=text)
+        action = "put"
+    if action in ("open", "close", "turn_on", "turn_off"):
+        return Clause(action, obj=noun_phrase(rest) or None, text=text)
+    if action == "push" and not re.search(r"\b(into|onto|in|on)\b", rest):
+        split = _split_on(rest, ("to the front of", "next to", "to", "toward", "towards", "beside"))
         if split:
             obj, target = split
             return Clause(
                 action,
-                obj=noun_phrase(obj) or None,
-                target=noun_phrase(target) or None,
-                relation=relation,
+                obj=object_phrase(obj),
+                target=noun_phrase(target),
+                relation="near",
                 direction=direction,
                 distance_m=distance,
                 text=text,
             )
-    split = _split_on(rest, ("to the front of", "next to", "to", "toward", "towards", "beside"))
-    if split and action in ("put", "push"):
-        obj, target = split
+        return Clause(action, obj=object_phrase(rest) or None, direction=direction, distance_m=distance, text=text)
+    dest = _destination(rest)
+    if dest:
+        obj, relation, target = dest
         return Clause(
             action,
-            obj=noun_phrase(obj),
-            target=noun_phrase(target),
-            relation="near",
+            obj=object_phrase(obj) or None,
+            target=noun_phrase(target) or None,
+            relation=relation,
             direction=direction,
             distance_m=distance,
             text=text,
         )
-    return Clause(action, obj=noun_phrase(rest) or None, direction=direction, distance_m=distance, text=text)
+    return Clause(action, obj=object_phrase(rest) or None, direction=direction, distance_m=distance, text=text)
 
 
 def is_pronoun(phrase: str | None) -> bool:

@@ -9,9 +9,11 @@ import numpy as np
 
 from ...grammar import PlanError, check_plan, to_yaml
 from ..protocol import PlanRequest, PlanResult
+from .lexicon import REGIONS
 from .parse import Clause, ParseError, is_pronoun, parse_instruction
 
 POUR_ANGLE_RAD = 2.2
+HANDLE_REACH_M = 0.25  # a handle further than this from the thing it opens belongs to something else
 DIR_VECTORS = {"forward": (1.0, 0.0), "backward": (-1.0, 0.0), "left": (0.0, 1.0), "right": (0.0, -1.0)}
 
 
@@ -72,12 +74,16 @@ class RulesPlanner:
     def _compose(self, clauses: list[Clause], request: PlanRequest) -> list[dict]:
         scene = request.scene.keypoints
         seen = ", ".join(scene) or "nothing"
+        understood = "; ".join(_describe(c) for c in clauses)
 
         def need(phrase: str | None, role: str, clause: Clause) -> str:
             if not phrase:
                 raise CannotPlan(f"{clause.text!r}: which {role}? (understood: {_describe(clause)})")
             if phrase not in scene:
-                raise CannotPlan(f"could not find {phrase!r} in the scene (perception found: {seen})")
+                raise CannotPlan(
+                    f"could not find {phrase!r} in the scene (perception found: {seen}): no single object matches "
+                    f"it, either none is there or several are and nothing says which (understood: {understood})"
+                )
             return phrase
 
         out: list[dict] = []
@@ -89,7 +95,15 @@ class RulesPlanner:
             target = (last_container or last_object) if is_pronoun(c.target) else c.target
             if target is None and c.relation == "in" and c.text.rstrip().endswith(("inside", "in", "into")):
                 target = last_container  # "open the drawer and put the bowl inside"
-            if c.action == "pick":
+            if c.action == "mention":  # "there's a cup on the table; put it ...": only names the cup
+                pass
+            elif c.action == "put" and c.relation in ("in", "on") and _is_region(target):
+                c = Clause("push", obj=obj, target=target, relation="in", text=c.text)  # into a flat area
+                o = need(obj, "object", c)
+                need(target, "region", c)
+                direction, distance = self._push_geometry(c, o, target, scene)
+                out.append(_prim("push_object", keypoint_label=o, direction=direction, distance=distance))
+            elif c.action == "pick":
                 o = need(obj, "object", c)
                 inside = re.search(r"\b(in|inside)\b", o) is not None  # out of a drawer or a box: clear its walls
                 out.append(_prim("pick", keypoint_label=o, **({"lift_height": 0.2} if inside else {})))
@@ -117,6 +131,12 @@ class RulesPlanner:
                 handle = next(
                     (h for h in (f"{o} handle", "drawer handle" if "drawer" in o else "") if h in scene), None
                 )
+                gap_m = np.linalg.norm(scene[handle].position_m - scene[o].position_m) if handle else 0.0
+                if gap_m > HANDLE_REACH_M:
+                    raise CannotPlan(
+                        f"cannot {c.action} {o!r}: the handle perception found ({handle!r}) is not on it "
+                        f"({gap_m:.2f} m away)"
+                    )
                 if handle is None:
                     raise CannotPlan(
                         f"cannot {c.action} {o!r}: perception found no handle on it (looked for {o + ' handle'!r}; "
@@ -153,13 +173,13 @@ class RulesPlanner:
                     raise CannotPlan(f"{c.text!r}: scrub with what? say e.g. 'with the sponge'")
                 else:
                     tool = need(c.tool, "tool", c)
+                    out += [] if held == tool else [_prim("pick", keypoint_label=tool)]  # already in hand
                     out += [
-                        _prim("pick", keypoint_label=tool),
                         _prim("constrained_scrub", target_label=t),
                         _prim("move_relative", dz=0.10),
                         _prim("release"),
                     ]
-            held = obj if c.action == "pick" else None
+            held = obj if c.action == "pick" else held if c.action == "mention" else None
             last_object = obj or last_object
         if clauses and clauses[-1].action in ("open", "close", "turn_on", "turn_off"):
             out.append(_prim("go_home"))  # leave the fixture's neighbourhood
@@ -211,6 +231,10 @@ def _two_arm_branches(steps: list[dict], request: PlanRequest) -> list[dict] | N
     if not all(branches.values()):
         return None
     return [{"type": "parallel", "children": [{"type": "sequence", "arm": a, "children": branches[a]} for a in arms]}]
+
+
+def _is_region(phrase: str | None) -> bool:
+    return phrase is not None and phrase.split()[-1] in REGIONS
 
 
 def _describe(c: Clause) -> str:

@@ -1,0 +1,121 @@
+"""Noun phrases as perception should read them: determiners and possessives tidied, an object located by what
+it rests on or stands beside kept as a relation, ordinals and comparatives turned into the spatial qualifiers
+perception knows ("the farther of the two bowls" -> "farthest bowl")."""
+
+from __future__ import annotations
+
+import re
+
+from .lexicon import CONTENTS, DETERMINERS, SELF_PARTS, TABLE
+
+# "the closer of the two mugs" -> "closest mug"; "the bowl nearer to the robot" -> "nearest bowl"
+COMPARATIVES = {
+    "farther": "farthest",
+    "further": "farthest",
+    "closer": "closest",
+    "nearer": "nearest",
+    "left": "leftmost",
+    "right": "rightmost",
+    "front": "nearest",
+    "back": "farthest",
+    "upper": "top",
+    "lower": "bottom",
+    "higher": "top",
+    "taller": "top",
+}
+LOCATORS = ("between", "next to", "beside", "near", "by", "on top of", "on", "in", "inside", "at", "from", "under")
+_PARTICIPLE = re.compile(
+    r"\b(?:(?:that|which) (?:is|are|sits|rests|stands|lies)|sitting|resting|standing|lying|located|placed|found|"
+    r"kept)\s+(?=(?:not\s+)?(?:" + "|".join(re.escape(x) for x in LOCATORS) + r")\b)"
+)
+_TABLE_TAIL = re.compile(
+    r"\s+(?:on|off|off of|from|at)\s+(?:the\s+)?(?:" + "|".join(TABLE) + r")\b(?!\s+(?:center|centre|middle))"
+)
+_CONTAINER_OF = re.compile(r"\b(carton|jar|bottle|box|can|tin|stick|pack|packet|tub|bag|cup|piece)s? of (.+)$")
+
+
+def singular(word: str) -> str:
+    if word.endswith("ies") and len(word) > 4:
+        return word[:-3] + "y"
+    if word.endswith(("xes", "ches", "shes")):
+        return word[:-2]
+    if word.endswith("s") and not word.endswith("ss") and len(word) > 3:
+        return word[:-1]
+    return word
+
+
+def strip_determiners(words: str) -> str:
+    return " ".join(w for w in words.replace(",", " ").split() if w not in DETERMINERS)
+
+
+def possessive(text: str) -> str:
+    """ "cabinet's top drawer" -> "cabinet top drawer"; "plate's centre" -> "plate"; "mug's beads" -> "mug"."""
+    m = re.search(r"\b([\w ]+?)'s? (.+)$", text)
+    if not m:
+        return text
+    owner, part = m.group(1), m.group(2)
+    if part in SELF_PARTS or part in CONTENTS:
+        return owner
+    return f"{owner} {part}"
+
+
+def comparative(text: str) -> str:
+    """ "farther of two black bowls" -> "farthest black bowl"; "bowl nearer to the robot" -> "nearest bowl"."""
+    m = re.fullmatch(r"(\w+) of (?:the )?(?:two|three|both|all) (.+)", text)
+    if m and m.group(1) in COMPARATIVES:
+        return f"{COMPARATIVES[m.group(1)]} {' '.join(singular(w) for w in m.group(2).split())}"
+    m = re.fullmatch(r"(.+?) (\w+) (?:to|from) (?:the )?(?:robot|you|me)", text)
+    if m and m.group(2) in ("nearer", "closer", "nearest", "closest"):
+        return f"nearest {m.group(1)}"
+    if m and m.group(2) in ("farther", "further", "farthest", "furthest"):
+        return f"farthest {m.group(1)}"
+    return text
+
+
+def locator(text: str) -> str:
+    """Where an object is, as a relation perception can use: "bowl sitting on the stove" -> "bowl on stove";
+    "bowl from the stove" -> "bowl on stove"; "bowl out of the top drawer" -> "bowl in top drawer"; the table
+    itself says nothing ("block off the table" -> "block")."""
+    text = _PARTICIPLE.sub("", text)
+    text = _TABLE_TAIL.sub("", text)
+    text = re.sub(r"\bfrom between\b", "between", text)
+    text = re.sub(r"\bout of\b", "in", text)
+    text = re.sub(r"\boff of\b|\boff\b", "on", text)
+    if not re.search(r"\b(center|centre|middle)\b", text):
+        text = re.sub(r"\bfrom\b", "on", text)
+    return text
+
+
+def _reorder_container(m: re.Match) -> str:
+    return f"{m.group(2)} {m.group(1)}" if _CONTAINER_OF.search(m.group(0)) else m.group(0)
+
+
+def object_phrase(words: str) -> str:
+    """An object phrase for perception: determiners go; a relation to another object stays in place."""
+    text = strip_determiners(locator(" ".join(words.split())))
+    text = re.sub(r"'s\b", "", text)
+    text = comparative(text)
+    text = re.sub(r"^(?:other|one) |(?<=\w) ones?$", "", text).strip()
+    text = re.sub(r"^(.+?) (?:that|which) (?:is|are) (\w+)$", r"\2 \1", text)  # "peg that is square"
+    if re.search(r"\b(between|next to|beside|near|by|on top of|on|in|inside|at|from|under|not)\b", text):
+        # the object it is located by reads as a noun phrase too ("next to the box of cookies" -> "cookies box")
+        return re.sub(r"\b(\w+) of (\w+)$", _reorder_container, text)
+    return noun_phrase(text)
+
+
+def noun_phrase(words: str) -> str:
+    """Strip determiners and tidy "drawer of the cabinet" -> "cabinet drawer", "cabinet's drawer" -> the same,
+    "the plate's centre" -> "plate"."""
+    text = possessive(strip_determiners(words).strip())
+    text = re.sub(r"^(?:other|one) |(?<=\w) ones?$", "", text).strip()
+    m = re.fullmatch(r"(?:contents?|beads) of (.+)", text)
+    if m:
+        return m.group(1)
+    m = _CONTAINER_OF.search(text)
+    if m and m.start() == 0:
+        return f"{m.group(2)} {m.group(1)}"  # "bottle of ketchup" -> "ketchup bottle"
+    m = re.fullmatch(r"(.+?) (?:of|on|from) (.+)", text)
+    if m and (m.group(2).split()[-1] not in ("stove", "table") or "drawer" in m.group(1)):
+        part = m.group(1)
+        return m.group(2) if part in SELF_PARTS else f"{m.group(2)} {part}"
+    return text

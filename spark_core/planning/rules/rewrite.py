@@ -1,0 +1,211 @@
+"""An instruction as imperative clauses: politeness and trailing clauses dropped, a goal stated as a state or a
+wish ("the apple belongs in the bowl", "I'd like the stove on", "tray: both cups") turned into the action that
+makes it true, and a purpose that names the destination ("... so that it sits in front of the lamp") kept."""
+
+from __future__ import annotations
+
+import re
+
+from .lexicon import CONTAINERS, CONTENTS, COPULAS, FILLERS, HELD, PARTICIPLES, STATE_ACTIONS, VERBS
+
+CONTRACTIONS = {
+    "there's": "there is",
+    "here's": "here is",
+    "it's": "it is",
+    "that's": "that is",
+    "i'd": "i would",
+    "i'm": "i am",
+    "you'll": "you will",
+    "you'd": "you would",
+    "let's": "let us",
+    "don't": "do not",
+    "doesn't": "does not",
+    "isn't": "is not",
+}
+ACTION_WORDS = {
+    "pick": "pick up",
+    "put": "put",
+    "stack": "stack",
+    "push": "push",
+    "open": "open",
+    "close": "close",
+    "turn_on": "turn on",
+    "turn_off": "turn off",
+    "scrub": "scrub",
+    "pour": "pour",
+}
+_VERB_FORMS = sorted({f for forms in VERBS.values() for f in forms} | {"turn", "switch", "use", "there is"}, key=len)
+_FIRST_WORDS = {f.split()[0] for f in _VERB_FORMS}
+_TRAILING = re.compile(
+    r"(?:\s*,\s*|\s+)(?:and\s+)?(?:then\s+)?(?:keep|leave|hold|make sure|let go|release|stop|ensure|check|"
+    r"(?:put|set|place) (?:it|them) back)\b.*$"
+)
+_PURPOSE = re.compile(r"(?:\s*,\s*|\s+)(?:so(?: that)?|in order that|until)\s+(.*)$")
+_PURPOSE_PLACE = re.compile(
+    r"\b(?:sits?|is|are|ends? up|rests?|lands?|stays?|goes|fall|falls|drops?)\s+"
+    r"(in front of|next to|beside|inside|into|in|on top of|onto|on)\s+(.+)$"
+)
+_DESTINATION = re.compile(r"\b(in front of|into|onto|inside|in|on top of|on|to|over)\b")
+
+
+def starts_with_verb(text: str) -> bool:
+    first = text.split(" ", 1)[0]
+    return first in _FIRST_WORDS and any(text == f or text.startswith(f + " ") for f in _VERB_FORMS)
+
+
+def sentences(instruction: str) -> list[str]:
+    """Lower case, contractions spelled out, fillers gone; one string per sentence."""
+    text = instruction.lower().replace("’", "'").strip()
+    for short, long in CONTRACTIONS.items():
+        text = re.sub(rf"\b{re.escape(short)}", long, text)
+    text = re.sub(r"\bi would (like|love)\b(?! you to)", r"i want", text)
+    text = re.sub(r"[!?;]+|\.(?=\s|$)", " . ", text)
+    text = text.replace("next to", "next_to")  # a relation, not the filler "next"
+    for f in sorted(FILLERS, key=len, reverse=True):
+        text = re.sub(rf"(^|\s|,|\.){re.escape(f)}(?=\s|,|\.|$)", r"\1 ", text)
+    text = text.replace("next_to", "next to")
+    text = re.sub(r"\s+", " ", text)
+    return [s.strip(" ,") for s in text.split(" . ") if s.strip(" ,.")]
+
+
+def _gerund(text: str) -> str:
+    """ "putting the cup on the plate" -> "put the cup on the plate" (after "would you mind")."""
+    first, _, rest = text.partition(" ")
+    if not first.endswith("ing"):
+        return text
+    for stem in (first[:-3], first[:-3] + "e", first[:-4]):
+        if stem in _FIRST_WORDS:
+            return f"{stem} {rest}".strip()
+    return text
+
+
+def _head(phrase: str) -> str:
+    words = phrase.split()
+    return words[-1] if words else ""
+
+
+def _purpose(text: str) -> str:
+    """Drop a trailing purpose, unless it names where the object should end up and the clause does not."""
+    m = _PURPOSE.search(text)
+    if not m:
+        return text
+    main, purpose = text[: m.start()], m.group(1)
+    place = _PURPOSE_PLACE.search(purpose)
+    if place and starts_with_verb(main) and not _DESTINATION.search(main.split(" ", 1)[-1]):
+        prep = {"in front of": "to the front of", "next to": "next to", "beside": "next to"}.get(place.group(1), "into")
+        if place.group(1) in ("on", "onto", "on top of"):
+            prep = "onto"
+        return f"{main} {prep} {place.group(2)}"
+    return main
+
+
+def _colon(left: str, right: str) -> list[str]:
+    """ "plate: the red block", "red block: up in the gripper", "sort the blocks: red into the green tray and
+    blue into the yellow tray", "a tower: blue at the bottom, green in the middle, red on top"."""
+    items = [i for i in re.split(r"\s*,\s*(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+", right) if i]
+    if re.search(r"\btower\b", left):
+        placed: dict[str, list[str]] = {"bottom": [], "middle": [], "top": []}
+        for item in items:
+            m = re.fullmatch(r"(.+?) (?:at the bottom|on the bottom|in the middle|on top|at the top)", item)
+            if not m:
+                return [f"stack {i}" for i in items]
+            where = "bottom" if "bottom" in item else "middle" if "middle" in item else "top"
+            placed[where].append(m.group(1))
+        order = [x for k in ("bottom", "middle", "top") for x in placed[k]]
+        return [f"stack {a} on {b}" for b, a in zip(order, order[1:])]
+    if starts_with_verb(right):
+        return [f"there is {left}", right]
+    if starts_with_verb(left):  # "sort the blocks: red into the green tray ...": each item is one carry
+        return [f"put {i}" for i in items]
+    if right in HELD or right.startswith(("up ", "in the gripper", "in the air")):
+        return [f"pick up {left}"]
+    prep = "in" if _head(left) in CONTAINERS else "on"
+    return [f"put {i} {prep} {left}" for i in items]
+
+
+def goal_to_action(text: str) -> str | None:
+    """The imperative for a stated goal, or None when `text` states none this reader knows."""
+    wish = re.fullmatch(r"i (?:want|need)\s+(.+)", text)
+    body = wish.group(1) if wish else text
+    copulas = "|".join(re.escape(c) for c in sorted(COPULAS, key=len, reverse=True))
+    m = re.fullmatch(rf"(.+?)\s+(?:{copulas})(?:\s+be)?\s*(.*)", body)
+    if m:
+        subject, predicate = m.group(1), m.group(2).strip()
+    else:
+        states = "|".join(re.escape(s) for s, _ in STATE_ACTIONS)
+        s = re.fullmatch(rf"(.+?)\s+({states})", body)
+        parts = "|".join(re.escape(p) for p in sorted(PARTICIPLES, key=len, reverse=True))
+        p = re.fullmatch(rf"(.+?)\s+((?:{parts})\b.*)", body)
+        if s and not p:
+            subject, predicate = s.group(1), s.group(2)
+        elif p:
+            subject, predicate = p.group(1), p.group(2)
+        elif wish and _DESTINATION.search(body):
+            return body  # "I want the cup on the saucer": the parser reads "the cup on the saucer" as a carry
+        else:
+            return None
+    return _predicate(subject.strip(), predicate)
+
+
+def _predicate(subject: str, predicate: str) -> str | None:
+    noun_phrase = r"(?:the|a|an|this|that|these|those|both|my|your|some) (?:(?!the\b|a\b|an\b)[\w' ])+"
+    if not re.fullmatch(rf"{noun_phrase}|it|they|that one|this one", subject):
+        return None  # a goal is said of a noun phrase ("the apple belongs ..."), not of a word salad
+    if re.search(r"\b(?:in|on|into|onto|of|to)$", subject):
+        return None
+    state = dict(STATE_ACTIONS).get(predicate)
+    if state:
+        return f"{ACTION_WORDS[state]} {subject}"
+    if predicate in HELD or re.match(r"(?:up\b|in the air|in the gripper|held|lifted|raised|picked up)", predicate):
+        return f"pick up {subject}"
+    action = "put"
+    for participle in sorted(PARTICIPLES, key=len, reverse=True):
+        if predicate == participle or predicate.startswith(participle + " "):
+            action, predicate = PARTICIPLES[participle], predicate[len(participle) :].strip()
+            break
+    predicate = re.sub(r"^(?:down|up|back)\s+", "", predicate)
+    if action == "pick":
+        return f"pick up {subject}"
+    if predicate.startswith("in front of"):
+        return f"push {subject} to the front of {predicate[len('in front of') :].strip()}"
+    if action == "put" and _head(subject) in CONTENTS or re.search(r"'s? (?:contents?|beads)$", subject):
+        action = "pour"
+    if not predicate or not _DESTINATION.match(predicate) and action in ("put", "stack", "pour"):
+        return None
+    return f"{ACTION_WORDS[action]} {subject} {predicate}"
+
+
+def imperatives(instruction: str) -> list[str]:
+    """The instruction as a list of imperative strings (each may still hold several clauses)."""
+    out: list[str] = []
+    for sentence in sentences(instruction):
+        s = _gerund(sentence)
+        first = re.fullmatch(
+            r"(.*\b(?:in|into|inside) (?:the )?(.+?)),? which you (?:will |would )?(?:need to|have to|must) open"
+            r"(?: it)?(?: first)?",
+            s,
+        )
+        if first:  # "the bowl should end up in the top drawer, which you'll need to open first"
+            out.append(f"open the {first.group(2)}")
+            s = first.group(1)
+        s = re.sub(r"^the other (.+?),? not the one (.+?),\s*", r"the \1 not \2 ", s)
+        s = re.sub(r",?\s*the one (?:on|sitting on|lying on|that is on) the table,?", " ", s).strip()
+        s = _TRAILING.sub("", s)
+        s = _purpose(s)
+        if ":" in s:
+            left, right = (x.strip() for x in s.split(":", 1))
+            out += _colon(left, right)
+            continue
+        pair = re.fullmatch(r"([^,]+),\s*([^,]+)", s)
+        if pair and not any(starts_with_verb(x) or _DESTINATION.search(x) for x in pair.groups()):
+            out += _colon(pair.group(2), pair.group(1))  # "green block, basket"
+            continue
+        if not starts_with_verb(s):
+            opened = re.search(r"\b(?:in|into|inside) the open (\w+(?: \w+)?)$", s)
+            goal = goal_to_action(re.sub(r"\bthe open\b", "the", s))
+            if goal:
+                if opened:
+                    out.append(f"open the {opened.group(1)}")
+                s = goal
+        out.append(s)
+    return [s for s in out if s]

@@ -1,0 +1,62 @@
+"""The wording corpus and `spark bench wording`'s planning check: the split is the documented fixed rule, and the
+check tells a plan with the official plan's effect from one that carries the wrong thing or refuses."""
+
+import hashlib
+
+import numpy as np
+import pytest
+
+from spark_core.bench import wording
+from spark_core.perception import Keypoint
+from spark_core.planning import SceneView
+
+
+def test_the_corpus_is_large_enough_split_by_its_hash_rule_and_names_real_tasks():
+    dev, test = wording.load("dev"), wording.load("test")
+    assert len(dev) + len(test) >= 300 and abs(len(dev) - len(test)) < 0.1 * (len(dev) + len(test))
+    for e in dev + test:
+        odd = hashlib.sha256(f"{e['task']}|{e['instruction']}".encode()).digest()[0] % 2
+        assert e["half"] == ("test" if odd else "dev"), e["id"]
+        assert e["expect"] == "goal" or e["expect"] == f"refuse:{e['style']}"
+    assert len({e["id"] for e in dev + test}) == len(dev) + len(test)
+    styles = {e["style"] for e in dev + test}
+    assert {"goal_state", "trailing", "source_dest", "located", "ordinal", "possessive", "synonym"} <= styles
+    assert {"pronoun", "multistep", "nonsense", "absent", "ambiguous"} <= styles
+    with pytest.raises(ValueError, match="unknown corpus half"):
+        wording.load("train")
+
+
+def _view(**where):
+    return SceneView({k.replace("_", " "): Keypoint(k, np.array(v, float), np.full(3, 0.04)) for k, v in where.items()})
+
+
+def _plan(*leaves):
+    return {"tree": {"type": "sequence", "children": [{"type": t, "params": p} for t, p in leaves]}}
+
+
+def test_a_stack_has_the_effect_of_a_pick_and_place_on_the_same_things():
+    view = _view(red=(0.5, 0, 0.02), blue=(0.5, 0.2, 0.02), crimson=(0.5, 0.001, 0.02), navy=(0.5, 0.2, 0.02))
+    stack = wording.signature(_plan(("stack", {"keypoint_label": "red", "target_label": "blue"})), view)
+    carry = wording.signature(
+        _plan(("pick", {"keypoint_label": "crimson"}), ("place", {"target_label": "navy"}), ("go_home", {})), view
+    )
+    assert wording.same_effect(stack, carry)
+    wrong = wording.signature(_plan(("pick", {"keypoint_label": "blue"}), ("place", {"target_label": "red"})), view)
+    assert not wording.same_effect(stack, wrong)
+    turned_off = wording.signature(_plan(("turn_knob", {"keypoint_label": "red", "angle": -90.0})), view)
+    turned_on = wording.signature(_plan(("turn_knob", {"keypoint_label": "red", "angle": 90.0})), view)
+    assert not wording.same_effect(turned_on, turned_off)
+
+
+def test_planning_check_on_a_real_scene_tells_right_from_wrong_and_refusals():
+    entries = [
+        {"id": "a", "style": "synonym", "suite": "builtin", "task": "block_on_plate", "expect": "goal"},
+        {"id": "b", "style": "goal_state", "suite": "builtin", "task": "block_on_plate", "expect": "goal"},
+        {"id": "c", "style": "absent", "suite": "builtin", "task": "block_on_plate", "expect": "refuse:absent"},
+    ]
+    texts = ["set the crimson cube down on the dish", "the plate belongs on the red block", "put the giraffe on it"]
+    rows = wording.plan_entries([dict(e, instruction=t, half="dev") for e, t in zip(entries, texts)])
+    assert [r["correct"] for r in rows] == [True, False, True]
+    assert rows[2]["planned"] is False and "giraffe" in rows[2]["error"]
+    s = wording.summary(rows)
+    assert s["planning_success"] == 0.5 and s["nonsense_absent_refused"] == 1.0

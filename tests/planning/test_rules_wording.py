@@ -1,0 +1,135 @@
+"""The rules planner reads instructions the way people word them: goals stated as states or wishes, trailing
+clauses and purposes, sources and destinations in one clause, objects located by others, comparatives,
+possessives, containers named for their contents, pronouns across sentences; and it refuses clearly.
+
+(Examples here are written for these tests; none comes from the frozen test half of data/wording/.)"""
+
+import numpy as np
+import pytest
+
+from spark_core.grammar import plan_to_dict
+from spark_core.perception import Keypoint
+from spark_core.planning import PlanRequest, SceneView
+from spark_core.planning.rules import ParseError, RulesPlanner, parse_instruction
+
+
+def clauses(text):
+    return [(c.action, c.obj, c.relation, c.target) for c in parse_instruction(text)]
+
+
+@pytest.mark.parametrize(
+    "text,expected",
+    [
+        # the goal as a state or a wish
+        ("the apple belongs in the bowl", [("put", "apple", "in", "bowl")]),
+        ("I'd like the cup on the saucer", [("put", "cup", "on", "saucer")]),
+        ("the lamp should be switched on", [("turn_on", "lamp", None, None)]),
+        ("the box should be open", [("open", "box", None, None)]),
+        ("I want the mug lifted off the counter", [("pick", "mug", None, None)]),
+        ("saucer: the cup", [("put", "cup", "on", "saucer")]),
+        ("tray: both cups", [("put", "cups", "in", "tray")]),
+        ("the cup should be stacked on the saucer", [("stack", "cup", "on", "saucer")]),
+        # trailing clauses and purposes
+        ("put the cup on the saucer and keep it upright", [("put", "cup", "on", "saucer")]),
+        ("drop the pen in the cup so it is out of the way", [("put", "pen", "in", "cup")]),
+        ("push the lamp so that it sits in front of the box", [("push", "lamp", "near", "box")]),
+        # a source and a destination in one clause; objects located by what they rest on or stand beside
+        ("move the mug from the shelf onto the tray", [("put", "mug on shelf", "on", "tray")]),
+        ("carry the pen off the table and into the cup", [("put", "pen", "in", "cup")]),
+        (
+            "take the bowl sitting on the stove and put it on the plate",
+            [("pick", "bowl on stove", None, None), ("put", "bowl on stove", "on", "plate")],
+        ),
+        # comparatives, possessives, other nouns
+        ("put the closer of the two mugs on the tray", [("put", "closest mug", "on", "tray")]),
+        ("open the shelf's upper drawer", [("open", "shelf upper drawer", None, None)]),
+        ("put the cup on the saucer's centre", [("put", "cup", "on", "saucer")]),
+        ("put a carton of milk in the basket", [("put", "milk carton", "in", "basket")]),
+        # pronouns across sentences, several steps
+        ("grab the cup. it goes on the saucer", [("pick", "cup", None, None), ("put", "cup", "on", "saucer")]),
+        (
+            "there's a pen by the lamp; put it in the cup",
+            [("mention", "pen by lamp", None, None), ("put", "pen by lamp", "in", "cup")],
+        ),
+        (
+            "first the pen into the cup, then the spoon into the bowl",
+            [("put", "pen", "in", "cup"), ("put", "spoon", "in", "bowl")],
+        ),
+        (
+            "the box should hold the pen, which you'll need to open first",
+            None,  # no goal this reader knows: see test below
+        ),
+    ],
+)
+def test_wording(text, expected):
+    if expected is None:
+        with pytest.raises(ParseError):
+            parse_instruction(text)
+        return
+    assert clauses(text) == expected
+
+
+def test_a_destination_that_must_be_opened_first_comes_after_opening_it():
+    assert clauses("the spoon should end up in the top drawer, which you'll need to open first") == [
+        ("open", "top drawer", None, None),
+        ("put", "spoon", "in", "top drawer"),
+    ]
+
+
+def test_a_pronoun_destination_is_the_last_other_thing_mentioned():
+    got = clauses("pick up the bowl next to the plate and set it on top of it")
+    assert got == [("pick", "bowl next to plate", None, None), ("put", "bowl next to plate", "on", "plate")]
+
+
+def test_left_and_closer_pick_out_an_object_outside_a_push():
+    assert clauses("put the left mug on the tray") == [("put", "left mug", "on", "tray")]
+    (push,) = parse_instruction("push the mug 10 cm to the left")
+    assert (push.direction, push.distance_m) == ("left", pytest.approx(0.10))
+
+
+@pytest.mark.parametrize("text", ["sing a song", "the the the", "make the red block fly", "cup bowl the in put in"])
+def test_nonsense_is_not_read_as_an_action(text):
+    with pytest.raises(ParseError, match="no action I know"):
+        parse_instruction(text)
+
+
+def kp(label, xyz, size=(0.04, 0.04, 0.04)):
+    return Keypoint(label, np.array(xyz, float), np.array(size, float))
+
+
+def prims(result):
+    return [(c["type"], c.get("params", {})) for c in plan_to_dict(result.plan)["tree"]["children"]]
+
+
+def test_a_goal_in_a_flat_area_is_a_push():
+    view = SceneView({"red block": kp("red block", (0.42, 0, 0.02)), "green area": kp("green area", (0.6, 0, 0))})
+    res = RulesPlanner().plan(PlanRequest("the red block should end up in the green area", view))
+    assert res.ok, res.error
+    assert prims(res) == [
+        ("push_object", {"keypoint_label": "red block", "direction": "forward", "distance": pytest.approx(0.18)})
+    ]
+
+
+def test_a_tool_already_in_hand_is_not_picked_again():
+    view = SceneView({"sponge": kp("sponge", (0.4, 0.1, 0.02)), "plate": kp("plate", (0.5, -0.1, 0.01))})
+    res = RulesPlanner().plan(PlanRequest("pick up the sponge and use it to clean the plate", view))
+    assert [p for p, _ in prims(res)] == ["pick", "constrained_scrub", "move_relative", "release"]
+
+
+def test_a_handle_far_from_the_thing_to_open_is_refused():
+    view = SceneView({"red block": kp("red block", (0.4, 0, 0.02)), "red block handle": kp("h", (0.7, 0.3, 0.1))})
+    res = RulesPlanner().plan(PlanRequest("open the red block", view))
+    assert not res.ok and "is not on it" in res.error
+
+
+def test_an_object_perception_could_not_single_out_is_refused_saying_what_was_understood_and_seen():
+    view = SceneView({"plate": kp("plate", (0.6, 0, 0.01))})
+    res = RulesPlanner().plan(PlanRequest("put the bowl on the plate", view))
+    assert not res.ok
+    assert "could not find 'bowl'" in res.error and "perception found: plate" in res.error
+    assert "several are and nothing says which" in res.error and "understood: put obj=bowl" in res.error
+
+
+def test_mentioning_objects_without_an_action_is_refused():
+    with pytest.raises(ParseError, match="but no action"):
+        parse_instruction("there is a cup on the table")
