@@ -26,6 +26,7 @@ def register(sub) -> None:
             "embodiments",
             "grounding",
             "paraphrases",
+            "wording",
             "ik",
             "speed",
             "api",
@@ -186,6 +187,28 @@ def _export_section(r: dict, command: str) -> str:
     return export_bench.section(r, command)
 
 
+def _wording(args: argparse.Namespace, command: str) -> str:
+    """Both corpus halves planned, then the execution sample (min(--trials, 2) seeds per instruction)."""
+    from spark_core.bench import wording
+
+    entries = wording.load("dev") + wording.load("test")
+    rows = wording.plan_entries(entries, args.seed, lambda r: print(_wording_line(r), flush=True))
+    seeds = min(args.trials or 2, 2)
+    exec_rows = wording.execute_sample(
+        entries,
+        seeds,
+        lambda r: print(f"{'ok  ' if r['success'] else 'FAIL'} {r['half']} {r['task'][:40]} {r['wording']}"),
+    )
+    if args.json:
+        Path(args.json).write_text(json.dumps({"planning": rows, "execution": exec_rows}, indent=1, default=str))
+    return wording.section(rows, exec_rows, command, seeds)
+
+
+def _wording_line(r: dict) -> str:
+    mark = {True: "ok  ", False: "FAIL", None: "n/a "}[r["correct"]]
+    return f"{mark} {r['half']:<4} {r['id']:<32} {r['instruction']!r}: {r['error'] or r['understood']}"
+
+
 def _cmd_bench(args: argparse.Namespace) -> int:
     bad = bench_manifest.prepare(args)  # --split, --from-manifest
     if bad is not None:
@@ -232,6 +255,9 @@ def _bench(args: argparse.Namespace) -> int:
 
         result = perception_bench.run(n_seeds=args.scenes_per_task, progress=lambda s: print(s, flush=True))
         title, body = "perception on held-out scenes (learned segmenter)", perception_bench.section(result, command)
+        print(body)
+    elif args.suite == "wording":
+        title, body = "rules planner on the wording corpus", _wording(args, command)
         print(body)
     elif args.suite == "grounding":
         from spark_core.bench import grounding
