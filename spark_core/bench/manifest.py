@@ -10,6 +10,7 @@ a faithful re-run (`spark bench --from-manifest FILE`) has the same id on the sa
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import json
 import subprocess
@@ -113,10 +114,19 @@ def task_files(tasks: list[str]) -> dict[str, str]:
             for path in (task.bddl, task.init_file):
                 files["liberopro/" + str(path.relative_to(data_dir()))] = path
             continue
-        spec = TASKS[name]
-        source = inspect.getsourcefile(spec.success)
-        if source:
-            files[_rel(Path(source))] = Path(source)
+        spec = TASKS.get(name)
+        if spec is None:
+            raise ManifestError(f"task {name!r}: no such task")
+        # the predicate's module; for robosuite suites also the module that builds and seeds the env
+        for fn in (spec.success, spec.world_factory):
+            while isinstance(fn, functools.partial):
+                fn = fn.func
+            try:
+                source = inspect.getsourcefile(fn) if fn is not None else None
+            except TypeError:  # a builtin or a callable object: no source file of its own
+                source = None
+            if source:
+                files[_rel(Path(source))] = Path(source)
         plan = REPO / "spark_core" / "sim" / "tasks" / "reference" / f"{name}.yaml"
         if plan.is_file():
             files[_rel(plan)] = plan

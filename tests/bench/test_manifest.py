@@ -16,22 +16,29 @@ from spark_core.trace import TraceStore
 from spark_core.trial import TrialConfig
 
 ROOT = Path(__file__).resolve().parents[2]
-RUN = ["--tasks", "lift_block", "push_to_zone", "--trials", "2", "--segmenter", "privileged-keypoints"]
 
 
 def sha(path: Path) -> str:
     return hashlib.sha256(path.read_bytes()).hexdigest()
 
 
-def test_a_run_from_its_manifest_gets_the_same_verdicts(tmp_path, capsys):
+@pytest.mark.parametrize(
+    "suite,tasks,module",
+    [
+        ("builtin", ["lift_block", "push_to_zone"], "builtin.py"),
+        pytest.param("capbench", ["Lift", "Stack"], "capbench.py", marks=pytest.mark.slow),
+    ],
+)
+def test_a_run_from_its_manifest_gets_the_same_verdicts(suite, tasks, module, tmp_path, capsys):
     import mujoco
 
     out, rows_1, rows_2 = tmp_path / "run.manifest.json", tmp_path / "rows1.json", tmp_path / "rows2.json"
     url = f"sqlite:///{tmp_path / 'bench.db'}"
-    assert main(["bench", "builtin", *RUN, "--manifest-out", str(out), "--json", str(rows_1), "--store", url]) == 0
+    run = ["--tasks", *tasks, "--trials", "2", "--segmenter", "privileged-keypoints"]
+    assert main(["bench", suite, *run, "--manifest-out", str(out), "--json", str(rows_1), "--store", url]) == 0
     first = capsys.readouterr().out
     m = json.loads(out.read_text())
-    assert m["run"]["tasks"] == ["lift_block", "push_to_zone"] and m["run"]["seeds"] == [0, 1]
+    assert m["run"]["suite"] == suite and m["run"]["tasks"] == tasks and m["run"]["seeds"] == [0, 1]
     assert m["environment"]["packages"]["mujoco"] == mujoco.__version__
     assert len(m["environment"]["git"]["commit"]) == 40 and isinstance(m["environment"]["git"]["dirty"], bool)
     assert m["run"]["segmenter"] == {
@@ -40,14 +47,9 @@ def test_a_run_from_its_manifest_gets_the_same_verdicts(tmp_path, capsys):
         "description": m["run"]["segmenter"]["description"],
     }
     assert m["run"]["planner"]["name"] == "reference" and m["run"]["memory"] == {"plan_library": "off"}
-    plan = "spark_core/sim/tasks/reference/lift_block.yaml"
-    assert m["files"][plan] == sha(ROOT / plan) and m["files"]["spark_core/sim/tasks/builtin.py"]
-    assert [(t["task"], t["seed"]) for t in m["trials"]] == [
-        ("lift_block", 0),
-        ("lift_block", 1),
-        ("push_to_zone", 0),
-        ("push_to_zone", 1),
-    ]
+    plan = f"spark_core/sim/tasks/reference/{tasks[0]}.yaml"
+    assert m["files"][plan] == sha(ROOT / plan) and m["files"][f"spark_core/sim/tasks/{module}"]
+    assert [(t["task"], t["seed"]) for t in m["trials"]] == [(t, s) for t in tasks for s in (0, 1)]
     assert all(t["wall_time_s"] > 0 and "tokens" in t and t["cost_usd"] == 0.0 for t in m["trials"])
     assert f"manifest {m['id']}" in first  # printed with the report
     rows = json.loads(rows_1.read_text())
@@ -167,3 +169,20 @@ def test_throughput_report_names_its_manifest():
         },
     }
     assert "run manifests: builtin `0123456789ab`" in throughput.section(result, "spark bench throughput")
+
+
+def test_every_task_has_its_defining_files_hashed():
+    from spark_core.sim.libero_envs import data_dir
+    from spark_core.sim.tasks import SUITES
+
+    for suite, tasks in SUITES.items():
+        names = list(tasks)[:3] if suite == "liberopro" else list(tasks)
+        files = mf.task_files(names)
+        for key, digest in files.items():
+            path = data_dir() / key.removeprefix("liberopro/") if key.startswith("liberopro/") else ROOT / key
+            assert digest == sha(path), key
+        plans = [n for n in names if (ROOT / f"spark_core/sim/tasks/reference/{n}.yaml").is_file()]
+        assert all(f"spark_core/sim/tasks/reference/{n}.yaml" in files for n in plans)
+        assert len(files) >= (2 * len(names) if suite == "liberopro" else 1)
+    with pytest.raises(mf.ManifestError, match="task 'juggle': no such task"):
+        mf.task_files(["juggle"])
