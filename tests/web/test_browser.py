@@ -122,6 +122,11 @@ def test_workspace_steps_breakpoints_then_scrubs_tree_camera_and_3d_together(ser
     for b in ("#pause", "#step", "#resume", "#abort"):
         assert not page.is_enabled(b)
     trial_id = page.url.split("/trial/")[1]
+    # wall time without the paused spans: less than the record's, by at least the paused events' gaps
+    events = json.loads(urllib.request.urlopen(f"{server}/api/trials/{trial_id}").read())["events"]
+    paused_s = sum(nxt["t"] - e["t"] for e, nxt in zip(events, events[1:]) if e["kind"] == "paused")
+    wall = json.loads(urllib.request.urlopen(f"{server}/api/trials/{trial_id}").read())["wall_time_s"]
+    assert paused_s > 0.2 and abs(float(page.locator("#wall-active").inner_text()) - (wall - paused_s)) < 0.02
     scene = APPS[-1].state.scene
     for _ in range(100):  # the 3D view is bound to this trial's recorded scene
         if scene.current == f"replay:{trial_id}":
@@ -159,8 +164,13 @@ def test_workspace_steps_breakpoints_then_scrubs_tree_camera_and_3d_together(ser
 
 
 def test_abort_shows_aborted_everywhere(server, page):
-    tid = _post(server, "/api/trials", {"task": "stack_three", "segmenter": "privileged-keypoints", "pacing": 0.25})["id"]
-    page.goto(f"{server}/#/trial/{tid}")
+    page.goto(server + "/")
+    page.click("button[data-task=stack_three]")
+    page.select_option("#new-trial select[name=segmenter]", "privileged-keypoints")
+    page.select_option("#new-trial select[name=pacing]", "0.25")  # watchable: a quarter of real time
+    page.click("#new-trial button[type=submit]")
+    page.wait_for_url("**/#/trial/stack_three-*")
+    tid = page.url.split("/trial/")[1]
     page.wait_for_selector("#tree .node.running[data-path='tree.children[0]']", timeout=120_000)
     page.click("#abort")
     page.wait_for_selector("#verdict[data-verdict=aborted]", timeout=60_000)
@@ -169,6 +179,8 @@ def test_abort_shows_aborted_everywhere(server, page):
     assert page.locator("#tree .node.aborted").count() >= 1
     assert "Aborted" in page.locator("#explanation").inner_text()
     assert not page.is_enabled("#abort") and not page.is_enabled("#pause")
+    record = json.loads(urllib.request.urlopen(f"{server}/api/trials/{tid}").read())
+    assert "0.25" in str(record["protocol"]["pacing"])
     page.goto(f"{server}/#/history")
     page.wait_for_selector(f"#rows tr[data-id='{tid}'] [data-verdict=aborted]")
 

@@ -46,15 +46,14 @@ export function wallToSim(a: Anchor[], wall: number): number {
   return a[a.length - 1].sim;
 }
 
-/** Wall seconds the trial ran, not counting the time it spent paused (paused until its next event). */
+/** Wall seconds the trial ran, not counting the time it spent paused (a pause lasts until the next event; a
+ * pause still open when the events end lasts until `end`, the trial's recorded wall time, or the last event). */
 export function activeWall(events: TrialEvent[], end: number | null): number {
   const last = end ?? (events.length ? events[events.length - 1].t : 0);
-  let paused = 0;
-  events.forEach((e, i) => {
-    if (e.kind !== "paused") return;
-    const next = events.slice(i + 1).find((x) => x.t >= e.t);
-    paused += (next ? next.t : last) - e.t;
-  });
+  const spans = pausedSpans(events);
+  let paused = spans.reduce((sum, [a, b]) => sum + (b - a), 0);
+  const tail = events.length ? events[events.length - 1] : null;
+  if (tail?.kind === "paused") paused += Math.max(0, last - tail.t);
   return Math.max(0, last - paused);
 }
 

@@ -127,7 +127,7 @@ export function TrialPage({ id }: { id: string }) {
         <select id="speed" aria-label="replay speed" value={speed} onChange={(e) => setSpeed(Number(e.target.value))}>
           {SPEEDS.map((s) => <option key={s} value={s}>{s}x</option>)}
         </select>
-        <input id="scrub" type="range" aria-label="time cursor" min={0} max={end} step={end / 1000} value={t} disabled={live}
+        <input id="scrub" type="range" aria-label="time cursor" min={0} max={end} step="any" value={t} disabled={live}
           onChange={(e) => { setPlaying(false); setCursor(Number(e.target.value)); }} />
         <span id="cursor-time">{t.toFixed(2)} s wall (pauses cut) · {toSim(t).toFixed(2)} s sim</span>
         <a href={`/api/trials/${encodeURIComponent(id)}`} download={`${id}.json`}>trace (JSON)</a>
