@@ -39,8 +39,15 @@ def server(tmp_path_factory):
         s.bind(("127.0.0.1", 0))
         port = s.getsockname()[1]
     tmp = tmp_path_factory.mktemp("web")
-    app = create_app(Settings(port=port, store_url=f"sqlite:///{tmp / 'ui.db'}", workers=2,
-                              artifacts_dir=str(tmp / "art"), exports_dir=str(tmp / "exports")))
+    app = create_app(
+        Settings(
+            port=port,
+            store_url=f"sqlite:///{tmp / 'ui.db'}",
+            workers=2,
+            artifacts_dir=str(tmp / "art"),
+            exports_dir=str(tmp / "exports"),
+        )
+    )
     APPS.append(app)
     srv = uvicorn.Server(uvicorn.Config(app, host="127.0.0.1", port=port, log_level="warning"))
     thread = threading.Thread(target=srv.run, daemon=True)
@@ -60,8 +67,15 @@ def browser():
 
     assert CHROMIUM, "Debian's chromium-headless-shell is missing: make test installs it (scripts/apt-deps.sh)"
     with sync_playwright() as p:
-        b = p.chromium.launch(executable_path=CHROMIUM, args=[
-            "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--disable-background-networking"])
+        b = p.chromium.launch(
+            executable_path=CHROMIUM,
+            args=[
+                "--no-sandbox",
+                "--use-angle=swiftshader",
+                "--enable-unsafe-swiftshader",
+                "--disable-background-networking",
+            ],
+        )
         yield b
         b.close()
 
@@ -84,8 +98,9 @@ def shot(page, name):
 
 
 def _post(server, path, body):
-    req = urllib.request.Request(server + path, method="POST", headers={"content-type": "application/json"},
-                                 data=json.dumps(body).encode())
+    req = urllib.request.Request(
+        server + path, method="POST", headers={"content-type": "application/json"}, data=json.dumps(body).encode()
+    )
     return json.loads(urllib.request.urlopen(req).read())
 
 
@@ -140,7 +155,11 @@ def test_workspace_steps_breakpoints_then_scrubs_tree_camera_and_3d_together(ser
     assert n_groundings_end >= 2 and page.locator("#detections img").count() >= 1
     assert page.eval_on_selector("#detections img", "img => img.complete && img.naturalWidth") > 0
     # scrub to the start of the second node: the tree, the camera panel and the 3D view go back together
-    t1 = float(page.eval_on_selector("#event-table", "t => [...t.querySelectorAll('tr[data-kind=started]')][2].cells[0].innerText"))
+    t1 = float(
+        page.eval_on_selector(
+            "#event-table", "t => [...t.querySelectorAll('tr[data-kind=started]')][2].cells[0].innerText"
+        )
+    )
     page.locator("#scrub").fill(str(t1 + 1e-4))
     page.wait_for_selector(".node.running[data-path='tree.children[1]']")
     assert page.locator(".node.succeeded[data-path='tree.children[0]']").count() == 1
@@ -160,7 +179,9 @@ def test_workspace_steps_breakpoints_then_scrubs_tree_camera_and_3d_together(ser
     # leaving the page closes its event stream
     page.goto(server + "/#/history")
     page.wait_for_selector("#rows table")
-    assert page.evaluate("window.sparkSockets.filter(s => s.url.includes('/api/trials/')).every(s => s.readyState >= 2)")
+    assert page.evaluate(
+        "window.sparkSockets.filter(s => s.url.includes('/api/trials/')).every(s => s.readyState >= 2)"
+    )
 
 
 def test_abort_shows_aborted_everywhere(server, page):
@@ -223,7 +244,10 @@ def test_dashboard_groups_and_searches_tasks(server, page):
     assert {"open_drawer", "close_drawer", "block_in_drawer"} <= set(names) and "lift_block" not in names
     page.click("button[data-task=open_drawer]")
     assert "open_drawer" in page.locator("#task-card h3").inner_text() and page.locator("#task-predicate").inner_text()
-    page.wait_for_function("() => { const i = document.querySelector('#task-card img.preview'); return i && i.complete && i.naturalWidth > 0; }")
+    page.wait_for_function(
+        "() => { const i = document.querySelector('#task-card img.preview');"
+        " return i && i.complete && i.naturalWidth > 0; }"
+    )
     shot(page, "6-dashboard")
 
 
@@ -243,7 +267,11 @@ def test_batch_is_found_again_from_the_batch_list(server, page):
     page.click(f"#batch-list a[href='#/batch/{batch_id}']")
     page.wait_for_selector("#batch-table tbody tr")
     rows = page.locator("#batch-table tbody tr")
-    assert rows.count() == 2 and "100.0 %" in rows.nth(0).inner_text() and "%" in rows.nth(0).locator("td").nth(3).inner_text()
+    assert (
+        rows.count() == 2
+        and "100.0 %" in rows.nth(0).inner_text()
+        and "%" in rows.nth(0).locator("td").nth(3).inner_text()
+    )
     assert page.locator("#batch-trials a[href^='#/trial/']").count() == 4
     assert "privileged-keypoints" in page.locator("#batch-settings").inner_text()
     shot(page, "7-batch")
@@ -267,7 +295,10 @@ def test_history_sorts_filters_pages_and_compares(server, page):
     assert seeds == sorted(seeds)
     page.click("#verdict-filters button[data-verdict=task_unmet]")
     page.wait_for_selector(f"#rows tr[data-id='{b}']")
-    assert all(v == "task_unmet" for v in page.eval_on_selector_all("#rows tbody [data-verdict]", "vs => vs.map(v => v.dataset.verdict)"))
+    assert all(
+        v == "task_unmet"
+        for v in page.eval_on_selector_all("#rows tbody [data-verdict]", "vs => vs.map(v => v.dataset.verdict)")
+    )
     page.click("#verdict-filters button:has-text('any')")
     page.wait_for_selector(f"#rows tr[data-id='{a}']")
     page.check(f"#rows .pick[value='{a}']")
@@ -281,7 +312,8 @@ def test_history_sorts_filters_pages_and_compares(server, page):
 
 
 def test_history_selection_exports_a_lerobot_dataset(server, page):
-    tid = _post(server, "/api/trials", {"task": "lift_block", "segmenter": "privileged-keypoints", "capture": True})["id"]
+    body = {"task": "lift_block", "segmenter": "privileged-keypoints", "capture": True}
+    tid = _post(server, "/api/trials", body)["id"]
     _wait_done(server, tid)
     page.goto(server + "/#/history")
     page.wait_for_selector(f"#rows .pick[value='{tid}']")
