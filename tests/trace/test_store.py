@@ -142,3 +142,16 @@ def test_a_retried_attempt_takes_over_its_trial_once(store_url):
     store.update_trial("t-1", status="done")
     store.create_trial("q-1", status="queued")  # the console's queue: its row is taken over as a first attempt
     assert store.begin_attempt("q-1", **started) == 1 and "attempt" not in store.get_trial("q-1")["protocol"]
+
+
+def test_the_console_lease_has_one_holder_on_every_backend(store_url):
+    from spark_core.trace.lease import LeaseHeld, StoreLease
+
+    store = TraceStore(store_url)
+    first, second = StoreLease(store), StoreLease(TraceStore(store_url, migrate=False))
+    assert first.acquire() is None and first.renew()
+    with pytest.raises(LeaseHeld, match="in use by another SPARK console"):
+        second.acquire()
+    first.release()
+    assert second.acquire() is None and second.holder().owner == second.owner  # free again: taken
+    assert not first.renew()
