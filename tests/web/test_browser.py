@@ -155,12 +155,8 @@ def test_workspace_steps_breakpoints_then_scrubs_tree_camera_and_3d_together(ser
     assert n_groundings_end >= 2 and page.locator("#detections img").count() >= 1
     assert page.eval_on_selector("#detections img", "img => img.complete && img.naturalWidth") > 0
     # scrub to the start of the second node: the tree, the camera panel and the 3D view go back together
-    t1 = float(
-        page.eval_on_selector(
-            "#event-table", "t => [...t.querySelectorAll('tr[data-kind=started]')][2].cells[0].innerText"
-        )
-    )
-    page.locator("#scrub").fill(str(t1 + 1e-4))
+    t1 = float(page.locator("#event-table tr[data-kind=started]").nth(2).get_attribute("data-t"))
+    page.locator("#scrub").fill(str(t1 + 1e-6))
     page.wait_for_selector(".node.running[data-path='tree.children[1]']")
     assert page.locator(".node.succeeded[data-path='tree.children[0]']").count() == 1
     assert page.locator(".node.pending[data-path='tree.children[4]']").count() == 1
@@ -176,6 +172,17 @@ def test_workspace_steps_breakpoints_then_scrubs_tree_camera_and_3d_together(ser
     assert scene.image_key is None  # the 3D view's detection image is gone too, as in the camera panel
     page.wait_for_timeout(800)  # let the embedded viser client draw the cleared image before the screenshot
     shot(page, "3-workspace-scrubbed")
+    # play the replay at 4x: the cursor advances and the 3D view follows it
+    scrubbed = {b: np.array(f.position) for b, f in scene._frames.items()}
+    page.select_option("#speed", "4")
+    page.click("#play")
+    page.wait_for_selector(".node.succeeded[data-path='tree.children[2]']", timeout=30_000)
+    for _ in range(100):
+        moved = max(np.abs(np.array(f.position) - scrubbed[b]).max() for b, f in scene._frames.items())
+        if moved > 0.01:
+            break
+        time.sleep(0.05)
+    assert moved > 0.01, "the 3D view did not follow the playing replay"
     # leaving the page closes its event stream
     page.goto(server + "/#/history")
     page.wait_for_selector("#rows table")
