@@ -92,7 +92,9 @@ class GeminiPlanner:
             resp = self.client.models.generate_content(model=self.settings.model, contents=contents, config=config)
         except self.errors.APIError as e:
             if e.code == 429 or (e.code or 0) >= 500:
-                raise TransientError(f"HTTP {e.code} from Gemini: {e.message or e.status}") from None
+                raise TransientError(
+                    f"HTTP {e.code} from Gemini: {e.message or e.status}", _retry_delay_s(e.details)
+                ) from None
             raise PlannerUnavailable(f"HTTP {e.code} from Gemini: {e.message or e.status}") from None
         except ValueError as e:  # a 200 whose body is not JSON (a proxy's error page): report, do not crash
             raise PlannerUnavailable(f"Gemini answered with a body that is not JSON ({e})") from None
@@ -109,3 +111,15 @@ class GeminiPlanner:
             getattr(meta, "thoughts_token_count", 0) or 0,
         )
         return CallOutcome(resp.text or "", usage)
+
+
+def _retry_delay_s(body: object) -> float | None:
+    """Gemini's google.rpc.RetryInfo hint ("retryDelay": "30s") in an error body, in seconds."""
+    error = body.get("error", {}) if isinstance(body, dict) else {}
+    for detail in error.get("details") or [] if isinstance(error, dict) else []:
+        if isinstance(detail, dict) and str(detail.get("@type", "")).endswith("google.rpc.RetryInfo"):
+            try:
+                return float(str(detail.get("retryDelay", "")).rstrip("s"))
+            except ValueError:
+                return None
+    return None

@@ -18,9 +18,16 @@ from .pricing import cost_usd
 from .prompt import repair_prompt, system_prompt, user_prompt
 from .protocol import PlanRequest, PlanResult, Usage
 
+MAX_RETRY_AFTER_S = 60.0  # a vendor's retry hint is honoured up to this; longer waits are reported, not slept
+
 
 class TransientError(Exception):
-    """Rate limit (429), server error (5xx) or timeout: worth retrying."""
+    """Rate limit (429), server error (5xx) or timeout: worth retrying. `retry_after_s`: how long the vendor
+    asked us to wait (OpenAI's retry-after header, Gemini's RetryInfo), when it said."""
+
+    def __init__(self, message: str, retry_after_s: float | None = None):
+        super().__init__(message)
+        self.retry_after_s = retry_after_s
 
 
 class PlannerUnavailable(Exception):
@@ -126,9 +133,13 @@ def _with_retries(settings: LLMSettings, fn: Callable[[], CallOutcome]) -> CallO
         try:
             return fn()
         except TransientError as e:
-            if attempt == settings.max_retries:
-                raise TransientError(f"{e} (gave up after {settings.max_retries + 1} attempts)") from None
-            time.sleep(delay)
+            hint = e.retry_after_s or 0.0
+            if attempt == settings.max_retries or hint > MAX_RETRY_AFTER_S:
+                why = f"gave up after {attempt + 1} attempts" + (
+                    f"; the vendor asked to wait {hint:g} s" if hint > MAX_RETRY_AFTER_S else ""
+                )
+                raise TransientError(f"{e} ({why})") from None
+            time.sleep(max(delay, hint))  # never sooner than the vendor asked
             delay *= 2
     raise AssertionError("unreachable")
 

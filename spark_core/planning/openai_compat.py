@@ -82,7 +82,9 @@ class OpenAIPlanner:
                 },
             )
         except (o.RateLimitError, o.InternalServerError) as e:
-            raise TransientError(f"HTTP {e.status_code} from {self.client.base_url}: {_message(e)}") from None
+            raise TransientError(
+                f"HTTP {e.status_code} from {self.client.base_url}: {_message(e)}", _retry_after_s(e)
+            ) from None
         except o.APITimeoutError:
             raise TransientError(
                 f"{self.client.base_url} did not answer within {self.settings.timeout_s:g} s"
@@ -107,3 +109,11 @@ def _message(e) -> str:
         err = body.get("error", body)
         return str(err.get("message", err)) if isinstance(err, dict) else str(err)
     return str(e)
+
+
+def _retry_after_s(e) -> float | None:
+    """The retry-after header of a 429/5xx (seconds), when the server sent one."""
+    try:
+        return float(e.response.headers.get("retry-after"))
+    except (AttributeError, TypeError, ValueError):
+        return None

@@ -78,11 +78,11 @@ class FakeGemini(FakeVendor):
             "responseId": f"fake-{len(self.requests)}",
         }
 
-    def error(self, code: int) -> dict:
+    def error(self, code: int, retry_after_s: float = 1.0) -> dict:
         status = self._status(code, MESSAGES.get(code, f"fake error {code}"))
         if code == 429:
             status["error"]["details"] = [
-                {"@type": "type.googleapis.com/google.rpc.RetryInfo", "retryDelay": "1s"},
+                {"@type": "type.googleapis.com/google.rpc.RetryInfo", "retryDelay": f"{retry_after_s:g}s"},
             ]
         return status
 

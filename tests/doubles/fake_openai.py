@@ -70,14 +70,14 @@ class FakeOpenAI(FakeVendor):
             "system_fingerprint": "fp_fake",
         }
 
-    def error(self, code: int) -> dict:
+    def error(self, code: int, retry_after_s: float = 1.0) -> dict:
         kind, err_code, message = ERRORS.get(code, ("server_error", None, f"fake error {code}"))
         return self._error(kind, err_code, message)
 
-    def error_headers(self, code: int) -> dict[str, str]:
+    def error_headers(self, code: int, retry_after_s: float = 1.0) -> dict[str, str]:
         headers = {"x-request-id": f"req_fake{len(self.requests)}"}
         if code == 429:
-            headers |= {"retry-after": "1", "x-ratelimit-remaining-requests": "0"}
+            headers |= {"retry-after": f"{retry_after_s:g}", "x-ratelimit-remaining-requests": "0"}
         return headers
 
     @staticmethod

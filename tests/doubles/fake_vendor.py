@@ -3,7 +3,8 @@ per request, every request recorded. Test-only.
 
 Script entries:
 - ("ok", text[, (prompt, output, thoughts) tokens]): a success in the vendor's JSON shape
-- ("status", code): the vendor's error body for that HTTP status (429 with its retry hint, 5xx, 4xx)
+- ("status", code[, retry_after_s]): the vendor's error body for that HTTP status (429 with its retry hint,
+  1 s unless given; 5xx; 4xx)
 - ("sleep", seconds, text): answer `text` after a delay (timeouts)
 - ("raw", code, body bytes): exactly these bytes (a proxy's HTML page, a cut-off body)
 A request the vendor would refuse (missing key, bad payload) is answered with the vendor's 4xx and does not
@@ -49,7 +50,9 @@ class FakeVendor:
                     return self._send(entry[1], entry[2], "text/html")
                 if entry[0] == "status":
                     return self._send(
-                        entry[1], json.dumps(fake.error(entry[1])).encode(), extra=fake.error_headers(entry[1])
+                        entry[1],
+                        json.dumps(fake.error(entry[1], *entry[2:])).encode(),
+                        extra=fake.error_headers(entry[1], *entry[2:]),
                     )
                 usage = entry[2] if len(entry) > 2 else (120, 40, 8)
                 return self._send(200, json.dumps(fake.success(entry[1], usage, body)).encode())
@@ -86,10 +89,10 @@ class FakeVendor:
     def success(self, text: str, usage: tuple[int, int, int], body: dict) -> dict:
         raise NotImplementedError
 
-    def error(self, code: int) -> dict:
+    def error(self, code: int, retry_after_s: float = 1.0) -> dict:
         raise NotImplementedError
 
-    def error_headers(self, code: int) -> dict[str, str]:
+    def error_headers(self, code: int, retry_after_s: float = 1.0) -> dict[str, str]:
         return {}
 
 

@@ -169,6 +169,25 @@ def test_retries_give_up_after_the_limit_with_the_vendors_message(vendor):
     assert ("exceeded your current quota" if vendor.name == "gemini" else "Rate limit reached") in res.error
 
 
+def test_the_vendors_retry_hint_is_honoured(vendor, monkeypatch):
+    """429 with the vendor's hint (OpenAI's retry-after header, Gemini's RetryInfo): never retried sooner; a hint
+    beyond MAX_RETRY_AFTER_S gives up at once, saying so."""
+    import spark_core.planning.llm as llm
+
+    slept: list[float] = []
+    monkeypatch.setattr(llm.time, "sleep", slept.append)
+    with vendor.server() as fake:
+        fake.script = [("status", 429, 7), ("status", 503), ("ok", PAPER_PLAN)]
+        res = vendor.planner(fake, max_retries=2).plan(request())
+    assert res.ok and slept == [7.0, 0.02]  # the hint, then our own backoff (0.01 doubled)
+    slept.clear()
+    with vendor.server() as fake:
+        fake.script = [("status", 429, 3600)]
+        res = vendor.planner(fake, max_retries=2).plan(request())
+    assert not res.ok and len(fake.requests) == 1 and slept == []
+    assert "gave up after 1 attempts; the vendor asked to wait 3600 s" in res.error
+
+
 def test_a_permanent_error_is_not_retried(vendor):
     with vendor.server() as fake:
         fake.script = [("status", 400)]
