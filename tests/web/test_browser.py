@@ -228,6 +228,9 @@ def test_planner_error_and_unmet_condition_are_explained(server, page):
     page.click("button[data-task=lift_block]")
     page.select_option("#new-trial select[name=segmenter]", "privileged-keypoints")
     page.click("#new-trial summary:has-text('Run your own plan')")
+    page.click("#node-palette button[data-primitive=pick]")  # the registry's palette writes a leaf
+    assert "- type: pick" in page.input_value("#new-trial textarea[name=plan]")
+    page.wait_for_selector("#plan-ok")
     page.fill("#new-trial textarea[name=plan]", NUDGE.replace("dz: 0.05", "dz: 9"))
     page.wait_for_selector("#plan-errors li")
     assert page.locator(".plan-lines li.error-line").get_attribute("data-path").startswith("tree.children[0].params")

@@ -3,8 +3,10 @@
 import { useEffect, useState } from "react";
 import { type PlanValidation, post } from "../api/client";
 import { linePaths } from "../lib/yamlPaths";
+import { NodePalette } from "./NodePalette";
 
-export function PlanEditor({ text, onChange, onValid }: { text: string; onChange: (t: string) => void; onValid: (ok: boolean) => void }) {
+export function PlanEditor({ text, task, onChange, onValid }:
+  { text: string; task: string; onChange: (t: string) => void; onValid: (ok: boolean) => void }) {
   const [result, setResult] = useState<PlanValidation | null>(null);
   useEffect(() => {
     if (!text.trim()) { setResult(null); onValid(true); return; }
@@ -26,6 +28,7 @@ export function PlanEditor({ text, onChange, onValid }: { text: string; onChange
   const marked = new Map(errors.map((e) => [lineOf(e.path ?? ""), e]));
   return (
     <div className="plan-editor">
+      <NodePalette text={text} task={task} onChange={onChange} />
       <textarea name="plan" spellCheck={false} rows={12} value={text} onChange={(e) => onChange(e.target.value)}
         placeholder="optional: a plan to run as given (the planner is not called), e.g. task: …&#10;tree:&#10;  type: sequence …" />
       {text.trim() && (

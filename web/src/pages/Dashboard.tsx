@@ -126,7 +126,7 @@ function TrialForm({ cat, task }: { cat: Catalog; task: Task }) {
         <label>Pace <select name="pacing">{PACING.map(([v, l]) => <option key={v} value={v}>{l}</option>)}</select></label>
         <label><input type="checkbox" name="start_paused" /> start paused</label>
         <label title="agentview + wrist video and per-frame labels, for LeRobot export"><input type="checkbox" name="capture" /> record training data</label>
-        <details><summary>Run your own plan</summary><PlanEditor text={plan} onChange={setPlan} onValid={setPlanOk} /></details>
+        <details><summary>Run your own plan</summary><PlanEditor text={plan} task={task.instruction} onChange={setPlan} onValid={setPlanOk} /></details>
         <button type="submit" disabled={busy || !planOk}>Run</button> <span id="form-error" className="fail">{error}</span>
       </form>
     </section>
