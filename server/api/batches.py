@@ -10,7 +10,7 @@ from fastapi import APIRouter, HTTPException, Path, Query, Request
 from fastapi.responses import PlainTextResponse
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
-from spark_core import PLANNERS, SEGMENTERS, batch_manifest, wilson
+from spark_core import PLANNERS, SEGMENTERS, StorePlanLibrary, batch_manifest, wilson
 from spark_core import suites as catalog_suites
 
 from .models import MAX_ID, MAX_NAME, MAX_OFFSET, MAX_SEED, TrialCreate
@@ -109,7 +109,8 @@ def create_batch(body: BatchCreate, request: Request) -> dict:
         except HTTPException as e:
             raise HTTPException(422, f"{where}: {e.detail}") from None
     store, runner = request.app.state.store, request.app.state.runner
-    manifest = batch_manifest(body.suite, configs, batch_id)  # code, packages, task files, seeds, settings
+    # code, packages, task files, seeds, settings, and the plan library the workers give LLM planners
+    manifest = batch_manifest(body.suite, configs, batch_id, StorePlanLibrary(store))
     store.create_batch(batch_id, {**body.model_dump(), "manifest": manifest})
     for n, config in enumerate(configs):
         runner.submit(f"{batch_id}-{n:04d}-{config.task}-{config.seed}", config)

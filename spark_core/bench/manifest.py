@@ -138,10 +138,15 @@ def _rel(path: Path) -> str:
     return str(path.relative_to(REPO)) if path.is_relative_to(REPO) else str(path)
 
 
-def memory_regime(library: Any = None) -> dict[str, Any]:
-    """The plan library the planner saw: off, or on with the number of plans and a hash of their contents."""
+def memory_regime(library: Any = None, planner: str = "reference") -> dict[str, Any]:
+    """The plan library the planner saw: off, or on with the number of plans and a hash of their contents at the
+    start (a library also grows with the run's successes). Only LLM planners read it."""
+    from ..catalog import PLANNERS
+
     if library is None or not getattr(library, "enabled", True):
         return {"plan_library": "off"}
+    if PLANNERS[planner].offline:
+        return {"plan_library": "off", "note": f"the {planner} planner reads no examples"}
     entries = [(e["instruction"], e["plan"]) for e in library.entries()]
     digest = hashlib.sha256(json.dumps(entries, sort_keys=True).encode()).hexdigest()
     return {"plan_library": "on", "plans": len(entries), "sha256": digest}
@@ -215,7 +220,7 @@ def build(
         "planner": planner_record(template),
         "segmenter": segmenter_record(template),
         "cameras": cameras_record(template),
-        "memory": memory_regime(library),
+        "memory": memory_regime(library, template.planner),
         "executor": {"name": executor, "workers": workers, "ray_address": ray_address},
     }
     env = environment()
@@ -394,8 +399,9 @@ def summary(manifest: dict[str, Any]) -> str:
     return "\n".join(lines)
 
 
-def batch_manifest(suite: str, configs: list[TrialConfig], batch_id: str) -> dict[str, Any]:
-    """The manifest of a console batch (explicit specs may differ per trial: each trial's settings are kept)."""
+def batch_manifest(suite: str, configs: list[TrialConfig], batch_id: str, library: Any = None) -> dict[str, Any]:
+    """The manifest of a console batch (explicit specs may differ per trial: each trial's settings are kept);
+    `library`: the plan library its trials use."""
     tasks = list(dict.fromkeys(c.task for c in configs))
     m = build(
         suite=suite,
@@ -404,6 +410,7 @@ def batch_manifest(suite: str, configs: list[TrialConfig], batch_id: str) -> dic
         template=configs[0],
         executor="console",
         batch_id=batch_id,
+        library=library,
     )
     if any(config_record(c) != m["run"]["config"] for c in configs):
         m["run"]["per_trial_config"] = [{"task": c.task, "seed": c.seed, "config": config_record(c)} for c in configs]

@@ -186,3 +186,16 @@ def test_every_task_has_its_defining_files_hashed():
         assert len(files) >= (2 * len(names) if suite == "liberopro" else 1)
     with pytest.raises(mf.ManifestError, match="task 'juggle': no such task"):
         mf.task_files(["juggle"])
+
+
+def test_the_memory_regime_hashes_the_plan_library_an_llm_planner_reads(tmp_path):
+    from spark_core.trace.library_table import StorePlanLibrary
+
+    lib = StorePlanLibrary(TraceStore(f"sqlite:///{tmp_path / 'lib.db'}"))
+    empty = mf.memory_regime(lib, "gemini")
+    lib.add("open the drawer", "task: drawer\ntree: {primitive: wait}\n")
+    one = mf.memory_regime(lib, "gemini")
+    assert empty["plan_library"] == one["plan_library"] == "on" and (empty["plans"], one["plans"]) == (0, 1)
+    assert empty["sha256"] != one["sha256"] == mf.memory_regime(lib, "openai")["sha256"]
+    assert mf.memory_regime(lib, "rules")["plan_library"] == "off"  # an offline planner reads no examples
+    assert mf.memory_regime(None, "gemini") == {"plan_library": "off"}
