@@ -110,7 +110,20 @@ class GeminiPlanner:
             getattr(meta, "candidates_token_count", 0) or 0,
             getattr(meta, "thoughts_token_count", 0) or 0,
         )
-        return CallOutcome(resp.text or "", usage)
+        text = resp.text or ""
+        if not text:  # a blocked prompt or an answer stopped for safety: say why instead of "repairing" nothing
+            feedback = getattr(resp, "prompt_feedback", None)
+            blocked = getattr(feedback, "block_reason", None)
+            finish = getattr(resp.candidates[0], "finish_reason", None) if resp.candidates else None
+            raise PlannerUnavailable(
+                "Gemini gave no answer: "
+                + (f"the prompt was blocked ({_name(blocked)})" if blocked else f"finish reason {_name(finish)}")
+            )
+        return CallOutcome(text, usage)
+
+
+def _name(value: object) -> str:
+    return str(getattr(value, "value", value))
 
 
 def _retry_delay_s(body: object) -> float | None:

@@ -100,7 +100,11 @@ class OpenAIPlanner:
         u = resp.usage
         reasoning = getattr(getattr(u, "completion_tokens_details", None), "reasoning_tokens", 0) or 0 if u else 0
         usage = Usage(u.prompt_tokens if u else 0, (u.completion_tokens - reasoning) if u else 0, reasoning)
-        return CallOutcome(resp.choices[0].message.content or "", usage)
+        message = resp.choices[0].message
+        refusal = getattr(message, "refusal", None)
+        if refusal and not message.content:  # the model declined: say so instead of "repairing" nothing
+            raise PlannerUnavailable(f"the model refused: {refusal}")
+        return CallOutcome(message.content or "", usage)
 
 
 def _message(e) -> str:

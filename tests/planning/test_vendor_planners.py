@@ -300,3 +300,32 @@ def test_the_vendors_refuse_a_request_without_a_key():
         r2 = httpx.post(o.url + "/v1/chat/completions", json={"model": "m", "messages": []})
     assert r1.status_code == 403 and r1.json()["error"]["status"] == "PERMISSION_DENIED"
     assert r2.status_code == 401 and r2.json()["error"]["type"] == "invalid_request_error"
+
+
+@pytest.mark.parametrize(
+    ("body", "why"),
+    [
+        ({"promptFeedback": {"blockReason": "SAFETY"}}, "the prompt was blocked (SAFETY)"),
+        (
+            {"candidates": [{"content": {"role": "model", "parts": []}, "finishReason": "SAFETY"}]},
+            "finish reason SAFETY",
+        ),
+    ],
+)
+def test_gemini_without_an_answer_says_why_and_is_not_repaired(body, why):
+    import json as _json
+
+    with FakeGemini() as fake:
+        payload = {**body, "usageMetadata": {"promptTokenCount": 10, "totalTokenCount": 10}, "modelVersion": "m"}
+        fake.script = [("raw", 200, _json.dumps(payload).encode())] * 2
+        res = Vendor("gemini").planner(fake).plan(request())
+    assert not res.ok and len(fake.requests) == 1 and f"Gemini gave no answer: {why}" in res.error
+
+
+def test_an_openai_refusal_says_so_and_is_not_repaired():
+    with FakeOpenAI() as fake:
+        refusal = fake.success("", (10, 0, 0), {"model": "m"})
+        refusal["choices"][0]["message"] |= {"content": None, "refusal": "I can't help with that."}
+        fake.script = [("raw", 200, json.dumps(refusal).encode())] * 2
+        res = Vendor("openai").planner(fake).plan(request())
+    assert not res.ok and len(fake.requests) == 1 and "the model refused: I can't help with that." in res.error
