@@ -322,8 +322,11 @@ def rerun(manifest: dict[str, Any]) -> Rerun:
     """The run a manifest describes, rebuilt; ManifestError if it cannot be run as recorded here."""
     from ..trial import TrialConfigError
     from ..trial_record import config_from_record
+    from .executors import EXECUTORS
 
     run = manifest["run"]
+    if run.get("per_trial_config"):
+        raise ManifestError("run.per_trial_config: a batch whose trials differ in settings is not one bench run")
     seeds = [int(s) for s in run["seeds"]]
     if not seeds or seeds != list(range(seeds[0], seeds[0] + len(seeds))):
         raise ManifestError(f"run.seeds: expected consecutive seeds, got {seeds[:5]}...")
@@ -334,6 +337,8 @@ def rerun(manifest: dict[str, Any]) -> Rerun:
     except TrialConfigError as e:
         raise ManifestError(f"run.config: {e}") from None
     ex = run["executor"]
+    if ex.get("name") not in EXECUTORS:  # a console batch: its trials ran in the console's workers
+        ex = {"name": "local", "workers": 1}
     return Rerun(
         suite=run["suite"],
         tasks=list(run["tasks"]),

@@ -199,3 +199,14 @@ def test_the_memory_regime_hashes_the_plan_library_an_llm_planner_reads(tmp_path
     assert empty["sha256"] != one["sha256"] == mf.memory_regime(lib, "openai")["sha256"]
     assert mf.memory_regime(lib, "rules")["plan_library"] == "off"  # an offline planner reads no examples
     assert mf.memory_regime(None, "gemini") == {"plan_library": "off"}
+
+
+def test_a_console_batch_manifest_reruns_as_a_bench_run():
+    tasks = ("lift_block", "stack_two")
+    configs = [TrialConfig(t, seed=s, segmenter="privileged-keypoints") for t in tasks for s in (3, 4)]
+    r = mf.rerun(mf.batch_manifest("builtin", configs, "batch-x"))
+    assert (r.tasks, r.seed, r.trials, r.executor) == (["lift_block", "stack_two"], 3, 2, "local")
+    assert r.template.segmenter == "privileged-keypoints" and r.template.task == ""
+    mixed = [*configs, TrialConfig("lift_block", seed=5, segmenter="sim")]
+    with pytest.raises(mf.ManifestError, match="per_trial_config"):
+        mf.rerun(mf.batch_manifest("builtin", mixed, "batch-y"))
