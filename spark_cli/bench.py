@@ -93,7 +93,11 @@ def register(sub) -> None:
         default="local",
         help="local process pool, or Ray (a local cluster, or --ray-address for an existing one)",
     )
-    b.add_argument("--ray-address", help="existing Ray cluster, e.g. ray://head:10001 or auto")
+    b.add_argument(
+        "--ray-address",
+        help="existing Ray cluster's GCS address, e.g. 127.0.0.1:6379 (`ray start --head` here, more nodes with "
+        "`ray start --address`) or auto; ray:// client addresses need the ray[client] extra, not installed",
+    )
     b.add_argument("--store", help="also record every trial in this trace store (SQLAlchemy URL) as one batch")
     b.add_argument(
         "--suites",
