@@ -369,6 +369,8 @@ def _bench(args: argparse.Namespace) -> int:
             body, exit_code = bench_manifest.finish(args, manifest, rows, body)
         if args.json:
             Path(args.json).write_text(json.dumps(rows, indent=1))
+    if args.manifest_id is None:  # not a trial suite's run: its manifest is what it ran on
+        body = bench_manifest.finish_measurement(args, body, command)
     if args.write:
         write_section(Path(args.write), title, body)
         print(f"wrote section {title!r} of {args.write}")

@@ -36,7 +36,7 @@ def add_arguments(b: argparse.ArgumentParser) -> None:
 
 def prepare(args: argparse.Namespace) -> int | None:
     """Resolve --from-manifest and --split into the suite, tasks, seed and trials; an exit code on bad input."""
-    args.rerun, args.recorded = None, None
+    args.rerun, args.recorded, args.manifest_id = None, None, None
     if args.from_manifest:
         try:
             recorded = mf.load(args.from_manifest)
@@ -94,6 +94,7 @@ def finish(args: argparse.Namespace, manifest: dict[str, Any], rows: list[dict],
     """Complete, store, print and write the manifest; the report body with the manifest id on its protocol line,
     and the exit code (1 when a re-run's verdicts differ from the recorded ones)."""
     manifest = mf.add_trials(manifest, rows)
+    args.manifest_id = manifest["id"]
     for r in rows:
         r["manifest_id"] = manifest["id"]
     if args.store:
@@ -124,3 +125,15 @@ def finish(args: argparse.Namespace, manifest: dict[str, Any], rows: list[dict],
         else:
             print(f"  all {len(rows)} verdicts as recorded")
     return body, code
+
+
+def finish_measurement(args: argparse.Namespace, body: str, command: str) -> str:
+    """A benchmark without trial seeds (IK, speed, console latency, ...): its manifest is the code, packages and
+    machine it measured; named on the protocol line like a trial suite's."""
+    manifest = mf.measurement(args.suite, command)
+    args.manifest_id = manifest["id"]
+    if args.manifest_out:
+        mf.save(manifest, args.manifest_out)
+    git = manifest["environment"]["git"]
+    print(f"manifest {manifest['id']}: commit {(git['commit'] or 'unknown')[:12]}{' (dirty)' if git['dirty'] else ''}")
+    return body.rstrip("\n") + f"; run manifest `{manifest['id']}`\n"

@@ -238,6 +238,21 @@ def build(
     }
 
 
+def measurement(suite: str, command: str = "") -> dict[str, Any]:
+    """The manifest of a benchmark that runs no trial seeds (IK, speed, console latency, ...): what it ran on."""
+    run = {"suite": suite, "kind": "measurement: no tasks or seeds"}
+    env = environment()
+    return {
+        "manifest_version": VERSION,
+        "id": _digest(run, env, {}),
+        "created_at": datetime.now(UTC).isoformat(timespec="seconds"),
+        "command": command,
+        "run": run,
+        "environment": env,
+        "files": {},
+    }
+
+
 def _digest(run: dict, env: dict, files: dict) -> str:
     """What defines the run: its settings, the code and package versions, the task files (not where or when)."""
     key = {"run": run, "git": env["git"], "packages": env["packages"], "files": files}

@@ -210,3 +210,14 @@ def test_a_console_batch_manifest_reruns_as_a_bench_run():
     mixed = [*configs, TrialConfig("lift_block", seed=5, segmenter="sim")]
     with pytest.raises(mf.ManifestError, match="per_trial_config"):
         mf.rerun(mf.batch_manifest("builtin", mixed, "batch-y"))
+
+
+def test_a_measurement_bench_names_the_code_it_ran_on(tmp_path, capsys):
+    out, md = tmp_path / "ik.manifest.json", tmp_path / "BENCHMARKS.md"
+    assert main(["bench", "ik", "--targets", "3", "--manifest-out", str(out), "--write", str(md)]) == 0
+    m = json.loads(out.read_text())
+    assert m["run"]["suite"] == "ik" and len(m["environment"]["git"]["commit"]) == 40
+    protocol = [line for line in md.read_text().splitlines() if line.startswith("Protocol: ")]
+    assert protocol[-1].endswith(f"; run manifest `{m['id']}`")
+    with pytest.raises(mf.ManifestError, match="run.tasks is missing"):  # nothing to re-run: no tasks or seeds
+        mf.load(out)
