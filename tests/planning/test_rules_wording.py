@@ -45,6 +45,19 @@ def clauses(text):
         ("open the shelf's upper drawer", [("open", "shelf upper drawer", None, None)]),
         ("put the cup on the saucer's centre", [("put", "cup", "on", "saucer")]),
         ("put a carton of milk in the basket", [("put", "milk carton", "in", "basket")]),
+        ("put the mug on the left on the tray", [("put", "leftmost mug", "on", "tray")]),
+        ("put the first mug from the right on the tray", [("put", "rightmost mug", "on", "tray")]),
+        ("put the mug closest to the lamp on the tray", [("put", "mug near lamp", "on", "tray")]),
+        ("pick up the mug farthest from the lamp", [("pick", "mug not near lamp", None, None)]),
+        ("put the mug that isn't on the shelf on the tray", [("put", "mug not on shelf", "on", "tray")]),
+        # other verbs and checks stated as goals
+        ("push the drawer back in", [("close", "drawer", None, None)]),
+        ("pull the drawer out", [("open", "drawer", None, None)]),
+        ("make sure the cup is on the saucer", [("put", "cup", "on", "saucer")]),
+        ("the drawer is open", [("open", "drawer", None, None)]),
+        ("I'd like the pen that is next to the cup placed in the box", [("put", "pen next to cup", "in", "box")]),
+        ("pick up the cup and leave it on the tray", [("pick", "cup", None, None), ("put", "cup", "on", "tray")]),
+        ("would it be possible to fire up the stove?", [("turn_on", "stove", None, None)]),
         # pronouns across sentences, several steps
         ("grab the cup. it goes on the saucer", [("pick", "cup", None, None), ("put", "cup", "on", "saucer")]),
         (
@@ -120,6 +133,13 @@ def test_a_handle_far_from_the_thing_to_open_is_refused():
     view = SceneView({"red block": kp("red block", (0.4, 0, 0.02)), "red block handle": kp("h", (0.7, 0.3, 0.1))})
     res = RulesPlanner().plan(PlanRequest("open the red block", view))
     assert not res.ok and "is not on it" in res.error
+
+
+def test_a_handle_that_is_the_object_itself_is_refused():
+    block = kp("red block", (0.4, 0, 0.02))
+    view = SceneView({"red block": block, "red block handle": kp("red block handle", (0.4, 0, 0.02))})
+    res = RulesPlanner().plan(PlanRequest("open the red block", view))
+    assert not res.ok and "no handle on it, only 'red block' itself" in res.error
 
 
 def test_an_object_perception_could_not_single_out_is_refused_saying_what_was_understood_and_seen():

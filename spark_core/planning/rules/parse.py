@@ -68,12 +68,16 @@ def _match_verb(clause: str) -> tuple[str, str] | None:
     m = re.fullmatch(r"(?:turn|switch) (.+?) (?:to )?(on|off)", clause)  # "turn the stove on", "... knob to on"
     if m:
         return ("turn_on" if m.group(2) == "on" else "turn_off"), m.group(1)
-    m = re.fullmatch(r"(?:pull|slide) (.+) open", clause)
+    m = re.fullmatch(r"(?:pull|slide|draw) (.+) (?:open|out)", clause)
     if m:
         return "open", m.group(1)
-    m = re.fullmatch(r"push (.+) (?:closed|shut)", clause)
-    if m:
-        return "close", m.group(1)
+    m = re.fullmatch(
+        r"(?:push|slide) (.+) (?:closed|shut)|"
+        r"(?:push|slide) (?:in )?(.*drawer.*?)(?: back)?(?: in)?",
+        clause,
+    )
+    if m:  # "push the drawer in": a drawer pushed is a drawer closed
+        return "close", m.group(1) or m.group(2)
     m = re.fullmatch(r"there (?:is|are) (.+)", clause)
     if m:
         return "mention", m.group(1)

@@ -25,7 +25,7 @@ COMPARATIVES = {
 }
 LOCATORS = ("between", "next to", "beside", "near", "by", "on top of", "on", "in", "inside", "at", "from", "under")
 _PARTICIPLE = re.compile(
-    r"\b(?:(?:that|which) (?:is|are|sits|rests|stands|lies)|sitting|resting|standing|lying|located|placed|found|"
+    r"\b(?:(?:(?:that|which) )?(?:is|are|sits|rests|stands|lies)|sitting|resting|standing|lying|located|placed|found|"
     r"kept)\s+(?=(?:not\s+)?(?:" + "|".join(re.escape(x) for x in LOCATORS) + r")\b)"
 )
 _TABLE_TAIL = re.compile(
@@ -64,6 +64,16 @@ def comparative(text: str) -> str:
     m = re.fullmatch(r"(\w+) of (?:the )?(?:two|three|both|all) (.+)", text)
     if m and m.group(1) in COMPARATIVES:
         return f"{COMPARATIVES[m.group(1)]} {' '.join(singular(w) for w in m.group(2).split())}"
+    m = re.fullmatch(r"(.+?) (?:on|to|at) (?:the )?(left|right|back|front)(?: side)?", text)
+    if m:  # "the bowl on the left" -> "leftmost bowl"; "the mug at the back" -> "farthest mug"
+        word = {"left": "leftmost", "right": "rightmost", "back": "farthest", "front": "nearest"}[m.group(2)]
+        return f"{word} {m.group(1)}"
+    m = re.fullmatch(r"(.+?) (?:closest|nearest|closer|nearer) to (?:the )?(?!robot|you\b|me\b)(.+)", text)
+    if m:  # "the bowl closest to the plate": the one near the plate
+        return f"{m.group(1)} near {m.group(2)}"
+    m = re.fullmatch(r"(.+?) (?:farthest|furthest|farther|further) from (?:the )?(?!robot|you\b|me\b)(.+)", text)
+    if m:
+        return f"{m.group(1)} not near {m.group(2)}"
     m = re.fullmatch(r"(.+?) (\w+) (?:to|from) (?:the )?(?:robot|you|me)", text)
     if m and m.group(2) in ("nearer", "closer", "nearest", "closest"):
         return f"nearest {m.group(1)}"
@@ -92,9 +102,8 @@ def _reorder_container(m: re.Match) -> str:
 
 def object_phrase(words: str) -> str:
     """An object phrase for perception: determiners go; a relation to another object stays in place."""
-    text = strip_determiners(locator(" ".join(words.split())))
+    text = locator(comparative(strip_determiners(words)))
     text = re.sub(r"'s\b", "", text)
-    text = comparative(text)
     text = re.sub(r"^(?:other|one) |(?<=\w) ones?$", "", text).strip()
     text = re.sub(r"^(.+?) (?:that|which) (?:is|are) (\w+)$", r"\2 \1", text)  # "peg that is square"
     if re.search(r"\b(between|next to|beside|near|by|on top of|on|in|inside|at|from|under|not)\b", text):

@@ -132,6 +132,11 @@ class RulesPlanner:
                     (h for h in (f"{o} handle", "drawer handle" if "drawer" in o else "") if h in scene), None
                 )
                 gap_m = np.linalg.norm(scene[handle].position_m - scene[o].position_m) if handle else 0.0
+                if handle and _same_detection(scene[handle], scene[o]):
+                    raise CannotPlan(
+                        f"cannot {c.action} {o!r}: perception found no handle on it, only {o!r} itself "
+                        f"(looked for {handle!r}; found: {seen})"
+                    )
                 if gap_m > HANDLE_REACH_M:
                     raise CannotPlan(
                         f"cannot {c.action} {o!r}: the handle perception found ({handle!r}) is not on it "
@@ -231,6 +236,11 @@ def _two_arm_branches(steps: list[dict], request: PlanRequest) -> list[dict] | N
     if not all(branches.values()):
         return None
     return [{"type": "parallel", "children": [{"type": "sequence", "arm": a, "children": branches[a]} for a in arms]}]
+
+
+def _same_detection(a, b) -> bool:
+    """Two labels perception resolved to one and the same thing (same centre and extent)."""
+    return bool(np.allclose(a.position_m, b.position_m, atol=1e-3) and np.allclose(a.extent_m, b.extent_m, atol=1e-3))
 
 
 def _is_region(phrase: str | None) -> bool:

@@ -37,8 +37,8 @@ ACTION_WORDS = {
 _VERB_FORMS = sorted({f for forms in VERBS.values() for f in forms} | {"turn", "switch", "use", "there is"}, key=len)
 _FIRST_WORDS = {f.split()[0] for f in _VERB_FORMS}
 _TRAILING = re.compile(
-    r"(?:\s*,\s*|\s+)(?:and\s+)?(?:then\s+)?(?:keep|leave|hold|make sure|let go|release|stop|ensure|check|"
-    r"(?:put|set|place) (?:it|them) back)\b.*$"
+    r"(?:\s*,\s*|\s+)(?:and\s+)?(?:then\s+)?(?:keep|hold|make sure|let go|release|stop|ensure|check|wait|"
+    r"(?:put|set|place) (?:it|them) back|leave (?:it|them)\b(?!.*\b(?:on|in|into|onto|inside) (?:the|a|an)\b))\b.*$"
 )
 _PURPOSE = re.compile(r"(?:\s*,\s*|\s+)(?:so(?: that)?|in order that|until)\s+(.*)$")
 _PURPOSE_PLACE = re.compile(
@@ -59,6 +59,8 @@ def sentences(instruction: str) -> list[str]:
     for short, long in CONTRACTIONS.items():
         text = re.sub(rf"\b{re.escape(short)}", long, text)
     text = re.sub(r"\bi would (like|love)\b(?! you to)", r"i want", text)
+    # "the first bowl from the left" is the leftmost ("first" is otherwise a filler)
+    text = re.sub(r"\b(first|last) ((?:\w+ )?\w+) from the (left|right)", _first_from, text)
     text = re.sub(r"[!?;]+|\.(?=\s|$)", " . ", text)
     text = text.replace("next to", "next_to")  # a relation, not the filler "next"
     for f in sorted(FILLERS, key=len, reverse=True):
@@ -66,6 +68,11 @@ def sentences(instruction: str) -> list[str]:
     text = text.replace("next_to", "next to")
     text = re.sub(r"\s+", " ", text)
     return [s.strip(" ,") for s in text.split(" . ") if s.strip(" ,.")]
+
+
+def _first_from(m: re.Match) -> str:
+    side = m.group(3) if m.group(1) == "first" else {"left": "right", "right": "left"}[m.group(3)]
+    return f"{side}most {m.group(2)}"
 
 
 def _gerund(text: str) -> str:
@@ -124,34 +131,35 @@ def _colon(left: str, right: str) -> list[str]:
 
 
 def goal_to_action(text: str) -> str | None:
-    """The imperative for a stated goal, or None when `text` states none this reader knows."""
+    """The imperative for a stated goal, or None when `text` states none this reader knows. Tried in turn: a goal
+    verb ("belongs", "should be"), a state ("the stove on") or a participle ("the cup placed on the saucer"), a
+    bare "is" ("make sure the cup is on the saucer"), a wish naming a place ("I want the cup on the saucer")."""
     wish = re.fullmatch(r"i (?:want|need)\s+(.+)", text)
     body = wish.group(1) if wish else text
     copulas = "|".join(re.escape(c) for c in sorted(COPULAS, key=len, reverse=True))
-    m = re.fullmatch(rf"(.+?)\s+(?:{copulas})(?:\s+be)?\s*(.*)", body)
-    if m:
-        subject, predicate = m.group(1), m.group(2).strip()
-    else:
-        states = "|".join(re.escape(s) for s, _ in STATE_ACTIONS)
-        s = re.fullmatch(rf"(.+?)\s+({states})", body)
-        parts = "|".join(re.escape(p) for p in sorted(PARTICIPLES, key=len, reverse=True))
-        p = re.fullmatch(rf"(.+?)\s+((?:{parts})\b.*)", body)
-        if s and not p:
-            subject, predicate = s.group(1), s.group(2)
-        elif p:
-            subject, predicate = p.group(1), p.group(2)
-        elif wish and _DESTINATION.search(body):
-            return body  # "I want the cup on the saucer": the parser reads "the cup on the saucer" as a carry
-        else:
-            return None
-    return _predicate(subject.strip(), predicate)
+    states = "|".join(re.escape(s) for s, _ in STATE_ACTIONS)
+    parts = "|".join(re.escape(p) for p in sorted(PARTICIPLES, key=len, reverse=True))
+    for pattern in (
+        rf"(.+?)\s+(?:{copulas})(?:\s+be)?\s*(.*)",
+        r"(.+?)\s+(?:is|are)\s+(.*)",
+        rf"(.+?)\s+((?:{parts})\b.*)",
+        rf"(.+?)\s+({states})",
+    ):
+        m = re.fullmatch(pattern, body)
+        action = _predicate(m.group(1).strip(), m.group(2).strip()) if m else None
+        if action:
+            return action
+    places = list(_DESTINATION.finditer(body)) if wish else []
+    if places:  # "I want the cup on the saucer": a carry to the last place named
+        return _predicate(body[: places[-1].start()].strip(), body[places[-1].start() :])
+    return None
 
 
 def _predicate(subject: str, predicate: str) -> str | None:
-    noun_phrase = r"(?:the|a|an|this|that|these|those|both|my|your|some) (?:(?!the\b|a\b|an\b)[\w' ])+"
+    noun_phrase = r"(?:the|a|an|this|that|these|those|both|my|your|some) [\w' ]+"
     if not re.fullmatch(rf"{noun_phrase}|it|they|that one|this one", subject):
         return None  # a goal is said of a noun phrase ("the apple belongs ..."), not of a word salad
-    if re.search(r"\b(?:in|on|into|onto|of|to)$", subject):
+    if re.search(r"\b(?:in|on|into|onto|of|to|the|a|an)$", subject):
         return None
     state = dict(STATE_ACTIONS).get(predicate)
     if state:
@@ -179,7 +187,7 @@ def imperatives(instruction: str) -> list[str]:
     """The instruction as a list of imperative strings (each may still hold several clauses)."""
     out: list[str] = []
     for sentence in sentences(instruction):
-        s = _gerund(sentence)
+        s = _gerund(re.sub(r"^(?:make sure|ensure|see to it|check) (?:that )?(?=the |a |an )", "", sentence))
         first = re.fullmatch(
             r"(.*\b(?:in|into|inside) (?:the )?(.+?)),? which you (?:will |would )?(?:need to|have to|must) open"
             r"(?: it)?(?: first)?",
