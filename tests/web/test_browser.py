@@ -283,6 +283,7 @@ def test_batch_is_found_again_from_the_batch_list(server, page):
         and "%" in rows.nth(0).locator("td").nth(3).inner_text()
     )
     assert page.locator("#batch-trials a[href^='#/trial/']").count() == 4
+    assert page.locator("#success-chart canvas").count() == 1  # success per task with its interval (uPlot)
     assert "privileged-keypoints" in page.locator("#batch-settings").inner_text()
     shot(page, "7-batch")
     with page.expect_download() as dl:

@@ -4,6 +4,7 @@ import { useEffect, useState } from "react";
 import { api, post } from "../api/client";
 import type { Batch } from "../api/types";
 import { ExportButton } from "../components/ExportButton";
+import { SuccessChart } from "../components/SuccessChart";
 import { TrialTable } from "../components/TrialTable";
 import { settingsOf } from "./Batches";
 
@@ -43,12 +44,10 @@ export function BatchPage({ id }: { id: string }) {
         {error && <span className="fail">{error}</span>}
       </section>
       <section><h3>Success per task (95 % Wilson interval)</h3>
-        <table id="batch-table"><thead><tr><th>task</th><th>done</th><th>success</th><th>95 % CI</th><th className="chart-col">chart</th></tr></thead>
+        <SuccessChart results={b.results} />
+        <table id="batch-table"><thead><tr><th>task</th><th>done</th><th>success</th><th>95 % CI</th></tr></thead>
           <tbody>{b.results.map((r) => (
-            <tr key={r.task}><td>{r.task}</td><td>{r.done}/{r.total}</td><td>{pct(r.success_rate)}</td><td>{pct(r.ci95[0])} – {pct(r.ci95[1])}</td>
-              <td className="chart-col"><div className="ci-bar">
-                <div className="ci" style={{ left: `${100 * r.ci95[0]}%`, width: `${100 * (r.ci95[1] - r.ci95[0])}%` }} />
-                {r.success_rate !== null && <div className="rate" style={{ left: `${100 * r.success_rate}%` }} />}</div></td></tr>))}</tbody></table>
+            <tr key={r.task}><td>{r.task}</td><td>{r.done}/{r.total}</td><td>{pct(r.success_rate)}</td><td>{pct(r.ci95[0])} – {pct(r.ci95[1])}</td></tr>))}</tbody></table>
       </section>
       <section><h3>Trials</h3><div id="batch-trials"><TrialTable items={b.trials} /></div></section>
     </div>
