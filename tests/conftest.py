@@ -27,9 +27,14 @@ def postgres_server():
     from tests.trace.postgres_server import PostgresServer, PostgresUnavailable
 
     try:
-        server = PostgresServer().start()
+        server = PostgresServer()
     except PostgresUnavailable as e:
         pytest.skip(str(e))
+    try:
+        server.start()
+    except BaseException:
+        server.stop()
+        raise
     yield server
     server.stop()
 

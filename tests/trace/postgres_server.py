@@ -18,7 +18,11 @@ from pathlib import Path
 
 
 class PostgresUnavailable(RuntimeError):
-    """Why no server can be started here (the tests skip with this message)."""
+    """The server binaries are not installed (the tests skip with this message)."""
+
+
+class PostgresFailed(RuntimeError):
+    """The binaries are there but the server could not be set up: a failure, never a skip."""
 
 
 def _bin_dir() -> Path:
@@ -38,14 +42,14 @@ def _run_as() -> list[str]:
     if os.geteuid() != 0:
         return []
     if not shutil.which("runuser"):
-        raise PostgresUnavailable("running as root and `runuser` is missing: PostgreSQL will not run as root")
+        raise PostgresFailed("running as root and `runuser` is missing: PostgreSQL will not run as root")
     for user in ("postgres", "nobody"):
         try:
             pwd.getpwnam(user)
         except KeyError:
             continue
         return ["runuser", "-u", user, "--"]
-    raise PostgresUnavailable("running as root and there is no `postgres` or `nobody` user to run PostgreSQL as")
+    raise PostgresFailed("running as root and there is no `postgres` or `nobody` user to run PostgreSQL as")
 
 
 def _free_port() -> int:
@@ -70,7 +74,7 @@ class PostgresServer:
     def _run(self, *args: str) -> None:
         done = subprocess.run([*self.prefix, *args], capture_output=True, text=True, timeout=60)
         if done.returncode != 0:
-            raise PostgresUnavailable(f"{Path(args[0]).name} failed: {done.stderr.strip() or done.stdout.strip()}")
+            raise PostgresFailed(f"{Path(args[0]).name} failed: {done.stderr.strip() or done.stdout.strip()}")
 
     def start(self) -> PostgresServer:
         # trust auth on loopback only, fsync off: a disposable test server
