@@ -100,6 +100,7 @@ def get_trial(trial_id: TrialId, request: Request) -> dict:
     if live is not None:  # still running: the stored events lag, serve the live ones
         trial["events"] = list(live.history)
         trial["control_state"] = live.control.state
+        trial["breakpoints"] = sorted(live.control.breakpoints)  # a reopened page shows the ones already set
         trial["worker_pid"] = live.worker_pid
     return trial
 

@@ -129,6 +129,9 @@ def test_workspace_steps_breakpoints_then_scrubs_tree_camera_and_3d_together(ser
     page.click("#step")  # exactly one primitive runs, then it pauses again
     page.wait_for_selector(".node.paused[data-path='tree.children[1]']", timeout=120_000)
     assert page.locator("#tree .node.succeeded").count() == 1
+    page.reload()  # a reopened page shows the state and the breakpoints already set
+    page.wait_for_selector(".node.breakpoint[data-path='tree.children[3]']")
+    page.wait_for_selector("#status[data-status=paused]")
     page.click("#resume")  # runs until the breakpoint
     page.wait_for_selector(".node.paused[data-path='tree.children[3]']", timeout=120_000)
     page.click("#resume")
@@ -137,6 +140,7 @@ def test_workspace_steps_breakpoints_then_scrubs_tree_camera_and_3d_together(ser
     for b in ("#pause", "#step", "#resume", "#abort"):
         assert not page.is_enabled(b)
     trial_id = page.url.split("/trial/")[1]
+    assert "width_m=" in page.locator("#tree .result[data-path='tree.children[2]']").inner_text()  # grasp's check
     # wall time without the paused spans: less than the record's, by at least the paused events' gaps
     events = json.loads(urllib.request.urlopen(f"{server}/api/trials/{trial_id}").read())["events"]
     paused_s = sum(nxt["t"] - e["t"] for e, nxt in zip(events, events[1:]) if e["kind"] == "paused")

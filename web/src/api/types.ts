@@ -48,7 +48,7 @@ export interface Trial extends TrialSummary {
   plan_text: string; plan_tree: { task: string; tree: PlanNode } | null;
   nodes: Record<string, NodeRecord>; events: TrialEvent[]; groundings: Grounding[];
   artifacts: { name: string; kind: string; camera?: string }[];
-  control_state?: string; usage?: Record<string, unknown>;
+  control_state?: string; breakpoints?: string[]; usage?: Record<string, unknown>;
 }
 
 export interface Page<T> { total: number; limit: number; offset: number; items: T[] }

@@ -22,14 +22,16 @@ function TreeNode(props: Props & { node: PlanNode; path: string }) {
   const params = Object.entries(node.params ?? {}).map(([k, v]) => `${k}=${typeof v === "object" ? JSON.stringify(v) : v}`).join(", ");
   const label = leaf ? `${node.primitive ?? node.type}(${params})` : `${node.type}${node.arm ? ` [${node.arm}]` : ""}`;
   const reason = st.reason || (st.status === rec?.status ? rec?.reason : "");
+  const result = Object.entries(st.result ?? {}).map(([k, v]) => `${k}=${typeof v === "object" ? JSON.stringify(v) : v}`).join(", ");
   const cls = `node ${st.status}${breakpoints.has(path) ? " breakpoint" : ""}`;
   return (
     <li>
       {!leaf && <button className="twisty" aria-label={open ? "collapse" : "expand"} onClick={() => setOpen(!open)}>{open ? "▾" : "▸"}</button>}
       <span className={cls} data-path={path} data-status={st.status}
-        title={`${path}${leaf && onToggleBreakpoint ? " (click: breakpoint)" : ""}`}
+        title={`${path}${leaf && onToggleBreakpoint ? " (click: breakpoint)" : ""}${result ? `\n${result}` : ""}`}
         onClick={() => leaf && onToggleBreakpoint?.(path)}>{label}</span>
       {st.retries > 0 && <span className="retries">↻ {st.retries}</span>}
+      {leaf && st.result && st.status === "succeeded" && <span className="result muted" data-path={path}>{result}</span>}
       {(st.status === "failed" || st.status === "aborted") && (reason || st.failure) &&
         <span className="reason">{st.failure ? `${st.failure}: ` : ""}{reason}</span>}
       {!leaf && open && (

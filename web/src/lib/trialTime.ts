@@ -57,7 +57,10 @@ export function activeWall(events: TrialEvent[], end: number | null): number {
   return Math.max(0, last - paused);
 }
 
-export interface NodeState { status: string; retries: number; attempts: number; reason?: string; failure?: string | null }
+export interface NodeState {
+  status: string; retries: number; attempts: number; reason?: string; failure?: string | null;
+  result?: Record<string, unknown>; // the detail of its last succeeded/failed event: what its post-condition measured
+}
 
 /** Each node's state once every event up to `t` (wall s) has happened; `final`: the trial's recorded end. */
 export function treeStateAt(cat: Catalog, trial: Trial, events: TrialEvent[], t: number, final: boolean): Record<string, NodeState> {
@@ -70,11 +73,12 @@ export function treeStateAt(cat: Catalog, trial: Trial, events: TrialEvent[], t:
     if (e.kind === "started") s.attempts += 1;
     if (e.kind === "retrying") s.retries += 1;
     if (e.kind === "failed") s.reason = String(e.detail?.reason ?? e.detail?.error ?? "");
+    if (e.kind === "succeeded" || e.kind === "failed") s.result = e.detail;
   }
   if (final) {
     // The record is the truth at the end: an abort leaves nodes "aborted" (no event says so), reasons are kept.
     for (const [path, n] of Object.entries(trial.nodes ?? {})) {
-      out[path] = { status: n.status, retries: n.retries, attempts: n.attempts, reason: n.reason, failure: n.failure };
+      out[path] = { ...out[path], status: n.status, retries: n.retries, attempts: n.attempts, reason: n.reason, failure: n.failure };
     }
     if (trial.verdict === "aborted" || trial.verdict === "interrupted" || trial.verdict === "crashed" || trial.verdict === "timeout") {
       for (const s of Object.values(out)) if (s.status === "running" || s.status === "paused") s.status = "aborted";

@@ -32,6 +32,7 @@ export function TrialPage({ id }: { id: string }) {
   const refresh = () => api<Trial>(`/api/trials/${encodeURIComponent(id)}`).then((t) => {
     setTrial(t);
     if (t.control_state) setControl(t.control_state);
+    if (t.breakpoints) setBreakpoints(new Set(t.breakpoints));
     return t;
   });
 
