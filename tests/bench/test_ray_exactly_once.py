@@ -20,7 +20,6 @@ from tests.bench.ray_cluster import ENV, RayCluster
 # Paced at 2x real time: a trial lasts a few wall seconds (long enough to be caught running) at little CPU
 TEMPLATE = TrialConfig("", segmenter="privileged-keypoints", pacing=0.5)
 TASKS = ["lift_block", "push_to_zone"]
-SEEDS = 2
 
 
 @pytest.fixture(scope="module")
@@ -56,14 +55,14 @@ def _kill_mid_trial(store_url: str, kill, stop: threading.Event, killed: list[in
         time.sleep(0.05)
 
 
-def _run_killing(cluster: RayCluster, store_url: str, kill) -> tuple[list[dict], list[int]]:
+def _run_killing(cluster: RayCluster, store_url: str, kill, seeds: int) -> tuple[list[dict], list[int]]:
     TraceStore(store_url)  # migrated before the killer looks
     stop, killed = threading.Event(), []
     killer = threading.Thread(target=_kill_mid_trial, args=(store_url, kill, stop, killed), daemon=True)
     killer.start()
     try:
         rows = reference_suite.run(
-            TASKS, SEEDS, seed=0, template=TEMPLATE, executor="ray", ray_address=cluster.address, store_url=store_url
+            TASKS, seeds, seed=0, template=TEMPLATE, executor="ray", ray_address=cluster.address, store_url=store_url
         )
     finally:
         stop.set()
@@ -71,8 +70,8 @@ def _run_killing(cluster: RayCluster, store_url: str, kill) -> tuple[list[dict],
     return rows, killed
 
 
-def _assert_exactly_once(store_url: str, rows: list[dict]) -> list[dict]:
-    expected = {(t, s) for t in TASKS for s in range(SEEDS)}
+def _assert_exactly_once(store_url: str, rows: list[dict], seeds: int) -> list[dict]:
+    expected = {(t, s) for t in TASKS for s in range(seeds)}
     assert len(rows) == len(expected) and {(r["task"], r["seed"]) for r in rows} == expected
     store = TraceStore(store_url)
     ids = store.trial_ids()
@@ -88,9 +87,9 @@ def _assert_exactly_once(store_url: str, rows: list[dict]) -> list[dict]:
 
 
 def test_killed_workers_trials_are_retried_and_stored_exactly_once(cluster, store_url):
-    rows, killed = _run_killing(cluster, store_url, cluster.kill_trial_workers)
+    rows, killed = _run_killing(cluster, store_url, cluster.kill_trial_workers, seeds=1)
     assert killed, "no Ray worker was caught running a trial"
-    trials = _assert_exactly_once(store_url, rows)
+    trials = _assert_exactly_once(store_url, rows, seeds=1)
     retried = [t for t in trials if t["protocol"].get("attempt", 1) > 1]
     assert retried, "a killed worker's trial should have run again (attempt 2 in its record)"
 
@@ -105,8 +104,8 @@ def test_a_killed_node_loses_no_trial(backend, tmp_path, request):
     )
     c = RayCluster().start()
     try:
-        rows, killed = _run_killing(c, url, c.kill_node2)
+        rows, killed = _run_killing(c, url, c.kill_node2, seeds=2)
         assert killed
-        _assert_exactly_once(url, rows)
+        _assert_exactly_once(url, rows, seeds=2)
     finally:
         c.stop()
