@@ -22,7 +22,7 @@ export function Timeline({ bars, end, cursor, onSeek, id = "timeline", label = "
     if (!el.current) return;
     const width = Math.max(300, el.current.clientWidth || 600);
     const opts: uPlot.Options = {
-      width, height: 40 + 22 * Math.max(1, rows.length),
+      width, height: Math.max(130, 60 + 26 * rows.length),
       legend: { show: false }, cursor: { y: false, drag: { x: false, y: false } },
       scales: { x: { time: false, auto: false, range: () => [0, end] }, y: { auto: false, range: () => [-0.5, Math.max(0.5, rows.length - 0.5)] } },
       axes: [
