@@ -1,0 +1,80 @@
+// Unit tests of the workspace's pure logic (run by `npm test`: esbuild bundles, node's test runner runs).
+import assert from "node:assert/strict";
+import { test } from "node:test";
+import type { Catalog, Trial, TrialEvent } from "../src/api/types";
+import { diffLines, firstDivergence } from "../src/lib/compare";
+import { activeWall, anchors, treeStateAt, unpaused, wallToSim, withoutPauses } from "../src/lib/trialTime";
+import { linePaths } from "../src/lib/yamlPaths";
+
+const PLAN = `task: t
+tree:
+  type: sequence
+  children:
+  - type: pick
+    params:
+      lift_height: 5
+  - type: parallel
+    children:
+      - type: a
+      - type: b
+        params: {x: 1}`;
+
+test("each line of a plan has the path the validator names", () => {
+  assert.deepEqual(linePaths(PLAN), [
+    "task", "tree", "tree.type", "tree.children", "tree.children[0].type", "tree.children[0].params",
+    "tree.children[0].params.lift_height", "tree.children[1].type", "tree.children[1].children",
+    "tree.children[1].children[0].type", "tree.children[1].children[1].type", "tree.children[1].children[1].params",
+  ]);
+});
+
+test("the plan diff keeps common lines and marks the rest", () => {
+  const d = diffLines(["a", "b", "c"], ["a", "x", "c"]);
+  assert.deepEqual(d.map((x) => x.op + x.line), [" a", "-b", "+x", " c"]);
+});
+
+const node = (path: string, kind: string, s: number, f: number, sim: number, status = "succeeded") =>
+  ({ path, kind, arm: null, status, attempts: 1, retries: 0, started_t: s, finished_t: f, sim_time_s: sim, failure: null, reason: "", recoveries: [] });
+
+const trial = (over: Partial<Trial> = {}): Trial => ({
+  id: "x", created_at: null, status: "done", task: "t", instruction: "", seed: 0, planner: "p", segmenter: "s",
+  outcome: "", success: true, verdict: "success", failure: null, failed_node: null, reason: "", wall_time_s: 3,
+  sim_time_s: 4, cost_usd: 0, batch_id: null, protocol: {}, plan_text: "", plan_tree: null, groundings: [], artifacts: [],
+  events: [],
+  nodes: { tree: node("tree", "sequence", 0, 3, 4), "tree.children[0]": node("tree.children[0]", "pick", 0, 1, 1), "tree.children[1]": node("tree.children[1]", "place", 2, 3, 1) },
+  ...over,
+});
+
+test("wall time maps to simulated time inside each leaf, ending at the trial's total", () => {
+  const a = anchors(trial());
+  assert.equal(wallToSim(a, 0), 0);
+  assert.equal(wallToSim(a, 3), 4);
+  assert.ok(wallToSim(a, 0.5) > 0 && wallToSim(a, 0.5) < wallToSim(a, 2.5));
+});
+
+const ev = (t: number, kind: string, node_path: string): TrialEvent => ({ t, kind, node_path });
+
+test("paused spans are cut out of the clock and of the wall time", () => {
+  const events = [ev(0, "started", "tree"), ev(0.1, "paused", "tree.children[0]"), ev(5.1, "started", "tree.children[0]"), ev(6, "succeeded", "tree")];
+  assert.ok(Math.abs(unpaused([[0.1, 5.1]], 6) - 1) < 1e-9);
+  assert.ok(Math.abs(unpaused([[0.1, 5.1]], 3) - 0.1) < 1e-9); // inside a pause: where the pause began
+  assert.ok(Math.abs(activeWall(events, 6) - 1) < 1e-9);
+  const cut = withoutPauses(trial({ events }), events);
+  assert.deepEqual(cut.events.map((e) => +e.t.toFixed(6)), [0, 0.1, 0.1, 1]);
+});
+
+const CAT = { event_node_status: { started: "running", succeeded: "succeeded", failed: "failed", paused: "paused" } } as unknown as Catalog;
+
+test("the tree at a time follows the events; at the end an abort leaves no node running", () => {
+  const events = [ev(0, "started", "tree"), ev(0.1, "started", "tree.children[0]"), ev(1, "succeeded", "tree.children[0]"), ev(1.2, "retrying", "tree.children[1]")];
+  const mid = treeStateAt(CAT, trial(), events, 0.5, false);
+  assert.equal(mid["tree.children[0]"].status, "running");
+  assert.equal(treeStateAt(CAT, trial(), events, 2, false)["tree.children[1]"].retries, 1);
+  const aborted = trial({ verdict: "aborted", nodes: { tree: node("tree", "sequence", 0, 3, 4, "running") } });
+  assert.equal(treeStateAt(CAT, aborted, events, 3, true).tree.status, "aborted");
+});
+
+test("the first divergence names the node and both sides", () => {
+  const b = trial({ nodes: { ...trial().nodes, "tree.children[1]": node("tree.children[1]", "place", 2, 3, 1, "failed") } });
+  assert.match(firstDivergence(trial(), b), /tree.children\[1\] \(place\): A succeeded, B failed/);
+  assert.match(firstDivergence(trial(), trial()), /^none/);
+});
