@@ -254,3 +254,33 @@ def cancel_batch(batch_id: BatchId, request: Request) -> dict:
     cancelled = sum(runner.cancel(t["id"]) for t in batch["trials"] if t["status"] in ("queued", "running"))
     store.set_batch_status(batch_id, "cancelled")
     return {"id": batch_id, "cancelled": cancelled}
+
+
+@router.get("/{batch_id}/timing")
+def batch_timing(batch_id: BatchId, request: Request) -> dict:
+    """Where each task's time went, per primitive of its plans: mean simulated and wall seconds per run of each
+    primitive kind over the batch's finished trials (the trace store does not keep the pipeline's phase split)."""
+    from spark_core import REGISTRY
+
+    primitives = {spec.name for spec in REGISTRY}  # the tree's leaves; composites only hold them
+    store = request.app.state.store
+    batch = store.get_batch(batch_id)
+    if batch is None:
+        raise HTTPException(404, f"no batch {batch_id!r}")
+    sums: dict[tuple[str, str], list[float]] = {}  # (task, primitive) -> [runs, sim s, wall s]
+    for t in batch["trials"]:
+        if t["status"] != "done":
+            continue
+        trial = store.get_trial(t["id"]) or {}
+        for node in (trial.get("nodes") or {}).values():
+            if node.get("kind") not in primitives or node.get("started_t") is None:
+                continue
+            acc = sums.setdefault((t["task"], node["kind"]), [0, 0.0, 0.0])
+            acc[0] += 1
+            acc[1] += node.get("sim_time_s") or 0.0
+            acc[2] += node.get("duration_s") or 0.0
+    rows = [
+        {"task": task, "primitive": kind, "runs": n, "mean_sim_s": round(sim / n, 4), "mean_wall_s": round(wall / n, 4)}
+        for (task, kind), (n, sim, wall) in sums.items()
+    ]
+    return {"id": batch_id, "rows": rows}

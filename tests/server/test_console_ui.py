@@ -105,6 +105,11 @@ def test_every_batch_is_listed_with_settings_and_progress(tmp_path):
             assert b["status"] == "done" and b["progress"] == {"done": 1, "total": 1, "successes": 1}
             assert b["spec"]["segmenter"] == "privileged-keypoints"
         assert len(c.get("/api/batches", params={"limit": 1}).json()["items"]) == 1
+        # where the time went, per primitive of the plans (lift_block's reference plan is one pick)
+        timing = c.get(f"/api/batches/{ids[0]}/timing").json()["rows"]
+        assert [(r["task"], r["primitive"], r["runs"]) for r in timing] == [("lift_block", "pick", 1)]
+        assert timing[0]["mean_sim_s"] > 0.5 and timing[0]["mean_wall_s"] > 0
+        assert c.get("/api/batches/batch-nope/timing").status_code == 404
 
 
 def test_docs_load_swagger_from_our_own_origin(tmp_path):

@@ -288,6 +288,8 @@ def test_batch_is_found_again_from_the_batch_list(server, page):
     )
     assert page.locator("#batch-trials a[href^='#/trial/']").count() == 4
     assert page.locator("#success-chart canvas").count() == 1  # success per task with its interval (uPlot)
+    page.wait_for_selector("#timing-chart canvas")  # time per primitive, stacked per task
+    assert "pick" in page.locator("#timing-chart .legend").inner_text()
     assert "privileged-keypoints" in page.locator("#batch-settings").inner_text()
     shot(page, "7-batch")
     with page.expect_download() as dl:

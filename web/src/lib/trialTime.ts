@@ -6,11 +6,12 @@ import type { Catalog, NodeRecord, Trial, TrialEvent } from "../api/types";
 
 export interface Anchor { wall: number; sim: number }
 
-const COMPOSITES = new Set(["sequence", "parallel", "fallback"]);
-
+/** The nodes that ran and hold no others (primitive calls), by start time. */
 export function leaves(nodes: Record<string, NodeRecord>): NodeRecord[] {
+  const paths = Object.keys(nodes);
+  const isLeaf = (p: string) => !paths.some((q) => q.startsWith(`${p}.children[`));
   return Object.values(nodes)
-    .filter((n) => !COMPOSITES.has(n.kind) && n.started_t !== null)
+    .filter((n) => isLeaf(n.path) && n.started_t !== null)
     .sort((a, b) => (a.started_t ?? 0) - (b.started_t ?? 0));
 }
 

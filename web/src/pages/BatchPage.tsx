@@ -5,6 +5,7 @@ import { api, post } from "../api/client";
 import type { Batch } from "../api/types";
 import { ExportButton } from "../components/ExportButton";
 import { SuccessChart } from "../components/SuccessChart";
+import { TimingChart, type TimingRow } from "../components/TimingChart";
 import { TrialTable } from "../components/TrialTable";
 import { settingsOf } from "./Batches";
 
@@ -13,6 +14,7 @@ const pct = (x: number | null) => (x === null ? "" : `${(100 * x).toFixed(1)} %`
 export function BatchPage({ id }: { id: string }) {
   const [b, setB] = useState<Batch | null>(null);
   const [error, setError] = useState("");
+  const [timing, setTiming] = useState<TimingRow[]>([]);
   useEffect(() => {
     let alive = true;
     let timer = 0;
@@ -21,7 +23,9 @@ export function BatchPage({ id }: { id: string }) {
         const x = await api<Batch>(`/api/batches/${encodeURIComponent(id)}`);
         if (!alive) return;
         setB(x);
-        if (x.status === "running") timer = window.setTimeout(load, 700);
+        const t = await api<{ rows: TimingRow[] }>(`/api/batches/${encodeURIComponent(id)}/timing`);
+        if (alive) setTiming(t.rows);
+        if (x.status === "running") timer = window.setTimeout(load, 1000);
       } catch (e) { if (alive) setError((e as Error).message); }
     };
     load();
@@ -48,6 +52,9 @@ export function BatchPage({ id }: { id: string }) {
         <table id="batch-table"><thead><tr><th>task</th><th>done</th><th>success</th><th>95 % CI</th></tr></thead>
           <tbody>{b.results.map((r) => (
             <tr key={r.task}><td>{r.task}</td><td>{r.done}/{r.total}</td><td>{pct(r.success_rate)}</td><td>{pct(r.ci95[0])} – {pct(r.ci95[1])}</td></tr>))}</tbody></table>
+      </section>
+      <section><h3>Time per plan phase (primitive)</h3>
+        <TimingChart rows={timing} trialsPerTask={Object.fromEntries(b.results.map((r) => [r.task, r.done]))} />
       </section>
       <section><h3>Trials</h3><div id="batch-trials"><TrialTable items={b.trials} /></div></section>
     </div>
