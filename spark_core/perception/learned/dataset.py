@@ -80,7 +80,12 @@ def geom_tables(world) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 def render_labelled(world, camera: str, tables) -> LabelledFrame:
-    """Render at 640x480, as the cameras do at run time, with per-pixel labels."""
+    """Render at 640x480, as the cameras do at run time, with per-pixel labels (on the world's rendering
+    thread, where its EGL context lives)."""
+    return world.on_render_thread(_render_labelled, world, camera, tables)
+
+
+def _render_labelled(world, camera: str, tables) -> LabelledFrame:
     from ...sim.cameras import _renderer, intrinsics
 
     m, d = world.model, world.data

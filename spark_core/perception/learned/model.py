@@ -3,6 +3,8 @@ and colour logits, all at input resolution."""
 
 from __future__ import annotations
 
+import cv2
+import numpy as np
 import torch
 from torch import nn
 from torch.nn import functional as F
@@ -27,10 +29,11 @@ class SegNet(nn.Module):
     """Input (B, 4, H, W): RGB in [0, 1] and normalised depth; H and W multiples of 32.
     Output (B, n_categories + 1 + n_colours, H, W): category logits, boundary logit, colour logits."""
 
-    def __init__(self, widths: tuple[int, ...] = (16, 32, 48, 64, 96), full_res: int = 16):
+    def __init__(self, widths: tuple[int, ...] = (16, 32, 48, 64, 96), full_res: int = 16, downsample: int = 2):
         super().__init__()
         self.widths = tuple(widths)
         self.full_res = full_res
+        self.downsample = downsample  # camera frames are shrunk by this factor before the network (see shrink)
         self.n_categories, self.n_colours = len(CATEGORIES), len(COLOURS)
         # The encoder starts at half resolution (a strided stem: full-resolution stages dominate CPU time); one
         # light full-resolution layer over the raw input sharpens the upsampled decoder output at mask edges.
@@ -75,3 +78,13 @@ def network_input(rgb_u8: torch.Tensor, depth_m: torch.Tensor) -> torch.Tensor:
     rgb = rgb_u8.permute(0, 3, 1, 2).float() / 255.0
     d = ((depth_m.float() - DEPTH_CENTRE_M) / DEPTH_SCALE_M).clamp(-3, 3).unsqueeze(1)
     return torch.cat([rgb, d], 1)
+
+
+def shrink(rgb: np.ndarray, depth_m: np.ndarray, factor: int) -> tuple[np.ndarray, np.ndarray]:
+    """A camera frame at 1/factor resolution, as the network sees it: RGB area-averaged, depth (and, in
+    training, labels) by taking every factor-th pixel (never averaging across an object's edge)."""
+    if factor == 1:
+        return rgb, depth_m
+    h, w = depth_m.shape[0] // factor, depth_m.shape[1] // factor
+    small = cv2.resize(np.ascontiguousarray(rgb), (w, h), interpolation=cv2.INTER_AREA)
+    return small, depth_m[: h * factor : factor, : w * factor : factor]

@@ -15,6 +15,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
+from typing import Any
 
 import cv2
 import numpy as np
@@ -30,8 +31,11 @@ from .categories import CATEGORIES, COLOURS
 WEIGHTS = "weights/learned_segmenter.pt"  # package data, next to MODEL_CARD.md
 HEAD_NOUN_BONUS = 0.08
 MATERIAL_WORDS = {"wooden", "wood", "metal", "plastic", "ceramic", "wicker"}  # not colour filters
+MIN_INSTANCE_SCORE = 0.3  # instances the network is less sure of are dropped (stray pixels, table edges)
+FRAGMENT_AREA = 0.15
+BOUNDARY_PROB = 0.8  # the boundary head is trained with positives weighted 4x: 0.8 is about even odds
 DEPTH_EDGE_M = 0.015  # a depth jump between neighbouring pixels larger than this (and 2 %) splits instances
-_NETS: dict[str, object] = {}
+_NETS: dict[str, Any] = {}
 _LOCK = threading.Lock()
 
 
@@ -41,7 +45,7 @@ class Instance:
 
     category: int  # index into CATEGORIES
     mask: np.ndarray  # (H, W) bool
-    score: float  # mean category probability over the mask, [0, 1]
+    score: float  # median category probability over the mask, [0, 1]
     colour: str  # predicted colour name (COLOURS)
 
 
@@ -69,7 +73,7 @@ def _words(text: str) -> list[str]:
 
 class LearnedSegmenter:
     """Camera-only segmenter. `threshold`: minimum cosine of a prompt with a category; categories within
-    `margin` of the best one also count; instances smaller than `min_area_px` are dropped."""
+    `margin` of the best one also count; instances smaller than `min_area_px` (camera pixels) are dropped."""
 
     name = "learned"
     privileged = False
@@ -79,7 +83,7 @@ class LearnedSegmenter:
         weights: str | Path | None = None,
         threshold: float = 0.3,
         margin: float = 0.04,
-        min_area_px: int = 20,
+        min_area_px: int = 40,
         encoder: TextEncoder | None = None,
     ):
         self.weights = Path(weights) if weights else default_weights()
@@ -117,36 +121,43 @@ class LearnedSegmenter:
         return {i: s for i, s in scores.items() if s >= self.threshold and s >= best - self.margin}, colours
 
     # -- pixels -> instances -----------------------------------------------------------------------------------
-    def predict(self, frame: CameraFrame) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """Per pixel: category index, its probability, boundary probability and colour probabilities (C, H, W)."""
+    def predict(self, frame: CameraFrame) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """At network resolution (the frame shrunk by the network's factor): category index, its probability,
+        boundary probability, colour probabilities (C, h, w) and depth (m) per pixel."""
         import torch
 
-        from .model import network_input
+        from .model import network_input, shrink
 
         net = _net(self.weights)
-        H, W = frame.shape
-        ph, pw = (-H) % 32, (-W) % 32  # the network halves the image five times
-        rgb = np.pad(frame.rgb, ((0, ph), (0, pw), (0, 0)), mode="edge")
-        depth = np.pad(
-            np.nan_to_num(frame.depth_m.astype(np.float32), nan=0.0, posinf=10.0), ((0, ph), (0, pw)), mode="edge"
-        )
-        with torch.no_grad():
-            x = network_input(torch.from_numpy(rgb[None]), torch.from_numpy(depth[None]))
-            cat_logits, bnd_logit, col_logits = net.split(net(x))
-            cat_p = torch.softmax(cat_logits[0, :, :H, :W], 0)
-            prob, cat = cat_p.max(0)
-            bnd = torch.sigmoid(bnd_logit[0, :H, :W])
-            col = torch.softmax(col_logits[0, :, :H, :W], 0)
-        return cat.numpy().astype(np.int32), prob.numpy(), bnd.numpy(), col.numpy()
+        depth = np.nan_to_num(frame.depth_m.astype(np.float32), nan=0.0, posinf=10.0)
+        rgb, depth = shrink(frame.rgb, depth, net.downsample)
+        depth = np.ascontiguousarray(depth)
+        # One thread: on 2 shared cores a second one cost 10x the CPU time in synchronisation (measured, loaded
+        # machine) for a network this small; the process's setting is restored afterwards.
+        threads = torch.get_num_threads()
+        torch.set_num_threads(1)
+        try:
+            with torch.no_grad():
+                x = network_input(torch.from_numpy(rgb[None]), torch.from_numpy(depth[None]))
+                cat_logits, bnd_logit, col_logits = net.split(net(x))
+                prob, cat = torch.softmax(cat_logits[0], 0).max(0)
+                bnd = torch.sigmoid(bnd_logit[0])
+                col = torch.softmax(col_logits[0], 0)
+        finally:
+            torch.set_num_threads(threads)
+        return cat.numpy().astype(np.int32), prob.numpy(), bnd.numpy(), col.numpy(), depth
 
     def instances(self, frame: CameraFrame) -> list[Instance]:
         """Every object instance the network sees in this frame (cached per frame: one prompt set per frame
-        usually arrives in several calls)."""
+        usually arrives in several calls). Instances are found at network resolution; each mask is then scaled
+        to the frame by nearest pixel (at most a camera pixel off at the edges)."""
         key = (id(frame.rgb), frame.camera, frame.sim_time_s)
         if key in self._cache:
             return self._cache[key]
-        cat, prob, bnd, col = self.predict(frame)
-        split = (bnd > 0.5) | _depth_edges(frame.depth_m)
+        cat, prob, bnd, col, depth = self.predict(frame)
+        H, W = frame.shape
+        factor_sq = (H / cat.shape[0]) * (W / cat.shape[1])
+        split = (bnd > BOUNDARY_PROB) | _depth_edges(depth)
         out: list[Instance] = []
         for c in np.unique(cat):
             if not CATEGORIES[c].thing:
@@ -156,11 +167,15 @@ class LearnedSegmenter:
             comp = _grow_into(comp, region)
             for k in range(1, n):
                 m = comp == k
-                area = int(m.sum())
-                if area < self.min_area_px:
+                if m.sum() * factor_sq < self.min_area_px:
+                    continue
+                score = float(np.median(prob[m]))
+                if score < MIN_INSTANCE_SCORE:
                     continue
                 colour_p = col[1:, m].mean(1)
-                out.append(Instance(int(c), m, float(prob[m].mean()), COLOURS[1 + int(colour_p.argmax())]))
+                full = cv2.resize(m.astype(np.uint8), (W, H), interpolation=cv2.INTER_NEAREST).astype(bool)
+                out.append(Instance(int(c), full, score, COLOURS[1 + int(colour_p.argmax())]))
+        out = _drop_fragments(out)
         if len(self._cache) > 8:
             self._cache.clear()
         self._cache[key] = out
@@ -189,7 +204,8 @@ class LearnedSegmenter:
         for k, inst in enumerate(self.instances(frame)):
             if inst.category not in cats or (colours and inst.colour not in colours):
                 continue
-            score = calibrated_score(cats[inst.category], self.threshold) * inst.score
+            # grounding and pixel confidence together; their geometric mean keeps 0.5 as "as sure as not"
+            score = float(np.sqrt(calibrated_score(cats[inst.category], self.threshold) * inst.score))
             detail = {"category": CATEGORIES[inst.category].name, "colour": inst.colour, "instance": k}
             dets.append(Detection(prompt, prompt, inst.mask, round(score, 4), frame.camera, False, detail))
         return dets
@@ -216,6 +232,15 @@ class LearnedSegmenter:
             Detection(prompt, prompt, d.mask, d.score, d.camera, False, {**d.detail, "relation_anchors": anchors})
             for d in dets
         ]
+
+
+def _drop_fragments(instances: list[Instance]) -> list[Instance]:
+    """Pieces under FRAGMENT_AREA of the largest instance of their category: stray bits of an object the network
+    split off (two real objects of a kind differ far less in image area on a table seen from these cameras)."""
+    largest: dict[int, int] = {}
+    for inst in instances:
+        largest[inst.category] = max(largest.get(inst.category, 0), int(inst.mask.sum()))
+    return [i for i in instances if i.mask.sum() >= FRAGMENT_AREA * largest[i.category]]
 
 
 def _depth_edges(depth_m: np.ndarray) -> np.ndarray:

@@ -16,7 +16,7 @@ from torch.nn import functional as F
 
 from .categories import CATEGORIES
 from .dataset import load_shards
-from .model import SegNet, network_input
+from .model import SegNet, network_input, shrink
 
 THING_WEIGHT = 3.0  # category loss weight of object pixels (few, and what matters) relative to background
 
@@ -28,7 +28,8 @@ class TrainConfig:
     steps: int = 100_000
     minutes: float = 45.0  # wall-time budget; training stops at whichever of steps/minutes comes first
     batch: int = 12
-    crop: tuple[int, int] = (192, 256)  # (height, width) of the random training crops
+    crop: tuple[int, int] = (192, 256)  # (height, width) of the random training crops, camera resolution
+    downsample: int = 2  # crops (and, at inference, frames) are shrunk by this factor before the network
     lr: float = 2e-3
     seed: int = 0
     val_fraction: float = 0.05  # the dataset's last crops (highest scene seeds) held out for validation
@@ -44,7 +45,7 @@ def boundary_target(instance: np.ndarray, band_px: int = 2) -> np.ndarray:
     return (inst > 0) & (((hi != inst) & (hi > 0)) | ((lo != inst) & (lo < 255)))
 
 
-def _batch(data: dict[str, np.ndarray], idx: np.ndarray, crop: tuple[int, int], rng: np.random.Generator):
+def _batch(data: dict[str, np.ndarray], idx: np.ndarray, crop: tuple[int, int], rng: np.random.Generator, factor: int):
     h, w = crop
     H, W = data["category"].shape[1:]
     rgb, depth, cat, bnd, col = [], [], [], [], []
@@ -53,14 +54,15 @@ def _batch(data: dict[str, np.ndarray], idx: np.ndarray, crop: tuple[int, int], 
         win = (slice(r0, r0 + h), slice(c0, c0 + w))
         flip = rng.random() < 0.5
         f = (lambda a: a[:, ::-1]) if flip else (lambda a: a)
-        im = f(data["rgb"][i][win]).astype(np.float32)
-        im = im * rng.uniform(0.75, 1.25) + rng.normal(0, 6, 3)  # lighting and white-balance jitter
+        im, d = shrink(f(data["rgb"][i][win]), f(data["depth_mm"][i][win]), factor)
+        im = im.astype(np.float32) * rng.uniform(0.75, 1.25) + rng.normal(0, 6, 3)  # lighting, white balance
         rgb.append(np.clip(im, 0, 255).astype(np.uint8))
-        depth.append(f(data["depth_mm"][i][win]).astype(np.float32) / 1000.0)
-        cat.append(f(data["category"][i][win]))
-        inst = f(data["instance"][i][win])
-        bnd.append(boundary_target(np.ascontiguousarray(inst)))
-        col.append(f(data["colour"][i][win]))
+        depth.append(d.astype(np.float32) / 1000.0)
+        # labels sampled like depth (see shrink)
+        c, inst, co = (f(data[k][i][win])[::factor, ::factor] for k in ("category", "instance", "colour"))
+        cat.append(c)
+        bnd.append(boundary_target(np.ascontiguousarray(inst), max(1, 2 // factor)))
+        col.append(co)
     t = lambda xs, dt: torch.from_numpy(np.ascontiguousarray(np.stack(xs))).to(dt)
     return (
         network_input(t(rgb, torch.uint8), t(depth, torch.float32)),
@@ -85,18 +87,16 @@ def losses(net: SegNet, x, cat, bnd, col) -> dict[str, torch.Tensor]:
 
 
 def thing_iou(net: SegNet, data: dict[str, np.ndarray], idx: np.ndarray) -> dict[str, float]:
-    """Pixel IoU per object category over the validation crops (full crops, no augmentation)."""
+    """Pixel IoU per object category over the validation crops (whole crops at network resolution)."""
     net.eval()
     inter = np.zeros(net.n_categories)
     union = np.zeros(net.n_categories)
     with torch.no_grad():
-        for s in range(0, len(idx), 8):
-            ii = idx[s : s + 8]
-            x = network_input(
-                torch.from_numpy(data["rgb"][ii]), torch.from_numpy(data["depth_mm"][ii].astype(np.float32) / 1000)
-            )
-            pred = net.split(net(x))[0].argmax(1).numpy()
-            gt = data["category"][ii]
+        for i in idx:
+            im, d = shrink(data["rgb"][i], data["depth_mm"][i], net.downsample)
+            x = network_input(torch.from_numpy(im[None]), torch.from_numpy(d[None].astype(np.float32) / 1000))
+            pred = net.split(net(x))[0].argmax(1).numpy()[0]
+            gt = data["category"][i][:: net.downsample, :: net.downsample]
             for c in range(net.n_categories):
                 p, g = pred == c, gt == c
                 inter[c] += (p & g).sum()
@@ -109,7 +109,8 @@ def save(net: SegNet, path: Path, meta: dict) -> None:
     """Weights in float16 (half the bytes; inference casts back) with the architecture and training metadata."""
     path.parent.mkdir(parents=True, exist_ok=True)
     state = {k: (v.half() if v.is_floating_point() else v) for k, v in net.state_dict().items()}
-    torch.save({"widths": net.widths, "full_res": net.full_res, "state": state, "meta": meta}, path)
+    arch = {"widths": net.widths, "full_res": net.full_res, "downsample": net.downsample}
+    torch.save({**arch, "state": state, "meta": meta}, path)
 
 
 def train(cfg: TrainConfig, log: Callable[[str], None] = print) -> dict:
@@ -125,7 +126,7 @@ def train(cfg: TrainConfig, log: Callable[[str], None] = print) -> dict:
     if len(train_idx) == 0:
         raise ValueError(f"dataset {cfg.data_dir} has too few crops ({len(order)}) to train on")
     log(f"{len(train_idx)} training crops, {len(val_idx)} validation crops")
-    net = SegNet()
+    net = SegNet(downsample=cfg.downsample)
     opt = torch.optim.AdamW(net.parameters(), lr=cfg.lr, weight_decay=1e-4)
     t0 = time.perf_counter()
     budget_s = cfg.minutes * 60
@@ -136,7 +137,7 @@ def train(cfg: TrainConfig, log: Callable[[str], None] = print) -> dict:
         for g in opt.param_groups:  # cosine decay over whichever budget runs out first
             g["lr"] = cfg.lr * 0.5 * (1 + np.cos(np.pi * frac))
         idx = rng.choice(train_idx, size=min(cfg.batch, len(train_idx)), replace=False)
-        x, cat, bnd, col = _batch(data, idx, cfg.crop, rng)
+        x, cat, bnd, col = _batch(data, idx, cfg.crop, rng, cfg.downsample)
         loss = losses(net, x, cat, bnd, col)
         opt.zero_grad()
         loss["total"].backward()
@@ -169,6 +170,6 @@ def train(cfg: TrainConfig, log: Callable[[str], None] = print) -> dict:
 
 def load_net(path: Path) -> SegNet:
     ckpt = torch.load(path, map_location="cpu", weights_only=True)
-    net = SegNet(tuple(ckpt["widths"]), int(ckpt["full_res"]))
+    net = SegNet(tuple(ckpt["widths"]), int(ckpt["full_res"]), int(ckpt["downsample"]))
     net.load_state_dict({k: v.float() if v.is_floating_point() else v for k, v in ckpt["state"].items()})
     return net.eval()
