@@ -100,6 +100,12 @@ def register(sub) -> None:
     )
     b.add_argument("--store", help="also record every trial in this trace store (SQLAlchemy URL) as one batch")
     b.add_argument(
+        "--plan-library",
+        metavar="FILE.jsonl",
+        help="LLM planners get few-shot examples from this plan library (JSON lines), read-only for the run; "
+        "its hash goes into the run manifest (default: no library)",
+    )
+    b.add_argument(
         "--suites",
         nargs="+",
         default=["builtin"],
@@ -357,6 +363,7 @@ def _bench(args: argparse.Namespace) -> int:
                 args.store,
                 batch_id=manifest["batch_id"],
                 manifest=manifest,
+                plan_library=args.plan_library,
             )
             print(reference_suite.table(rows))
             suffix = "" if args.embodiment in (None, "panda") else f", {args.embodiment}"

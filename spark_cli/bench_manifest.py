@@ -51,9 +51,15 @@ def prepare(args: argparse.Namespace) -> int | None:
         t = rerun.template
         args.planner, args.segmenter, args.embodiment = t.planner, t.segmenter, t.embodiment
         args.protocol = recorded["run"].get("protocol")
+        memory = recorded["run"].get("memory", {})
+        if memory.get("plan_library") == "on" and not getattr(args, "plan_library", None):
+            args.plan_library = memory.get("path")
         return None
     if args.suite is None:
         print("spark bench: give a suite, or --from-manifest FILE", file=sys.stderr)
+        return 2
+    if getattr(args, "plan_library", None) and not Path(args.plan_library).is_file():
+        print(f"--plan-library: no such file {args.plan_library}", file=sys.stderr)
         return 2
     if args.split:
         seeds = SPLITS[args.split]
@@ -72,6 +78,16 @@ def template_for(args: argparse.Namespace, template: Any) -> Any:
     return args.rerun.template if args.rerun is not None else template
 
 
+def _library(args: argparse.Namespace) -> Any:
+    """The run's read-only plan library (None: off)."""
+    path = getattr(args, "plan_library", None)
+    if not path:
+        return None
+    from spark_core.planning.plan_library import PlanLibrary
+
+    return PlanLibrary(path, read_only=True)
+
+
 def start(args: argparse.Namespace, tasks: list[str], template: Any, command: str) -> dict[str, Any]:
     """The run's manifest before it runs, with the batch id it will be stored under."""
     seeds = range(args.seed, args.seed + args.trials)
@@ -86,6 +102,7 @@ def start(args: argparse.Namespace, tasks: list[str], template: Any, command: st
         ray_address=args.ray_address,
         command=command,
         protocol=getattr(args, "protocol", None),
+        library=_library(args),
         batch_id=f"bench-{uuid.uuid4().hex[:10]}",
     )
 

@@ -149,7 +149,7 @@ def memory_regime(library: Any = None, planner: str = "reference") -> dict[str, 
         return {"plan_library": "off", "note": f"the {planner} planner reads no examples"}
     entries = [(e["instruction"], e["plan"]) for e in library.entries()]
     digest = hashlib.sha256(json.dumps(entries, sort_keys=True).encode()).hexdigest()
-    return {"plan_library": "on", "plans": len(entries), "sha256": digest}
+    return {"plan_library": "on", "path": str(getattr(library, "path", "")), "plans": len(entries), "sha256": digest}
 
 
 def planner_record(config: TrialConfig) -> dict[str, Any]:
@@ -380,6 +380,9 @@ def drift(recorded: dict[str, Any], current: dict[str, Any]) -> list[str]:
     out += [f"{k} {old_p.get(k)} -> {new_p.get(k)}" for k in changed]
     old_f, new_f = recorded.get("files", {}), current.get("files", {})
     out += [f"file {k} changed" for k in sorted(set(old_f) | set(new_f)) if old_f.get(k) != new_f.get(k)]
+    old_m, new_m = recorded["run"].get("memory", {}), current["run"].get("memory", {})
+    if old_m.get("sha256") != new_m.get("sha256"):
+        out.append(f"plan library {old_m.get('sha256', 'off')} -> {new_m.get('sha256', 'off')}")
     return out
 
 

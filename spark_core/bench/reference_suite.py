@@ -30,15 +30,20 @@ def protocol(config: TrialConfig) -> str:
     )
 
 
-def _one(job: tuple[TrialConfig, str | None, str]) -> dict:
-    config, store_url, trial_id = job
+def _one(job: tuple[TrialConfig, str | None, str, str | None]) -> dict:
+    config, store_url, trial_id, library_path = job
+    library = None
+    if library_path:
+        from ..planning.plan_library import PlanLibrary
+
+        library = PlanLibrary(library_path, read_only=True)  # every trial sees the same examples
     sinks = []
     if store_url:
         from ..trace import TraceStore
         from ..trace.sink import StoreSink
 
         sinks.append(StoreSink(TraceStore(store_url, migrate=False)))  # the driver migrated it
-    return run_trial(config, sinks, trial_id=trial_id).row()
+    return run_trial(config, sinks, trial_id=trial_id, library=library).row()
 
 
 def run(
@@ -53,10 +58,12 @@ def run(
     store_url: str | None = None,
     batch_id: str | None = None,
     manifest: dict | None = None,
+    plan_library: str | None = None,
 ) -> list[dict]:
     """Every task x seed with `template`'s settings; `executor` local (process pool of `workers`) or ray (see
     bench.executors). With `store_url` every trial is recorded in that trace store under one batch (`batch_id`,
-    default a new one; its spec keeps `manifest`, see bench.manifest)."""
+    default a new one; its spec keeps `manifest`, see bench.manifest). `plan_library`: a JSON-lines plan library
+    whose examples LLM planners get, read-only for the run."""
     import uuid
 
     from .executors import run_jobs
@@ -83,7 +90,7 @@ def run(
         )
         configs = [replace(c, batch_id=batch_id) for c in configs]
     # Ids decided before submission: a trial retried after its worker died writes the same record again
-    jobs = [(c, store_url, f"{batch_id}-{i:04d}-s{c.seed}") for i, c in enumerate(configs)]
+    jobs = [(c, store_url, f"{batch_id}-{i:04d}-s{c.seed}", plan_library) for i, c in enumerate(configs)]
     return run_jobs(_one, jobs, executor, workers, ray_address, progress)
 
 

@@ -14,11 +14,15 @@ from ..perception.text_encoder import SHARED_ENCODER, TextEncoder
 
 
 class PlanLibrary:
-    """JSON-lines file of {instruction, plan, scene_summary, t}; `enabled=False` stores and returns nothing."""
+    """JSON-lines file of {instruction, plan, scene_summary, t}; `enabled=False` stores and returns nothing;
+    `read_only=True` gives examples but never grows (a benchmark run's fixed memory regime)."""
 
-    def __init__(self, path: str | Path, enabled: bool = True, encoder: TextEncoder | None = None):
+    def __init__(
+        self, path: str | Path, enabled: bool = True, encoder: TextEncoder | None = None, read_only: bool = False
+    ):
         self.path = Path(path)
         self.enabled = enabled
+        self.read_only = read_only
         self.encoder = encoder or SHARED_ENCODER
         self._lock = threading.Lock()
 
@@ -29,7 +33,7 @@ class PlanLibrary:
 
     def add(self, instruction: str, plan_yaml: str, scene_summary: str = "", trial_id: str | None = None) -> None:
         """Call only for plans whose trial succeeded."""
-        if not self.enabled:
+        if not self.enabled or self.read_only:
             return
         with self._lock:
             self.path.parent.mkdir(parents=True, exist_ok=True)
