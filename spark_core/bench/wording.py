@@ -163,29 +163,38 @@ def plan_entries(entries: list[dict[str, Any]], seed: int = 0, progress: Callabl
 def execute_sample(
     entries: list[dict[str, Any]], seeds: int = 2, progress: Callable[[dict], None] | None = None
 ) -> list[dict[str, Any]]:
-    """Real trials (rules planner, sim segmenter) for a sample of goal-stating entries, and for the official
-    wording of the same tasks on the same seeds."""
+    """Real trials (rules planner, sim segmenter) for a sample of goal-stating entries of each half, and for the
+    official wording of the same tasks on the same seeds (rows with half "official")."""
     rows: list[dict[str, Any]] = []
+
+    def trial(task_name: str, wording_id: str, instruction: str | None, half: str) -> None:
+        for seed in range(seeds):
+            out = run_trial(TrialConfig(task_name, instruction, planner="rules", segmenter="sim", seed=seed))
+            row = {
+                "task": task_name,
+                "wording": wording_id,
+                "instruction": instruction,
+                "seed": seed,
+                "success": out.success,
+                "verdict": out.verdict.value,
+                "reason": out.reason,
+                "half": half,
+            }
+            rows.append(row)
+            if progress:
+                progress(row)
+
     for task_name in EXEC_TASKS:
-        picked = [e for e in entries if e["task"] == task_name and e["expect"] == "goal"][:EXEC_PER_TASK]
-        if not picked:
+        picked = {
+            half: [e for e in entries if e["half"] == half and e["task"] == task_name and e["expect"] == "goal"]
+            for half in HALVES
+        }
+        if not any(picked.values()):
             continue
-        for wording, instruction in [("official", None)] + [(e["id"], e["instruction"]) for e in picked]:
-            for seed in range(seeds):
-                out = run_trial(TrialConfig(task_name, instruction, planner="rules", segmenter="sim", seed=seed))
-                row = {
-                    "task": task_name,
-                    "wording": wording,
-                    "instruction": instruction,
-                    "seed": seed,
-                    "success": out.success,
-                    "verdict": out.verdict.value,
-                    "reason": out.reason,
-                    "half": picked[0]["half"],
-                }
-                rows.append(row)
-                if progress:
-                    progress(row)
+        trial(task_name, "official", None, "official")
+        for half in HALVES:
+            for e in picked[half][:EXEC_PER_TASK]:
+                trial(task_name, e["id"], e["instruction"], half)
     return rows
 
 
@@ -205,12 +214,20 @@ def summary(rows: list[dict[str, Any]]) -> dict[str, Any]:
     }
 
 
-def exec_summary(rows: list[dict[str, Any]]) -> dict[str, float]:
-    off = [r for r in rows if r["wording"] == "official"]
-    new = [r for r in rows if r["wording"] != "official"]
+def exec_summary(rows: list[dict[str, Any]], half: str) -> dict[str, float]:
+    """Success of `half`'s reworded trials against the official wording of the same tasks."""
+    new = [r for r in rows if r["half"] == half]
+    tasks = {r["task"] for r in new}
+    off = [r for r in rows if r["half"] == "official" and r["task"] in tasks]
     o = sum(r["success"] for r in off) / len(off) if off else 0.0
     n = sum(r["success"] for r in new) / len(new) if new else 0.0
     return {"official": o, "reworded": n, "ratio": n / o if o else 0.0, "trials": len(new), "official_trials": len(off)}
+
+
+def _why(row: dict[str, Any]) -> str:
+    if row["expect"] != "goal":
+        return "planned; should have refused: " + row["expect"].split(":", 1)[1]
+    return row["error"] or "planned, not the official plan's effect"
 
 
 def section(rows: list[dict[str, Any]], exec_rows: list[dict[str, Any]], command: str, seeds: int) -> str:
@@ -225,7 +242,7 @@ def section(rows: list[dict[str, Any]], exec_rows: list[dict[str, Any]], command
         lines.append(f"| {style}{kind} | " + " | ".join(cells) + " |")
     lines += ["", "| measure | dev | test |", "|---|---|---|"]
     sums = {h: summary([r for r in rows if r["half"] == h]) for h in HALVES}
-    execs = {h: exec_summary([r for r in exec_rows if r["half"] == h]) for h in HALVES}
+    execs = {h: exec_summary(exec_rows, h) for h in HALVES}
     for label, key in (
         ("planning success (goal-stating entries: plan has the official plan's effect)", "planning_success"),
         ("plannable entries refused", "refused_plannable"),
@@ -253,10 +270,7 @@ def section(rows: list[dict[str, Any]], exec_rows: list[dict[str, Any]], command
     wrong = [r for r in rows if r["half"] == "dev" and r["correct"] is False]
     if wrong:
         lines.append("")
-        lines.append(
-            "Dev failures: "
-            + "; ".join(f"`{r['instruction']}` ({(r['error'] or 'planned, wrong effect')[:70]})" for r in wrong)
-        )
+        lines.append("Dev failures: " + "; ".join(f"`{r['instruction']}` ({_why(r)[:70]})" for r in wrong))
     return (
         "\n".join(lines)
         + "\n\n"

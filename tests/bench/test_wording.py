@@ -60,3 +60,14 @@ def test_planning_check_on_a_real_scene_tells_right_from_wrong_and_refusals():
     assert rows[2]["planned"] is False and "giraffe" in rows[2]["error"]
     s = wording.summary(rows)
     assert s["planning_success"] == 0.5 and s["nonsense_absent_refused"] == 1.0
+
+
+def test_execution_is_compared_with_the_official_wording_of_the_same_tasks_per_half():
+    def row(task, half, ok):
+        return {"task": task, "half": half, "success": ok, "wording": "official" if half == "official" else "x"}
+
+    rows = [row("a", "official", True), row("a", "official", True), row("b", "official", False)]
+    rows += [row("a", "dev", True), row("a", "dev", False), row("b", "test", False), row("b", "test", True)]
+    dev, test = wording.exec_summary(rows, "dev"), wording.exec_summary(rows, "test")
+    assert (dev["reworded"], dev["official"], dev["ratio"]) == (0.5, 1.0, 0.5)
+    assert (test["reworded"], test["official"], test["ratio"]) == (0.5, 0.0, 0.0)  # nothing to compare with
