@@ -304,19 +304,45 @@ def test_history_sorts_filters_pages_and_compares(server, page):
     a = _post(server, "/api/trials", {"task": "lift_block", "segmenter": "privileged-keypoints", "seed": 1})["id"]
     b = _post(server, "/api/trials", {"task": "lift_block", "segmenter": "privileged-keypoints", "plan": NUDGE})["id"]
     _wait_done(server, a), _wait_done(server, b)
+    store = APPS[-1].state.store  # enough finished records for two pages
+    for i in range(60):
+        store.create_trial(
+            f"filler-{i:03d}",
+            status="done",
+            task="push_to_zone",
+            instruction="push",
+            seed=1000 + i,
+            planner="reference",
+            segmenter="sim",
+            outcome="success",
+            success=True,
+            verdict="success",
+        )
     page.goto(server + "/#/history")
     page.wait_for_selector("#rows table")
+    total = int(page.locator("#page-info").inner_text().split()[0])
+    assert total >= 62 and "1–50" in page.locator("#page-info").inner_text()
+    page.click("#next")
+    page.wait_for_selector(f"#page-info:has-text('51–{min(100, total)}')")
+    assert page.locator("#rows tbody tr").count() == min(50, total - 50)
+    page.click("#prev")
+    page.wait_for_selector("#page-info:has-text('1–50')")
     page.click("th[data-sort=seed]")
     page.wait_for_selector("th[data-sort=seed]:has-text('▲')")
     seeds = page.eval_on_selector_all("#rows tbody tr", "rs => rs.map(r => +r.cells[6].innerText)")
     assert seeds == sorted(seeds)
     page.click("#verdict-filters button[data-verdict=task_unmet]")
-    page.wait_for_selector(f"#rows tr[data-id='{b}']")
-    assert all(
-        v == "task_unmet"
-        for v in page.eval_on_selector_all("#rows tbody [data-verdict]", "vs => vs.map(v => v.dataset.verdict)")
+    # the server's answer: only that verdict, b among them
+    page.wait_for_function(
+        "() => { const vs = [...document.querySelectorAll('#rows tbody [data-verdict]')].map(v => v.dataset.verdict);"
+        " return vs.length > 0 && vs.every(v => v === 'task_unmet'); }"
     )
+    assert page.locator(f"#rows tr[data-id='{b}']").count() == 1
     page.click("#verdict-filters button:has-text('any')")
+    page.click("th[data-sort=created_at]")  # newest first again (a second click: descending)
+    page.click("th[data-sort=created_at]")
+    page.wait_for_selector("th[data-sort=created_at]:has-text('▼')")
+    page.fill("#filters input[name=q]", "lift_block")  # the fillers are newer: search for the two
     page.wait_for_selector(f"#rows tr[data-id='{a}']")
     page.check(f"#rows .pick[value='{a}']")
     page.check(f"#rows .pick[value='{b}']")
