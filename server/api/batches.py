@@ -141,6 +141,8 @@ def list_batches(
     items = []
     for r in rows:
         spec = json.loads(r["spec"]) if isinstance(r["spec"], str) else (r["spec"] or {})
+        manifest = spec.pop("manifest", None) or {}  # large (files, packages): GET /api/batches/{id} has it
+        spec["manifest_id"] = manifest.get("id")
         done, n = int(r["done"] or 0), int(r["total"] or 0)
         status = r["status"] if r["status"] == "cancelled" or done < n else "done"
         items.append(

@@ -103,7 +103,7 @@ def test_every_batch_is_listed_with_settings_and_progress(tmp_path):
         assert listed["total"] == 2 and {b["id"] for b in listed["items"]} == set(ids)
         for b in listed["items"]:
             assert b["status"] == "done" and b["progress"] == {"done": 1, "total": 1, "successes": 1}
-            assert b["spec"]["segmenter"] == "privileged-keypoints"
+            assert b["spec"]["segmenter"] == "privileged-keypoints" and "manifest" not in b["spec"]
         assert len(c.get("/api/batches", params={"limit": 1}).json()["items"]) == 1
         # where the time went, per primitive of the plans (lift_block's reference plan is one pick)
         timing = c.get(f"/api/batches/{ids[0]}/timing").json()["rows"]
