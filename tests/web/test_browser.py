@@ -173,6 +173,11 @@ def test_workspace_steps_breakpoints_then_scrubs_tree_camera_and_3d_together(ser
         time.sleep(0.05)
     assert moved > 0.01, "the 3D view did not follow the cursor"
     assert page.locator("#event-table tr.future").count() > 0
+    page.locator("#tree-pane").click()  # ← / → step the cursor through the events
+    page.keyboard.press("ArrowRight")
+    page.wait_for_selector(".node.succeeded[data-path='tree.children[1]']")
+    page.keyboard.press("ArrowLeft")
+    page.wait_for_selector(".node.running[data-path='tree.children[1]']")
     assert scene.image_key is None  # the 3D view's detection image is gone too, as in the camera panel
     page.wait_for_timeout(800)  # let the embedded viser client draw the cleared image before the screenshot
     shot(page, "3-workspace-scrubbed")

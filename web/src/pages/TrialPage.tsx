@@ -90,6 +90,26 @@ export function TrialPage({ id }: { id: string }) {
     return () => { if (raf.current !== null) cancelAnimationFrame(raf.current); };
   }, [playing, speed, end]);
 
+  // keys, as in replay tools: ←/→ the previous/next event, space play/pause (not while typing in a field)
+  const keyState = useRef({ live: true, t: 0, times: [] as number[], end: 1 });
+  keyState.current = { live, t: cursor ?? end, times: events.map((e) => e.t), end };
+  useEffect(() => {
+    const onKey = (e: KeyboardEvent) => {
+      const k = keyState.current;
+      if (k.live || (e.target as HTMLElement)?.closest?.("input, textarea, select")) return;
+      if (e.key === "ArrowRight" || e.key === "ArrowLeft") {
+        const next = e.key === "ArrowRight" ? k.times.find((x) => x > k.t + 1e-9) : [...k.times].reverse().find((x) => x < k.t - 1e-9);
+        if (next !== undefined) { setPlaying(false); setCursor(next); e.preventDefault(); }
+      } else if (e.key === " ") {
+        if (k.t >= k.end) setCursor(0);
+        setPlaying((p) => !p);
+        e.preventDefault();
+      }
+    };
+    window.addEventListener("keydown", onKey);
+    return () => window.removeEventListener("keydown", onKey);
+  }, []);
+
   if (loadError) return <section className="fail" id="load-error">{loadError}</section>;
   if (!trial || !cat) return <section>loading…</section>;
 
@@ -124,7 +144,7 @@ export function TrialPage({ id }: { id: string }) {
         <button id="resume" disabled={!paused} onClick={() => act("resume")}>Resume</button>
         <button id="abort" disabled={!live} onClick={() => act("abort")}>Abort</button>
         <span className="sep" />
-        <button id="play" disabled={live} onClick={() => { if (t >= end) setCursor(0); setPlaying(!playing); }}>{playing ? "Pause replay" : "Play replay"}</button>
+        <button id="play" title="space" disabled={live} onClick={() => { if (t >= end) setCursor(0); setPlaying(!playing); }}>{playing ? "Pause replay" : "Play replay"}</button>
         <select id="speed" aria-label="replay speed" value={speed} onChange={(e) => setSpeed(Number(e.target.value))}>
           {SPEEDS.map((s) => <option key={s} value={s}>{s}x</option>)}
         </select>
