@@ -1,9 +1,19 @@
 """On-demand camera frames: RGB, metric depth, per-pixel object ids, intrinsics and extrinsics (OpenCV convention).
 
-Rendering is the expensive part of simulation; nothing renders unless perception (or the UI) asks.
+Rendering is the expensive part of simulation; nothing renders unless perception (or the UI) asks. A world
+with `defer_rgb` set (the robosuite/LIBERO worlds, whose shaded RGB pass costs ~0.4 s a camera on this
+machine's software GL, 5x the depth and id passes) gets frames whose RGB is drawn on first access, from a
+copy of the physics state taken when the frame was captured: the same pixels, but never drawn for a
+segmenter that reads only depth and ids (the privileged `sim` segmenter).
 """
 
 from __future__ import annotations
+
+import copy
+import threading
+import time
+from collections.abc import Callable
+from typing import Any
 
 import mujoco
 import numpy as np
@@ -17,7 +27,67 @@ def _renderer(world, width: int, height: int) -> mujoco.Renderer:
         if r is not None:
             r.close()
         r = world.renderer = mujoco.Renderer(world.model, height, width)
+    world._render_thread_id = threading.get_ident()  # the thread whose GL context is current (see _draw_later)
     return r
+
+
+class _DeferredRGB:
+    """Data descriptor for `DeferredFrame.rgb`: holds either the image or a pending draw, which runs once."""
+
+    def __set__(self, obj: Any, value: Any) -> None:
+        obj.__dict__["_rgb"] = value  # a frozen dataclass's __init__ sets fields with object.__setattr__
+
+    def __get__(self, obj: Any, owner: type | None = None) -> Any:
+        if obj is None:
+            return self
+        value = obj.__dict__["_rgb"]
+        if callable(value):
+            value = value()
+            obj.__dict__["_rgb"] = value
+        return value
+
+
+class DeferredFrame(CameraFrame):
+    """A CameraFrame whose `rgb` (H, W, 3 uint8) is drawn on first access from the state it was captured in."""
+
+    rgb = _DeferredRGB()
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        return self.depth_m.shape[:2]  # without drawing the RGB
+
+    @property
+    def rgb_drawn(self) -> bool:
+        return not callable(self.__dict__["_rgb"])
+
+
+def _draw_later(world, camera: str, width: int, height: int) -> Callable[[], np.ndarray]:
+    """A draw of `camera`'s RGB as the scene is now: the physics state and geom colours (a wiped marker turns
+    transparent) are copied, so a later draw shows this moment, whatever the world has done since."""
+    m = world.model
+    data, rgba = copy.copy(world.data), m.geom_rgba.copy()  # MjData's copy is MuJoCo's mj_copyData
+
+    def draw() -> np.ndarray:
+        r = _renderer(world, width, height)
+        now = m.geom_rgba.copy()
+        m.geom_rgba[:] = rgba
+        try:
+            r.update_scene(data, camera=camera)
+            return r.render().copy()
+        finally:
+            m.geom_rgba[:] = now
+
+    def on_render_thread() -> np.ndarray:
+        t0 = time.perf_counter()
+        try:
+            if getattr(world, "_render_thread_id", None) == threading.get_ident():
+                return draw()  # asked from the render thread itself (it cannot wait for itself)
+            with world._lock:  # the colours are swapped for the draw: no physics step reads them meanwhile
+                return world.on_render_thread(draw)
+        finally:
+            world.wall_s["rendering"] += time.perf_counter() - t0
+
+    return on_render_thread
 
 
 def label_table(world) -> tuple[dict[int, str], np.ndarray]:
@@ -64,10 +134,17 @@ def intrinsics(model: mujoco.MjModel, camera: str, width: int, height: int) -> n
 
 
 def render_frame(world, camera: str, width: int, height: int) -> CameraFrame:
+    """One frame of `camera` (width x height px) as the world is now; on the world's render thread. A world with
+    `defer_rgb` gets a DeferredFrame (its RGB drawn when first read, identical to drawing it now)."""
     m, d = world.model, world.data
     r = _renderer(world, width, height)
-    r.update_scene(d, camera=camera)
-    rgb = r.render().copy()
+    deferred = bool(getattr(world, "defer_rgb", False))
+    rgb: Any
+    if deferred:
+        rgb = _draw_later(world, camera, width, height)
+    else:
+        r.update_scene(d, camera=camera)
+        rgb = r.render().copy()
     r.enable_depth_rendering()
     r.update_scene(d, camera=camera)
     depth = r.render().astype(np.float32).copy()
@@ -87,4 +164,5 @@ def render_frame(world, camera: str, width: int, height: int) -> CameraFrame:
     T = np.eye(4)
     T[:3, :3] = d.cam_xmat[cid].reshape(3, 3) @ np.diag([1.0, -1.0, -1.0])
     T[:3, 3] = d.cam_xpos[cid] - getattr(world, "origin_m", 0.0)  # in the world's frame
-    return CameraFrame(camera, rgb, depth, intrinsics(m, camera, width, height), T, world.sim_time_s, obj, labels)
+    kind = DeferredFrame if deferred else CameraFrame
+    return kind(camera, rgb, depth, intrinsics(m, camera, width, height), T, world.sim_time_s, obj, labels)

@@ -133,6 +133,9 @@ class RobosuiteWorld(MujocoWorld):
     # Wipe's referee (tasks/capbench.py).
     instruction: str
     referee: Any
+    # Camera frames draw their RGB only when read (sim.cameras.DeferredFrame): robosuite scenes' shaded pass is
+    # most of a trial's rendering time, and the privileged segmenter reads only depth and ids.
+    defer_rgb = True
 
     def __init__(
         self,
@@ -287,7 +290,12 @@ class RobosuiteWorld(MujocoWorld):
 
     def close(self) -> None:
         super().close()
-        self.env.close()
+        # Not env.close(): robosuite's MjSim.free() ends in a full gc.collect(), 0.3-0.6 s a trial once torch and
+        # the text encoder are loaded. Dropping the env's references frees the same model and data (its
+        # offscreen renderer is off, so there is no GL context to release); the automatic collector takes any
+        # reference cycles.
+        self.env._destroy_viewer()
+        self.env.sim = None
 
 
 def _support_height(env) -> float:
