@@ -36,10 +36,9 @@ def create_app(settings: Settings | None = None) -> FastAPI:
 
             scene = ViserScene("127.0.0.1", settings.viser_port)  # loopback only: browsers come through /viser
         app.state.store, app.state.settings, app.state.scene, app.state.lease = store, settings, scene, lease
-        if scene is not None:
-            from .replay import ReplayCursors
+        from .replay import ReplayCursors
 
-            app.state.replays = ReplayCursors(store, scene)
+        app.state.replays = ReplayCursors(store, scene)  # the 3D view and camera images at a page's cursor
         app.state.runner = TrialRunner(
             store,
             settings.workers,
@@ -56,8 +55,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
             stop_purging()
             app.state.runner.shutdown(settings.shutdown_timeout_s)
             lease.release()
+            app.state.replays.close()
             if scene is not None:
-                app.state.replays.close()
                 scene.stop()
 
     app = FastAPI(

@@ -101,6 +101,8 @@ class ReplayCursors:
         from spark_core import body_poses, visual_geoms
 
         key = f"replay:{trial_id}"
+        if self.scene is None:
+            raise ReplayUnavailable("the 3D view is off (SPARK_VISER=0)")
         with self._lock:
             r = self._open.get(trial_id) or self._load(trial_id)
             i = max(0, bisect.bisect_right(r["times"], t_sim_s) - 1)
@@ -121,6 +123,43 @@ class ReplayCursors:
             self.scene.image(key, r["image"] if last is not None and t_sim_s >= last else None)
             self.scene.active(key, f"**Replay:** {trial_id}  \nt = {t:.2f} / {r['times'][-1]:.2f} s (simulated)")
         return {"id": trial_id, "key": key, "t_sim_s": round(t, 3), "index": i, "states": len(r["states"])}
+
+    def camera_png(self, trial_id: str, camera: str | None, t_sim_s: float, width: int = 320) -> bytes:
+        """PNG of `camera` (default: the scene's first) at the recorded state at or before `t_sim_s`, with the
+        keypoints grounded by then drawn as crosses. Raises KeyError / ReplayUnavailable like seek, and
+        ReplayUnavailable naming the cameras when `camera` is not one of the scene's."""
+        import bisect
+
+        import cv2
+        import mujoco
+
+        from spark_core import Keypoint, annotate
+
+        with self._lock:
+            r = self._open.get(trial_id) or self._load(trial_id)
+            world = r["world"]
+            m = world.model
+            cameras = [m.camera(i).name for i in range(m.ncam)]
+            if not cameras:
+                raise ReplayUnavailable(f"trial {trial_id!r}: its scene has no camera")
+            camera = camera or cameras[0]
+            if camera not in cameras:
+                raise ReplayUnavailable(f"trial {trial_id!r} has no camera {camera!r}; cameras: {', '.join(cameras)}")
+            i = max(0, bisect.bisect_right(r["times"], t_sim_s) - 1)
+            world.data.qpos[:] = np.asarray(r["states"][i][1], float)
+            mujoco.mj_forward(m, world.data)  # kinematics only: the recorded state, no physics
+            height = int(round(width * 3 / 4))
+            frame = world.render(camera, width, height)
+            kps = {
+                g["label"]: Keypoint(
+                    g["label"], np.asarray(g["keypoint"]["position_m"], float), np.asarray(g["keypoint"]["extent_m"])
+                )
+                for g in r["groundings"]
+                if g.get("keypoint") and g["keypoint"].get("extent_m") and (g.get("t_sim_s") or 0.0) <= t_sim_s
+            }
+            img = annotate(frame, [], kps)
+        ok, png = cv2.imencode(".png", cv2.cvtColor(img, cv2.COLOR_RGB2BGR))
+        return png.tobytes()
 
     def _load(self, trial_id: str) -> dict:
         import mujoco

@@ -8,7 +8,7 @@ import uuid
 from datetime import timedelta
 from typing import Annotated
 
-from fastapi import APIRouter, HTTPException, Path, Query, Request, WebSocket, WebSocketDisconnect
+from fastapi import APIRouter, HTTPException, Path, Query, Request, Response, WebSocket, WebSocketDisconnect
 
 from spark_core import TrialConfig, TrialConfigError
 
@@ -115,6 +115,26 @@ def artifact(trial_id: TrialId, name: Annotated[str, Path(max_length=256)], requ
     if entry is None:
         raise HTTPException(404, f"trial {trial_id!r} has no artifact {name!r}")
     return FileResponse(entry["path"], media_type="image/png")
+
+
+@router.get("/{trial_id}/camera.png", response_class=Response, responses={200: {"content": {"image/png": {}}}})
+def camera_at(
+    trial_id: TrialId,
+    request: Request,
+    t_sim_s: float = Query(ge=0, le=1e6, description="simulated seconds since the trial started"),
+    camera: str | None = Query(None, max_length=128, description="default: the scene's first camera"),
+) -> Response:
+    """A finished trial's camera at a time: the recorded scene state at or before `t_sim_s`, rendered, with the
+    keypoints grounded by then drawn (the page's camera panel at its time cursor)."""
+    from ..replay import ReplayUnavailable
+
+    try:
+        png = request.app.state.replays.camera_png(trial_id, camera, t_sim_s)
+    except KeyError:
+        raise HTTPException(404, f"no trial {trial_id!r}") from None
+    except ReplayUnavailable as e:
+        raise HTTPException(409, str(e)) from None
+    return Response(png, media_type="image/png", headers={"cache-control": "max-age=3600"})
 
 
 @router.delete("/{trial_id}", response_model=TrialDeleted)

@@ -85,6 +85,19 @@ def test_focus_binds_the_view_to_a_finished_trial_at_the_cursor(tmp_path):
         assert scene.current == f"replay:{other}" and scene.image_key is None
         assert not scene._image.image.any()
         assert c.post("/api/viser/focus", params={"trial": "nope"}).status_code == 404
+        # the camera at a time: the recorded state rendered, different before and after the lift
+        import cv2
+
+        def camera(t):
+            r = c.get(f"/api/trials/{tid}/camera.png", params={"t_sim_s": t, "camera": "agentview"})
+            assert r.status_code == 200 and r.headers["content-type"] == "image/png"
+            return cv2.imdecode(np.frombuffer(r.content, np.uint8), cv2.IMREAD_COLOR).astype(int)
+
+        start, lifted = camera(0), camera(end["t_sim_s"])
+        assert start.shape == (240, 320, 3) and np.abs(start - lifted).mean() > 1.0
+        bad = c.get(f"/api/trials/{tid}/camera.png", params={"t_sim_s": 0, "camera": "nope"})
+        assert bad.status_code == 409 and "agentview" in bad.json()["detail"]
+        assert c.get("/api/trials/nope/camera.png", params={"t_sim_s": 0}).status_code == 404
         assert c.post("/api/viser/focus").json()["pinned"] is None
 
 

@@ -173,9 +173,15 @@ def test_workspace_steps_breakpoints_then_scrubs_tree_camera_and_3d_together(ser
         time.sleep(0.05)
     assert moved > 0.01, "the 3D view did not follow the cursor"
     assert page.locator("#event-table tr.future").count() > 0
+    # the cameras at the cursor: rendered from the recorded state at that time
+    page.wait_for_function(
+        "() => [...document.querySelectorAll('#camera-at-cursor img')].some(i => i.complete && i.naturalWidth > 0)"
+    )
+    before = page.get_attribute("#camera-at-cursor img", "src")
     page.locator("#tree-pane").click()  # ← / → step the cursor through the events
     page.keyboard.press("ArrowRight")
     page.wait_for_selector(".node.succeeded[data-path='tree.children[1]']")
+    assert page.get_attribute("#camera-at-cursor img", "src") != before
     page.keyboard.press("ArrowLeft")
     page.wait_for_selector(".node.running[data-path='tree.children[1]']")
     assert scene.image_key is None  # the 3D view's detection image is gone too, as in the camera panel

@@ -228,6 +228,27 @@ export interface paths {
         patch?: never;
         trace?: never;
     };
+    "/api/trials/{trial_id}/camera.png": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * Camera At
+         * @description A finished trial's camera at a time: the recorded scene state at or before `t_sim_s`, rendered, with the
+         *     keypoints grounded by then drawn (the page's camera panel at its time cursor).
+         */
+        get: operations["camera_at_api_trials__trial_id__camera_png_get"];
+        put?: never;
+        post?: never;
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
     "/api/trials/{trial_id}/restore": {
         parameters: {
             query?: never;
@@ -1118,6 +1139,42 @@ export interface operations {
                 };
                 content: {
                     "application/json": unknown;
+                };
+            };
+            /** @description Validation Error */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["HTTPValidationError"];
+                };
+            };
+        };
+    };
+    camera_at_api_trials__trial_id__camera_png_get: {
+        parameters: {
+            query: {
+                /** @description simulated seconds since the trial started */
+                t_sim_s: number;
+                /** @description default: the scene's first camera */
+                camera?: string | null;
+            };
+            header?: never;
+            path: {
+                trial_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "image/png": unknown;
                 };
             };
             /** @description Validation Error */

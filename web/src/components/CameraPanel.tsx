@@ -1,15 +1,31 @@
 // What perception did up to the cursor: each grounding (simulated time, label), per camera every prompt candidate
 // with its detections and best score (the kept one marked), and the annotated detection image (masks, boxes,
-// keypoints). The engine keeps one image per camera, of its last grounding: it is shown from that time on.
+// keypoints). The engine keeps one image per camera, of its last grounding: it is shown from that time on. A
+// finished trial's cameras are also drawn at the cursor, from its recorded scene state.
 import type { Grounding } from "../api/types";
 
-export function CameraPanel({ trialId, groundings, images, simCursor }:
-  { trialId: string; groundings: Grounding[]; images: { name: string; camera?: string }[]; simCursor: number }) {
+export function CameraPanel({ trialId, groundings, images, simCursor, replayable }:
+  { trialId: string; groundings: Grounding[]; images: { name: string; camera?: string }[]; simCursor: number; replayable: boolean }) {
   const done = groundings.filter((g) => (g.t_sim_s ?? 0) <= simCursor + 1e-6);
   const lastAt: Record<string, number> = {};
   for (const g of groundings) for (const cam of Object.keys(g.cameras ?? {})) lastAt[cam] = Math.max(lastAt[cam] ?? 0, g.t_sim_s ?? 0);
   return (
     <div className="camera" id="camera-panel" data-groundings={done.length}>
+      {replayable && (
+        <div id="camera-at-cursor">
+          {(images.length ? images.map((a) => a.camera ?? "") : [""]).map((cam) => {
+            const q = new URLSearchParams({ t_sim_s: (Math.floor(simCursor * 10) / 10).toFixed(1) });
+            if (cam) q.set("camera", cam);
+            return (
+              <figure key={cam || "first"} data-camera={cam}>
+                <img src={`/api/trials/${encodeURIComponent(trialId)}/camera.png?${q}`} alt={`${cam || "camera"} at the cursor`}
+                  onError={(e) => { e.currentTarget.style.display = "none"; }} />
+                <figcaption>{cam || "camera"} at {q.get("t_sim_s")} s sim (keypoints grounded so far)</figcaption>
+              </figure>
+            );
+          })}
+        </div>
+      )}
       <div id="detections">
         {images.map((a) => {
           const cam = a.camera ?? a.name;
