@@ -18,6 +18,7 @@ import sysconfig
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -126,30 +127,54 @@ def _configure() -> None:
     lib._assets_path_cache = str(assets)  # never the Hub download
 
 
-def init_states(task: LiberoTask) -> np.ndarray:
-    """The task's pruned init states (50, nq+nv+1): a torch-saved numpy array."""
+@lru_cache(maxsize=8)
+def _init_states_cached(path: str, mtime_ns: int) -> np.ndarray:
     import torch
 
-    return np.asarray(torch.load(task.init_file, weights_only=False))
+    states = np.asarray(torch.load(path, weights_only=False))
+    states.setflags(write=False)  # shared between trials: nobody may change it
+    return states
 
 
-def make_env(task: LiberoTask, init_index: int):
-    """LIBERO's ControlEnv for the task, reset to init state `init_index` (no cameras, no GL context)."""
+def init_states(task: LiberoTask) -> np.ndarray:
+    """The task's pruned init states (50, nq+nv+1): a torch-saved numpy array (read-only; read once per file
+    version in a process)."""
+    return _init_states_cached(str(task.init_file), task.init_file.stat().st_mtime_ns)
+
+
+# Env reuse: a trial's world hands its env back when it closes (RobosuiteWorld.close calls the env's
+# `_spark_release`), and the next trial of the same task in this process resets it instead of building and
+# compiling a new one (~0.5-1 s). One spare env per process, of the last task: a worker runs a task's init
+# states one after another. tests/bench/test_env_reuse.py checks a reused env starts exactly where a fresh one does.
+_spare: dict[str, Any] = {}
+
+
+def make_env(task: LiberoTask, init_index: int, reuse: bool = True):
+    """LIBERO's ControlEnv for the task, reset to init state `init_index` (no cameras, no GL context). `reuse`:
+    take this process's spare env of the same task if a closed world handed one back (the same start state)."""
     _configure()
     from libero.libero.envs.env_wrapper import ControlEnv
 
     states = init_states(task)
     if not 0 <= init_index < len(states):
         raise ValueError(f"{task.name} has {len(states)} init states; got index {init_index}")
-    env = ControlEnv(
-        bddl_file_name=str(task.bddl),
-        has_offscreen_renderer=False,
-        use_camera_obs=False,
-        camera_names=[],
-        ignore_done=True,
-        hard_reset=False,
-        horizon=STEP_LIMITS[task.suite],
-    )
+    env = _spare.pop(task.name, None) if reuse else None
+    if env is None:
+        env = ControlEnv(
+            bddl_file_name=str(task.bddl),
+            has_offscreen_renderer=False,
+            use_camera_obs=False,
+            camera_names=[],
+            ignore_done=True,
+            hard_reset=False,
+            horizon=STEP_LIMITS[task.suite],
+        )
+
+        def release() -> None:
+            _spare.clear()  # at most one spare: the last task's
+            _spare[task.name] = env
+
+        env.env._spark_release = release
     env.reset()
     env.set_init_state(states[init_index])
     return env

@@ -208,6 +208,7 @@ class RobosuiteWorld(MujocoWorld):
             max(m.vis.global_.offwidth, 640),
             max(m.vis.global_.offheight, 480),
         )
+        self._forcerange0 = m.actuator_forcerange.copy()  # as built: put back when the env is handed on
         self._q_cmd: dict[str, np.ndarray] = {}
         self._qd_cmd: dict[str, np.ndarray] = {}
         super().__init__(scene, data=d, origin_m=origin)
@@ -294,6 +295,11 @@ class RobosuiteWorld(MujocoWorld):
         # the text encoder are loaded. Dropping the env's references frees the same model and data (its
         # offscreen renderer is off, so there is no GL context to release); the automatic collector takes any
         # reference cycles.
+        release = getattr(self.env, "_spark_release", None)
+        if release is not None and self.env.sim is not None:  # the env goes back for the task's next trial
+            self.model.actuator_forcerange[:] = self._forcerange0  # grasps lowered the finger force limits
+            release()
+            return
         self.env._destroy_viewer()
         self.env.sim = None
 
