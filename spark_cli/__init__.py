@@ -33,6 +33,8 @@ def _apply_config(args: argparse.Namespace) -> None:
         "segmenter": "sim",
         "plan_library": "store",
     }
+    if args.command == "bench":  # bench's --plan-library is a FILE (default: none), not the console's store
+        del defaults["plan_library"]
     for key, value in defaults.items():
         if hasattr(args, key) and getattr(args, key) is None:
             setattr(args, key, value)

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable
+from pathlib import Path
 
 import numpy as np
 
@@ -173,7 +174,11 @@ def _cm(x: float | None) -> str:
     return "-" if x is None else f"{100 * x:.2f} cm"
 
 
-def section(r: dict, command: str, weights_note: str = "") -> str:
+def section(r: dict, command: str, weights: str | None = None) -> str:
+    from ..perception.learned.segmenter import default_weights
+
+    w = Path(weights) if weights else default_weights()
+    weights_note = f"weights {w.name}, {w.stat().st_size / 1e6:.1f} MB, trained on builtin renders: see MODEL_CARD.md"
     lines = [
         "| scenes | frames | instance precision | instance recall | keypoint error median | keypoint error p95 "
         "| labels resolved | sim oracle keypoint median / p95 "

@@ -1,0 +1,132 @@
+"""The `learned` segmenter: camera-only (never reads simulator state), grounding, catalog and factory, and the
+`spark perception` commands on a tiny dataset (a code-path check, not training)."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+from spark_cli import main
+from spark_core.catalog import SEGMENTERS, catalog_json
+from spark_core.perception.factory import make_segmenter
+from spark_core.perception.learned.categories import CATEGORIES
+from spark_core.perception.learned.segmenter import LearnedSegmenter, default_weights
+from spark_core.perception.privileged import PrivilegedResolver
+from spark_core.perception.resolver import PerceptionResolver
+from spark_core.sim.tasks import BUILTIN
+
+
+class CamerasOnly:
+    """A world seen only through its cameras: frames stripped of ids and labels; any other attribute (state,
+    scene, object names, poses) raises, so a segmenter that reached for simulator state would fail."""
+
+    def __init__(self, world):
+        object.__setattr__(self, "_world", world)
+
+    def render(self, camera: str, width: int = 640, height: int = 480):
+        frame = object.__getattribute__(self, "_world").render(camera, width, height)
+        return dataclasses.replace(frame, object_ids=None, labels={})
+
+    @property
+    def sim_time_s(self) -> float:
+        return object.__getattribute__(self, "_world").sim_time_s
+
+    def __getattr__(self, name):
+        raise AssertionError(f"the learned segmenter's path reached for world.{name}: simulator state")
+
+
+@pytest.fixture(scope="module")
+def stack_world():
+    w = BUILTIN["stack_three"].make_world(900_100)
+    yield w
+    w.close()
+
+
+def test_catalog_lists_learned_camera_only():
+    assert SEGMENTERS["learned"].privileged is False
+    assert SEGMENTERS["learned"].cameras is True
+    assert any(s["name"] == "learned" and not s["privileged"] for s in catalog_json()["segmenters"])
+
+
+def test_factory_builds_it_without_touching_the_world():
+    seg = make_segmenter("learned", CamerasOnly(None))
+    assert isinstance(seg, LearnedSegmenter)
+    assert (seg.name, seg.privileged) == ("learned", False)
+
+
+@pytest.mark.parametrize(
+    "prompt,category,colours",
+    [
+        ("crimson cube", "block", {"red"}),
+        ("the small blue block", "block", {"blue"}),
+        ("coffee mug", "mug", set()),
+        ("the drawer handle", "drawer handle", set()),
+        ("the drawer", "drawer", set()),
+        ("the stove", "stove", set()),
+        ("white dial on the stove", "knob", {"white"}),
+        ("wicker basket", "basket", set()),
+        ("the green target area", "zone", {"green"}),
+        ("yellow plastic tray", "tray", {"yellow"}),
+        ("kitchen sponge", "sponge", set()),
+        ("black bowl 2", "bowl", {"black"}),
+        ("the red wooden cube", "block", {"red"}),
+    ],
+)
+def test_grounding_picks_the_category_and_colour(prompt, category, colours):
+    cats, wanted = LearnedSegmenter().ground(prompt)
+    best = max(cats, key=cats.__getitem__)
+    assert CATEGORIES[best].name == category
+    assert wanted == colours
+
+
+def test_unrelated_prompt_grounds_to_nothing():
+    assert LearnedSegmenter().ground("a giraffe in the savanna")[0] == {}
+
+
+def test_resolves_from_cameras_alone(stack_world):
+    """Frames with object_ids=None and labels={}, the world out of reach: masks still come back and each
+    block's keypoint lands on the true block (checked afterwards against the privileged pose)."""
+    proxy = CamerasOnly(stack_world)
+    frame = proxy.render("agentview")
+    assert frame.object_ids is None and frame.labels == {}
+    seg = LearnedSegmenter()
+    dets = seg.segment(frame, ["red block", "the blocks"])
+    assert dets and all(d.mask.shape == frame.shape and d.mask.any() and not d.privileged for d in dets)
+    resolver = PerceptionResolver(proxy, seg, cameras=("agentview", "side"))
+    truth = PrivilegedResolver(stack_world)
+    for label in ("red block", "green block", "blue block"):
+        kp = resolver.resolve(label)
+        assert kp.source == "learned"
+        assert np.linalg.norm(kp.position_m - truth.resolve(label).position_m) < 0.02, label
+
+
+def test_shipped_weights_are_small():
+    assert default_weights().is_file()
+    assert default_weights().stat().st_size < 10_000_000
+
+
+def test_dataset_and_train_commands_run_one_step(tmp_path, capsys):
+    """The data and training commands end to end on one scene and one step (a code-path check)."""
+    data, weights = tmp_path / "data", tmp_path / "w.pt"
+    assert main(["perception", "dataset", "--out", str(data), "--scenes", "1", "--cameras", "agentview"]) == 0
+    assert list(data.glob("shard_*.npz"))
+    args = ["perception", "train", "--data", str(data), "--out", str(weights), "--steps", "1", "--batch", "2"]
+    assert main([*args, "--crop", "128", "128"]) == 0
+    assert weights.is_file()
+    frame = BUILTIN["lift_block"].make_world(900_101)
+    try:
+        f = dataclasses.replace(frame.render("agentview", 160, 128), object_ids=None, labels={})
+    finally:
+        frame.close()
+    LearnedSegmenter(weights).segment(f, ["red block"])  # the freshly written weights load and run
+
+
+def test_commands_refuse_bad_input(tmp_path, capsys):
+    assert main(["perception", "train", "--data", str(tmp_path), "--out", str(tmp_path / "w.pt")]) == 2
+    assert "no dataset shards" in capsys.readouterr().err
+    assert main(["perception", "train", "--data", str(tmp_path), "--out", "w.pt", "--crop", "100", "64"]) == 2
+    assert "--crop" in capsys.readouterr().err
+    assert main(["perception", "dataset", "--out", str(tmp_path), "--scenes", "0"]) == 2
+    assert "--scenes" in capsys.readouterr().err
