@@ -28,6 +28,8 @@ def register(sub) -> None:
     t.add_argument("--lr", type=float, default=2e-3)
     t.add_argument("--seed", type=int, default=0)
     t.add_argument("--threads", type=int, default=2, help="torch CPU threads")
+    t.add_argument("--init", help="start from these weights (fine-tuning) instead of random initialisation")
+    t.add_argument("--balance", action="store_true", help="weight rare object categories up (at most 8x)")
     t.set_defaults(func=_cmd_train)
 
 
@@ -74,6 +76,8 @@ def _cmd_train(args: argparse.Namespace) -> int:
         lr=args.lr,
         seed=args.seed,
         threads=args.threads,
+        init=args.init,
+        balance=args.balance,
     )
     try:
         train(cfg, log=lambda s: print(s, flush=True))

@@ -34,6 +34,8 @@ class TrainConfig:
     seed: int = 0
     val_fraction: float = 0.05  # the dataset's last crops (highest scene seeds) held out for validation
     threads: int = 2
+    init: str | None = None  # weights to start from (a fine-tuning run) instead of random initialisation
+    balance: bool = False  # weight object categories by rarity (sqrt of median/own pixel frequency, at most 8x)
 
 
 def boundary_target(instance: np.ndarray, band_px: int = 2) -> np.ndarray:
@@ -72,10 +74,24 @@ def _batch(data: dict[str, np.ndarray], idx: np.ndarray, crop: tuple[int, int], 
     )
 
 
-def losses(net: SegNet, x, cat, bnd, col) -> dict[str, torch.Tensor]:
+def category_weights(category: np.ndarray | None = None) -> torch.Tensor:
+    """Cross-entropy weight per category: THING_WEIGHT for objects, 1 for background/table/robot; with the
+    dataset's category maps, rare object categories (small parts) weigh up to 8x more than that."""
+    weight = torch.ones(len(CATEGORIES))
+    things = [i for i, c in enumerate(CATEGORIES) if c.thing]
+    weight[things] = THING_WEIGHT
+    if category is not None:
+        freq = np.bincount(category.ravel(), minlength=len(CATEGORIES)).astype(float)
+        present = [i for i in things if freq[i] > 0]
+        median = np.median(freq[present])
+        for i in present:
+            weight[i] = THING_WEIGHT * float(np.clip(np.sqrt(median / freq[i]), 1.0, 8.0))
+    return weight
+
+
+def losses(net: SegNet, x, cat, bnd, col, weight: torch.Tensor | None = None) -> dict[str, torch.Tensor]:
     cat_logits, bnd_logit, col_logits = net.split(net(x))
-    weight = torch.ones(net.n_categories)
-    weight[[i for i, c in enumerate(CATEGORIES) if c.thing]] = THING_WEIGHT
+    weight = category_weights() if weight is None else weight
     obj = col > 0
     out = {
         "category": F.cross_entropy(cat_logits, cat, weight=weight),
@@ -126,7 +142,14 @@ def train(cfg: TrainConfig, log: Callable[[str], None] = print) -> dict:
     if len(train_idx) == 0:
         raise ValueError(f"dataset {cfg.data_dir} has too few crops ({len(order)}) to train on")
     log(f"{len(train_idx)} training crops, {len(val_idx)} validation crops")
-    net = SegNet(downsample=cfg.downsample)
+    if cfg.init:
+        net = load_net(Path(cfg.init)).train()
+        if net.downsample != cfg.downsample:
+            raise ValueError(f"--init weights see frames shrunk {net.downsample}x, not {cfg.downsample}x")
+    else:
+        net = SegNet(downsample=cfg.downsample)
+    weight = category_weights(data["category"] if cfg.balance else None)
+    log("category weights: " + ", ".join(f"{c.name} {w:.1f}" for c, w in zip(CATEGORIES, weight.tolist())))
     opt = torch.optim.AdamW(net.parameters(), lr=cfg.lr, weight_decay=1e-4)
     t0 = time.perf_counter()
     budget_s = cfg.minutes * 60
@@ -138,7 +161,7 @@ def train(cfg: TrainConfig, log: Callable[[str], None] = print) -> dict:
             g["lr"] = cfg.lr * 0.5 * (1 + np.cos(np.pi * frac))
         idx = rng.choice(train_idx, size=min(cfg.batch, len(train_idx)), replace=False)
         x, cat, bnd, col = _batch(data, idx, cfg.crop, rng, cfg.downsample)
-        loss = losses(net, x, cat, bnd, col)
+        loss = losses(net, x, cat, bnd, col, weight)
         opt.zero_grad()
         loss["total"].backward()
         opt.step()
