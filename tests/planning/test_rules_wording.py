@@ -53,6 +53,8 @@ def clauses(text):
         # other verbs and checks stated as goals
         ("push the drawer back in", [("close", "drawer", None, None)]),
         ("pull the drawer out", [("open", "drawer", None, None)]),
+        ("slide open the drawer", [("open", "drawer", None, None)]),
+        ("push in the drawer", [("close", "drawer", None, None)]),
         ("make sure the cup is on the saucer", [("put", "cup", "on", "saucer")]),
         ("the drawer is open", [("open", "drawer", None, None)]),
         ("I'd like the pen that is next to the cup placed in the box", [("put", "pen next to cup", "in", "box")]),

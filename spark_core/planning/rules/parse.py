@@ -71,12 +71,9 @@ def _match_verb(clause: str) -> tuple[str, str] | None:
     m = re.fullmatch(r"(?:pull|slide|draw) (.+) (?:open|out)", clause)
     if m:
         return "open", m.group(1)
-    m = re.fullmatch(
-        r"(?:push|slide) (.+) (?:closed|shut)|"
-        r"(?:push|slide) (?:in )?(.*drawer.*?)(?: back)?(?: in)?",
-        clause,
-    )
-    if m:  # "push the drawer in": a drawer pushed is a drawer closed
+    m = re.fullmatch(r"(?:push|slide) (.+) (?:closed|shut)|(?:push|slide) in (.*drawer.*)", clause)
+    m = m or re.fullmatch(r"(?:push|slide) ()(.*drawer.*?)(?: back)? in", clause)
+    if m:  # "push the drawer in": a drawer pushed in is a drawer closed
         return "close", m.group(1) or m.group(2)
     m = re.fullmatch(r"there (?:is|are) (.+)", clause)
     if m:
