@@ -9,6 +9,7 @@ import time
 import pytest
 from fastapi.testclient import TestClient
 
+from spark_core.catalog import SEGMENTERS
 from spark_core.trace import TraceStore
 from spark_core.trial import TrialConfig, TrialConfigError, Verdict, run_trial
 
@@ -131,7 +132,7 @@ def test_an_abort_before_start_and_a_crash_are_verdicts_not_exceptions(monkeypat
         ({"task": "unicorn_dance"}, "unknown task 'unicorn_dance'"),
         (
             {"segmenter": "privileged"},
-            "unknown segmenter 'privileged'; available: sim, sim-noisy, sam3, privileged-keypoints",
+            f"unknown segmenter 'privileged'; available: {', '.join(SEGMENTERS)}",
         ),
         ({"planner": "openai"}, "model: the openai planner needs a model name"),
         ({"task": "lift_tray", "embodiment": "panda"}, "embodiment: task 'lift_tray' runs on bimanual, not 'panda'"),
