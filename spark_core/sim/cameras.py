@@ -133,6 +133,24 @@ def intrinsics(model: mujoco.MjModel, camera: str, width: int, height: int) -> n
     return np.array([[f, 0, (width - 1) / 2], [0, f, (height - 1) / 2], [0, 0, 1.0]])
 
 
+def _depth_of_last_pass(r: mujoco.Renderer) -> np.ndarray:
+    """Metric depth (H, W float32, m) from the depth buffer of the pass just drawn, converted as mujoco.Renderer
+    converts it (3.3.7's code). The id pass draws with the same flags as Renderer's depth pass (segment and
+    id colours on), so its depth buffer is the depth pass's, without drawing the scene a third time;
+    tests/sim/test_robosuite_deferred_rgb.py checks it equals Renderer's own depth render."""
+    out = np.empty((r.height, r.width), dtype=np.float32)
+    mujoco.mjr_readPixels(None, out, r._rect, r._mjr_context)
+    m = r.model
+    zfar = np.float32(m.vis.map.zfar * m.stat.extent)
+    znear = np.float32(m.vis.map.znear * m.stat.extent)
+    c_coef = -(zfar + znear) / (zfar - znear)
+    d_coef = -(np.float32(2) * zfar * znear) / (zfar - znear)
+    c_coef = np.float32(-0.5) * c_coef - np.float32(0.5)  # reversed Z
+    d_coef = np.float32(-0.5) * d_coef
+    depth = (d_coef / (out.astype(np.float64) + c_coef)).astype(np.float32)
+    return np.flipud(depth).copy() if r._gl_context else depth
+
+
 def render_frame(world, camera: str, width: int, height: int) -> CameraFrame:
     """One frame of `camera` (width x height px) as the world is now; on the world's render thread. A world with
     `defer_rgb` gets a DeferredFrame (its RGB drawn when first read, identical to drawing it now)."""
@@ -145,14 +163,11 @@ def render_frame(world, camera: str, width: int, height: int) -> CameraFrame:
     else:
         r.update_scene(d, camera=camera)
         rgb = r.render().copy()
-    r.enable_depth_rendering()
-    r.update_scene(d, camera=camera)
-    depth = r.render().astype(np.float32).copy()
-    r.disable_depth_rendering()
     r.enable_segmentation_rendering()
     r.update_scene(d, camera=camera)
     seg = r.render()
     r.disable_segmentation_rendering()
+    depth = _depth_of_last_pass(r)
     if getattr(world, "_label_cache", None) is None:
         world._label_cache = label_table(world)
     labels, geom_to_obj = world._label_cache

@@ -52,3 +52,23 @@ def test_deferred_rgb_is_the_picture_of_the_capture_moment(world):
     assert frame.rgb_drawn and rgb.shape == (240, 320, 3) and rgb.dtype == np.uint8
     np.testing.assert_array_equal(rgb, eager_then.rgb)
     assert not np.array_equal(rgb, eager_now.rgb)  # the scene did change: the check above could have failed
+
+
+@pytest.mark.parametrize("camera", ["agentview", "frontview"])
+def test_depth_read_from_the_id_pass_is_the_depth_pass(world, camera):
+    import mujoco
+
+    frame = world.render(camera, 320, 240)
+
+    def own_depth():
+        r = mujoco.Renderer(world.model, 240, 320)
+        try:
+            r.enable_depth_rendering()
+            r.update_scene(world.data, camera=camera)
+            return r.render().copy()
+        finally:
+            r.close()
+
+    depth = world.on_render_thread(own_depth)
+    assert np.isfinite(depth).all() and depth.min() > 0
+    np.testing.assert_array_equal(frame.depth_m, depth)
