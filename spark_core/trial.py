@@ -383,7 +383,7 @@ def _start(
     world = task.make_world(config.seed, embodiment)
     try:
         world.recorder = TrajectoryRecorder()
-        bus = EventBus(trial_id)
+        bus = EventBus(trial_id, sim_clock=lambda: world.sim_time_s)  # events carry the world's sim time
         resolver = TimedResolver(
             make_resolver(
                 world, config.segmenter, config.seed, config.cameras, config.adaptive, config.noise, config.sam3_model

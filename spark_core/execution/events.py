@@ -28,7 +28,9 @@ EVENT_KINDS = tuple(k.value for k in EventKind)
 @dataclass(frozen=True)
 class Event:
     """`t` is monotonic seconds since the bus was created (trial start); `seq` orders events totally;
-    `wall_s` is the Unix time of publication (for latency measurements across processes)."""
+    `wall_s` is the Unix time of publication (for latency measurements across processes); `t_sim` is the
+    world's simulated seconds at publication (the clock of recorded scene states and groundings; None when
+    the bus has no sim clock)."""
 
     trial_id: str
     seq: int
@@ -37,16 +39,21 @@ class Event:
     kind: str
     detail: dict[str, Any] = field(default_factory=dict)
     wall_s: float = 0.0
+    t_sim: float | None = None
 
     def to_dict(self) -> dict[str, Any]:
         return asdict(self)
 
 
 class EventBus:
-    """Publish from any thread; subscribe with a callback or `async for ev in bus.stream()`."""
+    """Publish from any thread; subscribe with a callback or `async for ev in bus.stream()`.
 
-    def __init__(self, trial_id: str = ""):
+    `sim_clock` returns the simulated seconds of the world the trial runs in; whoever owns the world sets it
+    (run_trial does), so every event is stamped with the simulated time at which it happened."""
+
+    def __init__(self, trial_id: str = "", sim_clock: Callable[[], float] | None = None):
         self.trial_id = trial_id
+        self.sim_clock = sim_clock
         self._t0 = time.monotonic()
         self._seq = itertools.count()
         self._lock = threading.RLock()
@@ -73,8 +80,9 @@ class EventBus:
         if kind not in EVENT_KINDS:
             raise ValueError(f"unknown event kind {kind!r}; expected one of {', '.join(EVENT_KINDS)}")
         with self._lock:
+            t_sim = None if self.sim_clock is None else round(float(self.sim_clock()), 6)
             ev = Event(
-                self.trial_id, next(self._seq), self.now(), node_path, EventKind(kind).value, detail, time.time()
+                self.trial_id, next(self._seq), self.now(), node_path, EventKind(kind).value, detail, time.time(), t_sim
             )
             self.history.append(ev)
             callbacks = list(self._callbacks)

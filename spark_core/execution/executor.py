@@ -83,7 +83,8 @@ class Executor:
     ):
         self.actuator = actuator
         self.resolver = resolver
-        self.bus = bus or EventBus(trial_id)
+        world = getattr(actuator, "world", None)  # a primitive library acts in a world: stamp its sim time
+        self.bus = bus or EventBus(trial_id, sim_clock=(lambda: world.sim_time_s) if world is not None else None)
         self.control = control or StepControl()
         self.recovery = recovery
         self.replanner = replanner

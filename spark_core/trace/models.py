@@ -43,6 +43,8 @@ class TrialRow(Base):
     cost_usd: Mapped[float] = mapped_column(Float, default=0.0)
     usage: Mapped[dict] = mapped_column(JSON, default=dict)
     nodes: Mapped[dict] = mapped_column(JSON, default=dict)  # per-node durations, retries, recoveries
+    # wall seconds per phase of the trial (setup, perception, planning, execution, ...; TrialOutcome.phases_s)
+    phases_s: Mapped[dict | None] = mapped_column(JSON, nullable=True)
     trajectory: Mapped[list] = mapped_column(JSON, default=list)  # joint states at the control rate
     artifacts: Mapped[list] = mapped_column(JSON, default=list)  # [{name, kind, camera, path, sha256}] files on disk
     batch_id: Mapped[str | None] = mapped_column(String(255), nullable=True, index=True)
@@ -65,7 +67,8 @@ class EventRow(Base):
     id: Mapped[int] = mapped_column(Integer, primary_key=True, autoincrement=True)
     trial_id: Mapped[str] = mapped_column(ForeignKey("trials.id", ondelete="CASCADE"), index=True)
     seq: Mapped[int] = mapped_column(Integer)
-    t: Mapped[float] = mapped_column(Float)
+    t: Mapped[float] = mapped_column(Float)  # wall seconds since the trial started
+    t_sim: Mapped[float | None] = mapped_column(Float, nullable=True)  # the world's simulated seconds (0009)
     node_path: Mapped[str] = mapped_column(String(256))
     kind: Mapped[str] = mapped_column(String(16))
     detail: Mapped[dict] = mapped_column(JSON, default=dict)

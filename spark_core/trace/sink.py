@@ -74,6 +74,7 @@ class StoreSink(BaseSink):
             reason=outcome.reason,
             wall_time_s=outcome.wall_time_s,
             sim_time_s=outcome.sim_time_s if result is not None else None,
+            phases_s=_jsonable(outcome.phases_s) or None,
             cost_usd=outcome.cost_usd,
             usage=_jsonable(outcome.usage),
             protocol=_jsonable(

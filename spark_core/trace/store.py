@@ -125,6 +125,7 @@ class TraceStore:
                     trial_id=trial_id,
                     seq=e["seq"],
                     t=e["t"],
+                    t_sim=e.get("t_sim"),
                     node_path=e["node_path"],
                     kind=e["kind"],
                     detail=_jsonable(e.get("detail", {})),
@@ -300,7 +301,7 @@ class TraceStore:
                 return None
             out = _row_dict(row)
             out["events"] = [
-                {"seq": e.seq, "t": e.t, "node_path": e.node_path, "kind": e.kind, "detail": e.detail}
+                {"seq": e.seq, "t": e.t, "t_sim": e.t_sim, "node_path": e.node_path, "kind": e.kind, "detail": e.detail}
                 for e in row.events
             ]
             out["groundings"] = [g.record for g in row.groundings]

@@ -3,7 +3,7 @@ import assert from "node:assert/strict";
 import { test } from "node:test";
 import type { Catalog, Trial, TrialEvent } from "../src/api/types";
 import { diffLines, firstDivergence } from "../src/lib/compare";
-import { activeWall, anchors, treeStateAt, unpaused, wallToSim, withoutPauses } from "../src/lib/trialTime";
+import { activeWall, anchors, leafAnchors, treeStateAt, unpaused, wallToSim, withoutPauses } from "../src/lib/trialTime";
 import { linePaths } from "../src/lib/yamlPaths";
 
 const PLAN = `task: t
@@ -44,14 +44,29 @@ const trial = (over: Partial<Trial> = {}): Trial => ({
   ...over,
 });
 
-test("wall time maps to simulated time inside each leaf, ending at the trial's total", () => {
-  const a = anchors(trial());
+test("without events' t_sim, wall time maps to simulated time inside each leaf, ending at the trial's total", () => {
+  const a = anchors(trial(), [{ t: 0, kind: "started", node_path: "tree" }], 3);
+  assert.deepEqual(a, leafAnchors(trial()));
   assert.equal(wallToSim(a, 0), 0);
   assert.equal(wallToSim(a, 3), 4);
   assert.ok(wallToSim(a, 0.5) > 0 && wallToSim(a, 0.5) < wallToSim(a, 2.5));
 });
 
 const ev = (t: number, kind: string, node_path: string): TrialEvent => ({ t, kind, node_path });
+
+test("the cursor's simulated time is the events' own t_sim, then the trial's simulated end", () => {
+  const evs: TrialEvent[] = [
+    { t: 0, t_sim: 10, kind: "started", node_path: "tree" },
+    { t: 1, t_sim: 12, kind: "succeeded", node_path: "tree.children[0]" },
+    { t: 1, t_sim: 12.5, kind: "started", node_path: "tree.children[1]" },
+    { t: 2, t_sim: 13, kind: "succeeded", node_path: "tree" },
+  ];
+  const a = anchors(trial({ sim_time_s: 13.5 }), evs, 3);
+  assert.deepEqual(a, [{ wall: 0, sim: 10 }, { wall: 1, sim: 12.5 }, { wall: 2, sim: 13 }, { wall: 3, sim: 13.5 }]);
+  assert.equal(wallToSim(a, 0.5), 11.25);
+  assert.equal(wallToSim(a, 2), 13);
+  assert.equal(wallToSim(a, 3), 13.5);
+});
 
 test("paused spans are cut out of the clock and of the wall time", () => {
   const events = [ev(0, "started", "tree"), ev(0.1, "paused", "tree.children[0]"), ev(5.1, "started", "tree.children[0]"), ev(6, "succeeded", "tree")];

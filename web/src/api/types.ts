@@ -17,7 +17,9 @@ export interface Catalog {
   event_node_status: Record<string, string>;
 }
 
-export interface TrialEvent { seq?: number; t: number; node_path: string; kind: string; detail?: Record<string, unknown> }
+/** `t`: wall seconds since the trial started; `t_sim`: the world's simulated seconds at publication (null on
+ * records stored before the store's revision 0009). */
+export interface TrialEvent { seq?: number; t: number; t_sim?: number | null; node_path: string; kind: string; detail?: Record<string, unknown> }
 
 export interface NodeRecord {
   path: string; kind: string; arm: string | null; status: string; attempts: number; retries: number;

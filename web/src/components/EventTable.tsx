@@ -29,7 +29,7 @@ export function EventTable({ events, cursor, kinds, toSim, onSeek }:
           <tbody>
             {shown.map((e, i) => (
               <tr key={`${e.seq ?? i}-${e.t}`} className={`${e.t > cursor ? "future" : ""}${i === at ? " at-cursor" : ""}`} data-kind={e.kind} data-t={e.t} onClick={() => onSeek(e.t)}>
-                <td>{e.t.toFixed(3)}</td><td>{toSim(e.t).toFixed(2)}</td><td>{e.kind}</td><td>{e.node_path}</td><td>{fmtDetail(e.detail)}</td>
+                <td>{e.t.toFixed(3)}</td><td>{(e.t_sim ?? toSim(e.t)).toFixed(2)}</td><td>{e.kind}</td><td>{e.node_path}</td><td>{fmtDetail(e.detail)}</td>
               </tr>
             ))}
           </tbody>

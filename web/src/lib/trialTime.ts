@@ -1,7 +1,7 @@
-// One trial's time model for the shared cursor. Events carry wall seconds since the trial started (`t`); the
-// recorded scene states and groundings carry simulated seconds. Leaves run one after another (a parallel node's
-// arms share the clock), so a leaf's simulated span is placed after the simulated time of those before it; wall
-// time maps to simulated time linearly inside each leaf.
+// One trial's time model for the shared cursor. Events carry wall seconds since the trial started (`t`) and the
+// world's simulated seconds when they happened (`t_sim`), the clock of the recorded scene states and groundings:
+// the cursor's simulated time is read from the events around it. Records stored before events had `t_sim`
+// fall back to `leafAnchors`, an estimate from the leaves' simulated durations.
 import type { Catalog, NodeRecord, Trial, TrialEvent } from "../api/types";
 
 export interface Anchor { wall: number; sim: number }
@@ -15,8 +15,31 @@ export function leaves(nodes: Record<string, NodeRecord>): NodeRecord[] {
     .sort((a, b) => (a.started_t ?? 0) - (b.started_t ?? 0));
 }
 
-/** (wall s, simulated s) pairs, increasing in both. */
-export function anchors(trial: Trial): Anchor[] {
+/** (wall s, simulated s) pairs, increasing in both: each event's own pair; the trial's simulated end (after the
+ * last event the world settles) at `end` wall s. Old records without `t_sim` get `leafAnchors`. */
+export function anchors(trial: Trial, events: TrialEvent[], end: number): Anchor[] {
+  const timed = events.filter((e) => e.t_sim !== undefined && e.t_sim !== null);
+  if (!timed.length) return leafAnchors(trial);
+  const out: Anchor[] = [];
+  for (const e of timed) {
+    const prev = out[out.length - 1];
+    const a = { wall: e.t, sim: e.t_sim as number };
+    if (!prev) out.push(a);
+    else if (a.wall >= prev.wall && a.sim >= prev.sim) {
+      if (a.wall === prev.wall) prev.sim = a.sim; // same instant: the later event's simulated time
+      else out.push(a);
+    }
+  }
+  const last = out[out.length - 1];
+  const simEnd = trial.sim_time_s ?? last.sim;
+  if (end > last.wall && simEnd >= last.sim) out.push({ wall: end, sim: simEnd });
+  return out;
+}
+
+/** Estimated (wall s, simulated s) pairs from the leaves' simulated durations, for records whose events have no
+ * `t_sim`: leaves run one after another (a parallel node's arms share the clock), so a leaf's simulated span is
+ * placed after the simulated time of those before it; wall time maps to simulated time linearly inside a leaf. */
+export function leafAnchors(trial: Trial): Anchor[] {
   const out: Anchor[] = [{ wall: 0, sim: 0 }];
   let sim = 0;
   let wallEnd = 0;

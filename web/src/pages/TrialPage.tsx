@@ -68,7 +68,7 @@ export function TrialPage({ id }: { id: string }) {
   const live = !!trial && !finished && !closed;
   const end = trial ? endOf(trial, events) : 1;
   const t = cursor ?? end;
-  const anc = useMemo(() => (trial ? anchors(trial) : [{ wall: 0, sim: 0 }]), [trial]);
+  const anc = useMemo(() => (trial ? anchors(trial, events, end) : [{ wall: 0, sim: 0 }]), [trial, events, end]);
   const toSim = (w: number) => wallToSim(anc, w);
 
   // the replay: the cursor advances at `speed` x wall time
