@@ -122,38 +122,13 @@ def list_batches(
     request: Request, limit: int = Query(100, ge=1, le=500), offset: int = Query(0, ge=0, le=MAX_OFFSET)
 ) -> dict:
     """Every batch, newest first: its settings, status and progress (done / total, successes)."""
-    from sqlalchemy import text
-
-    store = request.app.state.store
-    # The store has no batch listing (spark_core is not ours to change): one read-only aggregate over its tables.
-    sql = text(
-        "SELECT b.id, b.created_at, b.status, b.spec, COUNT(t.id) AS total,"
-        " SUM(CASE WHEN t.status IN ('done', 'interrupted') THEN 1 ELSE 0 END) AS done,"
-        " SUM(CASE WHEN t.success THEN 1 ELSE 0 END) AS successes"
-        " FROM batches b LEFT JOIN trials t ON t.batch_id = b.id AND t.deleted_at IS NULL"
-        " GROUP BY b.id ORDER BY b.created_at DESC, b.id DESC LIMIT :limit OFFSET :offset"
-    )
-    import json
-
-    with store.Session() as s:
-        total = s.execute(text("SELECT COUNT(*) FROM batches")).scalar() or 0
-        rows = s.execute(sql, {"limit": limit, "offset": offset}).mappings().all()
-    items = []
-    for r in rows:
-        spec = json.loads(r["spec"]) if isinstance(r["spec"], str) else (r["spec"] or {})
-        manifest = spec.pop("manifest", None) or {}  # large (files, packages): GET /api/batches/{id} has it
-        spec["manifest_id"] = manifest.get("id")
-        done, n = int(r["done"] or 0), int(r["total"] or 0)
-        status = r["status"] if r["status"] == "cancelled" or done < n else "done"
-        items.append(
-            {
-                "id": r["id"],
-                "created_at": str(r["created_at"]),
-                "status": status,
-                "spec": spec,
-                "progress": {"done": done, "total": n, "successes": int(r["successes"] or 0)},
-            }
-        )
+    total, items = request.app.state.store.list_batches(limit=limit, offset=offset)
+    for item in items:
+        manifest = item["spec"].pop("manifest", None) or {}  # large (files, packages): GET /api/batches/{id} has it
+        item["spec"]["manifest_id"] = manifest.get("id")
+        p = item["progress"]
+        if item["status"] != "cancelled" and p["done"] >= p["total"]:
+            item["status"] = "done"
     return {"total": int(total), "limit": limit, "offset": offset, "items": items}
 
 
@@ -260,8 +235,9 @@ def cancel_batch(batch_id: BatchId, request: Request) -> dict:
 
 @router.get("/{batch_id}/timing")
 def batch_timing(batch_id: BatchId, request: Request) -> dict:
-    """Where each task's time went, per primitive of its plans: mean simulated and wall seconds per run of each
-    primitive kind over the batch's finished trials (the trace store does not keep the pipeline's phase split)."""
+    """Where each task's time went. `rows`: per primitive of its plans, mean simulated and wall seconds per run of
+    each primitive kind over the batch's finished trials. `phases`: per phase of the trial pipeline (setup,
+    perception, planning, execution, ...), mean wall seconds per finished trial that recorded its phases."""
     from spark_core import REGISTRY
 
     primitives = {spec.name for spec in REGISTRY}  # the tree's leaves; composites only hold them
@@ -285,4 +261,15 @@ def batch_timing(batch_id: BatchId, request: Request) -> dict:
         {"task": task, "primitive": kind, "runs": n, "mean_sim_s": round(sim / n, 4), "mean_wall_s": round(wall / n, 4)}
         for (task, kind), (n, sim, wall) in sums.items()
     ]
-    return {"id": batch_id, "rows": rows}
+    # phases_s is in the trials' summaries (stored since revision 0009; older trials have none and are not counted)
+    timed = [t for t in batch["trials"] if t["status"] == "done" and t.get("phases_s")]
+    phase_sums: dict[tuple[str, str], float] = {}
+    for t in timed:
+        for phase, wall_s in t["phases_s"].items():
+            phase_sums[(t["task"], phase)] = phase_sums.get((t["task"], phase), 0.0) + float(wall_s)
+    per_task = {task: sum(t["task"] == task for t in timed) for task in {t["task"] for t in timed}}
+    phases = [
+        {"task": task, "phase": phase, "trials": per_task[task], "mean_wall_s": round(total / per_task[task], 4)}
+        for (task, phase), total in phase_sums.items()
+    ]
+    return {"id": batch_id, "rows": rows, "phases": phases}

@@ -12,7 +12,7 @@ from datetime import UTC, datetime, timedelta
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, cast
 
-from sqlalchemy import create_engine, delete, event, func, or_, select
+from sqlalchemy import case, create_engine, delete, event, func, or_, select
 from sqlalchemy.orm import selectinload, sessionmaker
 
 from .models import BatchRow, EventRow, GroundingRow, PlanLibraryRow, TrialRow
@@ -35,6 +35,8 @@ SORTABLE = {
     "sim_time_s",
     "cost_usd",
     "status",
+    "batch_id",
+    "failure",  # the failing module (FailureKind value)
 }
 
 
@@ -252,6 +254,34 @@ class TraceStore:
             "created_at": row.created_at.isoformat() if row.created_at else None,
             "trials": items,
         }
+
+    def list_batches(self, limit: int = 100, offset: int = 0) -> tuple[int, list[dict]]:
+        """(number of batches, one page newest first): each batch's id, created_at (ISO), stored status, spec, and
+        its live trials counted: total, done (done or interrupted) and successes."""
+        done = func.sum(case((TrialRow.status.in_(("done", "interrupted")), 1), else_=0))
+        ok = func.sum(case((TrialRow.success.is_(True), 1), else_=0))
+        q = (
+            select(BatchRow, func.count(TrialRow.id), done, ok)
+            .outerjoin(TrialRow, (TrialRow.batch_id == BatchRow.id) & TrialRow.deleted_at.is_(None))
+            .group_by(BatchRow.id)
+            .order_by(BatchRow.created_at.desc(), BatchRow.id.desc())
+            .limit(limit)
+            .offset(offset)
+        )
+        with self.Session() as s:
+            total = s.scalar(select(func.count()).select_from(BatchRow)) or 0
+            rows = s.execute(q).all()
+            items = [
+                {
+                    "id": b.id,
+                    "created_at": b.created_at.isoformat() if b.created_at else None,
+                    "status": b.status,
+                    "spec": dict(b.spec or {}),
+                    "progress": {"done": int(d or 0), "total": int(n or 0), "successes": int(k or 0)},
+                }
+                for b, n, d, k in rows
+            ]
+        return int(total), items
 
     # -- plan library -------------------------------------------------------------------------------------------
     def add_library_plan(

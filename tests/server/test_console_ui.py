@@ -122,6 +122,11 @@ def test_every_batch_is_listed_with_settings_and_progress(tmp_path):
         timing = c.get(f"/api/batches/{ids[0]}/timing").json()["rows"]
         assert [(r["task"], r["primitive"], r["runs"]) for r in timing] == [("lift_block", "pick", 1)]
         assert timing[0]["mean_sim_s"] > 0.5 and timing[0]["mean_wall_s"] > 0
+        # and per phase of the trial pipeline, from the outcome's phases_s kept in each trial record
+        phases = {r["phase"]: r for r in c.get(f"/api/batches/{ids[0]}/timing").json()["phases"]}
+        assert {"setup", "perception", "planning", "execution"} <= set(phases)
+        assert all(r["task"] == "lift_block" and r["trials"] == 1 for r in phases.values())
+        assert phases["setup"]["mean_wall_s"] > 0 and phases["execution"]["mean_wall_s"] > 0
         assert c.get("/api/batches/batch-nope/timing").status_code == 404
 
 

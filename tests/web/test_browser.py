@@ -301,6 +301,8 @@ def test_batch_is_found_again_from_the_batch_list(server, page):
     assert page.locator("#success-chart canvas").count() == 1  # success per task with its interval (uPlot)
     page.wait_for_selector("#timing-chart canvas")  # time per primitive, stacked per task
     assert "pick" in page.locator("#timing-chart .legend").inner_text()
+    page.wait_for_selector("#phase-chart canvas")  # and per pipeline phase, next to it
+    assert {"setup", "planning", "execution"} <= set(page.locator("#phase-chart .legend").inner_text().split())
     assert "privileged-keypoints" in page.locator("#batch-settings").inner_text()
     shot(page, "7-batch")
     with page.expect_download() as dl:
@@ -342,6 +344,12 @@ def test_history_sorts_filters_pages_and_compares(server, page):
     page.wait_for_selector("th[data-sort=seed]:has-text('▲')")
     seeds = page.eval_on_selector_all("#rows tbody tr", "rs => rs.map(r => +r.cells[6].innerText)")
     assert seeds == sorted(seeds)
+    for key in ("batch_id", "failure"):  # sorted by the server (SQLite: empty first)
+        page.click(f"th[data-sort={key}]")
+        page.wait_for_selector(f"th[data-sort={key}]:has-text('▲')")
+        col = page.eval_on_selector_all("#rows thead th", f"hs => hs.findIndex(h => h.dataset.sort === '{key}')")
+        cells = page.eval_on_selector_all("#rows tbody tr", f"rs => rs.map(r => r.cells[{col}].innerText)")
+        assert cells == sorted(cells)
     page.click("#verdict-filters button[data-verdict=task_unmet]")
     # the server's answer: only that verdict, b among them
     page.wait_for_function(

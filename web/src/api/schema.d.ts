@@ -413,8 +413,9 @@ export interface paths {
         };
         /**
          * Batch Timing
-         * @description Where each task's time went, per primitive of its plans: mean simulated and wall seconds per run of each
-         *     primitive kind over the batch's finished trials (the trace store does not keep the pipeline's phase split).
+         * @description Where each task's time went. `rows`: per primitive of its plans, mean simulated and wall seconds per run of
+         *     each primitive kind over the batch's finished trials. `phases`: per phase of the trial pipeline (setup,
+         *     perception, planning, execution, ...), mean wall seconds per finished trial that recorded its phases.
          */
         get: operations["batch_timing_api_batches__batch_id__timing_get"];
         put?: never;

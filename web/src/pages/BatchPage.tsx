@@ -5,7 +5,7 @@ import { api, post } from "../api/client";
 import type { Batch } from "../api/types";
 import { ExportButton } from "../components/ExportButton";
 import { SuccessChart } from "../components/SuccessChart";
-import { TimingChart, type TimingRow } from "../components/TimingChart";
+import { PhaseChart, type PhaseRow, TimingChart, type TimingRow } from "../components/TimingChart";
 import { TrialTable } from "../components/TrialTable";
 import { settingsOf } from "./Batches";
 
@@ -15,6 +15,7 @@ export function BatchPage({ id }: { id: string }) {
   const [b, setB] = useState<Batch | null>(null);
   const [error, setError] = useState("");
   const [timing, setTiming] = useState<TimingRow[]>([]);
+  const [phases, setPhases] = useState<PhaseRow[]>([]);
   useEffect(() => {
     let alive = true;
     let timer = 0;
@@ -23,8 +24,8 @@ export function BatchPage({ id }: { id: string }) {
         const x = await api<Batch>(`/api/batches/${encodeURIComponent(id)}`);
         if (!alive) return;
         setB(x);
-        const t = await api<{ rows: TimingRow[] }>(`/api/batches/${encodeURIComponent(id)}/timing`);
-        if (alive) setTiming(t.rows);
+        const t = await api<{ rows: TimingRow[]; phases: PhaseRow[] }>(`/api/batches/${encodeURIComponent(id)}/timing`);
+        if (alive) { setTiming(t.rows); setPhases(t.phases); }
         if (x.status === "running") timer = window.setTimeout(load, 1000);
       } catch (e) { if (alive) setError((e as Error).message); }
     };
@@ -53,8 +54,12 @@ export function BatchPage({ id }: { id: string }) {
           <tbody>{b.results.map((r) => (
             <tr key={r.task}><td>{r.task}</td><td>{r.done}/{r.total}</td><td>{pct(r.success_rate)}</td><td>{pct(r.ci95[0])} – {pct(r.ci95[1])}</td></tr>))}</tbody></table>
       </section>
-      <section><h3>Time per plan phase (primitive)</h3>
-        <TimingChart rows={timing} trialsPerTask={Object.fromEntries(b.results.map((r) => [r.task, r.done]))} />
+      <section className="timing"><h3>Where the time went</h3>
+        <div className="charts">
+          <div><h4>Per primitive (simulated s per trial)</h4>
+            <TimingChart rows={timing} trialsPerTask={Object.fromEntries(b.results.map((r) => [r.task, r.done]))} /></div>
+          <div><h4>Per pipeline phase (wall s per trial)</h4><PhaseChart rows={phases} /></div>
+        </div>
       </section>
       <section><h3>Trials</h3><div id="batch-trials"><TrialTable items={b.trials} /></div></section>
     </div>
