@@ -47,6 +47,7 @@ def run(
                 "successes": sum(r["success"] for r in rows),
                 "wall_s": wall,
                 "per_hour": len(rows) / wall * 3600,
+                "trial_phases_s": _median_phases(rows),
             }
         out["suites"][suite] = {
             "tasks": len(tasks),
@@ -54,6 +55,22 @@ def run(
             "runs": runs,
             "manifest": {"id": m["id"], "git": m["environment"]["git"], "files": len(m["files"])},
         }
+    return out
+
+
+PHASES = ("setup", "perception", "rendering", "planning", "simulation")
+PROFILE_DOC = "docs/profiles/liberopro_trial.md"  # the profile before and after the throughput work
+
+
+def _median_phases(rows: list[dict]) -> dict[str, float]:
+    """Median wall seconds per trial: the whole trial and each phase the pipeline times (TrialOutcome.phases_s)."""
+    import statistics
+
+    out = {"trial": statistics.median(r["wall_time_s"] for r in rows)} if rows else {}
+    for phase in PHASES:
+        values = [r["phases_s"][phase] for r in rows if phase in (r.get("phases_s") or {})]
+        if values:
+            out[phase] = statistics.median(values)
     return out
 
 
@@ -68,6 +85,23 @@ def section(r: dict, command: str) -> str:
                 f"| {suite} | {name} ({r['workers']} workers) | {x['trials']} | "
                 f"{100 * x['successes'] / x['trials']:.1f} % | {x['wall_s']:.0f} s | {x['per_hour']:.0f} |"
             )
+    phases = [
+        f"| {suite} | {name} | "
+        + " | ".join(f"{x['trial_phases_s'][k]:.2f} s" if k in x["trial_phases_s"] else "-" for k in ("trial", *PHASES))
+        + " |"
+        for suite, s in r["suites"].items()
+        for name, x in s["runs"].items()
+        if x.get("trial_phases_s")
+    ]
+    if phases:
+        lines += [
+            "",
+            "Median wall time per trial and per phase (planning includes the perception and rendering it asks for):",
+            "",
+            "| suite | executor | trial | " + " | ".join(PHASES) + " |",
+            "|---" * (3 + len(PHASES)) + "|",
+            *phases,
+        ]
     what = "; ".join(
         f"{suite}: {s['tasks']} tasks x {r['trials_per_task']} seeds, planner {s['planner']}"
         + (" (one task per cell)" if suite == "liberopro" else "")
@@ -79,8 +113,12 @@ def section(r: dict, command: str) -> str:
         + footer(
             command,
             f"{what}; segmenter {r['segmenter']} ({privileged}); wording: each task's own instruction (official); "
-            "seeds 0 and up; Ray: a local cluster started by the command (start-up and shutdown included); every "
-            "trial builds its scene (robosuite/LIBERO env) afresh; run manifests: "
+            "seeds 0 and up; Ray: a local cluster started by the command (start-up and shutdown included); a "
+            "worker process reuses a LIBERO env across consecutive trials of the same task (reset to the trial's "
+            "init state: the same start state as a fresh env, tests/bench/test_env_reuse.py), other scenes are "
+            "built afresh; robosuite/LIBERO camera frames draw their RGB only when it is read (the same pixels; the "
+            f"sim segmenter reads depth and ids only); where a LIBERO-PRO trial's time goes, before and after: "
+            f"[{PROFILE_DOC}]({PROFILE_DOC}); run manifests: "
             + ", ".join(f"{suite} `{s['manifest']['id']}`" for suite, s in r["suites"].items() if "manifest" in s),
         )
     )
