@@ -32,6 +32,7 @@ def register(sub) -> None:
             "api",
             "latency",
             "viser",
+            "console",
             "export",
             "throughput",
             "perception",
@@ -119,7 +120,7 @@ def register(sub) -> None:
         help="held-out scenes per builtin task (perception suite; random scenes: 7x as many)",
     )
     b.add_argument("--targets", type=int, default=200, help="IK targets (ik suite)")
-    b.add_argument("--store-size", type=int, default=10_000, help="trials in the trace store (api suite)")
+    b.add_argument("--store-size", type=int, default=10_000, help="trials in the trace store (api, console suites)")
     b.add_argument("--write", metavar="BENCHMARKS.md", help="replace this benchmark's section in the file")
     b.add_argument("--json", metavar="FILE", help="also write per-trial rows as JSON")
     bench_manifest.add_arguments(b)
@@ -154,7 +155,7 @@ def _simple_benches(args: argparse.Namespace) -> dict:
     """suite -> (BENCHMARKS.md title, run(), section(result, command)); imports stay lazy."""
     from spark_core.bench import control_bench
 
-    from .console_bench import api, latency, viser
+    from .console_bench import api, console, latency, viser
 
     return {
         "ik": ("IK (Panda, pinocchio)", lambda: control_bench.ik_benchmark(args.targets), control_bench.ik_section),
@@ -162,6 +163,11 @@ def _simple_benches(args: argparse.Namespace) -> dict:
         "api": ("console API latency", lambda: api.run(args.store_size), api.section),
         "latency": ("console event latency (executor to browser)", latency.run, latency.section),
         "viser": ("live 3D view frame rate", viser.run, viser.section),
+        "console": (
+            "console in a real browser (Run to running, event to screen, 3D frame rate, page loads)",
+            lambda: console.run(store_size=args.store_size),
+            console.section,
+        ),
         "export": ("training-data export (LeRobot)", lambda: _export_bench(args), _export_section),
         "throughput": ("batch throughput (local pool vs Ray)", lambda: _throughput(args), _throughput_section),
     }

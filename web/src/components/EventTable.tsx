@@ -28,7 +28,7 @@ export function EventTable({ events, cursor, kinds, toSim, onSeek }:
           <thead><tr><th>wall s</th><th>sim s</th><th>kind</th><th>node</th><th>detail</th></tr></thead>
           <tbody>
             {shown.map((e, i) => (
-              <tr key={`${e.seq ?? i}-${e.t}`} className={`${e.t > cursor ? "future" : ""}${i === at ? " at-cursor" : ""}`} data-kind={e.kind} data-t={e.t} onClick={() => onSeek(e.t)}>
+              <tr key={`${e.seq ?? i}-${e.t}`} className={`${e.t > cursor ? "future" : ""}${i === at ? " at-cursor" : ""}`} data-kind={e.kind} data-t={e.t} data-seq={e.seq} onClick={() => onSeek(e.t)}>
                 <td>{e.t.toFixed(3)}</td><td>{(e.t_sim ?? toSim(e.t)).toFixed(2)}</td><td>{e.kind}</td><td>{e.node_path}</td><td>{fmtDetail(e.detail)}</td>
               </tr>
             ))}
