@@ -215,9 +215,11 @@ def _row(name: str, xs: list[float], unit: str, worst: str) -> str:
 
 def section(r: dict, command: str) -> str:
     n = f"{r['store_size']:,}"
+    runs = r["run_to_running_s"]  # the first Run also starts the server's trial worker process
     body = (
         "| measurement | samples | median | worst |\n|---|---|---|---|\n"
-        + _row("Run clicked -> first node shown running (real-time pace)", r["run_to_running_s"], "ms", "max")
+        + _row("Run clicked -> first node shown running, first Run after server start", runs[:1], "ms", "max")
+        + (_row("Run clicked -> first node shown running, later Runs", runs[1:], "ms", "max") if runs[1:] else "")
         + _row("event -> screen, 3D view on (p50 / p99)", r["latency_s"], "ms", "p99")
         + _row("3D view frame rate during a trial", r["fps_live"], "fps", "min")
         + _row("3D view frame rate during replay (1x)", r["fps_replay"], "fps", "min")
@@ -234,7 +236,9 @@ def section(r: dict, command: str) -> str:
             f"real server (uvicorn, one trial worker process, viser 3D view on for the live rows); task "
             f"{r['task']}, reference plan, segmenter privileged-keypoints (PRIVILEGED). Run -> running: the click "
             f"on the dashboard's Run button (real-time pace) until the animation frame after a tree node shows "
-            f"running, page already loaded. Event -> screen: each event's publication time in the worker until "
+            f"running, page already loaded; the first Run after the server starts also waits for its trial worker "
+            f"process to start, later Runs find it idle (each trial is aborted once shown running). "
+            f"Event -> screen: each event's publication time in the worker until "
             f"the animation frame after its row is in the event table, as fast as possible, events replayed at "
             f"connect excluded. Frame rate: animation frames of the viser client's document (it renders on each) "
             f"per second of wall time, samples = trials. Loads: navigation in a new tab until the recent trials / "
