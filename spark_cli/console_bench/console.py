@@ -4,7 +4,7 @@ SwiftShader WebGL) against a real server (uvicorn, a trial worker process, the v
 - Run -> first node shown running: the dashboard's Run button clicked, until the trial page's tree shows a node
   running (the next animation frame after it is in the DOM), at real-time pace;
 - event -> screen with the 3D view on: an event's publication in the trial worker (its `wall_s`) until the
-  animation frame after its row is in the trial page's event table (same machine clock), as fast as possible;
+  animation frame after its row is in the trial page's event table (same machine clock), at real-time pace;
 - 3D frame rate: animation frames the viser client (it renders on every frame) draws per second, while a trial
   runs and while its replay plays at 1x;
 - dashboard and history load time with a store of `store_size` trials: navigation until the recent trials / the
@@ -121,7 +121,9 @@ def _live_and_replay(ctx, base: str, task: str, seed: int) -> tuple[list[float],
     page = ctx.new_page()
     try:
         page.goto(base + "/")
-        body = {"task": task, "segmenter": "privileged-keypoints", "seed": seed, "start_paused": True}
+        # real-time pace (as an operator watches): the replay at 1x then lasts as long as the trial's simulated
+        # time, not the fraction of a second an unpaced trial takes
+        body = {"task": task, "segmenter": "privileged-keypoints", "seed": seed, "start_paused": True, "pacing": 1.0}
         tid = _post(page, base, "/api/trials", body)["id"]
         page.goto(f"{base}/#/trial/{tid}")
         page.wait_for_selector("#tree .node.paused", timeout=180_000)
@@ -239,9 +241,10 @@ def section(r: dict, command: str) -> str:
             f"running, page already loaded; the first Run after the server starts also waits for its trial worker "
             f"process to start, later Runs find it idle (each trial is aborted once shown running). "
             f"Event -> screen: each event's publication time in the worker until "
-            f"the animation frame after its row is in the event table, as fast as possible, events replayed at "
+            f"the animation frame after its row is in the event table, trial at real-time pace, events replayed at "
             f"connect excluded. Frame rate: animation frames of the viser client's document (it renders on each) "
-            f"per second of wall time, samples = trials. Loads: navigation in a new tab until the recent trials / "
+            f"per second of wall time while the paced trial runs and while its replay plays at 1x (as long as "
+            f"the trial), samples = trials. Loads: navigation in a new tab until the recent trials / "
             f"the first history page (50 rows, newest first) are in the DOM; the store is seeded with {n} "
             f"finished trials (10 events, 100 trajectory rows each). The machine was shared with other work: "
             f"load average {lb[0]:.1f} before and {la[0]:.1f} after the run (1 min), on "
