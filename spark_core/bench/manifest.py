@@ -380,7 +380,8 @@ def drift(recorded: dict[str, Any], current: dict[str, Any]) -> list[str]:
     out += [f"{k} {old_p.get(k)} -> {new_p.get(k)}" for k in changed]
     old_f, new_f = recorded.get("files", {}), current.get("files", {})
     out += [f"file {k} changed" for k in sorted(set(old_f) | set(new_f)) if old_f.get(k) != new_f.get(k)]
-    old_m, new_m = recorded["run"].get("memory", {}), current["run"].get("memory", {})
+    old_m = recorded.get("run", {}).get("memory", {})
+    new_m = current.get("run", {}).get("memory", {})
     if old_m.get("sha256") != new_m.get("sha256"):
         out.append(f"plan library {old_m.get('sha256', 'off')} -> {new_m.get('sha256', 'off')}")
     return out
