@@ -71,6 +71,9 @@ _EXPORTS: dict[str, str] = {
     # reports
     "wilson": "spark_core.bench.report",
     "batch_manifest": "spark_core.bench.manifest",
+    "PROTOCOLS": "spark_core.bench.protocols",
+    "ProtocolError": "spark_core.bench.protocols",
+    "apply_protocol": "spark_core.bench.protocols",
 }
 
 

@@ -10,7 +10,7 @@ from fastapi import APIRouter, HTTPException, Path, Query, Request
 from fastapi.responses import PlainTextResponse
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
-from spark_core import PLANNERS, SEGMENTERS, StorePlanLibrary, batch_manifest, wilson
+from spark_core import PLANNERS, PROTOCOLS, SEGMENTERS, StorePlanLibrary, batch_manifest, wilson
 from spark_core import suites as catalog_suites
 
 from .models import MAX_ID, MAX_NAME, MAX_OFFSET, MAX_SEED, TrialCreate
@@ -48,6 +48,11 @@ class BatchCreate(BaseModel):
     model: str | None = Field(None, max_length=200)
     endpoint: str | None = Field(None, max_length=100, description="an LLM endpoint the operator configured")
     segmenter: str = Field("sim", json_schema_extra={"enum": list(SEGMENTERS)})
+    protocol: str | None = Field(
+        None,
+        json_schema_extra={"enum": list(PROTOCOLS)},
+        description="a named evaluation configuration of the paper for every trial (GET /api/catalog lists them)",
+    )
     capture: bool = Field(False, description="record training-data frames for every trial (for LeRobot export)")
 
 
@@ -101,7 +106,13 @@ def create_batch(body: BatchCreate, request: Request) -> dict:
     for where, fields in wanted:
         try:
             trial = TrialCreate.model_validate(
-                {**fields, "model": body.model, "endpoint": body.endpoint, "capture": body.capture}
+                {
+                    **fields,
+                    "model": body.model,
+                    "endpoint": body.endpoint,
+                    "capture": body.capture,
+                    "protocol": body.protocol,
+                }
             )
             configs.append(trial_config(trial, batch_id))
         except ValidationError as e:  # a catalog name the batch or one of its specs got wrong

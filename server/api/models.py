@@ -6,7 +6,16 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator
 
-from spark_core import EMBODIMENTS, PLANNERS, SEGMENTERS, CatalogError, check_embodiment, check_planner, check_segmenter
+from spark_core import (
+    EMBODIMENTS,
+    PLANNERS,
+    PROTOCOLS,
+    SEGMENTERS,
+    CatalogError,
+    check_embodiment,
+    check_planner,
+    check_segmenter,
+)
 
 MAX_SEED = 2**31 - 1  # a seed the simulators' RNGs take (np.random, robosuite, LIBERO init-state index)
 MAX_OFFSET = 10**9  # list paging: far past any store, well inside SQLite's 64-bit integers
@@ -50,6 +59,12 @@ class TrialCreate(BaseModel):
     pacing: float | None = Field(None, ge=0.01, le=100, description="x real time (default: as fast as possible)")
     recovery: bool = Field(True, description="recovery tiers 1-2 (2 retries per node)")
     adaptive: bool = Field(True, description="adaptive prompts (label + 3 variants)")
+    protocol: str | None = Field(
+        None,
+        json_schema_extra=_enum(PROTOCOLS),
+        description="a named evaluation configuration of the paper (sets adaptive prompts and cameras; refused "
+        "with a privileged segmenter or a given plan; GET /api/catalog lists them)",
+    )
 
     @field_validator("planner")
     @classmethod

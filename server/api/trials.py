@@ -10,7 +10,7 @@ from typing import Annotated
 
 from fastapi import APIRouter, HTTPException, Path, Query, Request, Response, WebSocket, WebSocketDisconnect
 
-from spark_core import TrialConfig, TrialConfigError
+from spark_core import ProtocolError, TrialConfig, TrialConfigError
 
 from .auth import websocket_allowed
 from .models import MAX_ID, MAX_OFFSET, Control, TrialCreate, TrialCreated, TrialDeleted, TrialPage, TrialRestored
@@ -56,8 +56,12 @@ def trial_config(body: TrialCreate, batch_id: str | None = None) -> TrialConfig:
         batch_id=batch_id,
     )
     try:
+        if body.protocol is not None:
+            from spark_core import apply_protocol
+
+            config = apply_protocol(body.protocol, config)  # its settings, then may it be reported under it
         return config.check()
-    except TrialConfigError as e:
+    except (TrialConfigError, ProtocolError) as e:
         raise HTTPException(422, str(e)) from None
 
 

@@ -435,6 +435,7 @@ def batch_manifest(suite: str, configs: list[TrialConfig], batch_id: str, librar
         executor="console",
         batch_id=batch_id,
         library=library,
+        protocol=configs[0].eval_protocol,
     )
     if any(config_record(c) != m["run"]["config"] for c in configs):
         m["run"]["per_trial_config"] = [{"task": c.task, "seed": c.seed, "config": config_record(c)} for c in configs]

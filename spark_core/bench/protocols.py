@@ -131,6 +131,11 @@ def apply(name: str, config: TrialConfig) -> TrialConfig:
     return out
 
 
+def apply_protocol(name: str, config: TrialConfig) -> TrialConfig:
+    """`apply` under the name the engine's public API exports (the console's trial and batch requests)."""
+    return apply(name, config)
+
+
 def bddl_object_names(task: str) -> list[str]:
     """LIBERO's canonical object names for a LIBERO-PRO task: the categories of its BDDL `(:objects ...)` (the
     objects it manipulates, not the fixtures), as phrases (`akita_black_bowl` -> "akita black bowl")."""

@@ -398,6 +398,24 @@ def test_form_reports_server_errors(server, page):
     page.wait_for_selector("#form-error:has-text('seed')")
 
 
+def test_a_protocol_is_offered_on_its_suite_and_a_privileged_segmenter_under_it_is_refused(server, page):
+    """The paper's protocols come from the catalog, only on the suites they are defined on; the server's refusal
+    (a privileged segmenter under s2) is shown inline, naming why."""
+    page.goto(server + "/")
+    page.wait_for_selector("#task-browser details[data-suite=builtin]")
+    page.fill("input[name=task-search]", "lift_block")
+    page.click("button[data-task=lift_block]")
+    page.wait_for_selector("#new-trial")
+    assert page.locator("#new-trial select[name=protocol]").count() == 0  # no protocol is defined on builtin
+    page.fill("input[name=task-search]", "Lift")
+    page.click("button[data-task=Lift]")
+    page.wait_for_selector("#new-trial select[name=protocol] option[value=s2]", state="attached")
+    page.select_option("#new-trial select[name=protocol]", "s2")
+    page.select_option("#new-trial select[name=segmenter]", "sim")
+    page.click("#new-trial button[type=submit]")
+    page.wait_for_selector("#form-error:has-text('privileged')")
+
+
 def test_api_docs_work_offline(server, page):
     requested = []
 

@@ -1,12 +1,12 @@
 // Client types from the server's OpenAPI document: node scripts/gen-api.mjs OPENAPI.json OUT.d.ts
-// Catalog names (planner, segmenter, embodiment) are typed as plain strings: the UI takes them from
+// Catalog names (planner, segmenter, embodiment, protocol) are typed as plain strings: the UI takes them from
 // GET /api/catalog at run time, so a backend the server adds appears without a UI change or a type edit.
 import { readFileSync, writeFileSync } from "node:fs";
 import openapiTS, { astToString } from "openapi-typescript";
 import ts from "typescript";
 
 const [input, output] = process.argv.slice(2);
-const CATALOG_FIELDS = new Set(["Planner", "Segmenter", "Embodiment"]); // pydantic titles of those fields
+const CATALOG_FIELDS = new Set(["Planner", "Segmenter", "Embodiment", "Protocol"]); // pydantic titles of those fields
 const STRING = ts.factory.createKeywordTypeNode(ts.SyntaxKind.StringKeyword);
 const NULL = ts.factory.createLiteralTypeNode(ts.factory.createNull());
 const ast = await openapiTS(JSON.parse(readFileSync(input, "utf8")), {

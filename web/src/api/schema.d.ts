@@ -513,6 +513,12 @@ export interface components {
              */
             segmenter: string;
             /**
+             * Protocol
+             * @description a named evaluation configuration of the paper for every trial (GET /api/catalog lists them)
+             * @enum {unknown}
+             */
+            protocol?: string | null;
+            /**
              * Capture
              * @description record training-data frames for every trial (for LeRobot export)
              * @default false
@@ -693,6 +699,12 @@ export interface components {
              * @default true
              */
             adaptive: boolean;
+            /**
+             * Protocol
+             * @description a named evaluation configuration of the paper (sets adaptive prompts and cameras; refused with a privileged segmenter or a given plan; GET /api/catalog lists them)
+             * @enum {unknown}
+             */
+            protocol?: string | null;
         };
         /** TrialCreated */
         TrialCreated: {

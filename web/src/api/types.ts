@@ -5,6 +5,8 @@ export interface CatalogEntry { name: string; description: string }
 export interface Planner extends CatalogEntry { offline: boolean; needs_model: boolean; default_model: string | null }
 export interface Segmenter extends CatalogEntry { privileged: boolean; cameras: boolean; needs: string }
 export interface Embodiment extends CatalogEntry { arms: string[] }
+/** A named evaluation configuration of the paper (spark_core/bench/protocols.py). */
+export interface Protocol extends CatalogEntry { suites: string[]; wording: string; adaptive: boolean }
 export interface Endpoint { name: string; planner: string; [k: string]: unknown }
 export interface Task {
   name: string; suite: string; instruction: string; predicate: string; embodiments: string[];
@@ -12,7 +14,7 @@ export interface Task {
 }
 export interface Catalog {
   planners: Planner[]; segmenters: Segmenter[]; embodiments: Embodiment[]; endpoints: Endpoint[];
-  suites: Record<string, string[]>; tasks: Task[];
+  protocols: Protocol[]; suites: Record<string, string[]>; tasks: Task[];
   verdict: string[]; node_status: string[]; event_kind: string[]; tree_status: string[];
   event_node_status: Record<string, string>;
 }

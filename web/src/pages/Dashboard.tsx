@@ -107,6 +107,7 @@ function TrialForm({ cat, task }: { cat: Catalog; task: Task }) {
     if (s("model")) body.model = s("model");
     if (s("endpoint")) body.endpoint = s("endpoint");
     if (s("pacing")) body.pacing = Number(s("pacing"));
+    if (s("protocol")) body.protocol = s("protocol");
     if (plan.trim()) body.plan = plan;
     setBusy(true);
     try { go(`#/trial/${(await post<{ id: string }>("/api/trials", body)).id}`); }
@@ -123,6 +124,7 @@ function TrialForm({ cat, task }: { cat: Catalog; task: Task }) {
         <label>Robot <select name="embodiment"><option value="">task default</option>
           {cat.embodiments.filter((x) => task.embodiments.includes(x.name)).map((x) => <option key={x.name} value={x.name}>{x.name}</option>)}</select></label>
         <label>Seed <input type="number" name="seed" defaultValue={0} min={0} className="narrow" /></label>
+        <ProtocolField cat={cat} suite={task.suite} />
         <label>Pace <select name="pacing">{PACING.map(([v, l]) => <option key={v} value={v}>{l}</option>)}</select></label>
         <label><input type="checkbox" name="start_paused" /> start paused</label>
         <label title="agentview + wrist video and per-frame labels, for LeRobot export"><input type="checkbox" name="capture" /> record training data</label>
@@ -130,6 +132,17 @@ function TrialForm({ cat, task }: { cat: Catalog; task: Task }) {
         <button type="submit" disabled={busy || !planOk}>Run</button> <span id="form-error" className="fail">{error}</span>
       </form>
     </section>
+  );
+}
+
+/** The paper's named evaluation configurations defined on `suite` (none: the field is left out). The server
+ * refuses a privileged segmenter or a given plan under one, and says why. */
+function ProtocolField({ cat, suite }: { cat: Catalog; suite: string }) {
+  const protocols = (cat.protocols ?? []).filter((p) => p.suites.includes(suite));
+  if (!protocols.length) return null;
+  return (
+    <label title="a named evaluation configuration of the paper">Protocol <select name="protocol"><option value="">none</option>
+      {protocols.map((p) => <option key={p.name} value={p.name} title={p.description}>{p.name}</option>)}</select></label>
   );
 }
 
@@ -145,6 +158,7 @@ function BatchForm({ cat }: { cat: Catalog }) {
     if (tasks.length) body.tasks = tasks;
     if (f.get("model")) body.model = String(f.get("model"));
     if (f.get("endpoint")) body.endpoint = String(f.get("endpoint"));
+    if (f.get("protocol")) body.protocol = String(f.get("protocol"));
     try { go(`#/batch/${(await post<{ id: string }>("/api/batches", body)).id}`); }
     catch (err) { setError((err as Error).message); }
   };
@@ -156,6 +170,7 @@ function BatchForm({ cat }: { cat: Catalog }) {
         <label>Trials per task <input type="number" name="trials" defaultValue={2} min={1} max={100} className="narrow" /></label>
         <PlannerFields cat={cat} planner={planner} setPlanner={setPlanner} />
         <label>Segmenter <select name="segmenter">{cat.segmenters.map((s) => <option key={s.name} value={s.name}>{segLabel(s)}</option>)}</select></label>
+        <ProtocolField cat={cat} suite={suite} />
         <label><input type="checkbox" name="capture" /> record training data</label>
         <button type="submit">Run batch</button> <span id="batch-error" className="fail">{error}</span>
       </form>
