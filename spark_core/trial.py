@@ -270,6 +270,8 @@ def _plan(ctx: TrialContext, library: Any) -> tuple[Plan | None, dict[str, Any]]
         view, calls = perceive_for_llm(planner, ctx.instruction, ctx.resolver, adaptive=cfg.adaptive, extra=extra)
     else:
         view = observe(ctx.instruction, ctx.resolver)
+    if llm and view.image is not None:  # the exact image the BT call gets, kept with the trial's artifacts
+        ctx.extra["planner_image"] = (view.image, _planner_camera(ctx))
     examples = library.examples(ctx.instruction) if (llm and library is not None) else ()
     result = planner.plan(PlanRequest(ctx.instruction, view, examples, arm_bases(ctx.world), arm_tools(ctx.world)))
     usage = asdict(result.usage)
@@ -291,7 +293,7 @@ def _plan(ctx: TrialContext, library: Any) -> tuple[Plan | None, dict[str, Any]]
                 "model": result.detail.get("model"),
                 "prompt": result.detail.get("prompt"),
                 "response": result.text,
-                "image": image_reference(view, next(iter(getattr(ctx.resolver, "frames", {}) or {}), None)),
+                "image": image_reference(view, _planner_camera(ctx)),
                 "usage": asdict(result.usage),
                 "cost_usd": result.cost_usd,
                 "latency_s": round(result.latency_s, 3),
@@ -302,6 +304,11 @@ def _plan(ctx: TrialContext, library: Any) -> tuple[Plan | None, dict[str, Any]]
         "examples": len(examples),
     }
     return result.plan, info
+
+
+def _planner_camera(ctx: TrialContext) -> str | None:
+    """The camera whose annotated frame the BT call gets (perception's first)."""
+    return next(iter(getattr(ctx.resolver, "frames", {}) or {}), None)
 
 
 def run_trial(

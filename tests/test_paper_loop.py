@@ -9,6 +9,7 @@ from __future__ import annotations
 import base64
 import hashlib
 import json
+from pathlib import Path
 
 import pytest
 
@@ -77,6 +78,8 @@ def test_perception_tries_the_llms_prompts(tmp_path):
     chosen = [cam["chosen"] for cam in grounding["cameras"].values()]
     assert any(c is not None for c in chosen)  # the one kept is named, with every candidate's score
     assert all("best_score" in c for cam in grounding["cameras"].values() for c in cam["candidates"])
+    trial = store.get_trial(out.trial_id)
+    _check_planner_image(trial, trial["protocol"]["planning"]["calls"][-1])
 
 
 def test_bad_phrases_are_filtered_and_perception_falls_back_to_its_table(tmp_path):
@@ -170,6 +173,15 @@ def _check_trace(trial: dict, fake) -> None:
     assert {"red block", *SYNTHESIS[0]["prompts"]} <= {c["prompt"] for c in candidates}
     assert all(isinstance(c["best_score"], float) and c["verdict"] for c in candidates)
     assert all("chosen" in cam for g in trial["groundings"] for cam in g["cameras"].values())
+    _check_planner_image(trial, bt)
+
+
+def _check_planner_image(trial: dict, bt: dict) -> None:
+    """The BT call's annotated image is kept with the trial's artifacts, byte for byte as sent."""
+    (image,) = [a for a in trial["artifacts"] if a["kind"] == "planner_input"]
+    data = Path(image["path"]).read_bytes()
+    assert image["sha256"] == bt["image"]["sha256"] == hashlib.sha256(data).hexdigest()
+    assert image["camera"] == bt["image"]["camera"]
 
 
 def test_spark_run_with_gemini_and_sam3_traces_both_calls(tmp_path, monkeypatch, tiny_sam3, capsys):

@@ -118,8 +118,8 @@ def perceive_for_llm(
 
 
 def image_reference(view: SceneView, camera: str | None = None) -> dict | None:
-    """What the trace keeps of the image attached to the BT call: its camera, size and the SHA-256 of the exact
-    PNG sent (the image itself is not stored: the trial's detection artifacts show the same camera at the end)."""
+    """What the call's trace record names of the image attached to the BT call: its camera, size and the SHA-256
+    of the exact PNG sent (the PNG itself is the trial's `planner-input` artifact, see trace.artifacts)."""
     if view.image is None:
         return None
     import hashlib

@@ -34,6 +34,24 @@ def save_png(directory: Path, name: str, rgb: np.ndarray, **meta) -> dict:
     return {"name": name, "path": str(path), "sha256": hashlib.sha256(data).hexdigest(), **meta}
 
 
+def planner_image(rgb: np.ndarray, camera: str | None, directory: Path) -> dict:
+    """The annotated image attached to the planner's BT call, byte for byte as sent (its SHA-256 equals the one
+    the call's trace record names)."""
+    from ..planning.llm import png_bytes
+
+    data = png_bytes(rgb)
+    directory.mkdir(parents=True, exist_ok=True)
+    path = directory / "planner-input.png"
+    path.write_bytes(data)
+    return {
+        "name": "planner-input",
+        "path": str(path),
+        "sha256": hashlib.sha256(data).hexdigest(),
+        "kind": "planner_input",
+        "camera": camera,
+    }
+
+
 def detection_images(resolver, directory: Path) -> list[dict]:
     """One annotated image per camera: the last frame, the chosen detection of every label, its keypoint."""
     from ..perception.annotate import annotate

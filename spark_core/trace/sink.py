@@ -112,10 +112,13 @@ class StoreSink(BaseSink):
             self.store.add_groundings(outcome.trial_id, getattr(ctx.resolver, "groundings", []))
 
     def _artifacts(self, ctx: TrialContext) -> list[dict]:
-        from .artifacts import capture_entries, detection_images
+        from .artifacts import capture_entries, detection_images, planner_image
 
         directory = self.artifacts_dir / ctx.trial_id
         out = detection_images(ctx.resolver, directory)
+        if ctx.extra.get("planner_image") is not None:
+            rgb, camera = ctx.extra["planner_image"]
+            out.append(planner_image(rgb, camera, directory))
         if ctx.episode is not None:
             ctx.world.monitors.remove(ctx.episode)
             out += capture_entries(ctx.episode, directory)

@@ -416,6 +416,28 @@ def test_a_protocol_is_offered_on_its_suite_and_a_privileged_segmenter_under_it_
     page.wait_for_selector("#form-error:has-text('privileged')")
 
 
+def test_an_llm_trials_planner_calls_and_the_image_its_bt_call_got_are_shown(server, page, tmp_path):
+    """A trial planned by the real openai client against a loopback server (recorded into the console's store):
+    its page lists both calls (synthesis, then the BT call) and shows the annotated image the BT call got."""
+    from spark_core.trace.sink import StoreSink
+    from spark_core.trial import run_trial
+    from tests.doubles.fake_openai import FakeOpenAI
+    from tests.test_paper_loop import PLAN, SYNTHESIS, _config
+
+    store = APPS[-1].state.store
+    with FakeOpenAI() as fake:
+        fake.script = [("ok", json.dumps(SYNTHESIS)), ("ok", json.dumps(PLAN))]
+        out = run_trial(_config(fake), [StoreSink(store, tmp_path / "art")])
+    page.goto(f"{server}/#/trial/{out.trial_id}")
+    page.click("#planner-calls summary")
+    kinds = page.eval_on_selector_all("#planner-calls .planner-call", "ds => ds.map(d => d.dataset.kind)")
+    assert kinds == ["prompt_synthesis", "behavior_tree"]
+    page.wait_for_function(
+        "() => { const i = document.querySelector('#planner-calls img.planner-image');"
+        " return i && i.complete && i.naturalWidth > 0; }"
+    )
+
+
 def test_api_docs_work_offline(server, page):
     requested = []
 

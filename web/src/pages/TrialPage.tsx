@@ -6,6 +6,7 @@ import { api, post, wsUrl } from "../api/client";
 import { useCatalog } from "../api/catalog";
 import type { Catalog, Trial, TrialEvent } from "../api/types";
 import { CameraPanel } from "../components/CameraPanel";
+import { PlannerCalls } from "../components/PlannerCalls";
 import { EventTable } from "../components/EventTable";
 import { Legend } from "../components/Legend";
 import { type Bar, Timeline } from "../components/Timeline";
@@ -203,6 +204,7 @@ function Header({ trial, cat, status, activeS }: { trial: Trial; cat: Catalog; s
         {(trial.cost_usd ?? 0) > 0 && <> · ${trial.cost_usd!.toFixed(4)}</>}
       </div>
       <Explanation trial={trial} predicate={task?.predicate} />
+      <PlannerCalls trial={trial} />
     </section>
   );
 }
