@@ -4,6 +4,9 @@ from pathlib import Path
 
 os.environ.setdefault("MUJOCO_GL", "egl")
 os.environ.setdefault("HF_HUB_OFFLINE", "1")
+# One Ray token-auth mode for the whole session: Ray caches its mode per process, and a test cluster started with
+# auth off followed by a local ray.init() that turns it on (a ~/.ray/auth_token on the machine) fails to connect.
+os.environ.setdefault("RAY_AUTH_MODE", "disabled")
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 

@@ -30,12 +30,19 @@ export function TrialPage({ id }: { id: string }) {
   const [control, setControl] = useState<string>("");
   const [breakpoints, setBreakpoints] = useState<Set<string>>(new Set());
 
-  const refresh = () => api<Trial>(`/api/trials/${encodeURIComponent(id)}`).then((t) => {
+  // Bumped whenever an event or a control answer sets the control state: a record fetched before that is older
+  // than it (a start_paused trial's "paused" event can overtake the fetch its first event started) and must not
+  // overwrite it.
+  const controlEpoch = useRef(0);
+  const refresh = () => {
+    const epoch = controlEpoch.current;
+    return api<Trial>(`/api/trials/${encodeURIComponent(id)}`).then((t) => {
     setTrial(t);
-    if (t.control_state) setControl(t.control_state);
+    if (t.control_state && controlEpoch.current === epoch) setControl(t.control_state);
     if (t.breakpoints) setBreakpoints(new Set(t.breakpoints));
     return t;
-  });
+    });
+  };
 
   useEffect(() => {
     setTrial(null); setEvents([]); setClosed(false); setCursor(null); setPlaying(false); setLoadError("");
@@ -51,8 +58,8 @@ export function TrialPage({ id }: { id: string }) {
         return;
       }
       setEvents((es) => [...es, ev]);
-      if (ev.kind === "paused") setControl("paused");
-      else if (ev.kind === "started") setControl((c) => (c === "paused" ? "running" : c || "running"));
+      if (ev.kind === "paused") { controlEpoch.current++; setControl("paused"); }
+      else if (ev.kind === "started") { controlEpoch.current++; setControl((c) => (c === "paused" ? "running" : c || "running")); }
       if (!gotPlan) { gotPlan = true; refresh().catch(() => {}); }
     };
     ws.onclose = () => { setTimeout(() => refresh().catch(() => {}), 200); };
@@ -124,7 +131,7 @@ export function TrialPage({ id }: { id: string }) {
   const act = async (action: string, extra: Record<string, unknown> = {}) => {
     try {
       const r = await post<{ state: string }>(`/api/trials/${encodeURIComponent(id)}/control`, { action, ...extra });
-      setControl(r.state); setError("");
+      controlEpoch.current++; setControl(r.state); setError("");
     } catch (e) { setError((e as Error).message); }
   };
   const toggleBreakpoint = live ? (path: string) => {
