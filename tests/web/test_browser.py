@@ -313,6 +313,17 @@ def test_batch_is_found_again_from_the_batch_list(server, page):
     page.wait_for_selector("#verdict")
 
 
+def _rows_once_sorted(page, cells_js: str, timeout_s: float = 15.0) -> list:
+    """The history rows' cells once they come back in ascending order, or the last ones seen after `timeout_s`
+    (the caller's assertion then fails, showing them)."""
+    deadline = time.monotonic() + timeout_s
+    while True:
+        cells = page.eval_on_selector_all("#rows tbody tr", cells_js)
+        if cells == sorted(cells) or time.monotonic() > deadline:
+            return cells
+        page.wait_for_timeout(100)
+
+
 def test_history_sorts_filters_pages_and_compares(server, page):
     a = _post(server, "/api/trials", {"task": "lift_block", "segmenter": "privileged-keypoints", "seed": 1})["id"]
     b = _post(server, "/api/trials", {"task": "lift_block", "segmenter": "privileged-keypoints", "plan": NUDGE})["id"]
@@ -342,13 +353,14 @@ def test_history_sorts_filters_pages_and_compares(server, page):
     page.wait_for_selector("#page-info:has-text('1–50')")
     page.click("th[data-sort=seed]")
     page.wait_for_selector("th[data-sort=seed]:has-text('▲')")
-    seeds = page.eval_on_selector_all("#rows tbody tr", "rs => rs.map(r => +r.cells[6].innerText)")
+    # the arrow shows at once, the rows when the server's sorted page arrives
+    seeds = _rows_once_sorted(page, "rs => rs.map(r => +r.cells[6].innerText)")
     assert seeds == sorted(seeds)
     for key in ("batch_id", "failure"):  # sorted by the server (SQLite: empty first)
         page.click(f"th[data-sort={key}]")
         page.wait_for_selector(f"th[data-sort={key}]:has-text('▲')")
         col = page.eval_on_selector_all("#rows thead th", f"hs => hs.findIndex(h => h.dataset.sort === '{key}')")
-        cells = page.eval_on_selector_all("#rows tbody tr", f"rs => rs.map(r => r.cells[{col}].innerText)")
+        cells = _rows_once_sorted(page, f"rs => rs.map(r => r.cells[{col}].innerText)")
         assert cells == sorted(cells)
     page.click("#verdict-filters button[data-verdict=task_unmet]")
     # the server's answer: only that verdict, b among them
