@@ -4,24 +4,15 @@ from __future__ import annotations
 
 import os
 
-from .llm import (
-    CallOutcome,
-    LLMSettings,
-    PlannerUnavailable,
-    Synthesis,
-    TransientError,
-    Turn,
-    plan_with_llm,
-    synthesise_with_llm,
-    variants_with_llm,
-)
+from .llm import CallOutcome, LLMSettings, PlannerUnavailable, TransientError, Turn
+from .llm_planner import LLMPlanner
 from .prompt import response_schema
-from .protocol import PlanRequest, PlanResult, Usage
+from .protocol import Usage
 
 DEFAULT_MODEL = "gemini-3.1-pro-preview"
 
 
-class GeminiPlanner:
+class GeminiPlanner(LLMPlanner):
     name = "gemini"
 
     def __init__(
@@ -53,18 +44,6 @@ class GeminiPlanner:
             retry_options=types.HttpRetryOptions(attempts=1),
         )  # retries are ours: bounded, reported
         self.client = genai.Client(api_key=key, http_options=http)
-
-    def plan(self, request: PlanRequest) -> PlanResult:
-        return plan_with_llm(self.name, self.settings, request, self._call)
-
-    def prompt_variants(self, labels: list[str], k: int = 3) -> dict[str, list[str]]:
-        """The variant call: k alternative text prompts per object label (colour, shape, material)."""
-        return variants_with_llm(self.settings, labels, k, self._call, self.calls.append)
-
-    def synthesise(self, instruction: str, image_png: bytes | None, k: int = 3) -> Synthesis:
-        """The paper's prompt-synthesis call: the objects to detect (and k alternative prompts each when k > 0)
-        from the task language and the agentview image; recorded in `calls`."""
-        return synthesise_with_llm(self.settings, instruction, image_png, k, self._call, self.calls.append)
 
     def _call(
         self,

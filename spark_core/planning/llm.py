@@ -203,22 +203,31 @@ def synthesise_with_llm(
     result = parse_synthesis(out.text, k)
     if record is not None:
         record(
-            {
-                "kind": "prompt_synthesis",
-                "model": settings.model,
-                "prompt": f"{system}\n\n{user}",
+            _synthesis_record(settings, system, user, out, result, t0)
+            | {
                 "image_attached": image_png is not None,
                 "max_output_tokens": SYNTHESIS_MAX_OUTPUT_TOKENS,
-                "response": out.text,
                 "objects": list(result.objects),
                 "variants": result.variants,
-                "dropped": list(result.dropped),
-                "usage": asdict(out.usage),
-                "cost_usd": cost_usd(settings.model, out.usage, settings.prices),
-                "latency_s": round(time.perf_counter() - t0, 3),
             }
         )
     return result
+
+
+def _synthesis_record(
+    settings: LLMSettings, system: str, user: str, out: CallOutcome, result: Synthesis, t0: float
+) -> dict:
+    """A prompt-synthesis or variant call as the trace keeps it (`t0`: perf_counter at the call's start)."""
+    return {
+        "kind": "prompt_synthesis",
+        "model": settings.model,
+        "prompt": f"{system}\n\n{user}",
+        "response": out.text,
+        "dropped": list(result.dropped),
+        "usage": asdict(out.usage),
+        "cost_usd": cost_usd(settings.model, out.usage, settings.prices),
+        "latency_s": round(time.perf_counter() - t0, 3),
+    }
 
 
 def parse_synthesis(text: str, k: int) -> Synthesis:
@@ -290,16 +299,5 @@ def variants_with_llm(
     )
     result = parse_synthesis(out.text, k)
     if record is not None:
-        record(
-            {
-                "kind": "prompt_synthesis",
-                "model": settings.model,
-                "prompt": f"{system}\n\n{user}",
-                "response": out.text,
-                "dropped": list(result.dropped),
-                "usage": asdict(out.usage),
-                "cost_usd": cost_usd(settings.model, out.usage, settings.prices),
-                "latency_s": round(time.perf_counter() - t0, 3),
-            }
-        )
+        record(_synthesis_record(settings, system, user, out, result, t0))
     return {label: result.variants.get(label, []) for label in labels}

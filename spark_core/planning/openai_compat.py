@@ -6,22 +6,13 @@ from __future__ import annotations
 import base64
 import os
 
-from .llm import (
-    CallOutcome,
-    LLMSettings,
-    PlannerUnavailable,
-    Synthesis,
-    TransientError,
-    Turn,
-    plan_with_llm,
-    synthesise_with_llm,
-    variants_with_llm,
-)
+from .llm import CallOutcome, LLMSettings, PlannerUnavailable, TransientError, Turn
+from .llm_planner import LLMPlanner
 from .prompt import response_schema
-from .protocol import PlanRequest, PlanResult, Usage
+from .protocol import Usage
 
 
-class OpenAIPlanner:
+class OpenAIPlanner(LLMPlanner):
     name = "openai"
 
     def __init__(
@@ -41,18 +32,6 @@ class OpenAIPlanner:
         self.settings = settings or LLMSettings(model)
         self.openai = openai
         self.client = openai.OpenAI(api_key=key, base_url=base_url, timeout=self.settings.timeout_s, max_retries=0)
-
-    def plan(self, request: PlanRequest) -> PlanResult:
-        return plan_with_llm(self.name, self.settings, request, self._call)
-
-    def prompt_variants(self, labels: list[str], k: int = 3) -> dict[str, list[str]]:
-        """The variant call: k alternative text prompts per object label (colour, shape, material)."""
-        return variants_with_llm(self.settings, labels, k, self._call, self.calls.append)
-
-    def synthesise(self, instruction: str, image_png: bytes | None, k: int = 3) -> Synthesis:
-        """The paper's prompt-synthesis call: the objects to detect (and k alternative prompts each when k > 0)
-        from the task language and the agentview image; recorded in `calls`."""
-        return synthesise_with_llm(self.settings, instruction, image_png, k, self._call, self.calls.append)
 
     def _call(
         self,

@@ -9,7 +9,8 @@ import pytest
 from spark_core.perception import Keypoint
 from spark_core.planning import PlanRequest, SceneView
 from spark_core.planning.llm import LLMSettings, PlannerUnavailable
-from tests.planning.fake_llm import FakeLLM
+from tests.doubles.fake_gemini import FakeGemini
+from tests.doubles.fake_openai import FakeOpenAI
 
 GOOD = json.dumps(
     {
@@ -66,7 +67,7 @@ def openai_planner(fake, **kw):
 
 # -- gemini ---------------------------------------------------------------------------------------------------
 def test_gemini_request_carries_schema_temperature_and_image():
-    with FakeLLM("gemini") as fake:
+    with FakeGemini() as fake:
         fake.script = [("ok", GOOD, (1000, 200, 50))]
         res = gemini(fake).plan(request())
     assert res.ok and [p for _, p, _ in [(0, c.primitive, 0) for _, c, _ in res.plan.primitives()]] == ["pick", "place"]
@@ -92,7 +93,7 @@ def test_gemini_request_carries_schema_temperature_and_image():
 
 
 def test_gemini_repair_round_trip():
-    with FakeLLM("gemini") as fake:
+    with FakeGemini() as fake:
         fake.script = [("ok", BAD), ("ok", GOOD)]
         res = gemini(fake).plan(request())
     assert res.ok and res.detail["rounds"] == 2 and len(fake.requests) == 2
@@ -106,7 +107,7 @@ def test_gemini_repair_round_trip():
 
 
 def test_gemini_fails_cleanly_when_repair_does_not_help():
-    with FakeLLM("gemini") as fake:
+    with FakeGemini() as fake:
         fake.script = [("ok", BAD), ("ok", BAD)]
         res = gemini(fake).plan(request())
     assert not res.ok and res.text == BAD and "did not type-check after 1 repair round" in res.error
@@ -114,14 +115,14 @@ def test_gemini_fails_cleanly_when_repair_does_not_help():
 
 
 def test_gemini_retries_429_then_succeeds():
-    with FakeLLM("gemini") as fake:
+    with FakeGemini() as fake:
         fake.script = [("status", 429), ("ok", GOOD)]
         res = gemini(fake).plan(request())
     assert res.ok and len(fake.requests) == 2
 
 
 def test_gemini_gives_up_on_repeated_500_with_a_clear_message():
-    with FakeLLM("gemini") as fake:
+    with FakeGemini() as fake:
         fake.script = [("status", 500)] * 3
         res = gemini(fake, max_retries=2).plan(request())
     assert not res.ok and len(fake.requests) == 3
@@ -129,14 +130,14 @@ def test_gemini_gives_up_on_repeated_500_with_a_clear_message():
 
 
 def test_gemini_permanent_error_is_not_retried():
-    with FakeLLM("gemini") as fake:
+    with FakeGemini() as fake:
         fake.script = [("status", 403)]
         res = gemini(fake).plan(request())
     assert not res.ok and len(fake.requests) == 1 and "HTTP 403" in res.error
 
 
 def test_gemini_timeout():
-    with FakeLLM("gemini") as fake:
+    with FakeGemini() as fake:
         fake.script = [("sleep", 2.5, GOOD)]
         res = gemini(fake, timeout_s=1.0, max_retries=0).plan(request(with_image=False))
     assert not res.ok and "did not answer within 1 s" in res.error
@@ -153,7 +154,7 @@ def test_gemini_without_key_says_what_is_missing(monkeypatch):
 
 # -- openai-compatible ----------------------------------------------------------------------------------------
 def test_openai_request_carries_schema_temperature_and_image():
-    with FakeLLM("openai") as fake:
+    with FakeOpenAI() as fake:
         fake.script = [("ok", GOOD, (500, 100, 20))]
         res = openai_planner(fake).plan(request())
     assert res.ok
@@ -171,7 +172,7 @@ def test_openai_request_carries_schema_temperature_and_image():
 
 
 def test_openai_repair_round_trip_and_retries():
-    with FakeLLM("openai") as fake:
+    with FakeOpenAI() as fake:
         fake.script = [("status", 429), ("ok", BAD), ("status", 500), ("ok", GOOD)]
         res = openai_planner(fake).plan(request())
     assert res.ok and len(fake.requests) == 4
@@ -181,11 +182,11 @@ def test_openai_repair_round_trip_and_retries():
 
 
 def test_openai_timeout_and_exhausted_retries():
-    with FakeLLM("openai") as fake:
+    with FakeOpenAI() as fake:
         fake.script = [("sleep", 2.5, GOOD)]
         res = openai_planner(fake, timeout_s=1.0, max_retries=0).plan(request(with_image=False))
     assert not res.ok and "did not answer within 1 s" in res.error
-    with FakeLLM("openai") as fake:
+    with FakeOpenAI() as fake:
         fake.script = [("status", 500)] * 2
         res = openai_planner(fake, max_retries=1).plan(request())
     assert not res.ok and "HTTP 500" in res.error and "gave up after 2 attempts" in res.error
@@ -200,7 +201,7 @@ def test_openai_needs_a_key_or_a_local_server(monkeypatch):
 
 
 def test_variant_call_over_the_wire():
-    with FakeLLM("openai") as fake:
+    with FakeOpenAI() as fake:
         fake.script = [
             (
                 "ok",
@@ -216,7 +217,7 @@ def test_variant_call_over_the_wire():
     assert out == {"red block": ["crimson cube", "red wooden block", "scarlet box"], "plate": ["white dish"], "mug": []}
     schema = fake.requests[0]["body"]["response_format"]["json_schema"]["schema"]
     assert schema["required"] == ["red block", "plate", "mug"]
-    with FakeLLM("gemini") as fake:
+    with FakeGemini() as fake:
         fake.script = [("ok", "not json")]
         assert gemini(fake).prompt_variants(["cup"]) == {"cup": []}
 
@@ -230,7 +231,7 @@ def test_rules_variants_are_deterministic():
 def test_cli_plans_through_an_openai_compatible_server(capsys):
     from spark_cli import main
 
-    with FakeLLM("openai") as fake:
+    with FakeOpenAI() as fake:
         fake.script = [("ok", json.dumps([{"object": "red block"}, {"object": "plate"}])), ("ok", GOOD)]
         code = main(
             [

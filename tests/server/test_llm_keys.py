@@ -10,7 +10,8 @@ from fastapi.testclient import TestClient
 
 from server.app import create_app
 from server.settings import Settings
-from tests.planning.fake_llm import FakeLLM
+from tests.doubles.fake_openai import FakeOpenAI
+from tests.doubles.fake_vendor import FakeVendor
 
 PLAN = (
     '{"task": "lift", "tree": {"type": "sequence", "children": '
@@ -24,7 +25,7 @@ def keys(monkeypatch):
     monkeypatch.setenv("GEMINI_API_KEY", "g-server-secret")
 
 
-def _authorization(fake: FakeLLM) -> list[str]:
+def _authorization(fake: FakeVendor) -> list[str]:
     out = []
     for r in fake.requests:
         headers = {k.lower(): v for k, v in r["headers"].items()}
@@ -33,7 +34,7 @@ def _authorization(fake: FakeLLM) -> list[str]:
 
 
 def test_a_caller_supplied_url_is_refused_and_never_contacted(keys, tmp_path):
-    with FakeLLM("openai") as fake:
+    with FakeOpenAI() as fake:
         app = create_app(Settings(store_url=f"sqlite:///{tmp_path / 'k.db'}", workers=1, viser=False))
         with TestClient(app) as c:
             for planner in ("openai", "gemini"):
@@ -50,7 +51,7 @@ def test_only_a_configured_endpoint_gets_its_key(keys, tmp_path, monkeypatch):
     from spark_core.planning.backends import make_planner
     from spark_core.planning.protocol import PlanRequest
 
-    with FakeLLM("openai") as fake:
+    with FakeOpenAI() as fake:
         config = tmp_path / "spark.yaml"
         config.write_text(
             f"endpoints:\n  lab: {{planner: openai, base_url: '{fake.url}/v1', api_key_env: LAB_KEY, models: [qwen]}}\n"
