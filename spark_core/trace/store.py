@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import shutil
 import threading
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from datetime import UTC, datetime, timedelta
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, cast
@@ -70,14 +70,32 @@ class TraceStore:
     def upgrade(self, revision: str = "head") -> None:
         from alembic import command
 
-        with self.engine.begin() as conn:
-            command.upgrade(alembic_config(self.url, conn), revision)
+        self._migrate(lambda conn: command.upgrade(alembic_config(self.url, conn), revision))
 
     def downgrade(self, revision: str = "base") -> None:
         from alembic import command
 
-        with self.engine.begin() as conn:
-            command.downgrade(alembic_config(self.url, conn), revision)
+        self._migrate(lambda conn: command.downgrade(alembic_config(self.url, conn), revision))
+
+    def _migrate(self, run: Callable[[Any], None]) -> None:
+        """Run a migration in one transaction. On SQLite, foreign keys are off while it runs: a batch migration
+        rebuilds `trials` (copy, drop, rename), and dropping it with foreign keys on cascades to every event and
+        grounding. The pragma only takes effect outside a transaction, hence before `begin`; the keys are checked
+        before the commit instead."""
+        sqlite = self.engine.dialect.name == "sqlite"
+        with self.engine.connect() as conn:
+            if sqlite:
+                conn.exec_driver_sql("PRAGMA foreign_keys=OFF")
+                conn.commit()
+            try:
+                with conn.begin():
+                    run(conn)
+                    if sqlite and (bad := conn.exec_driver_sql("PRAGMA foreign_key_check").fetchall()):
+                        raise RuntimeError(f"migration left {len(bad)} rows whose trial is missing (first: {bad[0]})")
+            finally:
+                if sqlite:
+                    conn.exec_driver_sql("PRAGMA foreign_keys=ON")
+                    conn.commit()
 
     # -- writes -------------------------------------------------------------------------------------------------
     def create_trial(self, trial_id: str, **fields: Any) -> None:
