@@ -415,6 +415,10 @@ class TraceStore:
         col = getattr(TrialRow, key)
         # id breaks ties (a stable order across pages) in the same direction, so one index (0006) covers the order
         order = (col.desc(), TrialRow.id.desc()) if sort.startswith("-") else (col.asc(), TrialRow.id.asc())
+        if self.engine.dialect.name != "sqlite":
+            # An empty value sorts as the smallest, as SQLite does natively (PostgreSQL puts NULLs last ascending)
+            first = order[0].nulls_last() if sort.startswith("-") else order[0].nulls_first()
+            order = (first, order[1])
         # Two steps: the page's ids from the indexes alone, then only the summary columns of those rows. Decoding
         # the heavy JSON columns (trajectory, plan) was ~90 % of a request; sorting whole rows made offsets slow.
         cols = [c for c in TrialRow.__table__.columns if c.name not in _HEAVY]

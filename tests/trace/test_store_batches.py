@@ -38,3 +38,11 @@ def test_trials_sort_by_batch_and_by_failing_module(store_url):
         store.create_trial(tid, task="lift_block", batch_id=bid, failure=failure, status="done")
     assert [t["id"] for t in store.list_trials(sort="batch_id")[1]] == ["b", "a", "c"]
     assert [t["id"] for t in store.list_trials(sort="-failure")[1]] == ["c", "a", "b"]
+
+
+def test_empty_values_sort_as_the_smallest_on_every_backend(store_url):
+    store = TraceStore(store_url)
+    for tid, failure in [("a", "perception"), ("b", None), ("c", "execution")]:
+        store.create_trial(tid, task="lift_block", failure=failure, status="done")
+    assert [t["id"] for t in store.list_trials(sort="failure")[1]] == ["b", "c", "a"]
+    assert [t["id"] for t in store.list_trials(sort="-failure")[1]] == ["a", "c", "b"]
