@@ -23,6 +23,7 @@ def register(sub) -> None:
             "bimanual",
             "capbench",
             "liberopro",
+            "liberopro-table",
             "embodiments",
             "grounding",
             "paraphrases",
@@ -120,6 +121,12 @@ def register(sub) -> None:
         help="held-out scenes per builtin task (perception suite; random scenes: 7x as many)",
     )
     b.add_argument("--targets", type=int, default=200, help="IK targets (ik suite)")
+    b.add_argument(
+        "--runs",
+        nargs="+",
+        metavar="FILE.json",
+        help="liberopro-table: runs to compare per cell (files written by `spark bench liberopro --json`)",
+    )
     b.add_argument("--store-size", type=int, default=10_000, help="trials in the trace store (api, console suites)")
     b.add_argument("--write", metavar="BENCHMARKS.md", help="replace this benchmark's section in the file")
     b.add_argument("--json", metavar="FILE", help="also write per-trial rows as JSON")
@@ -274,6 +281,19 @@ def _bench(args: argparse.Namespace) -> int:
         print(body)
     elif args.suite == "wording":
         title, body = "rules planner on the wording corpus", _wording(args, command)
+        print(body)
+    elif args.suite == "liberopro-table":
+        from spark_core.bench import liberopro_table
+
+        if not args.runs:
+            print("liberopro-table compares runs: --runs FILE.json [FILE.json ...]", file=sys.stderr)
+            return 2
+        try:
+            runs = [(Path(f), liberopro_table.load_run(Path(f))) for f in args.runs]
+        except liberopro_table.RunError as e:
+            print(f"--runs: {e}", file=sys.stderr)
+            return 2
+        title, body = "LIBERO-PRO per cell: our runs and the published rows", liberopro_table.section(runs, command)
         print(body)
     elif args.suite == "grounding":
         from spark_core.bench import grounding
