@@ -118,9 +118,13 @@ class ReplayCursors:
                 if g.get("keypoint") and (g.get("t_sim_s") or 0.0) <= t_sim_s
             }
             self.scene.markers(key, grounded)
-            # the engine keeps one detection image per camera, of the last grounding: shown from that time on
-            last = max((g.get("t_sim_s") or 0.0 for g in r["groundings"]), default=None)
-            self.scene.image(key, r["image"] if last is not None and t_sim_s >= last else None)
+            # the detection image of the grounding in effect (the latest at or before the cursor); trials stored
+            # before per-grounding images have one, of the last grounding: shown from that time on
+            j = bisect.bisect_right([t for t, _ in r["images"]], t_sim_s + 1e-9) - 1
+            shown = r["images"][j][1] if j >= 0 else None
+            if shown != r.get("shown") or self.scene.image_key != (None if shown is None else key):
+                self.scene.image(key, None if shown is None else _read_rgb(shown))
+                r["shown"] = shown
             self.scene.active(key, f"**Replay:** {trial_id}  \nt = {t:.2f} / {r['times'][-1]:.2f} s (simulated)")
         return {"id": trial_id, "key": key, "t_sim_s": round(t, 3), "index": i, "states": len(r["states"])}
 
@@ -190,7 +194,7 @@ class ReplayCursors:
             "times": [s[0] for s in states],
             "groundings": trial.get("groundings", []),
             "origin": np.asarray(getattr(world, "origin_m", np.zeros(3)), float),
-            "image": _detection_image(trial),
+            "images": _grounding_images(trial),
         }
         self._open[trial_id] = r
         return r
@@ -202,12 +206,26 @@ class ReplayCursors:
             self._open.clear()
 
 
-def _detection_image(trial: dict, width: int = 320) -> np.ndarray | None:
-    """The trial's first recorded detection image (RGB, `width` px wide), or None."""
+def _grounding_images(trial: dict) -> list[tuple[float, str]]:
+    """(simulated time, image path) of each grounding's first camera, by time; for a trial stored before
+    per-grounding images, its first detection image at the time of its last grounding."""
+    arts = trial.get("artifacts", [])
+    per = {}
+    for a in arts:
+        if a.get("kind") == "grounding" and a.get("grounding") not in per:
+            per[a["grounding"]] = (float(a.get("t_sim_s") or 0.0), str(a["path"]))
+    if per:
+        return sorted(per.values())
+    entry = next((a for a in arts if a.get("kind") == "detections"), None)
+    last = max((g.get("t_sim_s") or 0.0 for g in trial.get("groundings", [])), default=None)
+    return [] if entry is None or last is None else [(float(last), str(entry["path"]))]
+
+
+def _read_rgb(path: str, width: int = 320) -> np.ndarray | None:
+    """An image file as RGB, `width` px wide, or None if it cannot be read."""
     import cv2
 
-    entry = next((a for a in trial.get("artifacts", []) if a.get("kind") == "detections"), None)
-    img = cv2.imread(str(entry["path"])) if entry else None
+    img = cv2.imread(path)
     if img is None:
         return None
     h = int(round(img.shape[0] * width / img.shape[1]))

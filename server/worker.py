@@ -203,7 +203,8 @@ def _job(
     from spark_core import StorePlanLibrary, StoreSink, Verdict
 
     try:
-        sinks = [StoreSink(store, artifacts_dir, {"worker_pid": os.getpid()}), _PipeSink(trial_id, send, feed_hz)]
+        store_sink = StoreSink(store, artifacts_dir, {"worker_pid": os.getpid()}, grounding_images=True)
+        sinks = [store_sink, _PipeSink(trial_id, send, feed_hz)]
         run_trial(config, sinks, control, trial_id=trial_id, library=StorePlanLibrary(store))
     except Exception as e:
         store.update_trial(

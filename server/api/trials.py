@@ -118,7 +118,8 @@ def artifact(trial_id: TrialId, name: Annotated[str, Path(max_length=256)], requ
     entry = next((a for a in (trial or {}).get("artifacts", []) if a["name"] == name), None)
     if entry is None:
         raise HTTPException(404, f"trial {trial_id!r} has no artifact {name!r}")
-    return FileResponse(entry["path"], media_type="image/png")
+    media = "image/jpeg" if str(entry["path"]).endswith((".jpg", ".jpeg")) else "image/png"
+    return FileResponse(entry["path"], media_type=media)
 
 
 @router.get("/{trial_id}/camera.png", response_class=Response, responses={200: {"content": {"image/png": {}}}})

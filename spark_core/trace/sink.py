@@ -13,18 +13,27 @@ from typing import Any
 from ..execution import Event
 from ..grammar import Plan, plan_to_dict, to_yaml
 from ..trial import BaseSink, TrialContext, TrialOutcome
+from .grounding_images import GroundingImages
 from .store import TraceStore, _jsonable
 
 
 class StoreSink(BaseSink):
     def __init__(
-        self, store: TraceStore, artifacts_dir: str | Path = "var/artifacts", extra_protocol: dict | None = None
+        self,
+        store: TraceStore,
+        artifacts_dir: str | Path = "var/artifacts",
+        extra_protocol: dict | None = None,
+        grounding_images: bool = False,
     ):
+        """`grounding_images`: keep one small annotated image per grounding and camera (the console's camera
+        panel at its cursor); off by default: drawing each capture's RGB costs batch throughput."""
         self.store = store
         self.artifacts_dir = Path(artifacts_dir)
         self.extra_protocol = extra_protocol or {}
         self._trial_id: str | None = None
         self._attempt = 1  # > 1: a retry after an attempt that died mid-trial (its events were dropped)
+        self._grounding_images = GroundingImages() if grounding_images else None
+        self._resolver: Any = None
 
     @staticmethod
     def _config_fields(config: Any) -> dict[str, Any]:
@@ -38,6 +47,7 @@ class StoreSink(BaseSink):
 
     def on_start(self, ctx: TrialContext) -> None:
         self._trial_id = ctx.trial_id
+        self._resolver = ctx.resolver
         fields = dict(
             self._config_fields(ctx.config),
             status="running",
@@ -49,6 +59,7 @@ class StoreSink(BaseSink):
         self._attempt = self.store.begin_attempt(ctx.trial_id, **fields)
 
     def on_plan(self, ctx: TrialContext, plan: Plan | None, planning: dict[str, Any]) -> None:
+        self._watch_groundings()
         if plan is not None:
             # plan_text is the canonical (paper's) form; plan_tree keeps leaves as `primitive:` because the
             # console's tree view (web/app.js renderTree) tells leaves by that key. Both forms parse.
@@ -56,8 +67,13 @@ class StoreSink(BaseSink):
             self.store.update_trial(ctx.trial_id, plan_text=to_yaml(plan), plan_tree=_jsonable(tree))
 
     def on_event(self, event: Event) -> None:
+        self._watch_groundings()
         if self._trial_id is not None:
             self.store.add_events(self._trial_id, [event.to_dict()])
+
+    def _watch_groundings(self) -> None:
+        if self._grounding_images is not None and self._resolver is not None:
+            self._grounding_images.watch(self._resolver)
 
     def on_finish(self, ctx: TrialContext | None, outcome: TrialOutcome) -> None:
         result = outcome.result
@@ -116,6 +132,9 @@ class StoreSink(BaseSink):
 
         directory = self.artifacts_dir / ctx.trial_id
         out = detection_images(ctx.resolver, directory)
+        if self._grounding_images is not None:
+            self._grounding_images.watch(ctx.resolver)
+            out += self._grounding_images.save(directory)
         if ctx.extra.get("planner_image") is not None:
             rgb, camera = ctx.extra["planner_image"]
             out.append(planner_image(rgb, camera, directory))

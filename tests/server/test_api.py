@@ -189,11 +189,22 @@ def test_detection_images_are_stored_with_their_hash(client):
 
     tid = client.post("/api/trials", json={"task": "stack_two", "segmenter": "sim"}).json()["id"]
     trial = wait_done(client, tid)
-    arts = {a["camera"]: a for a in trial["artifacts"]}
+    arts = {a["camera"]: a for a in trial["artifacts"] if a["kind"] == "detections"}
     assert set(arts) == {"agentview", "side"}
     r = client.get(f"/api/trials/{tid}/artifacts/{arts['agentview']['name']}")
     assert r.status_code == 200 and r.content[:4] == b"\x89PNG"
     assert hashlib.sha256(r.content).hexdigest() == arts["agentview"]["sha256"]
+    # and one small JPEG per grounding and camera, at that grounding's simulated time
+    per = [a for a in trial["artifacts"] if a["kind"] == "grounding"]
+    groundings = trial["groundings"]
+    assert {(a["grounding"], a["camera"]) for a in per} == {
+        (i, cam) for i, g in enumerate(groundings) for cam in g["cameras"]
+    }
+    assert all(a["t_sim_s"] == groundings[a["grounding"]]["t_sim_s"] for a in per)
+    assert len({a["sha256"] for a in per}) == len(per)  # different frames or masks: no two images alike
+    r = client.get(f"/api/trials/{tid}/artifacts/{per[-1]['name']}")
+    assert r.status_code == 200 and r.headers["content-type"] == "image/jpeg" and len(r.content) < 40_000
+    assert hashlib.sha256(r.content).hexdigest() == per[-1]["sha256"]
     assert client.get(f"/api/trials/{tid}/artifacts/..%2F..%2Fetc%2Fpasswd").status_code == 404
 
 

@@ -113,6 +113,16 @@ def _wait_done(server, tid, timeout_s=180):
     raise AssertionError(f"{tid} did not finish")
 
 
+def _grounding_images(page) -> list[str]:
+    """The artifact names of the detection images shown for the grounding(s) in effect at the cursor, once loaded."""
+    page.wait_for_function(
+        "() => { const is = [...document.querySelectorAll('#grounding-now img.detection-image')];"
+        " return is.length > 0 && is.every(i => i.complete && i.naturalWidth > 0); }"
+    )
+    srcs = page.eval_on_selector_all("#grounding-now img.detection-image", "is => is.map(i => i.src)")
+    return [s.rsplit("/", 1)[1] for s in srcs]
+
+
 def test_workspace_steps_breakpoints_then_scrubs_tree_camera_and_3d_together(server, page):
     page.goto(server + "/")
     page.click("button[data-task=stack_two]")
@@ -156,8 +166,17 @@ def test_workspace_steps_breakpoints_then_scrubs_tree_camera_and_3d_together(ser
     shot(page, "2-workspace-finished")
     at_end = {b: np.array(f.position) for b, f in scene._frames.items()}
     n_groundings_end = int(page.locator("#camera-panel").get_attribute("data-groundings"))
-    assert n_groundings_end >= 2 and page.locator("#detections img").count() >= 1
-    assert page.eval_on_selector("#detections img", "img => img.complete && img.naturalWidth") > 0
+    assert n_groundings_end >= 2
+    # each grounding keeps its own detection image: at the end, the last grounding's is shown with its candidates
+    record = json.loads(urllib.request.urlopen(f"{server}/api/trials/{trial_id}").read())
+    times = sorted({g["t_sim_s"] for g in record["groundings"]})
+    assert len(times) >= 2, "stack_two grounds its labels at different times"
+    imgs_end = _grounding_images(page)
+    assert imgs_end and all(i.startswith(f"grounding-{n_groundings_end - 1:03d}-") for i in imgs_end)
+    last = record["groundings"][-1]
+    assert page.locator("#grounding-now").get_attribute("data-t") == str(last["t_sim_s"])
+    kept = page.locator("#grounding-now table.candidates tr.chosen td").first.inner_text()
+    assert kept == next(iter(last["cameras"].values()))["chosen"]
     # scrub to the start of the second node: the tree, the camera panel and the 3D view go back together
     t1 = float(page.locator("#event-table tr[data-kind=started]").nth(2).get_attribute("data-t"))
     page.locator("#scrub").fill(str(t1 + 1e-6))
@@ -165,7 +184,23 @@ def test_workspace_steps_breakpoints_then_scrubs_tree_camera_and_3d_together(ser
     assert page.locator(".node.succeeded[data-path='tree.children[0]']").count() == 1
     assert page.locator(".node.pending[data-path='tree.children[4]']").count() == 1
     assert int(page.locator("#camera-panel").get_attribute("data-groundings")) < n_groundings_end
-    assert page.locator("#detections img").count() == 0  # the recorded image belongs to a later grounding
+    imgs_mid = _grounding_images(page)  # an earlier grounding's image: the one in effect at the cursor
+    assert imgs_mid and imgs_mid != imgs_end
+    t_mid = float(page.locator("#grounding-now").get_attribute("data-t"))
+    cursor_sim = float(page.locator("#cursor-time").inner_text().split("·")[1].split()[0])
+    assert t_mid < last["t_sim_s"] and t_mid <= cursor_sim + 0.005  # the latest at or before the cursor
+    assert page.locator("#grounding-now table.candidates tbody tr").count() >= 1
+    # just before: the earlier grounding in effect; a re-detection of the same label has its own image
+    page.locator("#scrub").fill(str(t1 - 0.05))
+    page.wait_for_function(f"() => document.querySelector('#grounding-now').dataset.t !== '{t_mid}'")
+    imgs_before = _grounding_images(page)
+    assert imgs_before and imgs_before != imgs_mid
+    g_before = int(page.locator("#grounding-now").get_attribute("data-indices").split(",")[0])
+    g_mid = int(imgs_mid[0].split("-")[1])
+    assert g_before < g_mid and record["groundings"][g_before]["label"] == record["groundings"][g_mid]["label"]
+    page.locator("#scrub").fill(str(t1 + 1e-6))
+    page.wait_for_selector(".node.running[data-path='tree.children[1]']")
+    assert _grounding_images(page) == imgs_mid
     for _ in range(100):
         moved = max(np.abs(np.array(f.position) - at_end[b]).max() for b, f in scene._frames.items())
         if moved > 0.01:
@@ -184,8 +219,9 @@ def test_workspace_steps_breakpoints_then_scrubs_tree_camera_and_3d_together(ser
     assert page.get_attribute("#camera-at-cursor img", "src") != before
     page.keyboard.press("ArrowLeft")
     page.wait_for_selector(".node.running[data-path='tree.children[1]']")
-    assert scene.image_key is None  # the 3D view's detection image is gone too, as in the camera panel
-    page.wait_for_timeout(800)  # let the embedded viser client draw the cleared image before the screenshot
+    # the 3D view shows the image of the grounding in effect, as the camera panel does
+    assert scene.image_key == f"replay:{trial_id}" and _grounding_images(page) == imgs_mid
+    page.wait_for_timeout(800)  # let the embedded viser client draw the image before the screenshot
     shot(page, "3-workspace-scrubbed")
     # play the replay at 4x: the cursor advances and the 3D view follows it
     scrubbed = {b: np.array(f.position) for b, f in scene._frames.items()}

@@ -36,6 +36,12 @@ export interface Grounding {
   keypoint?: { position_m: number[]; score?: number; source?: string } | null;
 }
 
+/** A file the trial kept. kind `grounding`: the annotated detection image of one grounding (`grounding` is its
+ * index in the trial's groundings) through one camera; kind `detections`: one per camera, of the last frame. */
+export interface Artifact {
+  name: string; kind: string; camera?: string | null; grounding?: number; label?: string; t_sim_s?: number | null;
+}
+
 export interface PlanNode {
   type?: string; primitive?: string; arm?: string | null; params?: Record<string, unknown>; children?: PlanNode[];
 }
@@ -51,7 +57,7 @@ export interface Trial extends TrialSummary {
   protocol: Record<string, unknown> & { privileged?: boolean; config?: Record<string, unknown> };
   plan_text: string; plan_tree: { task: string; tree: PlanNode } | null;
   nodes: Record<string, NodeRecord>; events: TrialEvent[]; groundings: Grounding[];
-  artifacts: { name: string; kind: string; camera?: string }[];
+  artifacts: Artifact[];
   control_state?: string; breakpoints?: string[]; usage?: Record<string, unknown>;
 }
 

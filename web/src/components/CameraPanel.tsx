@@ -1,19 +1,32 @@
-// What perception did up to the cursor: each grounding (simulated time, label), per camera every prompt candidate
-// with its detections and best score (the kept one marked), and the annotated detection image (masks, boxes,
-// keypoints). The engine keeps one image per camera, of its last grounding: it is shown from that time on. A
-// finished trial's cameras are also drawn at the cursor, from its recorded scene state.
-import type { Grounding } from "../api/types";
+// What perception did up to the cursor. On top, the grounding(s) in effect at the cursor (the latest at or before
+// it; a node resolving two labels makes two at one time): per camera, the detection image of that grounding (its
+// kept mask and keypoint) and every prompt candidate with its detections and best score, the kept one marked.
+// Below, the earlier groundings. A finished trial's cameras are also drawn at the cursor, from its recorded scene
+// state. Trials stored before per-grounding images fall back to the one image per camera of the last frame.
+import type { Artifact, Grounding } from "../api/types";
 
-export function CameraPanel({ trialId, groundings, images, simCursor, replayable }:
-  { trialId: string; groundings: Grounding[]; images: { name: string; camera?: string }[]; simCursor: number; replayable: boolean }) {
-  const done = groundings.filter((g) => (g.t_sim_s ?? 0) <= simCursor + 1e-6);
-  const lastAt: Record<string, number> = {};
-  for (const g of groundings) for (const cam of Object.keys(g.cameras ?? {})) lastAt[cam] = Math.max(lastAt[cam] ?? 0, g.t_sim_s ?? 0);
+const EPS = 1e-6;
+
+export function CameraPanel({ trialId, groundings, artifacts, simCursor, replayable }:
+  { trialId: string; groundings: Grounding[]; artifacts: Artifact[]; simCursor: number; replayable: boolean }) {
+  const url = (name: string) => `/api/trials/${encodeURIComponent(trialId)}/artifacts/${encodeURIComponent(name)}`;
+  const indexed = groundings.map((g, i) => ({ g, i, t: g.t_sim_s ?? 0 }));
+  const done = indexed.filter((x) => x.t <= simCursor + EPS);
+  const tNow = done.length ? Math.max(...done.map((x) => x.t)) : null;
+  const current = tNow === null ? [] : done.filter((x) => Math.abs(x.t - tNow) <= EPS);
+  const earlier = done.filter((x) => !current.includes(x)).reverse();
+  const images = new Map<number, Artifact[]>();
+  for (const a of artifacts) {
+    if (a.kind === "grounding" && a.grounding !== undefined) images.set(a.grounding, [...(images.get(a.grounding) ?? []), a]);
+  }
+  const lastFrame = artifacts.filter((a) => a.kind === "detections");
+  const cameras = lastFrame.map((a) => a.camera ?? "");
+
   return (
     <div className="camera" id="camera-panel" data-groundings={done.length}>
       {replayable && (
         <div id="camera-at-cursor">
-          {(images.length ? images.map((a) => a.camera ?? "") : [""]).map((cam) => {
+          {(cameras.length ? cameras : [""]).map((cam) => {
             const q = new URLSearchParams({ t_sim_s: (Math.floor(simCursor * 10) / 10).toFixed(1) });
             if (cam) q.set("camera", cam);
             return (
@@ -26,39 +39,75 @@ export function CameraPanel({ trialId, groundings, images, simCursor, replayable
           })}
         </div>
       )}
-      <div id="detections">
-        {images.map((a) => {
-          const cam = a.camera ?? a.name;
-          const ready = simCursor + 1e-6 >= (lastAt[cam] ?? 0);
-          return (
-            <figure key={a.name} data-camera={cam}>
-              {ready
-                ? <img src={`/api/trials/${encodeURIComponent(trialId)}/artifacts/${encodeURIComponent(a.name)}`} alt={`detections, ${cam}`} />
-                : <div className="placeholder">no detection image yet (recorded at {(lastAt[cam] ?? 0).toFixed(2)} s)</div>}
-              <figcaption>{cam}{ready && lastAt[cam] !== undefined ? ` · at ${lastAt[cam].toFixed(2)} s sim` : ""}</figcaption>
-            </figure>
-          );
-        })}
-      </div>
-      <div id="groundings">
-        {done.length === 0 && <p className="muted">no grounding yet at this time</p>}
-        {done.map((g, i) => (
-          <details key={i} open={i === done.length - 1}>
-            <summary><b>{g.label}</b> at {(g.t_sim_s ?? 0).toFixed(2)} s sim{g.keypoint ? "" : " · no keypoint"}</summary>
-            {Object.entries(g.cameras ?? {}).map(([cam, c]) => (
-              <table key={cam} className="candidates">
-                <caption>{cam}: kept {c.chosen ?? "none"}</caption>
-                <thead><tr><th>prompt</th><th>detections</th><th>best score</th><th>verdict</th></tr></thead>
-                <tbody>{c.candidates.map((k) => (
-                  <tr key={k.prompt} className={k.verdict === "chosen" ? "chosen" : ""}>
-                    <td>{k.prompt}</td><td>{k.n_detections}</td><td>{k.best_score?.toFixed(4) ?? ""}</td><td>{k.verdict}</td>
-                  </tr>))}
-                </tbody>
-              </table>
-            ))}
-          </details>
+      <div id="grounding-now" data-t={tNow ?? ""} data-indices={current.map((x) => x.i).join(",")}>
+        {current.length === 0 && <p className="muted">no grounding yet at this time</p>}
+        {current.map(({ g, i }) => (
+          <GroundingView key={i} g={g} i={i} images={images.get(i) ?? []} url={url} />
         ))}
+        {current.length > 0 && images.size === 0 && lastFrame.length > 0 && (
+          <LastFrameImages artifacts={lastFrame} groundings={groundings} simCursor={simCursor} url={url} />
+        )}
       </div>
+      {earlier.length > 0 && (
+        <div id="groundings">
+          <h5>earlier groundings</h5>
+          {earlier.map(({ g, i }) => (
+            <details key={i}>
+              <summary><b>{g.label}</b> at {(g.t_sim_s ?? 0).toFixed(2)} s sim{g.keypoint ? "" : " · no keypoint"}</summary>
+              <GroundingView g={g} i={i} images={images.get(i) ?? []} url={url} lazy />
+            </details>
+          ))}
+        </div>
+      )}
+    </div>
+  );
+}
+
+function GroundingView({ g, i, images, url, lazy }:
+  { g: Grounding; i: number; images: Artifact[]; url: (name: string) => string; lazy?: boolean }) {
+  return (
+    <div className="grounding" data-grounding={i} data-label={g.label}>
+      {!lazy && <div className="grounding-title"><b>{g.label}</b> grounded at {(g.t_sim_s ?? 0).toFixed(2)} s sim{g.keypoint ? "" : " · no keypoint"}</div>}
+      {Object.entries(g.cameras ?? {}).map(([cam, c]) => {
+        const img = images.find((a) => a.camera === cam);
+        return (
+          <div key={cam} className="grounding-camera" data-camera={cam}>
+            {img && (
+              <figure>
+                <img className="detection-image" src={url(img.name)} alt={`detections of ${g.label}, ${cam}`} data-grounding={i}
+                  loading={lazy ? "lazy" : undefined} />
+              </figure>
+            )}
+            <table className="candidates">
+              <caption>{cam}: kept {c.chosen ?? "none"}</caption>
+              <thead><tr><th>prompt</th><th>detections</th><th>best score</th><th>verdict</th></tr></thead>
+              <tbody>{c.candidates.map((k) => (
+                <tr key={k.prompt} className={k.verdict === "chosen" ? "chosen" : ""}>
+                  <td>{k.prompt}</td><td>{k.n_detections}</td><td>{k.best_score?.toFixed(4) ?? ""}</td><td>{k.verdict}</td>
+                </tr>))}
+              </tbody>
+            </table>
+          </div>
+        );
+      })}
+    </div>
+  );
+}
+
+/** Trials stored before per-grounding images: one image per camera, of the last grounding's frame. */
+function LastFrameImages({ artifacts, groundings, simCursor, url }:
+  { artifacts: Artifact[]; groundings: Grounding[]; simCursor: number; url: (name: string) => string }) {
+  const last = Math.max(0, ...groundings.map((g) => g.t_sim_s ?? 0));
+  return (
+    <div id="detections">
+      {artifacts.map((a) => (
+        <figure key={a.name} data-camera={a.camera ?? a.name}>
+          {simCursor + EPS >= last
+            ? <img src={url(a.name)} alt={`detections, ${a.camera ?? a.name}`} />
+            : <div className="placeholder">this trial kept one detection image per camera, of its last grounding ({last.toFixed(2)} s)</div>}
+          <figcaption>{a.camera ?? a.name}</figcaption>
+        </figure>
+      ))}
     </div>
   );
 }

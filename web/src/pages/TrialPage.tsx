@@ -183,7 +183,7 @@ export function TrialPage({ id }: { id: string }) {
         <Panel defaultSize={30} minSize={15}>
           <PanelGroup direction="vertical" autoSaveId="spark-workspace-right">
             <Panel defaultSize={55} minSize={15}><div className="pane"><h4>Camera</h4>
-              <CameraPanel trialId={id} groundings={trial.groundings ?? []} images={(trial.artifacts ?? []).filter((a) => a.kind === "detections")} simCursor={live ? Infinity : toSim(t)} replayable={!live && trial.status === "done" && !!trial.plan_tree} /></div></Panel>
+              <CameraPanel trialId={id} groundings={trial.groundings ?? []} artifacts={trial.artifacts ?? []} simCursor={live ? Infinity : toSim(t)} replayable={!live && trial.status === "done" && !!trial.plan_tree} /></div></Panel>
             <PanelResizeHandle className="handle horizontal" />
             <Panel minSize={15}><div className="pane"><h4>Events</h4>
               <EventTable events={evs} cursor={t} kinds={cat.event_kind} toSim={toSim} onSeek={(x) => { if (!live) { setPlaying(false); setCursor(x); } }} /></div></Panel>
