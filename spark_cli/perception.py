@@ -15,11 +15,30 @@ def register(sub) -> None:
     d.add_argument("--out", required=True, help="dataset directory (keep it out of git, e.g. under var/)")
     d.add_argument("--scenes", type=int, default=1200, help="scenes to render")
     d.add_argument("--shard-scenes", type=int, default=200, help="scenes per shard file")
-    d.add_argument("--seed", type=int, default=None, help="first scene seed (default: the training range, 1,000,000)")
-    d.add_argument("--cameras", nargs="+", default=["agentview", "side", "wrist"], help="views per scene")
+    d.add_argument(
+        "--source",
+        choices=["builtin", "libero"],
+        default="builtin",
+        help="builtin: our scene builder; libero: the LIBERO-PRO tasks' scenes from LIBERO's placement samplers "
+        "(never an evaluation init state; needs `make bench-deps`)",
+    )
+    d.add_argument(
+        "--seed",
+        type=int,
+        default=None,
+        help="first scene seed (default: the source's training range: builtin 1,000,000, libero 1,500,000)",
+    )
+    d.add_argument(
+        "--cameras",
+        nargs="+",
+        default=None,
+        help="views per scene (default: builtin agentview side wrist; libero agentview frontview wrist)",
+    )
     d.set_defaults(func=_cmd_dataset)
     t = ps.add_parser("train", help="train the segmenter on a dataset directory")
-    t.add_argument("--data", required=True, help="dataset directory from `spark perception dataset`")
+    t.add_argument(
+        "--data", required=True, nargs="+", help="dataset directories of `spark perception dataset` (trained together)"
+    )
     t.add_argument("--out", required=True, help="weights file to write (.pt)")
     t.add_argument("--minutes", type=float, default=45.0, help="wall-time budget")
     t.add_argument("--steps", type=int, default=100_000, help="step budget (whichever comes first)")
@@ -29,7 +48,13 @@ def register(sub) -> None:
     t.add_argument("--seed", type=int, default=0)
     t.add_argument("--threads", type=int, default=2, help="torch CPU threads")
     t.add_argument("--init", help="start from these weights (fine-tuning) instead of random initialisation")
-    t.add_argument("--balance", action="store_true", help="weight rare object categories up (at most 8x)")
+    t.add_argument("--balance", action="store_true", help="weight rare object categories up (see --balance-max)")
+    t.add_argument("--balance-max", type=float, default=8.0, help="--balance: the largest up-weighting")
+    t.add_argument(
+        "--oversample-rare",
+        action="store_true",
+        help="draw crops that show a rare category more often (in proportion to its --balance weight)",
+    )
     t.set_defaults(func=_cmd_train)
 
 
@@ -40,6 +65,7 @@ def _positive(name: str, value: float) -> None:
 
 def _cmd_dataset(args: argparse.Namespace) -> int:
     from spark_core.perception.learned.dataset import TRAIN_SEED0, generate
+    from spark_core.perception.learned.libero_data import LIBERO_TRAIN_SEED0
 
     try:
         _positive("scenes", args.scenes)
@@ -47,11 +73,18 @@ def _cmd_dataset(args: argparse.Namespace) -> int:
     except ValueError as e:
         print(e, file=sys.stderr)
         return 2
-    seed0 = TRAIN_SEED0 if args.seed is None else args.seed
+    default_seed = LIBERO_TRAIN_SEED0 if args.source == "libero" else TRAIN_SEED0
+    seed0 = default_seed if args.seed is None else args.seed
     out = Path(args.out)
+    cameras = tuple(args.cameras) if args.cameras else None
     for start in range(0, args.scenes, args.shard_scenes):
         n = min(args.shard_scenes, args.scenes - start)
-        print(json.dumps(generate(out, n, seed0 + start, tuple(args.cameras))), flush=True)
+        try:
+            summary = generate(out, n, seed0 + start, cameras, source=args.source)
+        except RuntimeError as e:  # e.g. the LIBERO extras are not installed
+            print(e, file=sys.stderr)
+            return 2
+        print(json.dumps(summary), flush=True)
     return 0
 
 
@@ -59,7 +92,7 @@ def _cmd_train(args: argparse.Namespace) -> int:
     from spark_core.perception.learned.train import TrainConfig, train
 
     try:
-        for name in ("minutes", "steps", "batch", "lr", "threads"):
+        for name in ("minutes", "steps", "batch", "lr", "threads", "balance_max"):
             _positive(name, getattr(args, name))
         if min(args.crop) <= 0 or any(c % 32 for c in args.crop):
             raise ValueError(f"--crop must be two positive multiples of 32, got {args.crop}")
@@ -67,7 +100,7 @@ def _cmd_train(args: argparse.Namespace) -> int:
         print(e, file=sys.stderr)
         return 2
     cfg = TrainConfig(
-        args.data,
+        tuple(args.data),
         args.out,
         steps=args.steps,
         minutes=args.minutes,
@@ -78,6 +111,8 @@ def _cmd_train(args: argparse.Namespace) -> int:
         threads=args.threads,
         init=args.init,
         balance=args.balance,
+        balance_max=args.balance_max,
+        oversample_rare=args.oversample_rare,
     )
     try:
         train(cfg, log=lambda s: print(s, flush=True))

@@ -27,10 +27,24 @@ from .report import footer, pct
 MIN_GT_AREA_PX = 50  # ground-truth instances smaller than this (at 640x480) are not counted as missed
 MATCH_IOU = 0.5
 CAMERAS = ("agentview", "side")
+SUITE_CAMERAS = {"builtin": CAMERAS, "random": CAMERAS, "libero": ("agentview", "frontview")}  # as the suites use
+LIBERO_TASK_STRIDE = 5  # every 5th LIBERO-PRO task: 2 of the 10 tasks of each of the 6 cells
 
 
 def _scene_worlds(suite: str, n_seeds: int) -> list[tuple[str, int, Callable]]:
-    """(scene name, seed, world factory) of a suite's held-out scenes."""
+    """(scene name, seed, world factory) of a suite's held-out scenes. LIBERO: LIBERO's placement samplers from
+    seeds LIBERO_BENCH_SEED0 + 10 * task + k (never an init state; training seeds are 1,500,000 and up)."""
+    if suite == "libero":
+        from ..perception.learned.libero_data import LIBERO_BENCH_SEED0, LiberoScenes, libero_tasks
+
+        scenes = LiberoScenes()
+        tasks = libero_tasks()
+        return [
+            (t.name, LIBERO_BENCH_SEED0 + 10 * i + k, lambda s, t=t: scenes.scene(s, t))
+            for i, t in enumerate(tasks)
+            if i % LIBERO_TASK_STRIDE == 0
+            for k in range(n_seeds)
+        ]
     if suite == "builtin":
         from ..sim.tasks import BUILTIN
 
@@ -41,7 +55,7 @@ def _scene_worlds(suite: str, n_seeds: int) -> list[tuple[str, int, Callable]]:
         ]
     if suite == "random":
         return [("random", BENCH_SEED0 + 5000 + k, lambda s: random_world(s)[0]) for k in range(n_seeds * 7)]
-    raise ValueError(f"no perception bench scenes for suite {suite!r}; have: builtin, random")
+    raise ValueError(f"no perception bench scenes for suite {suite!r}; have: builtin, random, libero")
 
 
 def _match(gt: dict[int, np.ndarray], pred: list[np.ndarray]) -> int:
@@ -62,10 +76,16 @@ def _match(gt: dict[int, np.ndarray], pred: list[np.ndarray]) -> int:
     return len(used_g)
 
 
-def evaluate_world(world, seg: LearnedSegmenter, acc: dict) -> None:
+def evaluate_world(world, seg: LearnedSegmenter, acc: dict, suite: str = "builtin") -> None:
     """Add one world's frames and keypoints to the accumulators in `acc`."""
-    tables = geom_tables(world)
-    for cam in CAMERAS:
+    cameras = SUITE_CAMERAS[suite]
+    if suite == "libero":
+        from ..perception.learned.libero_data import libero_geom_tables
+
+        tables = libero_geom_tables(world)
+    else:
+        tables = geom_tables(world)
+    for cam in cameras:
         lf = render_labelled(world, cam, tables)
         frame = CameraFrame(cam, lf.rgb, lf.depth_m, lf.K, lf.T_world_camera)  # no ids, no labels
         seg._cache.clear()
@@ -94,8 +114,8 @@ def evaluate_world(world, seg: LearnedSegmenter, acc: dict) -> None:
         acc["pred"] += len(insts)
         acc["matched"] += matched
     truth = PrivilegedResolver(world)
-    learned = PerceptionResolver(world, seg, cameras=CAMERAS)
-    oracle = PerceptionResolver(world, SimSegmenter(world.scene.catalog()), cameras=CAMERAS)
+    learned = PerceptionResolver(world, seg, cameras=cameras)
+    oracle = PerceptionResolver(world, SimSegmenter(world.scene.catalog()), cameras=cameras)
     targets = [label for label, o in world.scene.objects.items() if o.spec.kind != "ball"] + list(world.scene.parts)
     for label in targets:
         gt_pos = truth.resolve(label).position_m
@@ -110,7 +130,10 @@ def evaluate_world(world, seg: LearnedSegmenter, acc: dict) -> None:
 
 
 def run(
-    suites: tuple[str, ...] = ("builtin", "random"), n_seeds: int = 3, progress=print, weights: str | None = None
+    suites: tuple[str, ...] = ("builtin", "random", "libero"),
+    n_seeds: int = 3,
+    progress=print,
+    weights: str | None = None,
 ) -> dict:
     """Per suite: instance precision/recall, per-category IoU, keypoint errors (learned and the sim oracle) and
     inference time; `weights` None = the shipped ones."""
@@ -136,7 +159,7 @@ def run(
         for i, (name, seed, make) in enumerate(scenes):
             world = make(seed)
             try:
-                evaluate_world(world, seg, acc)
+                evaluate_world(world, seg, acc, suite)
             finally:
                 world.close()
             progress(f"{suite} {i + 1}/{len(scenes)} {name} seed {seed}: recall {acc['matched']}/{acc['gt']}")
@@ -178,7 +201,9 @@ def section(r: dict, command: str, weights: str | None = None) -> str:
     from ..perception.learned.segmenter import default_weights
 
     w = Path(weights) if weights else default_weights()
-    weights_note = f"weights {w.name}, {w.stat().st_size / 1e6:.1f} MB, trained on builtin renders: see MODEL_CARD.md"
+    weights_note = (
+        f"weights {w.name}, {w.stat().st_size / 1e6:.1f} MB, trained on builtin and LIBERO renders: see MODEL_CARD.md"
+    )
     lines = [
         "| scenes | frames | instance precision | instance recall | keypoint error median | keypoint error p95 "
         "| labels resolved | sim oracle keypoint median / p95 "
@@ -204,8 +229,10 @@ def section(r: dict, command: str, weights: str | None = None) -> str:
     protocol = (
         "segmenter `learned` (camera-only, NOT privileged: RGB-D frames without ids; "
         f"{weights_note}); held-out scenes ({seeds}; training seeds are 1,000,000 and up; builtin = every "
-        "builtin task's start scene, random = random object sets, arm poses and lighting); cameras agentview and "
-        f"side at 640x480; instances matched one-to-one at mask IoU >= {MATCH_IOU}, ground-truth instances under "
+        "builtin task's start scene, random = random object sets, arm poses and lighting, libero = every "
+        f"{LIBERO_TASK_STRIDE}th LIBERO-PRO task (2 per cell) placed by LIBERO's own samplers from the seed, lighting "
+        "and arm pose jittered, never a LIBERO-PRO init state); cameras agentview and side (libero: agentview and "
+        f"frontview) at 640x480; instances matched one-to-one at mask IoU >= {MATCH_IOU}, ground-truth instances under "
         f"{MIN_GT_AREA_PX} px not counted; keypoints through the trial resolver (adaptive prompts, both views "
         "fused) for every object's own label (beads excluded: five identical ones) and every labelled part, error "
         "= distance to the true object centre (simulator AABB); the same resolver with the PRIVILEGED `sim` "

@@ -5,6 +5,7 @@ colour, and its remaining words pick the category."""
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 
@@ -39,6 +40,21 @@ CATEGORIES: tuple[Category, ...] = (
     Category("bead", "tiny round bead, a small ball"),
     Category("bar", "long straight rectangular wooden bar, a stick"),
     Category("carry tray", "long serving tray with a handle at each end"),
+    # LIBERO objects (appended: the indices above are those of earlier weights, see train.expand_categories)
+    Category("wine bottle", "dark glass wine bottle with a long neck"),
+    Category("wine rack", "metal wine rack, a stand that holds bottles"),
+    Category("cream cheese", "small rectangular box of cream cheese"),
+    Category("ramekin", "small round white porcelain ramekin with a glazed rim"),
+    Category("cookie box", "rectangular cardboard box of cookies"),
+    Category("alphabet soup", "can of alphabet soup, a food tin"),
+    Category("bbq sauce", "bottle of barbecue sauce"),
+    Category("butter", "small carton of butter"),
+    Category("chocolate pudding", "small box of chocolate pudding"),
+    Category("ketchup", "squeeze bottle of tomato ketchup"),
+    Category("milk", "carton of milk"),
+    Category("orange juice", "carton of orange juice"),
+    Category("salad dressing", "bottle of salad dressing"),
+    Category("tomato sauce", "can of tomato sauce"),
 )
 CATEGORY_INDEX: dict[str, int] = {c.name: i for i, c in enumerate(CATEGORIES)}
 BACKGROUND, TABLE, ROBOT = (CATEGORY_INDEX[n] for n in ("background", "table", "robot"))
@@ -50,6 +66,35 @@ KIND_CATEGORY: dict[str, str] = {
     "knob": "knob",
     "drawer": "drawer",
     "drawer handle": "drawer handle",
+}
+
+# LIBERO object names (the adapter's labels without a trailing instance number) -> category names; a drawer's
+# parts are "<fixture> <level> drawer" and "... drawer handle" (sim/libero_envs.py).
+LIBERO_CATEGORY: dict[str, str] = {
+    "floor": "background",
+    "table": "table",
+    "main table": "table",
+    "akita black bowl": "bowl",
+    "white bowl": "bowl",
+    "plate": "plate",
+    "basket": "basket",
+    "wooden cabinet": "cabinet",
+    "white cabinet": "cabinet",
+    "flat stove": "stove",
+    "wine bottle": "wine bottle",
+    "wine rack": "wine rack",
+    "cream cheese": "cream cheese",
+    "glazed rim porcelain ramekin": "ramekin",
+    "cookies": "cookie box",
+    "alphabet soup": "alphabet soup",
+    "bbq sauce": "bbq sauce",
+    "butter": "butter",
+    "chocolate pudding": "chocolate pudding",
+    "ketchup": "ketchup",
+    "milk": "milk",
+    "orange juice": "orange juice",
+    "salad dressing": "salad dressing",
+    "tomato sauce": "tomato sauce",
 }
 
 # Colour classes of the colour head: index 0 = no colour (not an object); the rest are spark_core.perception
@@ -77,3 +122,15 @@ def category_of_kind(kind: str) -> int:
     if name not in CATEGORY_INDEX:
         raise KeyError(f"no learned category for object kind {kind!r}; categories: {', '.join(CATEGORY_INDEX)}")
     return CATEGORY_INDEX[name]
+
+
+def category_of_libero(label: str) -> int:
+    """Category index of a LIBERO scene label ("akita black bowl 2", "wooden cabinet top drawer handle"); a clear
+    error for an object it has no class for."""
+    base = re.sub(r" \d+$", "", label)
+    for part in ("drawer handle", "drawer"):
+        if base.endswith(" " + part):
+            return CATEGORY_INDEX[part]
+    if base not in LIBERO_CATEGORY:
+        raise KeyError(f"no learned category for LIBERO object {label!r}; known: {', '.join(LIBERO_CATEGORY)}")
+    return CATEGORY_INDEX[LIBERO_CATEGORY[base]]

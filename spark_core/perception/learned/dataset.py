@@ -3,6 +3,9 @@ per pixel (category, instance, colour) from the renderer's ids.
 
 TRAINING ONLY: the labels are simulator ground truth (privileged). Nothing here is imported by the segmenter.
 
+Sources: "builtin" (random_world below) and "libero" (libero_data.py: LIBERO-PRO tasks' scenes from LIBERO's
+own placement samplers, never an evaluation init state).
+
 Seeds: scene `i` of a dataset with first seed `s` is built from seed `s + i`. Training data uses seeds from
 TRAIN_SEED0; the perception benchmark's held-out scenes use BENCH_SEED0; both are far above every evaluation
 seed range of the task benchmarks (seeds 0..999).
@@ -11,9 +14,10 @@ seed range of the task benchmarks (seeds 0..999).
 from __future__ import annotations
 
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import mujoco
 import numpy as np
@@ -197,25 +201,54 @@ def random_world(seed: int):
     return world, rng
 
 
+SOURCES = ("builtin", "libero")
+DEFAULT_CAMERAS = {"builtin": ("agentview", "side", "wrist"), "libero": ("agentview", "frontview", "wrist")}
+
+
+def _scenes(source: str, seeds: list[int]) -> Iterator[tuple[int, Any, tuple, np.random.Generator]]:
+    """(seed, world, label tables, rng) per scene; the world is valid until the next one is drawn."""
+    if source == "builtin":
+        for seed in seeds:
+            world, rng = random_world(seed)
+            try:
+                yield seed, world, geom_tables(world), rng
+            finally:
+                world.close()
+    elif source == "libero":
+        from .libero_data import LiberoScenes, libero_geom_tables, task_index
+
+        scenes = LiberoScenes()
+        try:  # a task's scenes one after another: its env is built once
+            for seed in sorted(seeds, key=lambda s: (task_index(s), s)):
+                world = scenes.scene(seed)
+                yield seed, world, libero_geom_tables(world), np.random.default_rng([seed, 1])
+        finally:
+            scenes.close()
+    else:
+        raise ValueError(f"unknown dataset source {source!r}; have: {', '.join(SOURCES)}")
+
+
 def generate(
     out_dir: Path,
     n_scenes: int,
     seed0: int = TRAIN_SEED0,
-    cameras: tuple[str, ...] = ("agentview", "side", "wrist"),
+    cameras: tuple[str, ...] | None = None,
     size: tuple[int, int] = CROP_SIZE,
     log: Callable[[str], None] = print,
+    source: str = "builtin",
 ) -> dict:
-    """Render `n_scenes` scenes (seeds seed0 .. seed0+n_scenes-1), every listed camera of each ("wrist" = one
-    robot's wrist camera) at 640x480, and store two crops of `size` (width, height) per view into
-    out_dir/shard_<seed0>.npz. Returns a summary."""
+    """Render `n_scenes` scenes of `source` (seeds seed0 .. seed0+n_scenes-1), every listed camera of each
+    ("wrist" = one robot's wrist camera; default: the source's DEFAULT_CAMERAS) at 640x480, and store two crops of
+    `size` (width, height) per view into out_dir/shard_<seed0>.npz. Returns a summary."""
+    if source not in SOURCES:
+        raise ValueError(f"unknown dataset source {source!r}; have: {', '.join(SOURCES)}")
+    cameras = cameras or DEFAULT_CAMERAS[source]
     out_dir.mkdir(parents=True, exist_ok=True)
     keys = ("rgb", "depth_mm", "category", "instance", "colour", "seeds")
     rows: dict[str, list[np.ndarray]] = {k: [] for k in keys}
     w, h = size
     t0 = time.perf_counter()
-    for i in range(n_scenes):
-        world, rng = random_world(seed0 + i)
-        tables = geom_tables(world)
+    for i, (seed, world, tables, rng) in enumerate(_scenes(source, list(range(seed0, seed0 + n_scenes)))):
         for cam in cameras:
             name = cam
             if cam == "wrist":
@@ -226,14 +259,19 @@ def generate(
                 win = (slice(r0, r0 + h), slice(c0, c0 + w))
                 for k, a in zip(keys, (f.rgb, depth_mm, f.category, f.instance, f.colour)):
                     rows[k].append(a[win])
-                rows["seeds"].append(np.array(seed0 + i))
-        world.close()
+                rows["seeds"].append(np.array(seed))
         if (i + 1) % 20 == 0:
             log(f"scene {i + 1}/{n_scenes} ({time.perf_counter() - t0:.0f} s)")
     path = out_dir / f"shard_{seed0}.npz"
     arrays: dict[str, np.ndarray] = {k: np.stack(v) for k, v in rows.items()}
     np.savez_compressed(path, **arrays)  # type: ignore[arg-type]  # numpy's stub types **kwds as allow_pickle
-    return {"path": str(path), "crops": len(rows["rgb"]), "scenes": n_scenes, "seconds": time.perf_counter() - t0}
+    return {
+        "path": str(path),
+        "source": source,
+        "crops": len(rows["rgb"]),
+        "scenes": n_scenes,
+        "seconds": time.perf_counter() - t0,
+    }
 
 
 def load_shards(data_dir: Path) -> dict[str, np.ndarray]:

@@ -29,12 +29,18 @@ class SegNet(nn.Module):
     """Input (B, 4, H, W): RGB in [0, 1] and normalised depth; H and W multiples of 32.
     Output (B, n_categories + 1 + n_colours, H, W): category logits, boundary logit, colour logits."""
 
-    def __init__(self, widths: tuple[int, ...] = (16, 32, 48, 64, 96), full_res: int = 16, downsample: int = 2):
+    def __init__(
+        self,
+        widths: tuple[int, ...] = (16, 32, 48, 64, 96),
+        full_res: int = 16,
+        downsample: int = 2,
+        n_categories: int | None = None,  # default: every entry of CATEGORIES (older weights may have fewer)
+    ):
         super().__init__()
         self.widths = tuple(widths)
         self.full_res = full_res
         self.downsample = downsample  # camera frames are shrunk by this factor before the network (see shrink)
-        self.n_categories, self.n_colours = len(CATEGORIES), len(COLOURS)
+        self.n_categories, self.n_colours = n_categories or len(CATEGORIES), len(COLOURS)
         # The encoder starts at half resolution (a strided stem: full-resolution stages dominate CPU time); one
         # light full-resolution layer over the raw input sharpens the upsampled decoder output at mask edges.
         self.stem = nn.Sequential(

@@ -102,11 +102,13 @@ class LearnedSegmenter:
         """(category index -> cosine for the categories a prompt names, colours it asks for). Colour words are
         taken out before matching the category (categories carry no colour); a trailing instance number
         ("bowl 2") is no visual property and is ignored."""
+        text = _protect_named(text)
         words = [w for w in _words(normalise_colours(text)) if w not in ("the", "a", "an")]
         colours = {w for w in words if w in BASE_COLOURS and w not in MATERIAL_WORDS}
         raw = set(_words(text))
         colours -= {normalise_colours(m) for m in MATERIAL_WORDS & raw}  # "wooden" is a material here
         core = " ".join(w for w in words if w not in BASE_COLOURS) or " ".join(words)
+        core = core.replace(_NAMED_MARK, " ").strip()
         if not core:
             return {}, colours
         cos = self._doc_vecs @ self.encoder.encode([core])[0]
@@ -190,6 +192,8 @@ class LearnedSegmenter:
                 out.extend(self._related(frame, prompt, head, anchors, negated=relation.startswith("not ")))
                 continue
             qualifier, core = split_qualifier(prompt)
+            if re.search(r"\bof\b", prompt):  # "the top drawer of the cabinet": the drawer is the target
+                core = split_qualifier(re.split(r"\bof\b", prompt)[0])[1] or core
             dets = self._matches(frame, prompt, core)
             if qualifier and len(dets) > 1:
                 dets = [pick_by_qualifier(dets, frame, qualifier)]
@@ -232,6 +236,25 @@ class LearnedSegmenter:
             Detection(prompt, prompt, d.mask, d.score, d.camera, False, {**d.detail, "relation_anchors": anchors})
             for d in dets
         ]
+
+
+_NAMED_MARK = "qq"  # glues a category name's colour word to the next word, so it is no colour filter
+
+
+def _named_with_colour() -> list[str]:
+    return [
+        c.name for c in CATEGORIES if c.thing and any(normalise_colours(w) in BASE_COLOURS for w in c.name.split()[:-1])
+    ]
+
+
+def _protect_named(text: str) -> str:
+    """A category whose name starts with a colour word ("orange juice", "cream cheese") is named, not coloured:
+    its words are glued so colour parsing passes them over (ground() unglues them for the sentence encoder)."""
+    low = " " + " ".join(_words(text)) + " "
+    for name in _named_with_colour():
+        if f" {name} " in low:
+            low = low.replace(f" {name} ", " " + name.replace(" ", _NAMED_MARK) + " ")
+    return low.strip()
 
 
 def _drop_fragments(instances: list[Instance]) -> list[Instance]:

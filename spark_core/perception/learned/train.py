@@ -14,7 +14,7 @@ import numpy as np
 import torch
 from torch.nn import functional as F
 
-from .categories import CATEGORIES
+from .categories import CATEGORIES, COLOURS
 from .dataset import load_shards
 from .model import SegNet, network_input, shrink
 
@@ -23,7 +23,7 @@ THING_WEIGHT = 3.0  # category loss weight of object pixels (few, and what matte
 
 @dataclass(frozen=True)
 class TrainConfig:
-    data_dir: str
+    data_dirs: tuple[str, ...]  # trained together; each holds out its own highest-seed crops for validation
     out: str  # weights file (.pt)
     steps: int = 100_000
     minutes: float = 45.0  # wall-time budget; training stops at whichever of steps/minutes comes first
@@ -35,7 +35,9 @@ class TrainConfig:
     val_fraction: float = 0.05  # the dataset's last crops (highest scene seeds) held out for validation
     threads: int = 2
     init: str | None = None  # weights to start from (a fine-tuning run) instead of random initialisation
-    balance: bool = False  # weight object categories by rarity (sqrt of median/own pixel frequency, at most 8x)
+    balance: bool = False  # weight object categories by rarity (sqrt of median/own pixel frequency)
+    balance_max: float = 8.0  # the largest rarity up-weighting
+    oversample_rare: bool = False  # draw crops showing a rare category more often (by its rarity weight)
 
 
 def boundary_target(instance: np.ndarray, band_px: int = 2) -> np.ndarray:
@@ -74,9 +76,9 @@ def _batch(data: dict[str, np.ndarray], idx: np.ndarray, crop: tuple[int, int], 
     )
 
 
-def category_weights(category: np.ndarray | None = None) -> torch.Tensor:
+def category_weights(category: np.ndarray | None = None, max_factor: float = 8.0) -> torch.Tensor:
     """Cross-entropy weight per category: THING_WEIGHT for objects, 1 for background/table/robot; with the
-    dataset's category maps, rare object categories (small parts) weigh up to 8x more than that."""
+    dataset's category maps, rare object categories (small parts) weigh up to `max_factor` more than that."""
     weight = torch.ones(len(CATEGORIES))
     things = [i for i, c in enumerate(CATEGORIES) if c.thing]
     weight[things] = THING_WEIGHT
@@ -85,8 +87,20 @@ def category_weights(category: np.ndarray | None = None) -> torch.Tensor:
         present = [i for i in things if freq[i] > 0]
         median = np.median(freq[present])
         for i in present:
-            weight[i] = THING_WEIGHT * float(np.clip(np.sqrt(median / freq[i]), 1.0, 8.0))
+            weight[i] = THING_WEIGHT * float(np.clip(np.sqrt(median / freq[i]), 1.0, max_factor))
     return weight
+
+
+def crop_rarity(category: np.ndarray, weight: torch.Tensor, min_px: int = 20) -> np.ndarray:
+    """Per crop: the largest rarity factor (category weight / THING_WEIGHT, >= 1) of the object categories it
+    shows at least `min_px` pixels of; crops are then drawn in proportion (small parts seen more often)."""
+    factor = np.maximum(weight.numpy() / THING_WEIGHT, 1.0)
+    factor[[i for i, c in enumerate(CATEGORIES) if not c.thing]] = 1.0
+    out = np.ones(len(category))
+    for i, crop in enumerate(category):
+        present = np.bincount(crop.ravel(), minlength=len(CATEGORIES)) >= min_px
+        out[i] = factor[present].max() if present.any() else 1.0
+    return out
 
 
 def losses(net: SegNet, x, cat, bnd, col, weight: torch.Tensor | None = None) -> dict[str, torch.Tensor]:
@@ -133,14 +147,28 @@ def train(cfg: TrainConfig, log: Callable[[str], None] = print) -> dict:
     torch.manual_seed(cfg.seed)
     torch.set_num_threads(cfg.threads)
     rng = np.random.default_rng(cfg.seed)
-    data = load_shards(Path(cfg.data_dir))
+    if not cfg.data_dirs:
+        raise ValueError("no dataset directory given")
+    parts = [load_shards(Path(d)) for d in cfg.data_dirs]
+    shapes = {p["category"].shape[1:] for p in parts}
+    if len(shapes) > 1:
+        raise ValueError(f"the datasets' crops differ in size ({sorted(shapes)}): render them with one crop size")
+    sizes = [len(p["seeds"]) for p in parts]
+    data = {}
+    for k in list(parts[0]):  # key by key, freeing each part's array once copied (the crops take GBs)
+        data[k] = np.concatenate([p.pop(k) for p in parts])
     if cfg.crop[0] > data["category"].shape[1] or cfg.crop[1] > data["category"].shape[2]:
         raise ValueError(f"crop {cfg.crop} is larger than the dataset's crops {data['category'].shape[1:]}")
-    order = np.argsort(data["seeds"], kind="stable")
-    n_val = max(1, int(len(order) * cfg.val_fraction)) if len(order) > 1 else 0
-    train_idx, val_idx = order[: len(order) - n_val], order[len(order) - n_val :]
-    if len(train_idx) == 0:
-        raise ValueError(f"dataset {cfg.data_dir} has too few crops ({len(order)}) to train on")
+    train_parts, val_parts, start = [], [], 0
+    for d, n in zip(cfg.data_dirs, sizes):  # each dataset's highest seeds are its validation crops
+        order = start + np.argsort(data["seeds"][start : start + n], kind="stable")
+        n_val = max(1, int(len(order) * cfg.val_fraction)) if len(order) > 1 else 0
+        if len(order) - n_val == 0:
+            raise ValueError(f"dataset {d} has too few crops ({len(order)}) to train on")
+        train_parts.append(order[: len(order) - n_val])
+        val_parts.append(order[len(order) - n_val :])
+        start += n
+    train_idx, val_idx = np.concatenate(train_parts), np.concatenate(val_parts)
     log(f"{len(train_idx)} training crops, {len(val_idx)} validation crops")
     if cfg.init:
         net = load_net(Path(cfg.init)).train()
@@ -148,8 +176,13 @@ def train(cfg: TrainConfig, log: Callable[[str], None] = print) -> dict:
             raise ValueError(f"--init weights see frames shrunk {net.downsample}x, not {cfg.downsample}x")
     else:
         net = SegNet(downsample=cfg.downsample)
-    weight = category_weights(data["category"] if cfg.balance else None)
+    weight = category_weights(data["category"] if cfg.balance else None, cfg.balance_max)
     log("category weights: " + ", ".join(f"{c.name} {w:.1f}" for c, w in zip(CATEGORIES, weight.tolist())))
+    draw_p = None
+    if cfg.oversample_rare:
+        rarity = crop_rarity(data["category"][train_idx], weight)
+        draw_p = rarity / rarity.sum()
+        log(f"oversampling rare categories: crop draw weights 1..{rarity.max():.1f}, mean {rarity.mean():.2f}")
     opt = torch.optim.AdamW(net.parameters(), lr=cfg.lr, weight_decay=1e-4)
     t0 = time.perf_counter()
     budget_s = cfg.minutes * 60
@@ -159,7 +192,7 @@ def train(cfg: TrainConfig, log: Callable[[str], None] = print) -> dict:
         frac = min(1.0, max(step / cfg.steps, (time.perf_counter() - t0) / budget_s))
         for g in opt.param_groups:  # cosine decay over whichever budget runs out first
             g["lr"] = cfg.lr * 0.5 * (1 + np.cos(np.pi * frac))
-        idx = rng.choice(train_idx, size=min(cfg.batch, len(train_idx)), replace=False)
+        idx = rng.choice(train_idx, size=min(cfg.batch, len(train_idx)), replace=False, p=draw_p)
         x, cat, bnd, col = _batch(data, idx, cfg.crop, rng, cfg.downsample)
         loss = losses(net, x, cat, bnd, col, weight)
         opt.zero_grad()
@@ -175,7 +208,7 @@ def train(cfg: TrainConfig, log: Callable[[str], None] = print) -> dict:
         if step % 1000 == 0:
             save(net, Path(cfg.out), {"config": asdict(cfg), "steps": step, "partial": True})
     elapsed = time.perf_counter() - t0
-    val = thing_iou(net, data, val_idx) if len(val_idx) else {}
+    val = {Path(d).name: thing_iou(net, data, v) for d, v in zip(cfg.data_dirs, val_parts) if len(v)}
     meta = {
         "config": asdict(cfg),
         "steps": step,
@@ -192,7 +225,30 @@ def train(cfg: TrainConfig, log: Callable[[str], None] = print) -> dict:
 
 
 def load_net(path: Path) -> SegNet:
+    """Weights -> network with a head for every current category: weights saved with fewer categories (before
+    categories were appended) get new head rows (see expand_categories)."""
     ckpt = torch.load(path, map_location="cpu", weights_only=True)
+    state = {k: v.float() if v.is_floating_point() else v for k, v in ckpt["state"].items()}
+    n_saved = int(state["head.weight"].shape[0]) - 1 - len(COLOURS)
+    if n_saved > len(CATEGORIES):
+        raise ValueError(f"{path} predicts {n_saved} categories, more than the {len(CATEGORIES)} of categories.py")
     net = SegNet(tuple(ckpt["widths"]), int(ckpt["full_res"]), int(ckpt["downsample"]))
-    net.load_state_dict({k: v.float() if v.is_floating_point() else v for k, v in ckpt["state"].items()})
+    net.load_state_dict(expand_categories(state, n_saved, len(CATEGORIES)))
     return net.eval()
+
+
+def expand_categories(state: dict[str, torch.Tensor], n_old: int, n_new: int) -> dict[str, torch.Tensor]:
+    """A state dict whose head predicts `n_old` categories -> one predicting `n_new` (categories are only ever
+    appended, so the first n_old keep their rows). A new category's row starts as the mean of the object rows
+    with its bias lowered by 2 (rare until trained); the boundary and colour rows move down unchanged."""
+    if n_old == n_new:
+        return state
+    w, b = state["head.weight"], state["head.bias"]
+    things = [i for i in range(n_old) if CATEGORIES[i].thing]
+    k = n_new - n_old
+    w_new = w[things].mean(0, keepdim=True).repeat(k, 1, 1, 1)
+    b_new = b[things].mean().repeat(k) - 2.0
+    out = dict(state)
+    out["head.weight"] = torch.cat([w[:n_old], w_new, w[n_old:]], 0)
+    out["head.bias"] = torch.cat([b[:n_old], b_new, b[n_old:]], 0)
+    return out
