@@ -76,18 +76,21 @@ def _batch(data: dict[str, np.ndarray], idx: np.ndarray, crop: tuple[int, int], 
     )
 
 
-def category_weights(category: np.ndarray | None = None, max_factor: float = 8.0) -> torch.Tensor:
+def category_weights(category: np.ndarray | list[np.ndarray] | None = None, max_factor: float = 8.0) -> torch.Tensor:
     """Cross-entropy weight per category: THING_WEIGHT for objects, 1 for background/table/robot; with the
-    dataset's category maps, rare object categories (small parts) weigh up to `max_factor` more than that."""
+    datasets' category maps, rare object categories (small parts) weigh up to `max_factor` more than that. Rarity
+    is judged within each dataset and the largest factor kept: the builtin drawer handle stays rare even where
+    LIBERO's big cabinets bring many handle pixels."""
     weight = torch.ones(len(CATEGORIES))
     things = [i for i, c in enumerate(CATEGORIES) if c.thing]
     weight[things] = THING_WEIGHT
-    if category is not None:
-        freq = np.bincount(category.ravel(), minlength=len(CATEGORIES)).astype(float)
+    for cats in [category] if isinstance(category, np.ndarray) else category or []:
+        freq = np.bincount(cats.ravel(), minlength=len(CATEGORIES)).astype(float)
         present = [i for i in things if freq[i] > 0]
-        median = np.median(freq[present])
+        median = np.median(freq[present]) if present else 0.0
         for i in present:
-            weight[i] = THING_WEIGHT * float(np.clip(np.sqrt(median / freq[i]), 1.0, max_factor))
+            factor = float(np.clip(np.sqrt(median / freq[i]), 1.0, max_factor))
+            weight[i] = max(float(weight[i]), THING_WEIGHT * factor)
     return weight
 
 
@@ -176,7 +179,9 @@ def train(cfg: TrainConfig, log: Callable[[str], None] = print) -> dict:
             raise ValueError(f"--init weights see frames shrunk {net.downsample}x, not {cfg.downsample}x")
     else:
         net = SegNet(downsample=cfg.downsample)
-    weight = category_weights(data["category"] if cfg.balance else None, cfg.balance_max)
+    bounds = np.cumsum([0, *sizes])
+    per_dataset = [data["category"][a:b] for a, b in zip(bounds[:-1], bounds[1:])]
+    weight = category_weights(per_dataset if cfg.balance else None, cfg.balance_max)
     log("category weights: " + ", ".join(f"{c.name} {w:.1f}" for c, w in zip(CATEGORIES, weight.tolist())))
     draw_p = None
     if cfg.oversample_rare:
