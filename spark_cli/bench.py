@@ -130,6 +130,11 @@ def register(sub) -> None:
     b.add_argument("--store-size", type=int, default=10_000, help="trials in the trace store (api, console suites)")
     b.add_argument("--write", metavar="BENCHMARKS.md", help="replace this benchmark's section in the file")
     b.add_argument("--json", metavar="FILE", help="also write per-trial rows as JSON")
+    b.add_argument(
+        "--half",
+        choices=["dev", "test"],
+        help="wording suite: plan and execute only this half of the corpus (default: both; develop on dev alone)",
+    )
     bench_manifest.add_arguments(b)
     b.set_defaults(func=_cmd_bench)
 
@@ -214,7 +219,7 @@ def _wording(args: argparse.Namespace, command: str) -> str:
     """Both corpus halves planned, then the execution sample (min(--trials, 2) seeds per instruction)."""
     from spark_core.bench import wording
 
-    entries = wording.load("dev") + wording.load("test")
+    entries = [e for half in ([args.half] if args.half else wording.HALVES) for e in wording.load(half)]
     rows = wording.plan_entries(entries, args.seed, lambda r: print(_wording_line(r), flush=True))
     seeds = min(args.trials or 2, 2)
     exec_rows = wording.execute_sample(

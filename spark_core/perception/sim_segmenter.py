@@ -8,14 +8,19 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
-from .colors import colours_in, normalise_colours
+from .colors import BASE_COLOURS, normalise_colours
+from .colors import SYNONYMS as COLOUR_SYNONYMS
 from .detection import Detection
 from .frame import CameraFrame
 from .qualifiers import QUALIFIERS, split_qualifier, split_relation
 from .text_encoder import SHARED_ENCODER, TextEncoder
+from .variants import KIND_OF, MATERIALS, SHAPES, SIZES
 
 HEAD_NOUN_BONUS = 0.08
-COLOUR_MISMATCH_PENALTY = 0.15
+# An object whose colour, shape or kind contradicts the prompt is no match at any similarity: the score drops by
+# this much (below any threshold; kept as a score so noise models can still rank confusions).
+MISMATCH_PENALTY = 1.0
+_FILLER = frozenset(["the", "a", "an", "one", "of", "with", "and", "on", "in", "at", "to"])
 
 
 def calibrated_score(cosine: float, threshold: float) -> float:
@@ -55,7 +60,7 @@ class SimSegmenter:
     def similarities(self, text: str) -> dict[str, float]:
         """Grounding score per object: cosine of the colour-normalised prompt with "label: description", plus
         a bonus when the prompt's head noun is the object's own noun (so "the stove" prefers the stove over
-        its knob) and a penalty when the prompt names a colour the object does not have."""
+        its knob), minus MISMATCH_PENALTY when the prompt contradicts the object (`mismatch`)."""
         if not self._labels:
             return {}
         norm = normalise_colours(text)
@@ -63,14 +68,19 @@ class SimSegmenter:
         cos = self._doc_vecs @ q
         words = norm.split()
         head = words[-1] if words else ""
-        wanted = colours_in(norm)
+        # a part's noun names the part when some object is one ("the handle of the drawer"); only when none is
+        # may it name the whole it belongs to ("the stove knob" of a stove without a separate knob)
+        strict = {
+            label: mismatch(text, self._names[label], self.catalog[label], part_is_whole=False)
+            for label in self._labels
+        }
+        whole = all(strict.values())
         out = {}
         for label, c in zip(self._labels, cos.tolist()):
             if head and head == self._names[label].split()[-1]:
                 c += HEAD_NOUN_BONUS
-            have = colours_in(f"{label} {self.catalog[label]}")
-            if wanted and have and not wanted & have:
-                c -= COLOUR_MISMATCH_PENALTY
+            if mismatch(text, self._names[label], self.catalog[label]) if whole else strict[label]:
+                c -= MISMATCH_PENALTY
             out[label] = c
         return out
 
@@ -146,6 +156,64 @@ class SimSegmenter:
             )
             for d in dets
         ]
+
+
+def _words(text: str) -> list[str]:
+    return [w for w in re.findall(r"[a-z]+", text.lower()) if w not in _FILLER]
+
+
+def _forms(word: str) -> set[str]:
+    """The word and its singular candidates ("cookies" -> cookie, "boxes" -> box)."""
+    out = {word}
+    if word.endswith("s") and not word.endswith("ss"):
+        out |= {word[:-1], word[:-2] if word.endswith("es") else word[:-1]}
+    return out
+
+
+def _kind(word: str) -> frozenset[str] | None:
+    return next((KIND_OF[f] for f in _forms(word) if f in KIND_OF), None)
+
+
+def _colours(words: list[str]) -> set[str]:
+    """Colour words (synonyms to base names); a material ("wooden") is no colour claim."""
+    return {c for w in words if w not in MATERIALS for c in [COLOUR_SYNONYMS.get(w, w)] if c in BASE_COLOURS}
+
+
+def mismatch(prompt: str, name: str, description: str, part_is_whole: bool = True) -> str | None:
+    """Why `prompt` cannot mean the object `name` ("label: description"), or None when nothing contradicts it.
+    A prompt names a colour the object does not have, or a shape; a kind of thing (variants.KINDS) the object
+    is not (the head noun, or the thing a part belongs to: "oven door handle" is no cabinet drawer handle,
+    while "stove knob" may be the stove itself, unless `part_is_whole` is False); or, on the object's own noun,
+    a distinguishing word where the object has another ("bbq sauce" vs "tomato sauce")."""
+    text = re.sub(r"^(.+?) of (.+)$", r"\2 \1", prompt.lower())  # "drawer of the cabinet": its noun is drawer
+    pw = _words(text)
+    if not pw:
+        return None
+    doc_words = _words(f"{name} {description}")
+    doc = {f for w in doc_words for f in _forms(w)}
+    want, have = _colours(pw), _colours(doc_words)
+    if want and have and not want & have:
+        return f"colour: {', '.join(sorted(want))} vs {', '.join(sorted(have))}"
+    shapes, own_shapes = set(pw) & SHAPES, doc & SHAPES
+    if shapes and own_shapes and not shapes & own_shapes:
+        return f"shape: {', '.join(sorted(shapes))} vs {', '.join(sorted(own_shapes))}"
+    nw = _words(name)
+    # what the thing is: the words before "with" ("the cabinet with a drawer" is a cabinet)
+    said_kinds = _words(re.sub(r"\bwith\b.*$", "", text)) or pw
+    kinds = [(w, k) for w in said_kinds if (k := _kind(w)) is not None]
+    if kinds:
+        *owners, (_, head_kind) = kinds
+        # strictly the object's own noun must be of the head's kind; else its description may say it
+        is_head = head_kind & _forms(nw[-1]) if nw and not part_is_whole else head_kind & doc
+        if any(not k & doc for _, k in owners) or (not owners or not part_is_whole) and not is_head:
+            return f"kind: {' '.join(w for w, _ in kinds)}"
+    attributes = SHAPES | MATERIALS | SIZES | set(QUALIFIERS) | set(BASE_COLOURS) | set(COLOUR_SYNONYMS)
+    if len(pw) > 1 and len(nw) > 1 and _forms(pw[-1]) & _forms(nw[-1]):
+        said = {w for w in pw[:-1] if w not in attributes and _kind(w) is None and not _forms(w) & doc}
+        own = {w for w in nw[:-1] if w not in attributes and _kind(w) is None and w not in pw}
+        if said and own:
+            return f"{pw[-1]}: {' '.join(sorted(said))} vs {' '.join(sorted(own))}"
+    return None
 
 
 def _instance_names(catalog: Mapping[str, str]) -> dict[str, str]:

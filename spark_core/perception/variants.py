@@ -1,17 +1,22 @@
 """Alternative text prompts for an object label (adaptive self-consistency), derived deterministically from
-the label's words with a synonym table. The planning layer may supply its own variants instead."""
+the label's words with a synonym table, and the word classes grounding needs to tell one kind of thing from
+another. The planning layer may supply its own variants instead.
+
+A variant never widens the label: it swaps a word for a synonym or adds an attribute, it never drops a word
+("bbq sauce" -> "the sauce" would find the tomato sauce; "blue area" -> "the area" the green one) and never
+swaps a noun for a wider one that also names another kind ("bowl" -> "dish" finds the plate)."""
 
 from __future__ import annotations
 
 SYNONYMS: dict[str, tuple[str, ...]] = {
     "block": ("cube", "wooden block"),
-    "cube": ("block", "box"),
+    "cube": ("block", "wooden cube"),
     "mug": ("cup", "coffee mug"),
     "cup": ("mug", "drinking cup"),
-    "plate": ("dish", "round plate"),
-    "bowl": ("round bowl", "dish"),
+    "plate": ("dinner plate", "round plate"),
+    "bowl": ("round bowl", "ceramic bowl"),
     "tray": ("plastic tray", "flat tray"),
-    "basket": ("wicker basket", "bin"),
+    "basket": ("wicker basket", "woven basket"),
     "sponge": ("kitchen sponge", "scrubbing pad"),
     "bottle": ("plastic bottle", "flask"),
     "knob": ("dial", "control knob"),
@@ -20,20 +25,106 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "stove": ("cooktop", "burner"),
     "cooktop": ("stove", "electric stove"),
     "hob": ("stove", "cooktop"),
+    "burner": ("stove", "cooktop"),
     "cupboard": ("cabinet", "wooden cabinet"),
     "dish": ("plate", "round dish"),
     "zone": ("area", "target area"),
     "peg": ("rod", "stick"),
-    "nut": ("square nut", "metal nut"),
+    "nut": ("metal nut", "brass nut"),
     "brush": ("scrub brush", "bristle brush"),
     "area": ("zone", "target area"),
     "bead": ("small ball", "marble"),
     "cabinet": ("cupboard", "wooden cabinet"),
 }
 
+# Kinds of things: each set holds words that name the same kind; a word of one set names something else than a
+# word of another, unless it is in both (a wider word: "dish"): "butter" is no "milk", "ketchup" no "tomato
+# sauce", however close a sentence encoder puts two groceries. Words in no set (containers such as "box" or
+# "carton", generic nouns, rare names) stay open vocabulary: grounded by similarity alone.
+KINDS: tuple[frozenset[str], ...] = tuple(
+    frozenset(s.split())
+    for s in (
+        "block cube brick",
+        "plate dish saucer platter",
+        "bowl dish",
+        "ramekin",
+        "basket hamper",
+        "tray",
+        "mug cup",
+        "glass tumbler",
+        "bottle flask",
+        "jar",
+        "sponge",
+        "brush",
+        "towel cloth rag",
+        "knob dial",
+        "handle pull grip",
+        "drawer layer",  # LIBERO's word for a cabinet's drawers ("the top layer of the wooden cabinet")
+        "cabinet cupboard",
+        "stove cooktop burner hob",
+        "oven",
+        "microwave",
+        "fridge refrigerator",
+        "sink",
+        "toaster",
+        "kettle",
+        "pan skillet",
+        "pot saucepan",
+        "lid",
+        "spoon",
+        "fork",
+        "knife",
+        "spatula",
+        "peg rod",
+        "nut",
+        "bolt",
+        "screw",
+        "hammer mallet",
+        "bead marble",
+        "area zone region",
+        "rack",
+        "shelf",
+        "vase",
+        "book",
+        "lamp",
+        "door",
+        "butter",
+        "milk",
+        "ketchup",
+        "cheese",
+        "soup",
+        "pudding",
+        "juice",
+        "dressing",
+        "sauce",
+        "cookie biscuit",
+        "cereal",
+        "bread",
+        "apple",
+        "banana",
+        "lemon",
+        "wine",
+        "egg",
+    )
+)
+# word -> every word of a kind it may name ("dish": a plate or a bowl)
+KIND_OF: dict[str, frozenset[str]] = {w: frozenset().union(*(k for k in KINDS if w in k)) for s in KINDS for w in s}
+# Attribute words: a mention may add them without naming another kind; colours are in colors.py.
+SHAPES = frozenset(
+    ["square", "round", "circular", "rectangular", "hexagonal", "triangular", "cylindrical", "oval", "spherical"]
+)
+MATERIALS = frozenset(
+    ["wooden", "wood", "metal", "metallic", "plastic", "ceramic", "glass", "brass", "steel", "wicker", "woven"]
+)
+SIZES = frozenset(
+    ["small", "big", "large", "tiny", "little", "tall", "short", "long", "wide", "narrow", "shallow", "deep", "flat"]
+)
 
-def prompt_variants(label: str, k: int = 3) -> list[str]:
-    """`k` alternative prompts for `label` (never the label itself), e.g. red block -> red cube, red wooden block."""
+
+def prompt_variants(label: str, k: int = 3, bare_noun: bool = False) -> list[str]:
+    """`k` alternative prompts for `label` (never the label itself), e.g. red block -> red cube, red wooden block.
+    `bare_noun` adds "the <noun>" as a last resort: a widening perception's resolver never asks for (it found the
+    green area for "blue area"); only the rules planner's prompt-variant call still offers it."""
     words = label.split()
     out: list[str] = []
     for i in range(len(words) - 1, -1, -1):
@@ -41,6 +132,6 @@ def prompt_variants(label: str, k: int = 3) -> list[str]:
             cand = " ".join(words[:i] + [syn] + words[i + 1 :])
             if cand != label and cand not in out:
                 out.append(cand)
-    if len(words) > 1 and words[-1] not in out:  # the bare noun as a last resort ("the bowl")
+    if bare_noun and len(words) > 1 and f"the {words[-1]}" not in out:
         out.append(f"the {words[-1]}")
     return out[:k]

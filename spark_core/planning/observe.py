@@ -39,12 +39,26 @@ def phrases_for(instruction: str) -> list[str]:
 
 def observe(instruction: str, resolver: Resolver, extra: Sequence[str] = ()) -> SceneView:
     keypoints: dict[str, Keypoint] = {}
+    unresolved: dict[str, str] = {}
     for phrase in dict.fromkeys([*phrases_for(instruction), *extra]):
         try:
             keypoints[phrase] = resolver.resolve(phrase)
         except LabelNotFound:
-            continue
-    return SceneView(keypoints, summarise(keypoints) if keypoints else "perception found none of the objects mentioned")
+            unresolved[phrase] = _why_unresolved(resolver, phrase)
+    summary = summarise(keypoints) if keypoints else "perception found none of the objects mentioned"
+    return SceneView(keypoints, summary, unresolved=unresolved)
+
+
+def _why_unresolved(resolver: Resolver, phrase: str) -> str:
+    """ "several match: N" when every prompt tried found several instances in some view, else "none found"."""
+    records = getattr(resolver, "groundings", None) or [{}]
+    record = records[-1]
+    if record.get("label") != phrase:
+        return "none found"
+    counts = [
+        c["n_detections"] for cam in record.get("cameras", {}).values() for c in cam["candidates"] if c["n_detections"]
+    ]
+    return f"several match: {max(counts)}" if counts and min(counts) > 1 else "none found"
 
 
 def arm_bases(world) -> dict[str, tuple[float, float]]:
@@ -73,7 +87,7 @@ def annotated_view(view: SceneView, resolver: Resolver) -> SceneView:
     camera, frame = next(iter(frames.items()))
     kept = getattr(resolver, "detections", {}).get(camera, {})
     detections = [d for label, d in kept.items() if label in view.keypoints]
-    return SceneView(view.keypoints, view.summary, annotate(frame, detections, view.keypoints))
+    return SceneView(view.keypoints, view.summary, annotate(frame, detections, view.keypoints), view.unresolved)
 
 
 def agentview_png(resolver: Resolver) -> bytes | None:

@@ -19,6 +19,9 @@ class SceneView:
     keypoints: dict[str, Keypoint] = field(default_factory=dict)
     summary: str = ""
     image: np.ndarray | None = None  # annotated RGB, for multimodal planners
+    # phrases perception could not single out, and why ("several match: 2", "none found"): what a planner needs
+    # to ask which one rather than say it is absent
+    unresolved: dict[str, str] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)

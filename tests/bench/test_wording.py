@@ -71,3 +71,30 @@ def test_execution_is_compared_with_the_official_wording_of_the_same_tasks_per_h
     dev, test = wording.exec_summary(rows, "dev"), wording.exec_summary(rows, "test")
     assert (dev["reworded"], dev["official"], dev["ratio"]) == (0.5, 1.0, 0.5)
     assert (test["reworded"], test["official"], test["ratio"]) == (0.5, 0.0, 0.0)  # nothing to compare with
+
+
+def _top(label, xyz, size, cells):
+    """A keypoint with a seen top face over the given 1 cm cells (x, y in m, cell centres)."""
+    return Keypoint(label, np.array(xyz, float), np.array(size, float), detail={"footprint_xy_m": cells})
+
+
+def test_two_place_targets_with_the_same_support_are_the_same_destination():
+    # a cabinet (top at 0.23 m) and its top drawer's front, whose point lies inside the cabinet's top face, lower
+    cabinet_cells = [[x / 100 + 0.005, y / 100 + 0.005] for x in range(28, 52) for y in range(-37, -17)]
+    view = SceneView(
+        {
+            "bowl": Keypoint("bowl", np.array([0.6, 0.13, 0.03]), np.full(3, 0.05)),
+            "cabinet": _top("cabinet", (0.40, -0.27, 0.18), (0.24, 0.18, 0.10), cabinet_cells),
+            "drawer top": _top("drawer top", (0.40, -0.177, 0.187), (0.2, 0.0, 0.06), [[0.405, -0.175]]),
+            "plate": _top("plate", (0.6, -0.1, 0.01), (0.12, 0.12, 0.01), [[0.605, -0.095]]),
+        }
+    )
+
+    def carry(target, into=False):
+        put = ("place_in", {"container_label": target}) if into else ("place", {"target_label": target})
+        return wording.signature(_plan(("pick", {"keypoint_label": "bowl"}), put), view)
+
+    assert wording.same_effect(carry("drawer top"), carry("cabinet"))
+    assert wording.same_effect(carry("cabinet"), carry("drawer top"))
+    assert not wording.same_effect(carry("drawer top", into=True), carry("cabinet"))  # into a drawer is not on top
+    assert not wording.same_effect(carry("plate"), carry("cabinet"))

@@ -111,7 +111,7 @@ def test_push_into_a_region_measures_distance_from_the_scene():
         (
             "put the giraffe on the plate",
             {"plate": (0.5, 0, 0.01)},
-            "could not find 'giraffe' in the scene (perception found: plate)",
+            "could not find 'giraffe' in the scene: perception found nothing that matches it",
         ),
         ("put the red block", {"red block": (0.5, 0, 0.02)}, "which destination?"),
         ("scrub the plate", {"plate": (0.5, 0, 0.01)}, "scrub with what?"),

@@ -144,14 +144,37 @@ def test_a_handle_that_is_the_object_itself_is_refused():
     assert not res.ok and "no handle on it, only 'red block' itself" in res.error
 
 
-def test_an_object_perception_could_not_single_out_is_refused_saying_what_was_understood_and_seen():
-    view = SceneView({"plate": kp("plate", (0.6, 0, 0.01))})
+def test_an_object_perception_did_not_find_is_refused_saying_what_was_understood_and_seen():
+    view = SceneView({"plate": kp("plate", (0.6, 0, 0.01))}, unresolved={"bowl": "none found"})
     res = RulesPlanner().plan(PlanRequest("put the bowl on the plate", view))
     assert not res.ok
-    assert "could not find 'bowl'" in res.error and "perception found: plate" in res.error
-    assert "several are and nothing says which" in res.error and "understood: put obj=bowl" in res.error
+    assert "could not find 'bowl'" in res.error and "found in the scene: plate" in res.error
+    assert "understood: put obj=bowl" in res.error and "which" not in res.error
+
+
+def test_an_object_several_things_match_is_refused_asking_which():
+    view = SceneView({"plate": kp("plate", (0.6, 0, 0.01))}, unresolved={"bowl": "several match: 2"})
+    res = RulesPlanner().plan(PlanRequest("put the bowl on the plate", view))
+    assert not res.ok
+    assert res.error.startswith("which 'bowl'? perception found 2 things that match it")
+    assert "'the left bowl'" in res.error and "understood: put obj=bowl" in res.error
+    assert "found in the scene: plate" in res.error
 
 
 def test_mentioning_objects_without_an_action_is_refused():
     with pytest.raises(ParseError, match="but no action"):
         parse_instruction("there is a cup on the table")
+
+
+def test_an_object_located_by_something_perception_could_not_use_says_so():
+    view = SceneView({"plate": kp("plate", (0.6, 0, 0.01))}, unresolved={"bowl next to toaster": "several match: 2"})
+    res = RulesPlanner().plan(PlanRequest("put the bowl next to the toaster on the plate", view))
+    assert not res.ok and res.error.startswith("could not single out 'bowl next to toaster'")
+    assert "2 things that match 'bowl'" in res.error and "which one is next to 'toaster'" in res.error
+
+
+def test_a_push_into_an_area_perception_did_not_find_says_what_was_understood_and_seen():
+    view = SceneView({"red block": kp("red block", (0.4, 0, 0.02))}, unresolved={"blue area": "none found"})
+    res = RulesPlanner().plan(PlanRequest("push the red block into the blue area", view))
+    assert not res.ok and "could not find 'blue area'" in res.error
+    assert "understood: push obj=red block" in res.error and "found in the scene: red block" in res.error

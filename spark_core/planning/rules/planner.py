@@ -8,6 +8,7 @@ import time
 import numpy as np
 
 from ...grammar import PlanError, check_plan, to_yaml
+from ...perception.qualifiers import split_relation
 from ..protocol import PlanRequest, PlanResult
 from .lexicon import REGIONS
 from .parse import Clause, ParseError, is_pronoun, parse_instruction
@@ -31,10 +32,11 @@ class RulesPlanner:
     name = "rules"
 
     def prompt_variants(self, labels: list[str], k: int = 3) -> dict[str, list[str]]:
-        """Deterministic variants from the label's words and a synonym table (no model call)."""
+        """Deterministic variants from the label's words and a synonym table (no model call), with the bare noun
+        last (as this call has always answered; the resolver's own variants never widen a label)."""
         from ...perception.variants import prompt_variants
 
-        return {label: prompt_variants(label, k) for label in labels}
+        return {label: prompt_variants(label, k, bare_noun=True) for label in labels}
 
     def plan(self, request: PlanRequest) -> PlanResult:
         t0 = time.perf_counter()
@@ -80,9 +82,24 @@ class RulesPlanner:
             if not phrase:
                 raise CannotPlan(f"{clause.text!r}: which {role}? (understood: {_describe(clause)})")
             if phrase not in scene:
+                why = request.scene.unresolved.get(phrase, "")
+                if why.startswith("several match"):
+                    n = why.rsplit(" ", 1)[-1]
+                    head, relation, anchors = split_relation(phrase)
+                    if relation:  # several of the kind, and where it is did not tell them apart
+                        raise CannotPlan(
+                            f"could not single out {phrase!r}: perception found {n} things that match {head!r} and "
+                            f"could not tell which one is {relation} {' and '.join(anchors)!r} (is that there?) "
+                            f"(understood: {understood}; found in the scene: {seen})"
+                        )
+                    raise CannotPlan(
+                        f"which {phrase!r}? perception found {n} things that match it and nothing in the instruction "
+                        f"says which one: name it by where it is or what it looks like (e.g. 'the left {phrase}', "
+                        f"'the {phrase} next to ...') (understood: {understood}; found in the scene: {seen})"
+                    )
                 raise CannotPlan(
-                    f"could not find {phrase!r} in the scene (perception found: {seen}): no single object matches "
-                    f"it, either none is there or several are and nothing says which (understood: {understood})"
+                    f"could not find {phrase!r} in the scene: perception found nothing that matches it "
+                    f"(understood: {understood}; found in the scene: {seen})"
                 )
             return phrase
 
@@ -124,6 +141,8 @@ class RulesPlanner:
                     out += pick + [_prim("place", target_label=t)]
             elif c.action == "push":
                 o = need(obj, "object", c)
+                if target:
+                    need(target, "destination", c)
                 direction, distance = self._push_geometry(c, o, target, scene)
                 out.append(_prim("push_object", keypoint_label=o, direction=direction, distance=distance))
             elif c.action in ("open", "close"):
