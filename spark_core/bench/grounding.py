@@ -163,7 +163,8 @@ def section(rows: list[dict], command: str) -> str:
             command,
             "segmenter `sim` (PRIVILEGED masks from the renderer's object ids; text grounded with "
             "all-MiniLM-L6-v2 over each object's label and description after colour-synonym "
-            "normalisation, head-noun bonus 0.08, colour-mismatch penalty 0.15, threshold 0.33, margin 0.07); "
+            "normalisation, head-noun bonus 0.08, no match where the prompt contradicts the object (colour, "
+            "shape, kind of thing, distinguishing word), threshold 0.33, margin 0.07); "
             "grounded in agentview and side together, keypoints fused from both; error against the true "
             "object centre (simulator AABB); builtin scenes at seed 0 plus a duplicates scene",
         )
