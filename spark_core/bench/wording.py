@@ -318,8 +318,12 @@ def section(rows: list[dict[str, Any]], exec_rows: list[dict[str, Any]], command
             "halves apart; the test half frozen before the parser changed, never tuned on); perception: sim segmenter "
             "(PRIVILEGED masks), the task's scene at seed 0; planning success: the plan's steps match the plan of "
             "the task's official wording in the same scene (same primitives in order, every label's keypoint within "
-            f"{100 * SAME_PLACE_M:.0f} cm, same push direction and knob sense); refusal entries: correct when no "
-            "plan comes back; execution: real trials through the trial pipeline (sim segmenter, recovery tiers "
+            f"{100 * SAME_PLACE_M:.0f} cm, or for a place on top the same support: one target's point inside the "
+            "other's seen top face and below its top (LIBERO-PRO goal-swap 'top of the drawer': its front lies under "
+            "the cabinet top; trials: the reworded cabinet-top plans meet the goal); same push direction and knob "
+            "sense); refusal entries: correct when no plan comes back (the message names what was understood, what "
+            "could not be placed and what was found); execution: real trials through the trial pipeline (sim "
+            "segmenter, recovery tiers "
             f"1-2, seeds 0-{seeds - 1}) for up to {EXEC_PER_TASK} goal-stating entries of each of "
             f"{len(EXEC_TASKS)} tasks, against the official wording of the same tasks and seeds",
         )
