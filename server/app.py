@@ -11,6 +11,7 @@ from fastapi.middleware.cors import CORSMiddleware
 from .security.guard import Guard
 from .security.redact import install_log_redaction
 from .settings import Settings
+from .validation import install_validation_handler
 
 
 def create_app(settings: Settings | None = None) -> FastAPI:
@@ -70,6 +71,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     # configured, wraps it so that refusals carry the CORS headers a listed origin needs to read them.
     app.add_middleware(Guard, settings=settings)
     install_log_redaction()
+    install_validation_handler(app)  # 422s that never echo the input (NaN, 1e400, lone surrogates: no 500)
     if settings.cors_origins:
         app.add_middleware(
             CORSMiddleware, allow_origins=list(settings.cors_origins), allow_methods=["*"], allow_headers=["*"]

@@ -16,12 +16,39 @@ from .errors import PlanError, PlanIssue
 
 MAX_PLAN_BYTES = 256 * 1024
 MAX_NESTING = 64  # YAML/JSON container depth; real plans are < 10 deep
+# Integer literals: no plan parameter needs more digits, and Python refuses to convert more than 4300 (ValueError)
+MAX_INT_DIGITS = 100
 _FENCE = re.compile(r"```[ \t]*([A-Za-z0-9_+-]*)[ \t]*\r?\n(.*?)```", re.DOTALL)
 _STANDARD_TAGS = {"tag:yaml.org,2002:" + t for t in ("str", "int", "float", "bool", "null", "map", "seq")}
 
 
 def _fail(path: str, message: str) -> PlanError:
     return PlanError([PlanIssue(path, message)])
+
+
+class _TooLarge:
+    """Stands in for an integer literal of more than MAX_INT_DIGITS digits until its path is known."""
+
+    def __init__(self, digits: int):
+        self.digits = digits
+
+
+def _int_or_too_large(literal: str) -> int | _TooLarge:
+    digits = sum(ch.isalnum() for ch in literal)
+    return _TooLarge(digits) if digits > MAX_INT_DIGITS else int(literal)
+
+
+def _refuse_too_large(data: Any, path: str = "") -> Any:
+    """Raise a PlanError at the first oversized integer, named by its path (tree.params.lift_height)."""
+    if isinstance(data, _TooLarge):
+        raise _fail(path or "text", f"number too large ({data.digits} digits; at most {MAX_INT_DIGITS})")
+    if isinstance(data, dict):
+        for k, v in data.items():
+            _refuse_too_large(v, f"{path}.{k}" if path else str(k))
+    elif isinstance(data, list):
+        for i, v in enumerate(data):
+            _refuse_too_large(v, f"{path}[{i}]")
+    return data
 
 
 class _PlanLoader(yaml.SafeLoader):
@@ -54,6 +81,15 @@ class _PlanLoader(yaml.SafeLoader):
         finally:
             if nested:
                 self._depth -= 1
+
+    def construct_yaml_int(self, node):
+        digits = sum(ch.isalnum() for ch in str(node.value))  # hex and octal too
+        if digits > MAX_INT_DIGITS:
+            return _TooLarge(digits)
+        return super().construct_yaml_int(node)
+
+
+_PlanLoader.add_constructor("tag:yaml.org,2002:int", _PlanLoader.construct_yaml_int)
 
 
 def _json_depth_ok(text: str) -> bool:
@@ -109,18 +145,18 @@ def load_text(text: str) -> Any:
         if not _json_depth_ok(body):
             raise _fail("text", f"nesting deeper than {MAX_NESTING} levels")
         try:
-            return json.loads(body)
+            return _refuse_too_large(json.loads(body, parse_int=_int_or_too_large))
         except (json.JSONDecodeError, RecursionError):
             pass  # not strict JSON: YAML flow syntax may still read it
     try:
-        return yaml.load(body, Loader=_PlanLoader)
+        return _refuse_too_large(yaml.load(body, Loader=_PlanLoader))
     except PlanError:
         raise
     except yaml.MarkedYAMLError as e:
         mark = e.problem_mark or e.context_mark
         where = f"line {mark.line + 1}, column {mark.column + 1}: " if mark else ""
         raise _fail("text", f"{where}invalid YAML/JSON: {e.problem or e.context}") from None
-    except (yaml.YAMLError, RecursionError) as e:
+    except (yaml.YAMLError, RecursionError, ValueError) as e:  # ValueError: a literal Python cannot convert
         raise _fail("text", f"invalid YAML/JSON: {e}") from None
 
 
