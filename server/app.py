@@ -35,7 +35,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         if settings.viser:
             from .viser_scene import ViserScene
 
-            scene = ViserScene("127.0.0.1", settings.viser_port)  # loopback only: browsers come through /viser
+            # loopback only: browsers come through /viser
+            scene = ViserScene("127.0.0.1", settings.viser_port, env_map=settings.viser_env_map)
         app.state.store, app.state.settings, app.state.scene, app.state.lease = store, settings, scene, lease
         from .replay import ReplayCursors
 

@@ -20,8 +20,13 @@ class Settings:
     exports_dir: str = "var/exports"  # datasets exported from the console (LeRobot), one directory + zip each
     viser: bool = True  # live 3D view of the running trial (viser on its own port)
     viser_port: int = 0  # 0 = any free port
+    # image-based lighting in the 3D view: off by default, its environment map's one-time preprocessing took ~4 s
+    # of the GPU process with software WebGL (no GPU), freezing the whole page (docs/profiles/console_latency.md)
+    viser_env_map: bool = False
     rate_per_s: float = 20.0  # mutating calls per second per client, sustained
     rate_burst: float = 40.0
+    expensive_rate_per_s: float = 8.0  # reads that build and render a scene (camera.png, preview.png), per client
+    expensive_burst: float = 30.0  # a page scrubbing its time cursor asks for a few at once
     auth_failures_max: int = 10  # wrong credentials from one client within the window, then 429 until it passes
     auth_failure_window_s: float = 60.0
     # Proxies whose X-Forwarded-For names the real client (IPs or CIDRs). None by default: the header is ignored.
@@ -47,6 +52,7 @@ class Settings:
             artifacts_dir=e.get("SPARK_ARTIFACTS_DIR", cls.artifacts_dir),
             exports_dir=e.get("SPARK_EXPORTS_DIR", cls.exports_dir),
             viser_port=int(e.get("SPARK_VISER_PORT", 0)),
+            viser_env_map=e.get("SPARK_VISER_ENV_MAP", "0") == "1",
             delete_grace_s=float(e.get("SPARK_DELETE_GRACE_S", cls.delete_grace_s)),
         )
 

@@ -21,7 +21,10 @@ from spark_core import VisualGeom
 class ViserScene:
     """One viser server per console. Updates are coalesced by viser, so a slow browser never slows a trial."""
 
-    def __init__(self, host: str = "127.0.0.1", port: int = 0, rate_hz: float = 30.0):
+    def __init__(self, host: str = "127.0.0.1", port: int = 0, rate_hz: float = 30.0, env_map: bool = False):
+        """`env_map`: viser's default image-based lighting (an HDR environment map). Off: its one-time setup in the
+        browser blocked software WebGL's GPU process for ~4 s after each page load (no GPU on this machine),
+        and every page's frames with it; the default lights alone light the scene."""
         import viser
 
         with contextlib.redirect_stdout(io.StringIO()):  # viser prints a banner; the server logs its own line
@@ -39,6 +42,8 @@ class ViserScene:
         self._targets: dict[str, Any] = {}
         self._lock = threading.Lock()
         self.ticks = 0  # pose updates drawn
+        if not env_map:
+            self.server.scene.configure_environment_map(None)
         cam = self.server.initial_camera  # in front of and above the table, looking at the workspace
         cam.position, cam.look_at = (1.7, -1.1, 1.2), (0.5, 0.0, 0.25)
         gui = self.server.gui
