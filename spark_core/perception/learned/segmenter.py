@@ -123,9 +123,12 @@ class LearnedSegmenter:
         return {i: s for i, s in scores.items() if s >= self.threshold and s >= best - self.margin}, colours
 
     # -- pixels -> instances -----------------------------------------------------------------------------------
-    def predict(self, frame: CameraFrame) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    def predict(
+        self, frame: CameraFrame
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """At network resolution (the frame shrunk by the network's factor): category index, its probability,
-        boundary probability, colour probabilities (C, h, w) and depth (m) per pixel."""
+        boundary probability, colour probabilities (C, h, w), depth (m) per pixel, and the category
+        probabilities (n_categories, h, w)."""
         import torch
 
         from .model import network_input, shrink
@@ -142,12 +145,13 @@ class LearnedSegmenter:
             with torch.no_grad():
                 x = network_input(torch.from_numpy(rgb[None]), torch.from_numpy(depth[None]))
                 cat_logits, bnd_logit, col_logits = net.split(net(x))
-                prob, cat = torch.softmax(cat_logits[0], 0).max(0)
+                probs = torch.softmax(cat_logits[0], 0)
+                prob, cat = probs.max(0)
                 bnd = torch.sigmoid(bnd_logit[0])
                 col = torch.softmax(col_logits[0], 0)
         finally:
             torch.set_num_threads(threads)
-        return cat.numpy().astype(np.int32), prob.numpy(), bnd.numpy(), col.numpy(), depth
+        return cat.numpy().astype(np.int32), prob.numpy(), bnd.numpy(), col.numpy(), depth, probs.numpy()
 
     def instances(self, frame: CameraFrame) -> list[Instance]:
         """Every object instance the network sees in this frame (cached per frame: one prompt set per frame
@@ -156,10 +160,11 @@ class LearnedSegmenter:
         key = (id(frame.rgb), frame.camera, frame.sim_time_s)
         if key in self._cache:
             return self._cache[key]
-        cat, prob, bnd, col, depth = self.predict(frame)
+        cat, prob, bnd, col, depth, probs = self.predict(frame)
         H, W = frame.shape
         factor_sq = (H / cat.shape[0]) * (W / cat.shape[1])
         split = (bnd > BOUNDARY_PROB) | _depth_edges(depth)
+        cat = _merge_confused(cat, probs, split)
         out: list[Instance] = []
         for c in np.unique(cat):
             if not CATEGORIES[c].thing:
@@ -255,6 +260,33 @@ def _protect_named(text: str) -> str:
         if f" {name} " in low:
             low = low.replace(f" {name} ", " " + name.replace(" ", _NAMED_MARK) + " ")
     return low.strip()
+
+
+CONFUSED_P = 0.15  # mean probability each of two categories gets on the other's pixels: one object, unsure which
+
+
+def _merge_confused(cat: np.ndarray, probs: np.ndarray, split: np.ndarray) -> np.ndarray:
+    """Within one object blob (connected object pixels, cut at boundaries and depth edges), two categories the
+    network hesitates between on each other's pixels (e.g. ketchup / tomato sauce bottles) are one object of the
+    category with more pixels; categories it tells apart (a block on a plate) stay separate instances."""
+    thing = np.array([c.thing for c in CATEGORIES])[cat]
+    n, comp = cv2.connectedComponents((thing & ~split).astype(np.uint8), connectivity=4)
+    if n <= 1:
+        return cat
+    comp = _grow_into(comp, thing)
+    out = cat.copy()
+    for k in range(1, n):
+        m = comp == k
+        votes = np.bincount(cat[m], minlength=probs.shape[0])
+        present = [int(c) for c in np.argsort(votes)[::-1] if votes[c] > 0]
+        if len(present) < 2:
+            continue
+        top = m & (cat == present[0])
+        for c in present[1:]:
+            other = m & (cat == c)
+            if probs[c][top].mean() > CONFUSED_P and probs[present[0]][other].mean() > CONFUSED_P:
+                out[other] = present[0]
+    return out
 
 
 def _drop_fragments(instances: list[Instance]) -> list[Instance]:
