@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import hashlib
 import hmac
-from urllib.parse import parse_qsl, urlencode
+from urllib.parse import parse_qsl, quote, urlencode
 
 from starlette.datastructures import Headers
 from starlette.requests import cookie_parser
@@ -26,8 +26,9 @@ def presented(headers: Headers) -> bool:
 def valid(headers: Headers, token: str | None) -> bool:
     if not token:
         return False
-    bearer = headers.get("authorization", "")
-    if bearer.startswith("Bearer ") and hmac.compare_digest(bearer[7:].encode(), token.encode()):
+    scheme, _, presented_token = headers.get("authorization", "").partition(" ")
+    # auth schemes are case-insensitive (RFC 7235 section 2.1): "bearer" is "Bearer"
+    if scheme.lower() == "bearer" and hmac.compare_digest(presented_token.strip().encode(), token.encode()):
         return True
     cookie = cookie_parser(headers.get("cookie", "")).get(COOKIE, "")
     return hmac.compare_digest(cookie.encode(), session_value(token).encode())
@@ -41,9 +42,12 @@ def login_token(query_string: bytes) -> str | None:
 
 
 def clean_location(path: str, query_string: bytes) -> str:
-    """The same page without the token: a path on this server only (never `//host`, so no open redirect)."""
+    """The same page without the token: a path on this server only. Leading slashes and backslashes go (browsers
+    read `//host` and `/\\host` alike as another host), and the path is percent-quoted, so the Location can
+    never name a scheme or a host: no open redirect."""
     rest = [(k, v) for k, v in parse_qsl(query_string.decode("latin-1"), keep_blank_values=True) if k != LOGIN_PARAM]
-    return "/" + path.lstrip("/") + (f"?{urlencode(rest)}" if rest else "")
+    local = quote(path.lstrip("/\\").replace("\\", "/"), safe="/-._~!$&'()*+,;=:@%")
+    return "/" + local.lstrip("/") + (f"?{urlencode(rest)}" if rest else "")
 
 
 def session_cookie(token: str, secure: bool) -> str:

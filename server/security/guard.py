@@ -2,15 +2,20 @@
 
 1. `GET /page?token=T` (the UI login): a session cookie and a redirect to the same page without the token;
 2. websockets and mutating requests: same origin (origin.py), then credentials where they are needed (beyond
-   loopback, or whenever SPARK_API_TOKEN is set), with failed attempts limited per client (429);
-3. mutating requests: the per-client rate limit, JSON bodies only (415);
+   loopback, or whenever SPARK_API_TOKEN is set), with wrong credentials limited per client (429);
+   reads of /api/* (but /api/health) and /viser/: the same credentials where they are needed (a browser sends
+   its session cookie; the page and its scripts stay public, they hold no data);
+3. mutating requests: the per-client rate limit, JSON bodies only (415); reads that build or render a scene
+   (EXPENSIVE_READS): a rate limit of their own;
 4. every request: the body limit, counted as the bytes arrive (chunked bodies included; 413).
 """
 
 from __future__ import annotations
 
+import hmac
 import json
 import math
+import re
 
 from starlette.datastructures import Headers
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
@@ -22,6 +27,13 @@ from .limits import FailureLimiter, TokenBucket
 from .origin import json_content_type, origin_allowed
 
 MUTATING = {"POST", "PUT", "PATCH", "DELETE"}
+PUBLIC_READS = {"/api/health"}  # liveness probes need no token, and it says nothing
+# GETs that cost seconds of CPU (a MuJoCo/robosuite scene built and rendered, or one store read per trial)
+EXPENSIVE_READS = re.compile(r"^/api/(trials/[^/]+/camera\.png|tasks/[^/]+/preview\.png|batches/[^/]+/timing)$")
+
+
+def _guarded_read(path: str) -> bool:
+    return (path.startswith("/api/") and path not in PUBLIC_READS) or path == "/viser" or path.startswith("/viser/")
 
 
 class Refusal(Exception):
@@ -36,6 +48,7 @@ class Guard:
         self.trusted = parse_networks(settings.trusted_proxies)
         self.failures = FailureLimiter(settings.auth_failures_max, settings.auth_failure_window_s)
         self.bucket = TokenBucket(settings.rate_per_s, settings.rate_burst)
+        self.expensive = TokenBucket(settings.expensive_rate_per_s, settings.expensive_burst)
         # Beyond loopback every mutating call and websocket needs credentials; on loopback only once a token is set.
         self.auth_needed = bool(settings.api_token) or not settings.loopback
 
@@ -45,13 +58,18 @@ class Guard:
             return
         headers = Headers(scope=scope)
         try:
-            if scope["type"] == "http" and scope["method"] in ("GET", "HEAD") and not scope["path"].startswith("/api/"):
+            page = (
+                scope["type"] == "http" and scope["method"] in ("GET", "HEAD") and not scope["path"].startswith("/api/")
+            )
+            if page and self.settings.api_token:  # without a token there is no login (and nothing to redirect)
                 token = credentials.login_token(scope["query_string"])
                 if token is not None:
                     await self._login(scope, send, token)
                     return
             if scope["type"] == "websocket" or scope["method"] in MUTATING:
                 self._check_caller(scope, headers)
+            elif _guarded_read(scope["path"]):
+                self._check_reader(scope, headers)
             if scope["type"] == "http":
                 receive = await self._bounded_body(scope, headers, receive)
         except Refusal as r:
@@ -76,16 +94,7 @@ class Guard:
                 f"cross-origin request refused: Origin {headers.get('origin')!r} is not this console "
                 "(list trusted origins in SPARK_CORS_ORIGINS)",
             )
-        client = client_address(scope, self.trusted)
-        if self.auth_needed:
-            self._blocked(client)
-            if not credentials.valid(headers, self.settings.api_token):
-                self.failures.fail(client)
-                raise Refusal(
-                    401,
-                    "authentication required: send Authorization: Bearer <SPARK_API_TOKEN> "
-                    "(browsers: open the console once as /?token=<SPARK_API_TOKEN>)",
-                )
+        client = self._authenticate(scope, headers)
         if scope["type"] == "http" and not self.bucket.allow(client):
             raise Refusal(
                 429,
@@ -95,17 +104,44 @@ class Guard:
         if scope["type"] == "http" and _has_body(headers) and not json_content_type(headers):
             raise Refusal(415, "send the request body as JSON (Content-Type: application/json)")
 
+    def _check_reader(self, scope: Scope, headers: Headers) -> None:
+        client = self._authenticate(scope, headers)
+        if EXPENSIVE_READS.match(scope["path"]) and not self.expensive.allow(client):
+            raise Refusal(
+                429,
+                f"too many scene renders: at most {self.settings.expensive_rate_per_s:g}/s (bursts of "
+                f"{self.settings.expensive_burst:g}) camera, preview and timing reads per client",
+                [(b"retry-after", b"1")],
+            )
+
+    def _authenticate(self, scope: Scope, headers: Headers) -> str:
+        """The client's key; raises 401 where credentials are needed and missing or wrong. Only wrong ones count
+        as failed attempts: a page opened without its login, or a websocket reconnecting, presents none, and
+        must not lock the operator out of a shared loopback address."""
+        client = client_address(scope, self.trusted)
+        if self.auth_needed:
+            self._blocked(client)
+            if not credentials.valid(headers, self.settings.api_token):
+                if credentials.presented(headers):
+                    self.failures.fail(client)
+                raise Refusal(
+                    401,
+                    "authentication required: send Authorization: Bearer <SPARK_API_TOKEN> "
+                    "(browsers: open the console once as /?token=<SPARK_API_TOKEN>)",
+                )
+        return client
+
     async def _login(self, scope: Scope, send: Send, token: str) -> None:
         """Exchange the URL's token for a session cookie once; the redirect drops the token from the address bar."""
         location = credentials.clean_location(scope["path"], scope["query_string"])
-        extra: list[tuple[bytes, bytes]] = []
-        if self.settings.api_token:
-            client = client_address(scope, self.trusted)
-            self._blocked(client)
-            if token != self.settings.api_token:
-                self.failures.fail(client)
-                raise Refusal(401, "wrong token: open the console as /?token=<SPARK_API_TOKEN>")
-            extra.append((b"set-cookie", credentials.session_cookie(token, scope.get("scheme") == "https").encode()))
+        api_token = self.settings.api_token or ""
+        client = client_address(scope, self.trusted)
+        self._blocked(client)
+        if not hmac.compare_digest(token.encode(), api_token.encode()):
+            self.failures.fail(client)
+            raise Refusal(401, "wrong token: open the console as /?token=<SPARK_API_TOKEN>")
+        cookie = credentials.session_cookie(api_token, scope.get("scheme") == "https")
+        extra = [(b"set-cookie", cookie.encode())]
         await send(
             {
                 "type": "http.response.start",
