@@ -27,8 +27,6 @@ class Settings:
     rate_burst: float = 40.0
     expensive_rate_per_s: float = 8.0  # reads that build and render a scene (camera.png, preview.png), per client
     expensive_burst: float = 30.0  # a page scrubbing its time cursor asks for a few at once
-    expensive_rate_per_s: float = 8.0  # reads that build and render a scene (camera.png, preview.png), per client
-    expensive_burst: float = 30.0  # a page scrubbing its time cursor asks for a few at once
     auth_failures_max: int = 10  # wrong credentials from one client within the window, then 429 until it passes
     auth_failure_window_s: float = 60.0
     # Proxies whose X-Forwarded-For names the real client (IPs or CIDRs). None by default: the header is ignored.
