@@ -92,12 +92,16 @@ class Executor:
         self.trial_id = trial_id or self.bus.trial_id
         self.records: dict[str, NodeRecord] = {}
         self._lock = threading.Lock()
+        self._last_started = ""  # the primitive an abort interrupts (named in the aborted failure)
 
     # -- public ------------------------------------------------------------------------------------------------
     def run(self, plan: Plan) -> TrialResult:
         t_start = self.bus.now()
         replans = 0
         outcome, failure, sim_s = "success", None, 0.0
+        monitors = getattr(getattr(self.actuator, "world", None), "monitors", None)
+        if isinstance(monitors, list):  # a simulated world calls its monitors every control period (10 ms sim)
+            monitors.append(self._abort_within_a_tick)
         try:
             prefix = ""
             while True:
@@ -114,6 +118,8 @@ class Executor:
                 if new_plan is None:
                     break
                 plan, prefix = new_plan, f"replan[{replans}]."
+            # An abort the primitive could not see (a world without monitors) still never ends as a success.
+            self.control.check_abort(self._last_started or "tree")
             if failure is None and self.success_check is not None and not self.success_check():
                 failure = Failure(
                     FailureKind.PLANNER, "tree", "every node succeeded but the task's success predicate is false"
@@ -126,6 +132,8 @@ class Executor:
                 if rec.status in (NodeStatus.PENDING, NodeStatus.RUNNING):
                     rec.status = NodeStatus.ABORTED.value
         finally:
+            if isinstance(monitors, list) and self._abort_within_a_tick in monitors:
+                monitors.remove(self._abort_within_a_tick)
             self.bus.close()
         return TrialResult(
             trial_id=self.trial_id,
@@ -224,6 +232,7 @@ class Executor:
         arm = BOTH_ARMS if spec.uses_both_arms else (arm or self.actuator.arms[0])
         self.control.checkpoint(path, lambda p, why: self.bus.publish(p, EventKind.PAUSED, reason=why))
         rec = self._begin(path, primitive=call.primitive, arm=arm)
+        self._last_started = path
         embodiment_error = self._embodiment_error(arm)
         if embodiment_error:
             failure = Failure(FailureKind.PLANNER, path, embodiment_error)
@@ -259,6 +268,11 @@ class Executor:
             )
             rec.sim_time_s += self._recover(tier, call, arm, keypoints, reanchor)
             self.control.check_abort(path)
+
+    def _abort_within_a_tick(self, _world: object) -> None:
+        """World monitor: an abort stops the running motion at the next control period, not at the next node."""
+        if self.control.aborted:
+            raise Aborted(self._last_started or "tree")
 
     def _embodiment_error(self, arm: str) -> str:
         arms = tuple(self.actuator.arms)
