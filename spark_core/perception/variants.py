@@ -121,10 +121,10 @@ SIZES = frozenset(
 )
 
 
-def prompt_variants(label: str, k: int = 3, bare_noun: bool = False) -> list[str]:
+def prompt_variants(label: str, k: int = 3) -> list[str]:
     """`k` alternative prompts for `label` (never the label itself), e.g. red block -> red cube, red wooden block.
-    `bare_noun` adds "the <noun>" as a last resort: a widening perception's resolver never asks for (it found the
-    green area for "blue area"); only the rules planner's prompt-variant call still offers it."""
+    Never the bare noun ("the area"): a variant that widens the label finds another object (the green area for
+    "blue area")."""
     words = label.split()
     out: list[str] = []
     for i in range(len(words) - 1, -1, -1):
@@ -132,6 +132,4 @@ def prompt_variants(label: str, k: int = 3, bare_noun: bool = False) -> list[str
             cand = " ".join(words[:i] + [syn] + words[i + 1 :])
             if cand != label and cand not in out:
                 out.append(cand)
-    if bare_noun and len(words) > 1 and f"the {words[-1]}" not in out:
-        out.append(f"the {words[-1]}")
     return out[:k]

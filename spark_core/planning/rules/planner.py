@@ -32,11 +32,11 @@ class RulesPlanner:
     name = "rules"
 
     def prompt_variants(self, labels: list[str], k: int = 3) -> dict[str, list[str]]:
-        """Deterministic variants from the label's words and a synonym table (no model call), with the bare noun
-        last (as this call has always answered; the resolver's own variants never widen a label)."""
+        """Deterministic variants from the label's words and a synonym table (no model call): the resolver's own,
+        which never widen a label."""
         from ...perception.variants import prompt_variants
 
-        return {label: prompt_variants(label, k, bare_noun=True) for label in labels}
+        return {label: prompt_variants(label, k) for label in labels}
 
     def plan(self, request: PlanRequest) -> PlanResult:
         t0 = time.perf_counter()
