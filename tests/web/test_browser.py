@@ -234,6 +234,30 @@ def test_workspace_steps_breakpoints_then_scrubs_tree_camera_and_3d_together(ser
             break
         time.sleep(0.05)
     assert moved > 0.01, "the 3D view did not follow the playing replay"
+    # a legend names every colour; the event table filters by kind and by text
+    legend = page.locator("#legend").inner_text()
+    assert all(s in legend for s in ("pending", "running", "succeeded", "failed", "aborted", "paused", "breakpoint"))
+    n_events = page.locator("#event-table tbody tr").count()
+    page.select_option("select[name=event-kind]", "succeeded")
+    kinds = page.eval_on_selector_all("#event-table tbody tr", "rs => rs.map(r => r.dataset.kind)")
+    assert kinds and set(kinds) == {"succeeded"} and len(kinds) < n_events
+    page.select_option("select[name=event-kind]", "")
+    page.fill("input[name=event-filter]", "tree.children[2]")
+    nodes = page.eval_on_selector_all("#event-table tbody tr", "rs => rs.map(r => r.cells[3].innerText)")
+    assert nodes and set(nodes) == {"tree.children[2]"}
+    page.fill("input[name=event-filter]", "")
+    # the tree collapses; the panes resize by their handles
+    page.click("#tree .twisty")
+    assert page.locator("#tree .node[data-path='tree.children[0]']").count() == 0
+    page.click("#tree .twisty")
+    assert page.locator("#tree .node[data-path='tree.children[0]']").count() == 1
+    width = page.locator("#tree-pane").bounding_box()["width"]
+    handle = page.locator(".panes > .handle").first.bounding_box()
+    page.mouse.move(handle["x"] + handle["width"] / 2, handle["y"] + 100)
+    page.mouse.down()
+    page.mouse.move(handle["x"] + 150, handle["y"] + 100, steps=5)
+    page.mouse.up()
+    assert page.locator("#tree-pane").bounding_box()["width"] > width + 100
     # leaving the page closes its event stream
     page.goto(server + "/#/history")
     page.wait_for_selector("#rows table")
@@ -251,6 +275,13 @@ def test_abort_shows_aborted_everywhere(server, page):
     page.wait_for_url("**/#/trial/stack_three-*")
     tid = page.url.split("/trial/")[1]
     page.wait_for_selector("#tree .node.running[data-path='tree.children[0]']", timeout=120_000)
+    # pause works at this pace too (before the next node), then resume; abort while that node runs
+    page.click("#pause")
+    page.wait_for_selector("#tree .node.paused[data-path='tree.children[1]']", timeout=60_000)
+    assert page.locator("#status").inner_text() == "paused" and page.is_enabled("#step")
+    page.click("#resume")
+    page.wait_for_selector("#tree .node.running[data-path='tree.children[1]']", timeout=60_000)
+    assert page.locator("#status").inner_text() == "running"
     page.click("#abort")
     page.wait_for_selector("#verdict[data-verdict=aborted]", timeout=60_000)
     assert page.locator("#status").inner_text() == "done"
@@ -347,6 +378,54 @@ def test_batch_is_found_again_from_the_batch_list(server, page):
     assert text.startswith("task,done,total,successes") and "lift_block,2,2,2" in text
     page.click("#batch-trials a[href^='#/trial/']")
     page.wait_for_selector("#verdict")
+
+
+def test_a_cancelled_batch_shows_aborted_on_its_page_its_trials_and_the_batch_list(server, page):
+    """Cancel only while running; the trials it stopped say aborted on the batch page (which keeps polling
+    until each has settled), on their own page (header, tree) and the batch list says cancelled."""
+    page.goto(server + "/")
+    page.wait_for_selector("#new-batch select[name=tasks]")
+    page.select_option("#new-batch select[name=tasks]", ["stack_three"])
+    page.fill("#new-batch input[name=trials]", "6")
+    page.select_option("#new-batch select[name=segmenter]", "privileged-keypoints")
+    page.click("#new-batch button[type=submit]")
+    page.wait_for_url("**/#/batch/batch-*")
+    batch_id = page.url.split("/batch/")[1]
+    page.wait_for_selector("#batch-cancel:enabled")  # running: cancel can act
+    page.click("#batch-cancel")
+    page.wait_for_selector("#batch-count:has-text('cancelled')")
+    assert not page.is_enabled("#batch-cancel")
+    page.wait_for_function(  # every trial settles with a verdict, without reloading the page
+        "() => { const rs = [...document.querySelectorAll('#batch-trials tbody tr')];"
+        " return rs.length === 6 && rs.every(r => r.querySelector('[data-verdict]')); }",
+        timeout=120_000,
+    )
+    aborted = page.locator("#batch-trials tbody tr:has([data-verdict=aborted])")
+    assert aborted.count() >= 1
+    tid = aborted.first.get_attribute("data-id")
+    page.click("a[href='#/batches']")
+    assert "cancelled" in page.locator(f"#batch-list tr[data-id='{batch_id}']").inner_text()
+    page.goto(f"{server}/#/trial/{tid}")
+    page.wait_for_selector("#verdict[data-verdict=aborted]")
+    assert "Aborted" in page.locator("#explanation").inner_text()
+    assert page.locator("#tree .node.running, #tree .node.paused").count() == 0
+    assert f"#/batch/{batch_id}" in page.locator(".trial-header").inner_html()
+
+
+def test_planner_fields_follow_the_chosen_planner(server, page):
+    """An LLM planner asks for its model (its default as placeholder) and one of the operator's endpoints; an
+    offline one asks for neither; the batch form offers the same planners."""
+    page.goto(server + "/")
+    page.click("button[data-task=lift_block]")
+    planners = page.eval_on_selector_all("#new-trial select[name=planner] option", "os => os.map(o => o.value)")
+    assert {"reference", "rules", "openai"} <= set(planners)
+    page.select_option("#new-trial select[name=planner]", "rules")
+    assert page.locator("#new-trial input[name=model]").count() == 0
+    page.select_option("#new-trial select[name=planner]", "openai")
+    assert page.locator("#new-trial input[name=model]").get_attribute("placeholder")
+    assert page.locator("#new-trial select[name=endpoint] option").first.inner_text() == "vendor default"
+    batch = page.eval_on_selector_all("#new-batch select[name=planner] option", "os => os.map(o => o.value)")
+    assert batch == planners
 
 
 def _rows_once_sorted(page, cells_js: str, timeout_s: float = 15.0) -> list:

@@ -40,7 +40,9 @@ export function CameraPanel({ trialId, groundings, artifacts, simCursor, replaya
         </div>
       )}
       <div id="grounding-now" data-t={tNow ?? ""} data-indices={current.map((x) => x.i).join(",")}>
-        {current.length === 0 && <p className="muted">no grounding yet at this time</p>}
+        {current.length === 0 && (
+          <p className="muted">{groundings.length ? "no grounding yet at this time" : "no grounding recorded (this segmenter uses no camera, or nothing was resolved yet)"}</p>
+        )}
         {current.map(({ g, i }) => (
           <GroundingView key={i} g={g} i={i} images={images.get(i) ?? []} url={url} />
         ))}

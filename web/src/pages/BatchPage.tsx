@@ -16,6 +16,7 @@ export function BatchPage({ id }: { id: string }) {
   const [error, setError] = useState("");
   const [timing, setTiming] = useState<TimingRow[]>([]);
   const [phases, setPhases] = useState<PhaseRow[]>([]);
+  const [reload, setReload] = useState(0); // bumped by Cancel: poll again until its trials have settled
   useEffect(() => {
     let alive = true;
     let timer = 0;
@@ -26,12 +27,14 @@ export function BatchPage({ id }: { id: string }) {
         setB(x);
         const t = await api<{ rows: TimingRow[]; phases: PhaseRow[] }>(`/api/batches/${encodeURIComponent(id)}/timing`);
         if (alive) { setTiming(t.rows); setPhases(t.phases); }
-        if (x.status === "running") timer = window.setTimeout(load, 1000);
+        // a cancelled batch's running trials are still being aborted: keep polling until each has its verdict
+        const unsettled = x.trials.some((t) => t.status === "queued" || t.status === "running");
+        if (x.status === "running" || unsettled) timer = window.setTimeout(load, 1000);
       } catch (e) { if (alive) setError((e as Error).message); }
     };
     load();
     return () => { alive = false; clearTimeout(timer); };
-  }, [id]);
+  }, [id, reload]);
   if (error && !b) return <section className="fail">{error}</section>;
   if (!b) return <section>loading…</section>;
   const running = b.status === "running";
@@ -42,7 +45,7 @@ export function BatchPage({ id }: { id: string }) {
         <p id="batch-settings">{settingsOf(b.spec)} · created {b.created_at?.slice(0, 19)}</p>
         <progress id="batch-progress" max={Math.max(1, b.progress.total)} value={b.progress.done} />
         <span id="batch-count"> {b.progress.done} / {b.progress.total} · {b.status}</span>{" "}
-        <button id="batch-cancel" disabled={!running} onClick={() => post(`/api/batches/${encodeURIComponent(id)}/cancel`).then(() => api<Batch>(`/api/batches/${encodeURIComponent(id)}`).then(setB)).catch((e) => setError(e.message))}>Cancel</button>
+        <button id="batch-cancel" disabled={!running} onClick={() => post(`/api/batches/${encodeURIComponent(id)}/cancel`).then(() => setReload((n) => n + 1)).catch((e) => setError(e.message))}>Cancel</button>
         <a id="batch-results-csv" href={`/api/batches/${id}/results.csv`}>results (CSV)</a>{" "}
         <a id="batch-trials-csv" href={`/api/batches/${id}/trials.csv`}>trials (CSV)</a>{" "}
         <ExportButton body={{ batch: id }} disabled={successes === 0} label="Export successes (LeRobot)" />
