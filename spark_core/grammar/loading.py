@@ -51,6 +51,16 @@ def _refuse_too_large(data: Any, path: str = "") -> Any:
     return data
 
 
+def _unique_keys(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    """json.loads keeps the last of repeated keys silently; a plan must not say two things at once."""
+    out: dict[str, Any] = {}
+    for key, value in pairs:
+        if key in out:
+            raise _fail("text", f"duplicate key {key!r}")
+        out[key] = value
+    return out
+
+
 class _PlanLoader(yaml.SafeLoader):
     """SafeLoader that refuses aliases, non-standard tags and deep nesting at compose time."""
 
@@ -81,6 +91,16 @@ class _PlanLoader(yaml.SafeLoader):
         finally:
             if nested:
                 self._depth -= 1
+
+    def construct_mapping(self, node, deep=False):
+        seen: set = set()
+        for key_node, _value in node.value:
+            key = self.construct_object(key_node, deep=True)
+            if isinstance(key, (str, int, float, bool)) or key is None:
+                if key in seen:  # YAML keeps the last silently: a plan must not say two things at once
+                    raise _fail("text", f"line {key_node.start_mark.line + 1}: duplicate key {key!r}")
+                seen.add(key)
+        return super().construct_mapping(node, deep=deep)
 
     def construct_yaml_int(self, node):
         digits = sum(ch.isalnum() for ch in str(node.value))  # hex and octal too
@@ -145,7 +165,7 @@ def load_text(text: str) -> Any:
         if not _json_depth_ok(body):
             raise _fail("text", f"nesting deeper than {MAX_NESTING} levels")
         try:
-            return _refuse_too_large(json.loads(body, parse_int=_int_or_too_large))
+            return _refuse_too_large(json.loads(body, parse_int=_int_or_too_large, object_pairs_hook=_unique_keys))
         except (json.JSONDecodeError, RecursionError):
             pass  # not strict JSON: YAML flow syntax may still read it
     try:
