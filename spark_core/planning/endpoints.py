@@ -76,6 +76,8 @@ def resolve_endpoint(name: str, planner: str, model: str | None) -> Endpoint:
         raise ValueError(f"endpoint: unknown endpoint {name!r}; configured: {known}")
     if ep.planner != planner:
         raise ValueError(f"endpoint: {name!r} serves the {ep.planner} planner, not {planner!r}")
+    if ep.models and model is None:  # the planner's default model is not one the operator allowed here
+        raise ValueError(f"model: endpoint {name!r} serves only {', '.join(ep.models)}: name one of them")
     if ep.models and model is not None and model not in ep.models:
         raise ValueError(f"model: endpoint {name!r} serves {', '.join(ep.models)}, not {model!r}")
     return ep
