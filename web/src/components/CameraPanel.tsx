@@ -24,6 +24,17 @@ export function CameraPanel({ trialId, groundings, artifacts, simCursor, replaya
 
   return (
     <div className="camera" id="camera-panel" data-groundings={done.length}>
+      <div id="grounding-now" data-t={tNow ?? ""} data-indices={current.map((x) => x.i).join(",")}>
+        {current.length === 0 && (
+          <p className="muted">{groundings.length ? "no grounding yet at this time" : "no grounding recorded (this segmenter uses no camera, or nothing was resolved yet)"}</p>
+        )}
+        {current.map(({ g, i }) => (
+          <GroundingView key={i} g={g} i={i} images={images.get(i) ?? []} url={url} />
+        ))}
+        {current.length > 0 && images.size === 0 && lastFrame.length > 0 && (
+          <LastFrameImages artifacts={lastFrame} groundings={groundings} simCursor={simCursor} url={url} />
+        )}
+      </div>
       {replayable && (
         <div id="camera-at-cursor">
           {(cameras.length ? cameras : [""]).map((cam) => {
@@ -39,17 +50,6 @@ export function CameraPanel({ trialId, groundings, artifacts, simCursor, replaya
           })}
         </div>
       )}
-      <div id="grounding-now" data-t={tNow ?? ""} data-indices={current.map((x) => x.i).join(",")}>
-        {current.length === 0 && (
-          <p className="muted">{groundings.length ? "no grounding yet at this time" : "no grounding recorded (this segmenter uses no camera, or nothing was resolved yet)"}</p>
-        )}
-        {current.map(({ g, i }) => (
-          <GroundingView key={i} g={g} i={i} images={images.get(i) ?? []} url={url} />
-        ))}
-        {current.length > 0 && images.size === 0 && lastFrame.length > 0 && (
-          <LastFrameImages artifacts={lastFrame} groundings={groundings} simCursor={simCursor} url={url} />
-        )}
-      </div>
       {earlier.length > 0 && (
         <div id="groundings">
           <h5>earlier groundings</h5>
