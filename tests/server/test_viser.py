@@ -132,3 +132,23 @@ def test_a_robosuite_replay_draws_bodies_in_the_world_frame_of_the_keypoints():
     _play(view, "k", "t", world, [(0.0, world.data.qpos.copy())], {}, 1.0)
     assert np.allclose(view.xpos[base][:2], 0.0, atol=1e-6)  # our origin is under robot0's base
     assert np.allclose(view.xpos[cube], cube_in_world, atol=1e-4)
+
+
+def test_the_environment_map_is_off_unless_asked_for(monkeypatch):
+    """Its one-time setup in a software-WebGL browser stalled every frame of the page for ~4 s
+    (docs/profiles/console_latency.md): off by default, SPARK_VISER_ENV_MAP=1 keeps viser's own."""
+    from viser._scene_api import SceneApi
+
+    calls = []
+    real = SceneApi.configure_environment_map
+    monkeypatch.setattr(
+        SceneApi, "configure_environment_map", lambda self, *a, **k: (calls.append(a), real(self, *a, **k))
+    )
+    for env_map in (False, True):
+        scene = ViserScene(env_map=env_map)
+        scene.stop()
+    assert calls == [(None,)]
+    monkeypatch.setenv("SPARK_VISER_ENV_MAP", "1")
+    assert Settings.from_env().viser_env_map
+    monkeypatch.delenv("SPARK_VISER_ENV_MAP")
+    assert not Settings.from_env().viser_env_map
