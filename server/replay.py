@@ -199,6 +199,13 @@ class ReplayCursors:
         self._open[trial_id] = r
         return r
 
+    def forget(self, trial_id: str) -> None:
+        """Drop a deleted or purged trial's built world: it must not be served from here any more."""
+        with self._lock:
+            r = self._open.pop(trial_id, None)
+            if r is not None:
+                r["world"].close()
+
     def close(self) -> None:
         with self._lock:
             for r in self._open.values():

@@ -4,6 +4,7 @@ progress, result table (JSON or CSV), per-trial export, cancel."""
 from __future__ import annotations
 
 import uuid
+from collections import Counter
 from typing import Annotated
 
 from fastapi import APIRouter, HTTPException, Path, Query, Request
@@ -70,6 +71,14 @@ def create_batch(body: BatchCreate, request: Request) -> dict:
         raise HTTPException(422, f"{n} trials is more than one batch may hold ({MAX_BATCH})")
     if body.specs is not None and not body.specs:
         raise HTTPException(422, "specs is empty: give at least one trial, or leave it out to run the suite")
+    if body.tasks is not None and not body.tasks:
+        raise HTTPException(422, f"tasks is empty: no tasks selected; omit `tasks` to run the whole {body.suite} suite")
+    if body.tasks is not None:
+        repeated = [t for t, c in Counter(body.tasks).items() if c > 1]
+        if repeated:
+            raise HTTPException(
+                422, f"tasks: {', '.join(repeated[:10])} listed more than once (use `trials` for several seeds)"
+            )
     if body.seed + body.trials - 1 > MAX_SEED:
         raise HTTPException(422, f"seed: seeds {body.seed}..{body.seed + body.trials - 1} go past {MAX_SEED}")
     if body.specs is None and body.tasks is not None:
@@ -77,6 +86,17 @@ def create_batch(body: BatchCreate, request: Request) -> dict:
         if unknown:
             raise HTTPException(
                 422, f"unknown task(s) {', '.join(unknown[:10])}; {body.suite} tasks: {', '.join(suites[body.suite])}"
+            )
+    if body.specs is not None:  # a batch is recorded under its suite: every spec's known task must belong to it
+        known = {t for tasks in suites.values() for t in tasks}  # unknown ones: trial_config names them below
+        outside = [
+            f"specs[{i}]: {sp.task!r}"
+            for i, sp in enumerate(body.specs)
+            if sp.task in known and sp.task not in suites[body.suite]
+        ]
+        if outside:
+            raise HTTPException(
+                422, f"{'; '.join(outside[:10])} not in suite {body.suite!r} (set `suite` to the tasks' suite)"
             )
     batch_id = f"batch-{uuid.uuid4().hex[:10]}"
     if body.specs is not None:
@@ -122,7 +142,7 @@ def create_batch(body: BatchCreate, request: Request) -> dict:
     store, runner = request.app.state.store, request.app.state.runner
     # code, packages, task files, seeds, settings, and the plan library the workers give LLM planners
     manifest = batch_manifest(body.suite, configs, batch_id, StorePlanLibrary(store))
-    store.create_batch(batch_id, {**body.model_dump(), "manifest": manifest})
+    store.create_batch(batch_id, {**body.model_dump(), "manifest": manifest, "trial_count": len(configs)})
     for n, config in enumerate(configs):
         runner.submit(f"{batch_id}-{n:04d}-{config.task}-{config.seed}", config)
     return {"id": batch_id, "trials": len(configs), "manifest_id": manifest["id"]}
@@ -180,12 +200,28 @@ def batch_results_csv(batch_id: BatchId, request: Request) -> PlainTextResponse:
             "success_rate": r["success_rate"],
             "ci95_low": r["ci95"][0],
             "ci95_high": r["ci95"][1],
+            "judged": r["judged"],
+            "not_judged": r["not_judged"],
+            "deleted": r["deleted"],
         }
         for r in b["results"]
     ]
-    return _csv(
-        rows, ("task", "done", "total", "successes", "success_rate", "ci95_low", "ci95_high"), f"{batch_id}-results.csv"
-    )
+    return _csv(rows, RESULT_COLUMNS, f"{batch_id}-results.csv")
+
+
+# success_rate and its interval are over `judged` trials; `not_judged` (aborted, interrupted) and `deleted` beside
+RESULT_COLUMNS = (
+    "task",
+    "done",
+    "total",
+    "successes",
+    "success_rate",
+    "ci95_low",
+    "ci95_high",
+    "judged",
+    "not_judged",
+    "deleted",
+)
 
 
 @router.get("/{batch_id}/trials.csv", response_class=PlainTextResponse)
@@ -208,29 +244,47 @@ def _csv(rows: list[dict], columns: tuple[str, ...], filename: str) -> PlainText
     )
 
 
+# Trials that never got a fair attempt (cancelled, aborted by the operator, cut off by a server stop): reported
+# per task as `not_judged`, never counted as failures in the success rate or its interval.
+NOT_JUDGED = ("aborted", "interrupted")
+
+
 def _batch_with_results(request: Request, batch_id: str) -> dict:
     batch = request.app.state.store.get_batch(batch_id)
     if batch is None:
         raise HTTPException(404, f"no batch {batch_id!r}")
-    trials = batch["trials"]
-    done = [t for t in trials if t["status"] in ("done", "interrupted")]
+    deleted = batch.pop("deleted_trials", [])
+    # Deleted members still count: deleting a failure must not rewrite a benchmark's result.
+    members = batch["trials"] + deleted
+    expected = int(batch["spec"].get("trial_count") or len(members))
+    finished = [t for t in members if t["status"] in ("done", "interrupted")]
     table = []
-    for task in dict.fromkeys(t["task"] for t in trials):
-        rs = [t for t in done if t["task"] == task]
-        k = sum(bool(t["success"]) for t in rs)
-        lo, hi = wilson(k, len(rs))
+    for task in dict.fromkeys(t["task"] for t in sorted(members, key=lambda t: (t["task"], t["seed"]))):
+        rs = [t for t in finished if t["task"] == task]
+        judged = [t for t in rs if t.get("verdict") not in NOT_JUDGED]
+        k = sum(bool(t["success"]) for t in judged)
+        lo, hi = wilson(k, len(judged))
         table.append(
             {
                 "task": task,
                 "done": len(rs),
-                "total": sum(t["task"] == task for t in trials),
+                "total": sum(t["task"] == task for t in members),
+                "judged": len(judged),
+                "not_judged": len(rs) - len(judged),
+                "deleted": sum(t["task"] == task for t in deleted),
                 "successes": k,
-                "success_rate": k / len(rs) if rs else None,
+                "success_rate": k / len(judged) if judged else None,
                 "ci95": [lo, hi],
             }
         )
-    status = batch["status"] if batch["status"] == "cancelled" or len(done) < len(trials) else "done"
-    return {**batch, "status": status, "progress": {"done": len(done), "total": len(trials)}, "results": table}
+    status = batch["status"] if batch["status"] == "cancelled" or len(finished) < len(members) else "done"
+    progress = {
+        "done": len(finished),
+        "total": len(members),
+        "deleted": len(deleted),
+        "purged": max(0, expected - len(members)),  # gone for good: the results no longer hold them
+    }
+    return {**batch, "status": status, "progress": progress, "results": table}
 
 
 @router.post("/{batch_id}/cancel")
@@ -239,7 +293,14 @@ def cancel_batch(batch_id: BatchId, request: Request) -> dict:
     batch = store.get_batch(batch_id)
     if batch is None:
         raise HTTPException(404, f"no batch {batch_id!r}")
-    cancelled = sum(runner.cancel(t["id"]) for t in batch["trials"] if t["status"] in ("queued", "running"))
+    if batch["status"] == "cancelled":
+        raise HTTPException(409, f"batch {batch_id!r} is already cancelled")
+    pending = [t for t in batch["trials"] if t["status"] in ("queued", "running")]
+    if not pending:
+        raise HTTPException(409, f"batch {batch_id!r} has already finished: nothing to cancel")
+    live = runner.live
+    # count only trials this call stops: one whose control was already aborted (cancelled before) is not new
+    cancelled = sum(runner.cancel(t["id"]) for t in pending if not (t["id"] in live and live[t["id"]].control.aborted))
     store.set_batch_status(batch_id, "cancelled")
     return {"id": batch_id, "cancelled": cancelled}
 

@@ -10,7 +10,7 @@ from typing import Annotated
 
 from fastapi import APIRouter, HTTPException, Request
 from fastapi.responses import FileResponse
-from pydantic import BaseModel, Field
+from pydantic import BaseModel, ConfigDict, Field
 
 from .models import MAX_ID
 
@@ -18,6 +18,8 @@ router = APIRouter(prefix="/api/exports", tags=["exports"])
 
 
 class ExportCreate(BaseModel):
+    model_config = ConfigDict(extra="forbid")  # a misspelt field is an error, not ignored
+
     trial_ids: list[Annotated[str, Field(max_length=MAX_ID)]] | None = Field(
         None, max_length=5000, description="these trials (history selection)"
     )

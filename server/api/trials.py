@@ -23,6 +23,7 @@ TrialId = Annotated[str, Path(max_length=MAX_ID)]
 @router.post("", status_code=202, response_model=TrialCreated)
 def create_trial(body: TrialCreate, request: Request) -> TrialCreated:
     config = trial_config(body)
+    check_breakpoints(list(body.breakpoints), config)
     trial_id = f"{body.task}-{uuid.uuid4().hex[:10]}"
     request.app.state.runner.submit(trial_id, config)
     return TrialCreated(id=trial_id, status="queued")
@@ -62,7 +63,10 @@ def trial_config(body: TrialCreate, batch_id: str | None = None) -> TrialConfig:
             config = apply_protocol(body.protocol, config)  # its settings, then may it be reported under it
         return config.check()
     except (TrialConfigError, ProtocolError) as e:
-        raise HTTPException(422, str(e)) from None
+        message = str(e)  # named as the request names it: the body's field is `plan`
+        raise HTTPException(
+            422, "plan:" + message[len("plan_text:") :] if message.startswith("plan_text:") else message
+        ) from None
 
 
 @router.get("", response_model=TrialPage)
@@ -78,6 +82,11 @@ def list_trials(
     limit: int = Query(50, ge=1, le=500),
     offset: int = Query(0, ge=0, le=MAX_OFFSET),
 ) -> TrialPage:
+    from spark_core import enums
+
+    verdicts = enums()["verdict"]
+    if verdict and verdict not in verdicts:
+        raise HTTPException(422, f"verdict: unknown verdict {verdict!r}; verdicts: {', '.join(verdicts)}")
     try:
         total, items = request.app.state.store.list_trials(
             status=status,
@@ -100,6 +109,8 @@ def get_trial(trial_id: TrialId, request: Request) -> dict:
     trial = request.app.state.store.get_trial(trial_id)
     if trial is None:
         raise HTTPException(404, f"no trial {trial_id!r}")
+    # files are served by name (GET .../artifacts/{name}); where they lie on the server is nobody's business
+    trial["artifacts"] = [{k: v for k, v in a.items() if k != "path"} for a in trial.get("artifacts") or []]
     live = request.app.state.runner.live.get(trial_id)
     if live is not None:  # still running: the stored events lag, serve the live ones
         trial["events"] = list(live.history)
@@ -150,16 +161,20 @@ def delete_trial(
 ) -> TrialDeleted:
     """Hide the trial from every list, page and export; `POST .../restore` brings it back within the grace
     period (SPARK_DELETE_GRACE_S, 24 h by default), after which it is purged with its artifact files."""
-    if trial_id in request.app.state.runner.live:
-        raise HTTPException(409, f"trial {trial_id!r} is still running: abort it first")
+    live = request.app.state.runner.live.get(trial_id)
+    if live is not None:
+        state = "running" if live.sent else "queued"
+        raise HTTPException(409, f"trial {trial_id!r} is still {state}: abort it first")
     store, settings = request.app.state.store, request.app.state.settings
     if purge:
         if not store.purge_trial(trial_id, settings.artifacts_dir):
             raise HTTPException(404, f"no trial {trial_id!r}")
+        request.app.state.replays.forget(trial_id)  # its camera images and 3D replay go with it
         return TrialDeleted(id=trial_id, purged=True, restore_until=None)
     deleted_at = store.delete_trial(trial_id)
     if deleted_at is None:
         raise HTTPException(404, f"no trial {trial_id!r}")
+    request.app.state.replays.forget(trial_id)
     until = deleted_at + timedelta(seconds=settings.delete_grace_s)
     return TrialDeleted(id=trial_id, purged=False, restore_until=until.isoformat())
 
@@ -195,13 +210,41 @@ def replay(trial_id: TrialId, request: Request, speed: float = Query(1.0, gt=0.0
 def control(trial_id: TrialId, body: Control, request: Request) -> dict:
     live = request.app.state.runner.live.get(trial_id)
     if live is None:
+        if not request.app.state.store.trial_ids(ids=(trial_id,)):
+            raise HTTPException(404, f"no trial {trial_id!r}")
         raise HTTPException(409, f"trial {trial_id!r} is not queued or running")
     c = live.control
+    if body.breakpoints is not None and body.action != "breakpoints":
+        raise HTTPException(422, f"breakpoints: only with action 'breakpoints', not {body.action!r}")
+    if c.aborted and body.action != "abort":
+        raise HTTPException(409, f"trial {trial_id!r} was aborted: it cannot {body.action} any more")
     if body.action == "breakpoints":
-        c.set_breakpoints(body.breakpoints or [])
+        c.set_breakpoints(check_breakpoints(body.breakpoints or [], live.config))
     else:
         getattr(c, body.action)()
     return {"id": trial_id, "state": c.state, "breakpoints": sorted(c.breakpoints)}
+
+
+def check_breakpoints(paths: list[str], config: TrialConfig) -> list[str]:
+    """The paths, if each names a node of the trial's plan (when the plan is known before it runs: a given plan
+    or the task's reference plan); 422 naming the unknown ones and a few that exist."""
+    from spark_core import TASKS, validate
+
+    text = config.plan_text
+    if text is None and config.planner == "reference":
+        text = TASKS[config.task].reference_plan_text()
+    plan = validate(text)[0] if text is not None else None
+    if plan is None:  # an LLM's plan: its node paths are known only once it is written
+        return paths
+    nodes = [path for path, _node, _arm in plan.nodes()]
+    unknown = [p for p in paths if p not in nodes]
+    if unknown:
+        raise HTTPException(
+            422,
+            f"breakpoints: no node {', '.join(repr(p) for p in unknown[:5])} in the trial's plan; "
+            f"its nodes: {', '.join(nodes[:8])}{' ...' if len(nodes) > 8 else ''}",
+        )
+    return paths
 
 
 @router.websocket("/{trial_id}/events")

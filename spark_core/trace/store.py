@@ -179,12 +179,14 @@ class TraceStore:
             return True
 
     def purge_trial(self, trial_id: str, artifacts_dir: str | Path | None = None) -> bool:
-        """Remove the trial for good (deleted or not): its record, events, groundings and, given the artifacts
-        directory, its files there. False if there is no such record."""
+        """Remove the trial for good (deleted or not): its record, events, groundings, the plan it gave the plan
+        library (LLM planners must not keep seeing a purged trial's instruction and plan) and, given the
+        artifacts directory, its files there. False if there is no such record."""
         with self.Session.begin() as s:
             paths = s.scalar(select(TrialRow.artifacts).where(TrialRow.id == trial_id))
             s.execute(delete(EventRow).where(EventRow.trial_id == trial_id))
             s.execute(delete(GroundingRow).where(GroundingRow.trial_id == trial_id))
+            s.execute(delete(PlanLibraryRow).where(PlanLibraryRow.trial_id == trial_id))
             deleted = cast("CursorResult[Any]", s.execute(delete(TrialRow).where(TrialRow.id == trial_id)))
             if deleted.rowcount == 0:
                 return False
@@ -265,12 +267,20 @@ class TraceStore:
                 .order_by(TrialRow.task, TrialRow.seed)
             ).all()
             items = [_row_dict(t, summary=True) for t in trials]
+            # deleted members stay counted in the batch's results (a delete must not rewrite a benchmark)
+            hidden = s.scalars(
+                select(TrialRow)
+                .where(TrialRow.batch_id == batch_id, TrialRow.deleted_at.is_not(None))
+                .order_by(TrialRow.task, TrialRow.seed)
+            ).all()
+            deleted = [_row_dict(t, summary=True) for t in hidden]
         return {
             "id": row.id,
             "status": row.status,
             "spec": row.spec,
             "created_at": row.created_at.isoformat() if row.created_at else None,
             "trials": items,
+            "deleted_trials": deleted,
         }
 
     def list_batches(self, limit: int = 100, offset: int = 0) -> tuple[int, list[dict]]:
@@ -305,6 +315,9 @@ class TraceStore:
     def add_library_plan(
         self, instruction: str, plan_text: str, scene_summary: str = "", trial_id: str | None = None
     ) -> None:
+        """Keep a succeeded trial's plan as a few-shot example for later LLM planner calls. Risk: the instruction
+        may be a console caller's own text, so it reaches every later LLM prompt (a stored prompt-injection path
+        for whoever may submit trials); deleting the trial hides it, purging removes it."""
         with self.Session.begin() as s:
             s.add(
                 PlanLibraryRow(
@@ -313,9 +326,15 @@ class TraceStore:
             )
 
     def library_plans(self) -> list[dict]:
-        """Oldest first: {instruction, plan, scene_summary, trial_id, t}."""
+        """Oldest first: {instruction, plan, scene_summary, trial_id, t}. A deleted trial's plan is left out while
+        it can still be restored (purging removes it for good)."""
         with self.Session() as s:
-            rows = s.scalars(select(PlanLibraryRow).order_by(PlanLibraryRow.id)).all()
+            rows = s.scalars(
+                select(PlanLibraryRow)
+                .outerjoin(TrialRow, TrialRow.id == PlanLibraryRow.trial_id)
+                .where(TrialRow.deleted_at.is_(None))
+                .order_by(PlanLibraryRow.id)
+            ).all()
             return [
                 {
                     "instruction": r.instruction,
@@ -393,6 +412,8 @@ class TraceStore:
         if key not in SORTABLE:
             raise ValueError(f"cannot sort by {key!r}; sortable: {', '.join(sorted(SORTABLE))}")
         where: list[Any] = [TrialRow.deleted_at.is_(None)]  # in the list's indexes (0007): still index-only
+        if status and status not in TRIAL_STATUSES:
+            raise ValueError(f"status: unknown trial status {status!r}; statuses: {', '.join(TRIAL_STATUSES)}")
         if status:
             where.append(TrialRow.status == status)
         if task:
@@ -409,9 +430,15 @@ class TraceStore:
             where.append(
                 func.ifnull(TrialRow.success, -1) == int(success) if sqlite_task else TrialRow.success == success
             )
-        if search:
-            like = f"%{search}%"
-            where.append(or_(TrialRow.instruction.ilike(like), TrialRow.task.ilike(like), TrialRow.reason.ilike(like)))
+        if search:  # literal text: % and _ in it match themselves, not any text
+            like = "%" + search.replace("\\", "\\\\").replace("%", "\\%").replace("_", "\\_") + "%"
+            where.append(
+                or_(
+                    TrialRow.instruction.ilike(like, escape="\\"),
+                    TrialRow.task.ilike(like, escape="\\"),
+                    TrialRow.reason.ilike(like, escape="\\"),
+                )
+            )
         col = getattr(TrialRow, key)
         # id breaks ties (a stable order across pages) in the same direction, so one index (0006) covers the order
         order = (col.desc(), TrialRow.id.desc()) if sort.startswith("-") else (col.asc(), TrialRow.id.asc())
@@ -434,6 +461,7 @@ class TraceStore:
 
 
 # not in summaries (deleted_at: always empty on what reads return)
+TRIAL_STATUSES = ("queued", "running", "done", "interrupted")  # a trial's life cycle in the store (TrialRow.status)
 _HEAVY = frozenset({"plan_tree", "nodes", "trajectory", "plan_text", "artifacts", "scene_states", "deleted_at"})
 
 

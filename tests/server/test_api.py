@@ -215,7 +215,7 @@ def test_batch_progress_results_and_cancel(client):
     assert r.status_code == 202 and r.json()["trials"] == 4
     bid = r.json()["id"]
     b = wait_batch(client, bid, lambda b: b["status"] == "done")
-    assert b["progress"] == {"done": 4, "total": 4}
+    assert b["progress"] == {"done": 4, "total": 4, "deleted": 0, "purged": 0}
     assert {row["task"]: (row["successes"], row["total"]) for row in b["results"]} == {
         "lift_block": (2, 2),
         "push_to_zone": (2, 2),
@@ -270,7 +270,7 @@ def test_batch_from_an_explicit_spec_list_exports_csv(client):
         if b["status"] == "done":
             break
         time.sleep(0.1)
-    assert b["progress"] == {"done": 3, "total": 3}
+    assert b["progress"] == {"done": 3, "total": 3, "deleted": 0, "purged": 0}
     assert sorted((t["task"], t["seed"]) for t in b["trials"]) == [
         ("lift_block", 3),
         ("lift_block", 4),
@@ -280,7 +280,7 @@ def test_batch_from_an_explicit_spec_list_exports_csv(client):
     results = client.get(f"/api/batches/{bid}/results.csv")
     assert results.headers["content-type"].startswith("text/csv")
     lines = results.text.strip().splitlines()
-    assert lines[0] == "task,done,total,successes,success_rate,ci95_low,ci95_high"
+    assert lines[0] == "task,done,total,successes,success_rate,ci95_low,ci95_high,judged,not_judged,deleted"
     by_task = {ln.split(",")[0]: ln.split(",") for ln in lines[1:]}
     table = {r["task"]: r for r in b["results"]}
     assert by_task["lift_block"][1:4] == ["2", "2", str(table["lift_block"]["successes"])]
@@ -321,5 +321,5 @@ def test_a_capbench_batch_runs_in_the_console(client):
     )
     assert r.status_code == 202
     b = wait_batch(client, r.json()["id"], lambda b: b["status"] == "done")
-    assert b["progress"] == {"done": 2, "total": 2}
+    assert b["progress"] == {"done": 2, "total": 2, "deleted": 0, "purged": 0}
     assert all(t["outcome"] in ("success", "failure") for t in b["trials"])

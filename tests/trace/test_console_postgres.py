@@ -22,7 +22,9 @@ def test_a_console_batch_on_postgresql(postgres_server, tmp_path):
             if batch["progress"]["done"] == 1:
                 break
             time.sleep(0.2)
-        assert batch["progress"] == {"done": 1, "total": 1} and [r["successes"] for r in batch["results"]] == [1]
+        assert batch["progress"] == {"done": 1, "total": 1, "deleted": 0, "purged": 0} and [
+            r["successes"] for r in batch["results"]
+        ] == [1]
         assert batch["spec"]["manifest"]["id"] == created["manifest_id"]
         listed = client.get("/api/trials", params={"task": "lift_block", "success": True}).json()
         assert listed["total"] == 1

@@ -1,0 +1,58 @@
+"""List filters and exports refuse what they do not know instead of answering with nothing, and search text is
+literal (adversarial review L4)."""
+
+from __future__ import annotations
+
+import pytest
+from fastapi.testclient import TestClient
+
+from server.app import create_app
+from server.settings import Settings
+from spark_core import enums
+
+
+@pytest.fixture()
+def client(tmp_path):
+    settings = Settings(store_url=f"sqlite:///{tmp_path / 'f.db'}", workers=1, viser=False)
+    with TestClient(create_app(settings)) as c:
+        store = c.app.state.store  # type: ignore[attr-defined]
+        store.create_trial("t-pct", status="done", task="lift_block", instruction="raise it 100% of the way")
+        store.create_trial("t-plain", status="done", task="lift_block", instruction="lift the red block")
+        yield c
+
+
+def test_an_unknown_verdict_or_status_is_422_listing_the_known_ones(client):
+    r = client.get("/api/trials?verdict=nonsense")
+    assert r.status_code == 422 and all(v in r.json()["detail"] for v in enums()["verdict"])
+    r = client.get("/api/trials?status=bogus")
+    assert r.status_code == 422 and "queued, running, done, interrupted" in r.json()["detail"]
+    assert client.get("/api/trials?verdict=success&status=done").status_code == 200
+
+
+@pytest.mark.parametrize("q,ids", [("%", ["t-pct"]), ("lift_the", []), ("100%", ["t-pct"]), ("red", ["t-plain"])])
+def test_search_text_is_literal(client, q, ids):
+    assert [t["id"] for t in client.get("/api/trials", params={"q": q}).json()["items"]] == ids
+
+
+def test_an_export_with_an_unknown_field_is_refused(client):
+    r = client.post("/api/exports", json={"batch": "x", "evil": 1})
+    assert r.status_code == 422 and "evil" in str(r.json()["detail"])
+
+
+def test_a_plan_error_names_the_request_field(client):
+    r = client.post(
+        "/api/trials", json={"task": "lift_block", "plan": "task: t\ntree: {primitive: grasp, params: {force: high}}"}
+    )
+    assert r.status_code == 422 and r.json()["detail"].startswith("plan: tree.params.force")
+
+
+def test_a_trial_record_names_its_files_without_server_paths(client, tmp_path):
+    art = tmp_path / "art" / "t-art"
+    art.mkdir(parents=True)
+    (art / "detection.png").write_bytes(b"png")
+    store = client.app.state.store  # type: ignore[attr-defined]
+    entry = {"name": "detection.png", "path": str(art / "detection.png"), "sha256": "x"}
+    store.create_trial("t-art", status="done", task="lift_block", artifacts=[entry])
+    r = client.get("/api/trials/t-art")
+    assert r.json()["artifacts"] == [{"name": "detection.png", "sha256": "x"}] and str(tmp_path) not in r.text
+    assert client.get("/api/trials/t-art/artifacts/detection.png").content == b"png"  # still served by name
