@@ -235,7 +235,8 @@ def section(r: dict, command: str) -> str:
         + footer(
             command,
             f"Playwright driving Debian's headless chromium (SwiftShader software WebGL, 1400x1000) against a "
-            f"real server (uvicorn, one trial worker process, viser 3D view on for the live rows); task "
+            f"real server (uvicorn, one trial worker process, viser 3D view on for the live rows, lit by its "
+            f"default lights: environment map off, SPARK_VISER_ENV_MAP unset); task "
             f"{r['task']}, reference plan, segmenter privileged-keypoints (PRIVILEGED). Run -> running: the click "
             f"on the dashboard's Run button (real-time pace) until the animation frame after a tree node shows "
             f"running, page already loaded; the first Run after the server starts also waits for its trial worker "
