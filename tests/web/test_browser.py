@@ -266,6 +266,30 @@ def test_workspace_steps_breakpoints_then_scrubs_tree_camera_and_3d_together(ser
     )
 
 
+# At every animation frame (what is painted, not just what is in the DOM): the tree's nodes shown running.
+PAINTED_RUNNING_JS = """(() => { window.__painted = new Set(); const f = () => {
+  document.querySelectorAll('#tree .node.running').forEach((n) => window.__painted.add(n.dataset.path));
+  requestAnimationFrame(f); }; requestAnimationFrame(f); })();"""
+
+
+def test_a_watched_trial_paints_each_node_running_with_the_3d_view_on(server, page):
+    """The bug: with the 3D view on, tree updates reached the screen in one burst (the viser client's
+    environment-map setup stalled the page's frames for seconds after it loaded). Run from the dashboard at
+    half real time: every leaf of the tree is painted running in some frame while the trial runs."""
+    page.add_init_script(PAINTED_RUNNING_JS)
+    page.goto(server + "/")
+    page.click("button[data-task=stack_two]")
+    page.select_option("#new-trial select[name=segmenter]", "privileged-keypoints")
+    page.select_option("#new-trial select[name=pacing]", "0.5")
+    page.click("#new-trial button[type=submit]")
+    page.wait_for_url("**/#/trial/stack_two-*")
+    page.wait_for_selector("#viser-frame")
+    page.wait_for_selector("#verdict[data-verdict=success]", timeout=120_000)
+    painted = set(page.evaluate("() => [...window.__painted]"))
+    leaves = {f"tree.children[{i}]" for i in range(5)}
+    assert leaves <= painted, f"never painted running: {sorted(leaves - painted)}"
+
+
 def test_abort_shows_aborted_everywhere(server, page):
     page.goto(server + "/")
     page.click("button[data-task=stack_three]")
