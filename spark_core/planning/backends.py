@@ -26,6 +26,11 @@ def make_planner(
         base_url, api_key = ep.base_url, ep.api_key()
         if ep.api_key_env and not api_key:
             raise PlannerUnavailable(f"endpoint {endpoint!r} needs its key: set {ep.api_key_env} on the server")
+        if name == "gemini" and not api_key:  # the Gemini API takes no request without a key
+            raise PlannerUnavailable(
+                f"endpoint {endpoint!r} has no key: a gemini endpoint needs api_key_env (spark.yaml)"
+            )
+    shown_as = f"endpoint {endpoint!r}" if endpoint is not None else None  # never the operator's URL
     if name == "gemini":
         from .gemini import DEFAULT_MODEL, GeminiPlanner
 
@@ -35,5 +40,5 @@ def make_planner(
 
         if not model:
             raise ValueError("the openai planner needs --model (e.g. gpt-4.1, or the name your local server serves)")
-        return OpenAIPlanner(model, base_url=base_url, api_key=api_key)
+        return OpenAIPlanner(model, base_url=base_url, api_key=api_key, shown_as=shown_as)
     raise ValueError(f"unknown planner {name!r}")

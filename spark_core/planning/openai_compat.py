@@ -16,8 +16,15 @@ class OpenAIPlanner(LLMPlanner):
     name = "openai"
 
     def __init__(
-        self, model: str, base_url: str | None = None, api_key: str | None = None, settings: LLMSettings | None = None
+        self,
+        model: str,
+        base_url: str | None = None,
+        api_key: str | None = None,
+        settings: LLMSettings | None = None,
+        shown_as: str | None = None,
     ):
+        """`shown_as`: how error messages name the server (a named endpoint's URL is the operator's, not the
+        caller's to see); default: its URL."""
         import openai
 
         # The environment's key goes to OpenAI's own endpoint only; any other URL (a local server) gets none
@@ -32,6 +39,7 @@ class OpenAIPlanner(LLMPlanner):
         self.settings = settings or LLMSettings(model)
         self.openai = openai
         self.client = openai.OpenAI(api_key=key, base_url=base_url, timeout=self.settings.timeout_s, max_retries=0)
+        self.where = shown_as or str(self.client.base_url)
 
     def _call(
         self,
@@ -61,21 +69,15 @@ class OpenAIPlanner(LLMPlanner):
                 },
             )
         except (o.RateLimitError, o.InternalServerError) as e:
-            raise TransientError(
-                f"HTTP {e.status_code} from {self.client.base_url}: {_message(e)}", _retry_after_s(e)
-            ) from None
+            raise TransientError(f"HTTP {e.status_code} from {self.where}: {_message(e)}", _retry_after_s(e)) from None
         except o.APITimeoutError:
-            raise TransientError(
-                f"{self.client.base_url} did not answer within {self.settings.timeout_s:g} s"
-            ) from None
+            raise TransientError(f"{self.where} did not answer within {self.settings.timeout_s:g} s") from None
         except o.APIConnectionError as e:
-            raise TransientError(f"cannot reach {self.client.base_url}: {e}") from None
+            raise TransientError(f"cannot reach {self.where}: {e}") from None
         except o.APIStatusError as e:
-            raise PlannerUnavailable(f"HTTP {e.status_code} from {self.client.base_url}: {_message(e)}") from None
+            raise PlannerUnavailable(f"HTTP {e.status_code} from {self.where}: {_message(e)}") from None
         if isinstance(resp, str) or not getattr(resp, "choices", None):  # a body that is not a completion
-            raise PlannerUnavailable(
-                f"{self.client.base_url} answered with a body that is not JSON: {str(resp)[:80]!r}"
-            )
+            raise PlannerUnavailable(f"{self.where} answered with a body that is not JSON: {str(resp)[:80]!r}")
         u = resp.usage
         reasoning = getattr(getattr(u, "completion_tokens_details", None), "reasoning_tokens", 0) or 0 if u else 0
         usage = Usage(u.prompt_tokens if u else 0, (u.completion_tokens - reasoning) if u else 0, reasoning)
