@@ -62,10 +62,12 @@ class RemoteControl(StepControl):
 
     def resume(self) -> None:
         super().resume()
+        self.paused_at = None  # released now: the answer says running, not the pause the worker is leaving
         self._send("resume")
 
     def step(self) -> None:
         super().step()
+        self.paused_at = None  # one node runs, then it pauses again ("pausing" until the worker says so)
         self._send("step")
 
     def abort(self) -> None:

@@ -54,7 +54,9 @@ class BatchCreate(BaseModel):
         json_schema_extra={"enum": list(PROTOCOLS)},
         description="a named evaluation configuration of the paper for every trial (GET /api/catalog lists them)",
     )
-    capture: bool = Field(False, description="record training-data frames for every trial (for LeRobot export)")
+    capture: bool = Field(
+        False, strict=True, description="record training-data frames for every trial (for LeRobot export)"
+    )
 
 
 MAX_BATCH = 2000

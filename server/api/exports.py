@@ -24,7 +24,7 @@ class ExportCreate(BaseModel):
         None, max_length=5000, description="these trials (history selection)"
     )
     batch: str | None = Field(None, max_length=64, description="or every trial of this batch")
-    success_only: bool = Field(True, description="verified successes only (clean demonstrations)")
+    success_only: bool = Field(True, strict=True, description="verified successes only (clean demonstrations)")
     format: str = Field("lerobot", pattern="^lerobot$")
 
 

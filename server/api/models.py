@@ -32,6 +32,7 @@ def _enum(names: Any) -> dict[str, Any]:
 
 class TrialCreate(BaseModel):
     model_config = ConfigDict(extra="forbid")  # a misspelt or retired field (base_url) is an error, not ignored
+    # booleans are strict like the seed: "yes" or 1 is not a switch someone meant to flip
 
     task: str = Field(max_length=MAX_NAME, description="task whose scene to run in (GET /api/catalog lists them)")
     instruction: str | None = Field(None, max_length=2000, description="default: the task's own instruction")
@@ -50,15 +51,17 @@ class TrialCreate(BaseModel):
     plan: str | None = Field(
         None, max_length=256 * 1024, description="a plan to run as given (the planner is not called)"
     )
-    start_paused: bool = Field(False, description="pause before the first primitive")
-    capture: bool = Field(False, description="record training-data frames (agentview + wrist video at 10 fps)")
+    start_paused: bool = Field(False, strict=True, description="pause before the first primitive")
+    capture: bool = Field(
+        False, strict=True, description="record training-data frames (agentview + wrist video at 10 fps)"
+    )
     embodiment: str | None = Field(
         None, json_schema_extra=_enum(EMBODIMENTS), description="robot set-up (default: the task's own)"
     )
     time_limit_s: float | None = Field(None, gt=0, le=3600, description="simulated seconds (default: the task's own)")
     pacing: float | None = Field(None, ge=0.01, le=100, description="x real time (default: as fast as possible)")
-    recovery: bool = Field(True, description="recovery tiers 1-2 (2 retries per node)")
-    adaptive: bool = Field(True, description="adaptive prompts (label + 3 variants)")
+    recovery: bool = Field(True, strict=True, description="recovery tiers 1-2 (2 retries per node)")
+    adaptive: bool = Field(True, strict=True, description="adaptive prompts (label + 3 variants)")
     protocol: str | None = Field(
         None,
         json_schema_extra=_enum(PROTOCOLS),

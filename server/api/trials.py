@@ -31,6 +31,11 @@ def create_trial(body: TrialCreate, request: Request) -> TrialCreated:
 
 def trial_config(body: TrialCreate, batch_id: str | None = None) -> TrialConfig:
     """The request as a checked TrialConfig; 422 naming the field and what was expected."""
+    from spark_core import PLANNERS
+
+    entry = PLANNERS[body.planner]
+    if body.model is not None and entry.offline and not entry.needs_model and entry.default_model is None:
+        raise HTTPException(422, f"model: the {body.planner} planner takes no model (only the LLM planners do)")
     capture = None
     if body.capture:
         from spark_core import CaptureConfig

@@ -285,12 +285,12 @@ class TraceStore:
 
     def list_batches(self, limit: int = 100, offset: int = 0) -> tuple[int, list[dict]]:
         """(number of batches, one page newest first): each batch's id, created_at (ISO), stored status, spec, and
-        its live trials counted: total, done (done or interrupted) and successes."""
+        its trials counted (deleted ones too, until purged): total, done (done or interrupted) and successes."""
         done = func.sum(case((TrialRow.status.in_(("done", "interrupted")), 1), else_=0))
         ok = func.sum(case((TrialRow.success.is_(True), 1), else_=0))
         q = (
             select(BatchRow, func.count(TrialRow.id), done, ok)
-            .outerjoin(TrialRow, (TrialRow.batch_id == BatchRow.id) & TrialRow.deleted_at.is_(None))
+            .outerjoin(TrialRow, TrialRow.batch_id == BatchRow.id)  # deleted members count: results stay as run
             .group_by(BatchRow.id)
             .order_by(BatchRow.created_at.desc(), BatchRow.id.desc())
             .limit(limit)

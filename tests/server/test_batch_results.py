@@ -83,6 +83,8 @@ def test_deleting_a_member_does_not_rewrite_the_batch_result(client):
         "deleted": 1,
         "purged": 0,
     }
+    listed = client.get("/api/batches").json()["items"][0]
+    assert listed["progress"] == {"done": 2, "total": 2, "successes": 1}  # the batch list agrees
     assert client.delete("/api/trials/batch-del-0000-lift_block-0?purge=true").status_code == 200
     assert client.get("/api/batches/batch-del").json()["progress"]["purged"] == 1  # gone for good, and said so
 

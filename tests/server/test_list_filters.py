@@ -56,3 +56,25 @@ def test_a_trial_record_names_its_files_without_server_paths(client, tmp_path):
     r = client.get("/api/trials/t-art")
     assert r.json()["artifacts"] == [{"name": "detection.png", "sha256": "x"}] and str(tmp_path) not in r.text
     assert client.get("/api/trials/t-art/artifacts/detection.png").content == b"png"  # still served by name
+
+
+@pytest.mark.parametrize(
+    "url,body,field",
+    [
+        ("/api/trials", {"task": "lift_block", "capture": "yes"}, "capture"),
+        ("/api/trials", {"task": "lift_block", "start_paused": 1}, "start_paused"),
+        ("/api/batches", {"tasks": ["lift_block"], "capture": "true"}, "capture"),
+        ("/api/exports", {"batch": "x", "success_only": "no"}, "success_only"),
+    ],
+)
+def test_a_switch_is_a_json_boolean(client, url, body, field):
+    r = client.post(url, json=body)
+    assert r.status_code == 422 and [d["field"] for d in r.json()["detail"]] == [field]
+
+
+def test_a_model_for_a_planner_that_takes_none_is_refused(client):
+    r = client.post("/api/trials", json={"task": "lift_block", "planner": "reference", "model": "gpt-4.1"})
+    assert (
+        r.status_code == 422
+        and r.json()["detail"] == "model: the reference planner takes no model (only the LLM planners do)"
+    )

@@ -96,7 +96,9 @@ def test_control_and_delete_of_live_trials_say_what_is_wrong(tmp_path):
         assert r.status_code == 422 and "only with action 'breakpoints'" in r.json()["detail"]
         ok = c.post(f"/api/trials/{first}/control", json={"action": "breakpoints", "breakpoints": ["tree.children[0]"]})
         assert ok.status_code == 200 and ok.json()["breakpoints"] == ["tree.children[0]"]
-        for tid in (first, second):
-            assert c.post(f"/api/trials/{tid}/control", json={"action": "abort"}).status_code == 200
+        assert c.post(f"/api/trials/{second}/control", json={"action": "abort"}).status_code == 200
+        resumed = c.post(f"/api/trials/{first}/control", json={"action": "resume"})
+        assert resumed.status_code == 200 and resumed.json()["state"] == "running"  # not the pause it left
+        assert c.post(f"/api/trials/{first}/control", json={"action": "abort"}).status_code in (200, 409)
         # aborted (still winding down) or already finished: either way nothing to resume
         assert c.post(f"/api/trials/{first}/control", json={"action": "resume"}).status_code == 409

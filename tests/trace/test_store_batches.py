@@ -1,5 +1,5 @@
-"""TraceStore.list_batches (newest first, live trials counted) and sorting trials by batch and failing module,
-on a SQLite file and on PostgreSQL."""
+"""TraceStore.list_batches (newest first, trials counted, deleted ones too) and sorting trials by batch and
+failing module, on a SQLite file and on PostgreSQL."""
 
 import time
 
@@ -16,7 +16,7 @@ def test_batches_are_listed_newest_first_with_their_live_trials_counted(store_ur
         ("t1", "b-old", "done", True),
         ("t2", "b-old", "interrupted", False),
         ("t3", "b-old", "running", None),
-        ("t4", "b-old", "done", True),  # deleted below: not counted
+        ("t4", "b-old", "done", True),  # deleted below: still counted (a delete must not rewrite results)
         ("t5", None, "done", True),  # in no batch
     ]
     for tid, bid, status, success in rows:
@@ -27,7 +27,7 @@ def test_batches_are_listed_newest_first_with_their_live_trials_counted(store_ur
     assert total == 2 and [b["id"] for b in items] == ["b-new", "b-old"]
     new, old = items
     assert new["status"] == "cancelled" and new["progress"] == {"done": 0, "total": 0, "successes": 0}
-    assert old["progress"] == {"done": 2, "total": 3, "successes": 1}
+    assert old["progress"] == {"done": 3, "total": 4, "successes": 2}
     assert old["spec"]["manifest"] == {"id": "m1"} and "T" in old["created_at"]
     assert store.list_batches(limit=1, offset=1)[1][0]["id"] == "b-old"
 
