@@ -18,6 +18,7 @@ from .catalog import PLANNERS, SEGMENTERS, check_embodiment, check_planner, chec
 from .execution import Event, EventBus, Executor, RecoveryPolicy, StepControl, TrialResult
 from .grammar import Plan, parse_plan, to_yaml, validate
 from .perception.noisy_segmenter import NoiseModel
+from .sim.reclaim import world_closed
 from .trial_outcome import TrialOutcome, Verdict, judge
 
 
@@ -374,6 +375,7 @@ def run_trial(
     finally:
         if ctx is not None:
             ctx.world.close()
+            world_closed()
     if outcome.success and library is not None and not PLANNERS[config.planner].offline and ctx is not None:
         library.add(ctx.instruction, outcome.plan_text, ctx.extra.get("scene_summary", ""), trial_id=trial_id)
     return outcome

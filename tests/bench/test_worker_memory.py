@@ -1,24 +1,25 @@
-"""A bench worker runs a full garbage collection every few trials (closed robosuite worlds' MuJoCo memory sits in
-reference cycles only a full collection frees: without it a CaP-Bench worker grew ~70 MB a trial)."""
+"""Closed worlds' memory is reclaimed: a full garbage collection every few trials of a process (a closed robosuite
+world's MuJoCo memory sits in reference cycles only a full collection frees: without it a CaP-Bench worker grew
+~70 MB a trial)."""
 
 from __future__ import annotations
 
 import gc
 
-from spark_core.bench import reference_suite
-from spark_core.trial import TrialConfig
+from spark_core.sim import reclaim
+from spark_core.trial import TrialConfig, run_trial
 
 
-class _Outcome:
-    def row(self) -> dict:
-        return {"success": True}
-
-
-def test_a_worker_collects_every_ten_trials(monkeypatch):
+def test_every_tenth_closed_world_runs_a_full_collection(monkeypatch):
     collections: list[int] = []
-    monkeypatch.setattr(reference_suite, "run_trial", lambda *a, **k: _Outcome())
     monkeypatch.setattr(gc, "collect", lambda *a: collections.append(1) or 0)
-    monkeypatch.setattr(reference_suite, "_TRIALS_SINCE_COLLECT", [0])
-    for i in range(25):
-        assert reference_suite._one((TrialConfig("lift_block", seed=i), None, f"t{i}", None)) == {"success": True}
-    assert len(collections) == 25 // reference_suite.COLLECT_EVERY == 2
+    monkeypatch.setattr(reclaim, "_closed_since_collect", [0])
+    for _ in range(25):
+        reclaim.world_closed()
+    assert len(collections) == 25 // reclaim.COLLECT_EVERY == 2
+
+
+def test_the_trial_pipeline_counts_the_world_it_closes(monkeypatch):
+    monkeypatch.setattr(reclaim, "_closed_since_collect", [0])
+    run_trial(TrialConfig("lift_block", segmenter="privileged-keypoints", time_limit_s=0.5))
+    assert reclaim._closed_since_collect == [1]
