@@ -43,26 +43,7 @@ def _one(job: tuple[TrialConfig, str | None, str, str | None]) -> dict:
         from ..trace.sink import StoreSink
 
         sinks.append(StoreSink(TraceStore(store_url, migrate=False)))  # the driver migrated it
-    row = run_trial(config, sinks, trial_id=trial_id, library=library).row()
-    _collect_now_and_then()
-    return row
-
-
-_TRIALS_SINCE_COLLECT = [0]
-COLLECT_EVERY = 10  # trials
-
-
-def _collect_now_and_then() -> None:
-    """A full garbage collection every COLLECT_EVERY trials of this worker. A closed robosuite world's MuJoCo
-    model and data sit in reference cycles that only a full collection frees (robosuite's own close runs one per
-    trial, 0.3-0.6 s, which the worlds skip); left to the automatic collector a CaP-Bench worker grew ~70 MB a
-    trial. One collection per ten trials bounds that at a few hundred MB for ~0.05 s a trial."""
-    import gc
-
-    _TRIALS_SINCE_COLLECT[0] += 1
-    if _TRIALS_SINCE_COLLECT[0] >= COLLECT_EVERY:
-        _TRIALS_SINCE_COLLECT[0] = 0
-        gc.collect()
+    return run_trial(config, sinks, trial_id=trial_id, library=library).row()
 
 
 def run(
