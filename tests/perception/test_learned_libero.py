@@ -164,3 +164,18 @@ def test_libero_objects_resolve_from_cameras_alone():
         assert np.linalg.norm(kp.position_m - PrivilegedResolver(world).resolve("basket").position_m) < 0.03
     finally:
         scenes.close()
+
+
+def test_libero_bench_scenes_are_held_out():
+    """The perception bench's LIBERO scenes: two tasks per cell, seeds outside the training range, each seed a
+    scene of the task it is listed under (nothing is built here)."""
+    pytest.importorskip("libero")
+    from spark_core.bench.perception_bench import _scene_worlds
+    from spark_core.perception.learned.libero_data import LIBERO_TRAIN_SEED0, task_of_seed
+
+    scenes = _scene_worlds("libero", 2)
+    cells = [name.split(":")[0] for name, _, _ in scenes]
+    assert {c: cells.count(c) for c in cells} == {c: 4 for c in set(cells)} and len(set(cells)) == 6
+    for name, seed, _ in scenes:
+        assert 1000 <= seed < LIBERO_TRAIN_SEED0
+        assert task_of_seed(seed).name == name
