@@ -3,6 +3,7 @@ grounded to scene objects by sentence similarity over each object's label and de
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Mapping, Sequence
 
@@ -14,13 +15,16 @@ from .detection import Detection
 from .frame import CameraFrame
 from .qualifiers import QUALIFIERS, split_qualifier, split_relation
 from .text_encoder import SHARED_ENCODER, TextEncoder
-from .variants import KIND_OF, MATERIALS, SHAPES, SIZES
+from .variants import GENERIC, KIND_OF, MATERIALS, NOT_NOUNS, PACKAGING, PARTS, SHAPES, SIZES
 
 HEAD_NOUN_BONUS = 0.08
 # An object whose colour, shape or kind contradicts the prompt is no match at any similarity: the score drops by
 # this much (below any threshold; kept as a score so noise models can still rank confusions).
 MISMATCH_PENALTY = 1.0
 _FILLER = frozenset(["the", "a", "an", "one", "of", "with", "and", "on", "in", "at", "to"])
+# A head noun in no kinds table and not in the object's own words names the object only when the sentence encoder
+# puts it this close to the object's own noun ("cooker" / stove 0.66; "mustard" / ketchup 0.51, "ball" / block 0.28).
+UNKNOWN_NOUN_MIN_COSINE = 0.55
 
 
 def calibrated_score(cosine: float, threshold: float) -> float:
@@ -184,7 +188,9 @@ def mismatch(prompt: str, name: str, description: str, part_is_whole: bool = Tru
     A prompt names a colour the object does not have, or a shape; a kind of thing (variants.KINDS) the object
     is not (the head noun, or the thing a part belongs to: "oven door handle" is no cabinet drawer handle,
     while "stove knob" may be the stove itself, unless `part_is_whole` is False); or, on the object's own noun,
-    a distinguishing word where the object has another ("bbq sauce" vs "tomato sauce")."""
+    a distinguishing word where the object has another ("bbq sauce" vs "tomato sauce", "beer bottle" vs "wine
+    bottle"). The head noun decides: a modifier naming the object counts only before a part or package noun ("wine
+    glass" is no wine bottle); a head noun in no kinds table goes through `_unknown_head`."""
     text = re.sub(r"^(.+?) of (.+)$", r"\2 \1", prompt.lower())  # "drawer of the cabinet": its noun is drawer
     pw = _words(text)
     if not pw:
@@ -205,15 +211,53 @@ def mismatch(prompt: str, name: str, description: str, part_is_whole: bool = Tru
         *owners, (_, head_kind) = kinds
         # strictly the object's own noun must be of the head's kind; else its description may say it
         is_head = head_kind & _forms(nw[-1]) if nw and not part_is_whole else head_kind & doc
-        if any(not k & doc for _, k in owners) or (not owners or not part_is_whole) and not is_head:
+        # a modifier naming the object stands for it only through a part or its packaging ("stove knob", "ketchup
+        # bottle"), or when it is the object's own noun ("burner plate" of a stove): "wine glass" is no wine bottle
+        own_noun = any(k & _forms(nw[-1]) for _, k in owners) if nw else False
+        via_owner = owners and part_is_whole and (kinds[-1][0] in PARTS | PACKAGING or own_noun)
+        if any(not k & doc for _, k in owners) or not via_owner and not is_head:
             return f"kind: {' '.join(w for w, _ in kinds)}"
     attributes = SHAPES | MATERIALS | SIZES | set(QUALIFIERS) | set(BASE_COLOURS) | set(COLOUR_SYNONYMS)
+    said_head = said_kinds[-1]
+    if said_head not in attributes | GENERIC | NOT_NOUNS and _kind(said_head) is None and nw:
+        why = _unknown_head(said_head, [w for w in said_kinds[:-1] if w not in attributes], nw, doc)
+        if why:
+            return why
     if len(pw) > 1 and len(nw) > 1 and _forms(pw[-1]) & _forms(nw[-1]):
         said = {w for w in pw[:-1] if w not in attributes and _kind(w) is None and not _forms(w) & doc}
-        own = {w for w in nw[:-1] if w not in attributes and _kind(w) is None and w not in pw}
+        # the object's own distinguishing words, kinds included: "beer bottle" is not the "wine bottle"
+        own = {w for w in nw[:-1] if w not in attributes and w not in pw}
         if said and own:
             return f"{pw[-1]}: {' '.join(sorted(said))} vs {' '.join(sorted(own))}"
     return None
+
+
+def _unknown_head(head: str, modifiers: list[str], name_words: list[str], doc: set[str]) -> str | None:
+    """Why a head noun that no kinds table knows cannot name the object: one of its own words only when it is the
+    object's noun or the object comes in a package or is reached through a part ("salad" is no salad dressing,
+    "wine" may be the wine bottle); a part or package noun only through a modifier the object has ("soda can" is
+    no ketchup); any other noun only when the encoder puts it near the object's own noun (`_noun_cosine`)."""
+    own_head = _forms(name_words[-1])
+    if _forms(head) & own_head:
+        return None
+    if _forms(head) & doc:
+        if own_head & (PARTS | PACKAGING):
+            return None
+        return f"noun: {head} is a word of {' '.join(name_words)}, not its noun"
+    if head in PARTS | PACKAGING:
+        named = modifiers
+        if named and not any(_forms(w) & doc for w in named):
+            return f"noun: {' '.join(named)} {head}"
+        return None
+    if _noun_cosine(head, name_words[-1]) < UNKNOWN_NOUN_MIN_COSINE:
+        return f"noun: {head} vs {name_words[-1]}"
+    return None
+
+
+@functools.lru_cache(maxsize=4096)
+def _noun_cosine(a: str, b: str) -> float:
+    va, vb = SHARED_ENCODER.encode([a, b])
+    return float(va @ vb)
 
 
 def _instance_names(catalog: Mapping[str, str]) -> dict[str, str]:

@@ -80,7 +80,7 @@ KINDS: tuple[frozenset[str], ...] = tuple(
         "bolt",
         "screw",
         "hammer mallet",
-        "bead marble",
+        "bead marble ball",
         "area zone region",
         "rack",
         "shelf",
@@ -105,6 +105,17 @@ KINDS: tuple[frozenset[str], ...] = tuple(
         "lemon",
         "wine",
         "egg",
+        # things a scene may lack that an encoder puts near what it holds ("mustard" next to the ketchup, "ball"
+        # next to a block): naming them is naming another kind
+        "ball sphere",
+        "mustard",
+        "mayonnaise mayo",
+        "soda cola",
+        "beer",
+        "teapot",
+        "pen pencil",
+        "cylinder",
+        "pyramid",
     )
 )
 # word -> every word of a kind it may name ("dish": a plate or a bowl)
@@ -118,6 +129,26 @@ MATERIALS = frozenset(
 )
 SIZES = frozenset(
     ["small", "big", "large", "tiny", "little", "tall", "short", "long", "wide", "narrow", "shallow", "deep", "flat"]
+)
+
+
+# Nouns naming a part of a thing or what a product comes in: "the stove knob", "the ketchup bottle", "the cookie
+# box" name the stove, the ketchup and the cookies through a modifier; any other head noun must itself name the object.
+PARTS = frozenset(
+    ["knob", "dial", "handle", "grip", "pull", "lid", "door", "drawer", "button", "switch", "top", "front", "back"]
+    + ["side", "edge", "rim", "base", "bottom", "surface", "layer", "tier", "shelf", "burner", "cover", "cap"]
+)
+PACKAGING = frozenset(
+    ["box", "bottle", "carton", "jar", "can", "tin", "pack", "packet", "package", "container", "tub", "bag", "case"]
+    + ["pouch", "packaging"]
+)
+# Nouns that name no kind at all ("the red thing", "that item"): they add nothing against any object.
+GENERIC = frozenset(["thing", "object", "item", "stuff", "piece", "one", "receptacle", "vessel", "product", "goods"])
+# Words that may end a mention without being its noun ("the bowl inside", "the cup upright"): no noun check on them.
+NOT_NOUNS = frozenset(
+    ["inside", "outside", "there", "here", "upright", "away", "up", "down", "off", "over", "too", "please", "now"]
+    + ["again", "instead", "then", "only", "also", "itself", "it", "them", "both", "either", "all"]
+    + ["out", "in", "aside", "along", "around", "together", "apart", "forward", "backward", "closed", "open"]
 )
 
 

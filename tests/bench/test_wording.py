@@ -2,6 +2,7 @@
 check tells a plan with the official plan's effect from one that carries the wrong thing or refuses."""
 
 import hashlib
+import re
 
 import numpy as np
 import pytest
@@ -13,10 +14,15 @@ from spark_core.planning import SceneView
 
 def test_the_corpus_is_large_enough_split_by_its_hash_rule_and_names_real_tasks():
     dev, test = wording.load("dev"), wording.load("test")
-    assert len(dev) + len(test) >= 300 and abs(len(dev) - len(test)) < 0.1 * (len(dev) + len(test))
-    for e in dev + test:
+    # probes added later (id ".pN", README) go to dev only; the hash split holds for the original corpus
+    later = [e for e in dev if re.search(r"\.p[0-9]+$", e["id"])]
+    first = [e for e in dev if e not in later]
+    assert later and not any(re.search(r"\.p[0-9]+$", e["id"]) for e in test)
+    assert len(first) + len(test) >= 300 and abs(len(first) - len(test)) < 0.1 * (len(first) + len(test))
+    for e in first + test:
         odd = hashlib.sha256(f"{e['task']}|{e['instruction']}".encode()).digest()[0] % 2
         assert e["half"] == ("test" if odd else "dev"), e["id"]
+    for e in dev + test:
         assert e["expect"] == "goal" or e["expect"] == f"refuse:{e['style']}"
     assert len({e["id"] for e in dev + test}) == len(dev) + len(test)
     styles = {e["style"] for e in dev + test}

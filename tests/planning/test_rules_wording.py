@@ -102,7 +102,14 @@ def test_left_and_closer_pick_out_an_object_outside_a_push():
     assert (push.direction, push.distance_m) == ("left", pytest.approx(0.10))
 
 
-@pytest.mark.parametrize("text", ["sing a song", "the the the", "make the red block fly", "cup bowl the in put in"])
+def test_the_action_as_a_noun_after_give_is_the_action():
+    (c,) = parse_instruction("give the mug a wipe with the towel")
+    assert (c.action, c.target, c.tool) == ("scrub", "mug", "towel")
+
+
+@pytest.mark.parametrize(
+    "text", ["sing a song", "the the the", "make the red block fly", "cup bowl the in put in", "give the mug a name"]
+)
 def test_nonsense_is_not_read_as_an_action(text):
     with pytest.raises(ParseError, match="no action I know"):
         parse_instruction(text)

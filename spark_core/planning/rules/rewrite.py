@@ -59,6 +59,8 @@ def sentences(instruction: str) -> list[str]:
     for short, long in CONTRACTIONS.items():
         text = re.sub(rf"\b{re.escape(short)}", long, text)
     text = re.sub(r"\bi would (like|love)\b(?! you to)", r"i want", text)
+    # "give the plate a scrub": the action is the noun after the object
+    text = re.sub(r"\bgive ((?:the|this|that|my) [\w ]+?) an? (\w+)\b", _give_a, text)
     # "the first bowl from the left" is the leftmost ("first" is otherwise a filler)
     text = re.sub(r"\b(first|last) ((?:\w+ )?\w+) from the (left|right)", _first_from, text)
     text = re.sub(r"[!?;]+|\.(?=\s|$)", " . ", text)
@@ -68,6 +70,10 @@ def sentences(instruction: str) -> list[str]:
     text = text.replace("next_to", "next to")
     text = re.sub(r"\s+", " ", text)
     return [s.strip(" ,") for s in text.split(" . ") if s.strip(" ,.")]
+
+
+def _give_a(m: re.Match) -> str:
+    return f"{m.group(2)} {m.group(1)}" if m.group(2) in _VERB_FORMS else m.group(0)
 
 
 def _first_from(m: re.Match) -> str:
