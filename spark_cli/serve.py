@@ -37,7 +37,7 @@ def _cmd_serve(args: argparse.Namespace) -> int:
     )
     if not settings.loopback and not settings.api_token:
         print(
-            f"refusing to serve on {settings.host} without SPARK_API_TOKEN (mutating calls would be open)",
+            f"refusing to serve on {settings.host} without SPARK_API_TOKEN (trials and controls would be open)",
             file=sys.stderr,
         )
         return 2
