@@ -67,6 +67,11 @@ def _split_of(seed: int) -> str:
     return "dev" if seed in SPLITS["dev"] else "held-out"
 
 
+def _tasks(rows: list[dict]) -> str:
+    n = len({r["task"] for r in rows})
+    return f"{n} task{'s' if n != 1 else ''}"
+
+
 def _cell(rows: list[dict]) -> str:
     if not rows:
         return "–"
@@ -85,9 +90,9 @@ def table(runs: Sequence[tuple[str, list[dict]]]) -> str:
         present = [(s, rs) for s, rs in split.items() if rs]
         for s, rs in present:
             seeds = sorted({int(r["seed"]) for r in rs})
-            parts.append((f"{label}: {s}, init states {seeds[0]}–{seeds[-1]}", rs))
+            parts.append((f"{label}: {s}, {_tasks(rs)}, init states {seeds[0]}–{seeds[-1]}", rs))
         if len(present) > 1:
-            parts.append((f"{label}: all", rows))
+            parts.append((f"{label}: all, {_tasks(rows)}", rows))
     cells = list(LIBEROPRO_CELLS)
     lines = ["| system (protocol) | " + " | ".join(cells) + " | mean over cells |", "|" + "---|" * (len(cells) + 2)]
     for label, rows in parts:

@@ -26,9 +26,9 @@ def test_a_run_with_both_splits_gets_a_row_each_and_one_for_all():
     rows = _rows({0: True, 1: False, 10: True, 11: True, 12: True, 13: False})
     out = table([("learned (camera-only), rules planner, official wording", rows)])
     lines = {line.split(" | ")[0].lstrip("| "): line for line in out.splitlines()}
-    dev = lines["learned (camera-only), rules planner, official wording: dev, init states 0–1"]
-    held = lines["learned (camera-only), rules planner, official wording: held-out, init states 10–13"]
-    everything = lines["learned (camera-only), rules planner, official wording: all"]
+    dev = lines["learned (camera-only), rules planner, official wording: dev, 6 tasks, init states 0–1"]
+    held = lines["learned (camera-only), rules planner, official wording: held-out, 6 tasks, init states 10–13"]
+    everything = lines["learned (camera-only), rules planner, official wording: all, 6 tasks"]
     # 1 of 2 -> 50 % with Wilson [9.5, 90.5]; 3 of 4 -> 75 % [30.1, 95.4]; 4 of 6 per cell overall
     assert "50.0 % [9.5–90.5] (2)" in dev and dev.endswith("**50.0 %** |")
     assert "75.0 % [30.1–95.4] (4)" in held and held.endswith("**75.0 %** |")
@@ -69,4 +69,4 @@ def test_cli_asks_for_runs_and_writes_the_section(tmp_path, capsys):
     assert main(["bench", "liberopro-table", "--runs", str(run), "--write", str(out)]) == 0
     text = out.read_text()
     assert "## LIBERO-PRO per cell: our runs and the published rows" in text
-    assert "held-out, init states 10–11" in text and str(run) in text
+    assert "held-out, 6 tasks, init states 10–11" in text and str(run) in text
