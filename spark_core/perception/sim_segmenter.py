@@ -246,7 +246,7 @@ def _unknown_head(head: str, modifiers: list[str], name_words: list[str], doc: s
         return f"noun: {head} is a word of {' '.join(name_words)}, not its noun"
     if head in PARTS | PACKAGING:
         named = modifiers
-        if named and not any(_forms(w) & doc for w in named):
+        if named and not any(_forms(w) & doc or (_kind(w) or frozenset()) & doc for w in named):
             return f"noun: {' '.join(named)} {head}"
         return None
     if _noun_cosine(head, name_words[-1]) < UNKNOWN_NOUN_MIN_COSINE:

@@ -140,7 +140,7 @@ PARTS = frozenset(
 )
 PACKAGING = frozenset(
     ["box", "bottle", "carton", "jar", "can", "tin", "pack", "packet", "package", "container", "tub", "bag", "case"]
-    + ["pouch", "packaging"]
+    + ["pouch", "packaging", "stick", "bar", "slice", "loaf", "wedge", "tube", "roll", "sachet", "bunch"]
 )
 # Nouns that name no kind at all ("the red thing", "that item"): they add nothing against any object.
 GENERIC = frozenset(["thing", "object", "item", "stuff", "piece", "one", "receptacle", "vessel", "product", "goods"])

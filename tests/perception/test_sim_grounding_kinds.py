@@ -72,6 +72,8 @@ def test_a_prompt_that_contradicts_the_object_does_not_match_it(prompt, name, de
         ("ketchup bottle", "ketchup", "ketchup"),  # a package named by its contents
         ("soup can", "alphabet soup", "alphabet soup"),
         ("cream cheese box", "cream cheese", "cream cheese"),
+        ("biscuit box", "cookies", "cookies"),  # the modifier by another word of its kind
+        ("butter stick", "butter", "butter"),  # a portion is named like a package
         ("wine", "wine bottle", "wine bottle"),  # the contents of a bottle name the bottle
         ("cooker", "stove", KITCHEN["stove"]),  # an unknown noun the encoder puts near the object's own
         ("the red thing", "red block", "small red wooden cube block"),  # a generic noun claims no kind
