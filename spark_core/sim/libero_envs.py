@@ -159,27 +159,33 @@ def _free_spares() -> None:
     _spare.clear()
 
 
-def make_env(task: LiberoTask, init_index: int, reuse: bool = True):
-    """LIBERO's ControlEnv for the task, reset to init state `init_index` (no cameras, no GL context). `reuse`:
-    take this process's spare env of the same task if a closed world handed one back (the same start state)."""
+def build_control_env(task: LiberoTask):
+    """A new LIBERO ControlEnv for the task's BDDL file (LIBERO's placement samplers; no cameras, no GL context;
+    not reset to any init state)."""
     _configure()
     from libero.libero.envs.env_wrapper import ControlEnv
 
+    return ControlEnv(
+        bddl_file_name=str(task.bddl),
+        has_offscreen_renderer=False,
+        use_camera_obs=False,
+        camera_names=[],
+        ignore_done=True,
+        hard_reset=False,
+        horizon=STEP_LIMITS[task.suite],
+    )
+
+
+def make_env(task: LiberoTask, init_index: int, reuse: bool = True):
+    """LIBERO's ControlEnv for the task, reset to init state `init_index` (no cameras, no GL context). `reuse`:
+    take this process's spare env of the same task if a closed world handed one back (the same start state)."""
     states = init_states(task)
     if not 0 <= init_index < len(states):
         raise ValueError(f"{task.name} has {len(states)} init states; got index {init_index}")
     env = _spare.pop(task.name, None) if reuse else None
     if env is None:
         _free_spares()
-        env = ControlEnv(
-            bddl_file_name=str(task.bddl),
-            has_offscreen_renderer=False,
-            use_camera_obs=False,
-            camera_names=[],
-            ignore_done=True,
-            hard_reset=False,
-            horizon=STEP_LIMITS[task.suite],
-        )
+        env = build_control_env(task)
 
         def release() -> None:
             _free_spares()  # at most one spare: the last task's

@@ -47,20 +47,9 @@ def task_of_seed(seed: int):
 
 def build_env(task) -> Any:
     """LIBERO's ControlEnv for a task's BDDL file (placement samplers as LIBERO defines them; no init state)."""
-    from ...sim.libero_envs import STEP_LIMITS, _configure
+    from ...sim.libero_envs import build_control_env
 
-    _configure()
-    from libero.libero.envs.env_wrapper import ControlEnv
-
-    return ControlEnv(
-        bddl_file_name=str(task.bddl),
-        has_offscreen_renderer=False,
-        use_camera_obs=False,
-        camera_names=[],
-        ignore_done=True,
-        hard_reset=False,
-        horizon=STEP_LIMITS[task.suite],
-    )
+    return build_control_env(task)
 
 
 def make_world(env, seed: int):
