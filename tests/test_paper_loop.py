@@ -9,6 +9,7 @@ from __future__ import annotations
 import base64
 import hashlib
 import json
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -160,7 +161,7 @@ def tiny_sam3(tmp_path_factory):
     return str(build_tiny_checkpoint(tmp_path_factory.mktemp("sam3-tiny")))
 
 
-def _check_trace(trial: dict, fake) -> None:
+def _check_trace(trial: dict, fake, read: Callable[[dict], bytes] | None = None) -> None:
     """What the issue asks the trace to show: the synthesis call, the BT call with the annotated image, every
     prompt candidate with its SAM3 score and the one kept, and the cost of both calls."""
     planning = trial["protocol"]["planning"]
@@ -173,13 +174,14 @@ def _check_trace(trial: dict, fake) -> None:
     assert {"red block", *SYNTHESIS[0]["prompts"]} <= {c["prompt"] for c in candidates}
     assert all(isinstance(c["best_score"], float) and c["verdict"] for c in candidates)
     assert all("chosen" in cam for g in trial["groundings"] for cam in g["cameras"].values())
-    _check_planner_image(trial, bt)
+    _check_planner_image(trial, bt, read)
 
 
-def _check_planner_image(trial: dict, bt: dict) -> None:
-    """The BT call's annotated image is kept with the trial's artifacts, byte for byte as sent."""
+def _check_planner_image(trial: dict, bt: dict, read: Callable[[dict], bytes] | None = None) -> None:
+    """The BT call's annotated image is kept with the trial's artifacts, byte for byte as sent. `read`: the
+    artifact's bytes (default: its file, as the store records it; the console API serves them by name)."""
     (image,) = [a for a in trial["artifacts"] if a["kind"] == "planner_input"]
-    data = Path(image["path"]).read_bytes()
+    data = read(image) if read else Path(image["path"]).read_bytes()
     assert image["sha256"] == bt["image"]["sha256"] == hashlib.sha256(data).hexdigest()
     assert image["camera"] == bt["image"]["camera"]
 
@@ -227,8 +229,9 @@ def test_a_console_trial_with_gemini_and_sam3_traces_both_calls(tmp_path, monkey
             while (trial := c.get(f"/api/trials/{r.json()['id']}").json())["status"] not in ("done", "interrupted"):
                 assert time.monotonic() - t0 < 180, trial["status"]
                 time.sleep(0.2)
-    assert trial["status"] == "done" and trial["verdict"] != "crashed", trial.get("reason")
-    _check_trace(trial, fake)
+            assert trial["status"] == "done" and trial["verdict"] != "crashed", trial.get("reason")
+            assert all("path" not in a for a in trial["artifacts"])  # the API names files, never where they lie
+            _check_trace(trial, fake, lambda a: c.get(f"/api/trials/{trial['id']}/artifacts/{a['name']}").content)
 
 
 @pytest.mark.slow  # spark bench's path; the s2 smoke test in tests/bench/test_protocols.py runs it by default
