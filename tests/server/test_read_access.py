@@ -8,7 +8,7 @@ import pytest
 from fastapi.testclient import TestClient
 
 from server.app import create_app
-from server.settings import Settings
+from tests.server.isolated_settings import isolated_settings
 
 TOKEN = "s3cret-token-4711"
 READS = [
@@ -26,20 +26,9 @@ READS = [
 ]
 
 
-def _settings(tmp_path, **kw) -> Settings:
-    return Settings(
-        store_url=f"sqlite:///{tmp_path / 's.db'}",
-        workers=1,
-        viser=False,
-        artifacts_dir=str(tmp_path / "art"),
-        exports_dir=str(tmp_path / "exports"),
-        **kw,
-    )
-
-
 @pytest.fixture()
 def guarded(tmp_path):
-    with TestClient(create_app(_settings(tmp_path, api_token=TOKEN))) as c:
+    with TestClient(create_app(isolated_settings(tmp_path, api_token=TOKEN))) as c:
         yield c
 
 
@@ -61,13 +50,13 @@ def test_the_bearer_any_case_and_the_session_cookie_open_the_reads(guarded):
 
 
 def test_reads_are_guarded_beyond_loopback_too(tmp_path):
-    with TestClient(create_app(_settings(tmp_path, host="0.0.0.0", api_token=TOKEN))) as c:
+    with TestClient(create_app(isolated_settings(tmp_path, host="0.0.0.0", api_token=TOKEN))) as c:
         assert c.get("/api/trials").status_code == 401
         assert c.get("/api/trials", headers={"Authorization": f"Bearer {TOKEN}"}).status_code == 200
 
 
 def test_a_loopback_console_without_a_token_stays_open_for_reads(tmp_path):
-    with TestClient(create_app(_settings(tmp_path))) as c:
+    with TestClient(create_app(isolated_settings(tmp_path))) as c:
         assert c.get("/api/trials").status_code == 200
 
 
@@ -78,7 +67,7 @@ def test_missing_credentials_do_not_lock_the_operator_out(guarded):
 
 
 def test_scene_renders_have_a_rate_limit_of_their_own(tmp_path):
-    settings = _settings(tmp_path, expensive_rate_per_s=0.01, expensive_burst=3)
+    settings = isolated_settings(tmp_path, expensive_rate_per_s=0.01, expensive_burst=3)
     with TestClient(create_app(settings)) as c:
         codes = [c.get("/api/trials/nope/camera.png?t_sim_s=1").status_code for _ in range(5)]
         assert codes[:3] == [404, 404, 404] and codes[3:] == [429, 429]
@@ -94,6 +83,6 @@ def test_the_login_redirect_never_leaves_this_server(guarded, path):
 
 
 def test_without_a_token_a_token_in_the_url_is_no_login(tmp_path):
-    with TestClient(create_app(_settings(tmp_path))) as c:
+    with TestClient(create_app(isolated_settings(tmp_path))) as c:
         r = c.get("/%5Cevil.example?token=anything", follow_redirects=False)
         assert r.status_code != 303 and "location" not in r.headers

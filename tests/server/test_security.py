@@ -14,19 +14,9 @@ from starlette.testclient import WebSocketDenialResponse
 
 from server.app import create_app
 from server.settings import Settings
+from tests.server.isolated_settings import isolated_settings
 
 TOKEN = "s3cret-token-4711"
-
-
-def _settings(tmp_path, **kw) -> Settings:
-    return Settings(
-        store_url=f"sqlite:///{tmp_path / 's.db'}",
-        workers=1,
-        viser=False,
-        artifacts_dir=str(tmp_path / "art"),
-        exports_dir=str(tmp_path / "exports"),
-        **kw,
-    )
 
 
 @contextlib.contextmanager
@@ -52,7 +42,7 @@ def _serve(settings: Settings, log_level: str = "warning"):
 
 
 def test_url_token_is_swapped_for_an_httponly_samesite_cookie_and_a_clean_url(tmp_path):
-    with TestClient(create_app(_settings(tmp_path, host="0.0.0.0", api_token=TOKEN))) as c:
+    with TestClient(create_app(isolated_settings(tmp_path, host="0.0.0.0", api_token=TOKEN))) as c:
         r = c.get(f"/?token={TOKEN}&view=history", follow_redirects=False)
         assert r.status_code == 303 and r.headers["location"] == "/?view=history"
         cookie = r.headers["set-cookie"]
@@ -83,7 +73,7 @@ def test_no_credential_reaches_a_log_line(tmp_path):
 
     keep = Keep()
     try:
-        with _serve(_settings(tmp_path, api_token=TOKEN), log_level="info") as base:
+        with _serve(isolated_settings(tmp_path, api_token=TOKEN), log_level="info") as base:
             for name in ("uvicorn.access", "uvicorn.error"):  # after uvicorn's logging set-up, which drops handlers
                 logging.getLogger(name).addHandler(keep)
             assert httpx.get(f"{base}/?token={TOKEN}", follow_redirects=True).status_code == 200  # to / via a cookie
@@ -102,7 +92,7 @@ def test_no_credential_reaches_a_log_line(tmp_path):
 
 
 def test_guessing_the_token_is_rate_limited_and_forwarded_for_from_loopback_does_not_reset_it(tmp_path):
-    with _serve(_settings(tmp_path, api_token=TOKEN, auth_failures_max=10)) as base:
+    with _serve(isolated_settings(tmp_path, api_token=TOKEN, auth_failures_max=10)) as base:
         guesses = [{"Authorization": f"Bearer guess{k}", "X-Forwarded-For": f"203.0.113.{k}"} for k in range(20)]
         codes = [httpx.post(f"{base}/api/plans/validate", json={"text": "x"}, headers=h).status_code for h in guesses]
         assert codes[:10] == [401] * 10 and codes[10:] == [429] * 10, codes
@@ -122,7 +112,7 @@ def test_guessing_the_token_is_rate_limited_and_forwarded_for_from_loopback_does
 
 
 def test_cross_origin_pages_cannot_drive_a_loopback_console(tmp_path):
-    with TestClient(create_app(_settings(tmp_path))) as c:  # loopback, no token: the default console
+    with TestClient(create_app(isolated_settings(tmp_path))) as c:  # loopback, no token: the default console
         with (
             pytest.raises(WebSocketDenialResponse) as refused,
             c.websocket_connect("/api/events", headers={"Origin": "http://evil.example"}),
@@ -139,7 +129,7 @@ def test_cross_origin_pages_cannot_drive_a_loopback_console(tmp_path):
         assert c.post("/api/plans/validate", json={"text": "x"}).status_code == 200  # curl / SDKs send no Origin
         with c.websocket_connect("/api/events", headers={"Origin": "http://testserver"}):
             pass
-    with TestClient(create_app(_settings(tmp_path, cors_origins=("http://ui.example",)))) as c:
+    with TestClient(create_app(isolated_settings(tmp_path, cors_origins=("http://ui.example",)))) as c:
         listed = c.post("/api/plans/validate", json={"text": "x"}, headers={"Origin": "http://ui.example"})
         assert listed.status_code == 200
 
@@ -149,7 +139,7 @@ def test_a_chunked_body_over_the_limit_is_refused(tmp_path):
         for _ in range(32):  # 2 MiB in 64 KiB chunks: no Content-Length to check up front
             yield b" " * 65536
 
-    with _serve(_settings(tmp_path)) as base:
+    with _serve(isolated_settings(tmp_path)) as base:
         r = httpx.post(f"{base}/api/plans/validate", content=body(), headers={"Content-Type": "application/json"})
         assert r.status_code == 413 and "larger than 1024 KiB" in r.json()["detail"]
         declared = httpx.post(
@@ -194,7 +184,7 @@ def test_a_websocket_about_an_unknown_trial_is_answered_404_before_the_upgrade(t
 
 
 def test_an_export_of_unknown_trials_is_refused_and_reveals_no_server_path(tmp_path):
-    with TestClient(create_app(_settings(tmp_path))) as c:
+    with TestClient(create_app(isolated_settings(tmp_path))) as c:
         c.app.state.store.create_trial("known-1", status="done", task="lift_block", success=True)
         r = c.post("/api/exports", json={"trial_ids": ["known-1", "ghost-1", "ghost-2"]})
         assert r.status_code == 404 and "'ghost-1'" in r.json()["detail"] and "'ghost-2'" in r.json()["detail"]
