@@ -261,19 +261,12 @@ class TraceStore:
             row = s.get(BatchRow, batch_id)
             if row is None:
                 return None
-            trials = s.scalars(
-                select(TrialRow)
-                .where(TrialRow.batch_id == batch_id, TrialRow.deleted_at.is_(None))
-                .order_by(TrialRow.task, TrialRow.seed)
+            members = s.scalars(
+                select(TrialRow).where(TrialRow.batch_id == batch_id).order_by(TrialRow.task, TrialRow.seed)
             ).all()
-            items = [_row_dict(t, summary=True) for t in trials]
+            items = [_row_dict(t, summary=True) for t in members if t.deleted_at is None]
             # deleted members stay counted in the batch's results (a delete must not rewrite a benchmark)
-            hidden = s.scalars(
-                select(TrialRow)
-                .where(TrialRow.batch_id == batch_id, TrialRow.deleted_at.is_not(None))
-                .order_by(TrialRow.task, TrialRow.seed)
-            ).all()
-            deleted = [_row_dict(t, summary=True) for t in hidden]
+            deleted = [_row_dict(t, summary=True) for t in members if t.deleted_at is not None]
         return {
             "id": row.id,
             "status": row.status,
