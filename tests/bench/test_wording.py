@@ -14,10 +14,10 @@ from spark_core.planning import SceneView
 
 def test_the_corpus_is_large_enough_split_by_its_hash_rule_and_names_real_tasks():
     dev, test = wording.load("dev"), wording.load("test")
-    # probes added later (id ".pN", README) go to dev only; the hash split holds for the original corpus
-    later = [e for e in dev if re.search(r"\.p[0-9]+$", e["id"])]
+    # probes added later (ids ".pN" and ".qN", README) go to dev only; the hash split holds for the original corpus
+    later = [e for e in dev if re.search(r"\.[pq][0-9]+$", e["id"])]
     first = [e for e in dev if e not in later]
-    assert later and not any(re.search(r"\.p[0-9]+$", e["id"]) for e in test)
+    assert later and not any(re.search(r"\.[pq][0-9]+$", e["id"]) for e in test)
     assert len(first) + len(test) >= 300 and abs(len(first) - len(test)) < 0.1 * (len(first) + len(test))
     for e in first + test:
         odd = hashlib.sha256(f"{e['task']}|{e['instruction']}".encode()).digest()[0] % 2
