@@ -88,7 +88,7 @@ class PerceptionResolver:
             ev = masked_points(sel.detection, frame, exclude)
             if ev is not None:
                 evidence.append(ev)
-        evidence = _agreeing(evidence)
+        evidence = fused_evidence(evidence)
         if not evidence:
             tried = ", ".join([label, *variants])
             record["keypoint"] = None
@@ -100,7 +100,7 @@ class PerceptionResolver:
         return kp
 
 
-def _agreeing(evidence: list[PointEvidence]) -> list[PointEvidence]:
+def fused_evidence(evidence: list[PointEvidence]) -> list[PointEvidence]:
     """Fuse views only when they saw the same thing; otherwise trust the most confident view."""
     if len(evidence) < 2:
         return evidence
