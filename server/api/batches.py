@@ -15,6 +15,7 @@ from spark_core import PLANNERS, PROTOCOLS, SEGMENTERS, StorePlanLibrary, batch_
 from spark_core import suites as catalog_suites
 
 from .models import MAX_ID, MAX_NAME, MAX_OFFSET, MAX_SEED, TrialCreate
+from .text import VISIBLE, Visible
 from .trials import trial_config
 
 router = APIRouter(prefix="/api/batches", tags=["batches"])
@@ -26,8 +27,10 @@ class BatchTrial(BaseModel):
 
     model_config = ConfigDict(extra="forbid")
 
-    task: str = Field(max_length=MAX_NAME)
-    instruction: str | None = Field(None, max_length=2000, description="default: the task's own")
+    task: Visible = Field(max_length=MAX_NAME)
+    instruction: Annotated[str, Field(max_length=2000), VISIBLE] | None = Field(
+        None, description="default: the task's own"
+    )
     seed: int = Field(0, ge=0, le=MAX_SEED, strict=True)
     planner: str | None = Field(None, json_schema_extra={"enum": list(PLANNERS)})
     segmenter: str | None = Field(None, json_schema_extra={"enum": list(SEGMENTERS)})
@@ -36,18 +39,20 @@ class BatchTrial(BaseModel):
 class BatchCreate(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
-    suite: str = Field("builtin", max_length=MAX_NAME, description="task suite (GET /api/catalog lists them)")
+    suite: Visible = Field("builtin", max_length=MAX_NAME, description="task suite (GET /api/catalog lists them)")
     specs: list[BatchTrial] | None = Field(
         None, max_length=2000, description="explicit trials (instead of tasks × trials from the suite)"
     )
-    tasks: list[Annotated[str, Field(max_length=MAX_NAME)]] | None = Field(
+    tasks: list[Annotated[str, Field(max_length=MAX_NAME), VISIBLE]] | None = Field(
         None, max_length=2000, description="subset of the suite's tasks (default: all)"
     )
     trials: int = Field(1, ge=1, le=100, strict=True, description="seeds per task")
     seed: int = Field(0, ge=0, le=MAX_SEED, strict=True)
     planner: str = Field("reference", json_schema_extra={"enum": list(PLANNERS)})
-    model: str | None = Field(None, max_length=200)
-    endpoint: str | None = Field(None, max_length=100, description="an LLM endpoint the operator configured")
+    model: Annotated[str, Field(max_length=200), VISIBLE] | None = None
+    endpoint: Annotated[str, Field(max_length=100), VISIBLE] | None = Field(
+        None, description="an LLM endpoint the operator configured"
+    )
     segmenter: str = Field("sim", json_schema_extra={"enum": list(SEGMENTERS)})
     protocol: str | None = Field(
         None,

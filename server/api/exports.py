@@ -13,6 +13,7 @@ from fastapi.responses import FileResponse
 from pydantic import BaseModel, ConfigDict, Field
 
 from .models import MAX_ID
+from .text import VISIBLE
 
 router = APIRouter(prefix="/api/exports", tags=["exports"])
 
@@ -20,10 +21,12 @@ router = APIRouter(prefix="/api/exports", tags=["exports"])
 class ExportCreate(BaseModel):
     model_config = ConfigDict(extra="forbid")  # a misspelt field is an error, not ignored
 
-    trial_ids: list[Annotated[str, Field(max_length=MAX_ID)]] | None = Field(
+    trial_ids: list[Annotated[str, Field(max_length=MAX_ID), VISIBLE]] | None = Field(
         None, max_length=5000, description="these trials (history selection)"
     )
-    batch: str | None = Field(None, max_length=64, description="or every trial of this batch")
+    batch: Annotated[str, Field(max_length=64), VISIBLE] | None = Field(
+        None, description="or every trial of this batch"
+    )
     success_only: bool = Field(True, strict=True, description="verified successes only (clean demonstrations)")
     format: str = Field("lerobot", pattern="^lerobot$")
 

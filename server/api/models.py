@@ -17,13 +17,15 @@ from spark_core import (
     check_segmenter,
 )
 
+from .text import VISIBLE, VISIBLE_PLAN, Visible
+
 MAX_SEED = 2**31 - 1  # a seed the simulators' RNGs take (np.random, robosuite, LIBERO init-state index)
 MAX_OFFSET = 10**9  # list paging: far past any store, well inside SQLite's 64-bit integers
 MAX_ID = 256  # trial ids: "{batch}-{n}-{task}-{seed}" at most ~170 characters
 MAX_NAME = 128  # task, suite and backend names
 
 
-NodePath = Annotated[str, Field(max_length=256)]  # e.g. tree.children[2].children[0]
+NodePath = Annotated[str, Field(max_length=256), VISIBLE]  # e.g. tree.children[2].children[0]
 
 
 def _enum(names: Any) -> dict[str, Any]:
@@ -34,8 +36,10 @@ class TrialCreate(BaseModel):
     model_config = ConfigDict(extra="forbid")  # a misspelt or retired field (base_url) is an error, not ignored
     # booleans are strict like the seed: "yes" or 1 is not a switch someone meant to flip
 
-    task: str = Field(max_length=MAX_NAME, description="task whose scene to run in (GET /api/catalog lists them)")
-    instruction: str | None = Field(None, max_length=2000, description="default: the task's own instruction")
+    task: Visible = Field(max_length=MAX_NAME, description="task whose scene to run in (GET /api/catalog lists them)")
+    instruction: Annotated[str, Field(max_length=2000), VISIBLE] | None = Field(
+        None, description="default: the task's own instruction"
+    )
     planner: str = Field("reference", json_schema_extra=_enum(PLANNERS))
     segmenter: str = Field(
         "sim",
@@ -44,12 +48,12 @@ class TrialCreate(BaseModel):
     )
     seed: int = Field(0, ge=0, le=MAX_SEED, strict=True)
     breakpoints: list[NodePath] = Field(default_factory=list, max_length=200, description="node paths to pause before")
-    model: str | None = Field(None, max_length=200)
-    endpoint: str | None = Field(
-        None, max_length=100, description="an LLM endpoint the operator configured (GET /api/catalog lists them)"
+    model: Annotated[str, Field(max_length=200), VISIBLE] | None = None
+    endpoint: Annotated[str, Field(max_length=100), VISIBLE] | None = Field(
+        None, description="an LLM endpoint the operator configured (GET /api/catalog lists them)"
     )
-    plan: str | None = Field(
-        None, max_length=256 * 1024, description="a plan to run as given (the planner is not called)"
+    plan: Annotated[str, Field(max_length=256 * 1024), VISIBLE_PLAN] | None = Field(
+        None, description="a plan to run as given (the planner is not called)"
     )
     start_paused: bool = Field(False, strict=True, description="pause before the first primitive")
     capture: bool = Field(
@@ -121,7 +125,7 @@ class Control(BaseModel):
 
 
 class PlanText(BaseModel):
-    text: str = Field(max_length=256 * 1024)
+    text: Annotated[str, Field(max_length=256 * 1024), VISIBLE_PLAN]
 
 
 class PlanValidation(BaseModel):
