@@ -9,6 +9,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from pathlib import Path
 
+from .liberopro_attribution import attribution_table
 from .published import LIBEROPRO_CELLS, LIBEROPRO_MEAN
 from .report import footer, pct, wilson
 from .splits import SPLITS
@@ -110,6 +111,21 @@ def table(runs: Sequence[tuple[str, list[dict]]]) -> str:
     return "\n".join(lines)
 
 
+def _attributions(runs: Sequence[tuple[Path, list[dict]]]) -> str:
+    """For each camera-only run, the paired comparison with the oracle run sharing most of its trials."""
+    oracles = [(str(p), rows) for p, rows in runs if rows[0]["protocol"].get("privileged")]
+    out = []
+    for path, rows in runs:
+        if rows[0]["protocol"].get("privileged") or not oracles:
+            continue
+        keys = {(r["task"], int(r["seed"])) for r in rows}
+        best = max(oracles, key=lambda o: len(keys & {(r["task"], int(r["seed"])) for r in o[1]}))
+        text = attribution_table((str(path), rows), best)
+        if text:
+            out.append(text)
+    return "".join(t + "\n\n" for t in out)
+
+
 def section(runs: Sequence[tuple[Path, list[dict]]], command: str) -> str:
     labelled = [(run_label(rows), rows) for _, rows in runs]
     sources = "; ".join(
@@ -121,6 +137,7 @@ def section(runs: Sequence[tuple[Path, list[dict]]], command: str) -> str:
         table(labelled)
         + "\n\nOur entries: success [95 % Wilson interval] (trials). Mean over cells: the unweighted mean of "
         "the six cell rates, as the paper reports it.\n\n"
+        + _attributions(runs)
         + footer(
             command,
             "LIBERO-PRO, six cells (libero_{spatial,object,goal} x position swap / task perturbation); a trial's seed "
