@@ -32,6 +32,8 @@ class Settings:
     # Proxies whose X-Forwarded-For names the real client (IPs or CIDRs). None by default: the header is ignored.
     trusted_proxies: tuple[str, ...] = field(default_factory=tuple)
     max_body_bytes: int = 1024 * 1024  # request bodies, streamed (chunked) ones included
+    # open websockets (event streams, the 3D view's relay) at once, over all clients: a browser tab holds 2-3
+    max_websockets: int = 64
     delete_grace_s: float = 24 * 3600.0  # a deleted trial can be restored this long, then it is purged with its files
     purge_every_s: float = 600.0
     shutdown_timeout_s: float = 2.5  # running trials are stopped (recorded interrupted) within this on shutdown
@@ -54,6 +56,7 @@ class Settings:
             viser_port=int(e.get("SPARK_VISER_PORT", 0)),
             viser_env_map=e.get("SPARK_VISER_ENV_MAP", "0") == "1",
             delete_grace_s=float(e.get("SPARK_DELETE_GRACE_S", cls.delete_grace_s)),
+            max_websockets=int(e.get("SPARK_MAX_WEBSOCKETS", cls.max_websockets)),
         )
 
     @property

@@ -7,7 +7,9 @@
    its session cookie; the page and its scripts stay public, they hold no data);
 3. mutating requests: the per-client rate limit, JSON bodies only (415); reads that build or render a scene
    (EXPENSIVE_READS): a rate limit of their own;
-4. every request: the body limit, counted as the bytes arrive (chunked bodies included; 413).
+4. every request: the body limit, counted as the bytes arrive (chunked bodies included; 413);
+5. websockets: at most `max_websockets` open at once (SPARK_MAX_WEBSOCKETS); one more is accepted and closed
+   at once with code 1013 (try again later) and a reason a browser's `onclose` can show.
 """
 
 from __future__ import annotations
@@ -51,6 +53,7 @@ class Guard:
         self.expensive = TokenBucket(settings.expensive_rate_per_s, settings.expensive_burst)
         # Beyond loopback every mutating call and websocket needs credentials; on loopback only once a token is set.
         self.auth_needed = bool(settings.api_token) or not settings.loopback
+        self.websockets_open = 0  # admitted and not yet returned (one event loop: no lock needed)
 
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
         if scope["type"] not in ("http", "websocket"):
@@ -75,7 +78,26 @@ class Guard:
         except Refusal as r:
             await _refuse(scope, send, r)
             return
+        if scope["type"] == "websocket":
+            await self._websocket(scope, receive, send)
+            return
         await self.app(scope, receive, send)
+
+    async def _websocket(self, scope: Scope, receive: Receive, send: Send) -> None:
+        limit = self.settings.max_websockets
+        if self.websockets_open >= limit:
+            await _close_full(
+                scope,
+                receive,
+                send,
+                f"too many websockets: this console serves {limit} at once (SPARK_MAX_WEBSOCKETS); close a tab, retry",
+            )
+            return
+        self.websockets_open += 1
+        try:
+            await self.app(scope, receive, send)
+        finally:
+            self.websockets_open -= 1
 
     def _blocked(self, client: str) -> None:
         wait_s = self.failures.retry_after_s(client)
@@ -195,6 +217,16 @@ def _replay(messages: list[Message], receive: Receive) -> Receive:
         return messages.pop(0) if messages else await receive()
 
     return replay
+
+
+async def _close_full(scope: Scope, receive: Receive, send: Send, reason: str) -> None:
+    """Accept, then close with 1013 and `reason`: a refused upgrade reaches a browser as a bare 1006 with no
+    reason. The accept names the first offered subprotocol (a browser drops a handshake that names none)."""
+    if (await receive())["type"] != "websocket.connect":
+        return
+    offered = scope.get("subprotocols") or []
+    await send({"type": "websocket.accept", "subprotocol": offered[0] if offered else None})
+    await send({"type": "websocket.close", "code": 1013, "reason": reason[:123]})
 
 
 async def _refuse(scope: Scope, send: Send, r: Refusal) -> None:
