@@ -11,12 +11,15 @@ from __future__ import annotations
 
 import multiprocessing
 import os
+import threading
+import time
 from collections.abc import Callable, Sequence
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from typing import Any
 
 EXECUTORS = ("local", "ray")
 RAY_RETRIES = 3  # a worker or node lost mid-job: run the job again, at most this many times
+PARENT_POLL_S = 1.0  # how often a pool worker checks that the process that started it is still alive
 
 
 def run_jobs(
@@ -44,11 +47,29 @@ def run_jobs(
             done(i, fn(job))
     else:
         # spawn, never fork: the caller may hold threads (a console, torch's pool) whose locks a fork would copy held
-        with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn")) as pool:
+        with ProcessPoolExecutor(
+            workers,
+            mp_context=multiprocessing.get_context("spawn"),
+            initializer=exit_with_parent,
+            initargs=(os.getpid(),),
+        ) as pool:
             futures = {pool.submit(fn, job): i for i, job in enumerate(jobs)}
             for fut in as_completed(futures):
                 done(futures[fut], fut.result())
     return results  # type: ignore[return-value]
+
+
+def exit_with_parent(parent_pid: int) -> None:
+    """Pool-worker initializer: end this worker when the process that started the pool is gone. A killed
+    `spark bench` (SIGTERM, SIGKILL, OOM) otherwise leaves its workers running its trials on an orphaned pool,
+    holding both cores and gigabytes for nobody."""
+
+    def watch() -> None:
+        while os.getppid() == parent_pid:
+            time.sleep(PARENT_POLL_S)
+        os._exit(1)
+
+    threading.Thread(target=watch, name="exit-with-parent", daemon=True).start()
 
 
 def _run_ray(fn, jobs, workers: int, address: str | None, done: Callable[[int, dict], None]) -> None:
