@@ -71,6 +71,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     # Every request and websocket passes the Guard (security/guard.py) before any route reads it; CORS, when
     # configured, wraps it so that refusals carry the CORS headers a listed origin needs to read them.
     app.add_middleware(Guard, settings=settings)
+    app.state.exports_writing = set()  # ids of the exports being written now (api/exports.py)
     install_log_redaction()
     install_validation_handler(app)  # 422s that never echo the input (NaN, 1e400, lone surrogates: no 500)
     if settings.cors_origins:
