@@ -256,10 +256,20 @@ def _csv(rows: list[dict], columns: tuple[str, ...], filename: str) -> PlainText
 NOT_JUDGED = ("aborted", "interrupted")
 
 
+def _no_batch(request: Request, batch_id: str) -> HTTPException:
+    """404 naming the id; for a deleted batch, where its trials are."""
+    kept = request.app.state.store.trial_ids(batch=batch_id)
+    if kept:
+        return HTTPException(
+            404, f"no batch {batch_id!r}: it was deleted; its {len(kept)} trials are kept (GET /api/trials?batch=...)"
+        )
+    return HTTPException(404, f"no batch {batch_id!r}")
+
+
 def _batch_with_results(request: Request, batch_id: str) -> dict:
     batch = request.app.state.store.get_batch(batch_id)
     if batch is None:
-        raise HTTPException(404, f"no batch {batch_id!r}")
+        raise _no_batch(request, batch_id)
     deleted = batch.pop("deleted_trials", [])
     # Deleted members still count: deleting a failure must not rewrite a benchmark's result.
     members = batch["trials"] + deleted
@@ -312,6 +322,41 @@ def cancel_batch(batch_id: BatchId, request: Request) -> dict:
     return {"id": batch_id, "cancelled": cancelled}
 
 
+class BatchDeleted(BaseModel):
+    id: str
+    trials_kept: int = Field(description="its trials, still in the history and still naming the batch")
+
+
+@router.delete("/{batch_id}", response_model=BatchDeleted)
+def delete_batch(batch_id: BatchId, request: Request) -> BatchDeleted:
+    """Remove a finished or cancelled batch's record (its settings, manifest and result table). Nothing recorded
+    is lost: its trials stay in the history, each still naming the batch (`batch_id`; GET /api/trials/{id} says
+    `batch_deleted: true`, and GET /api/trials?batch=... lists them). 409 while any of its trials is queued or
+    running."""
+    store, runner = request.app.state.store, request.app.state.runner
+    batch = store.get_batch(batch_id)
+    if batch is None:
+        raise _no_batch(request, batch_id)
+    members = batch["trials"] + batch["deleted_trials"]
+    live = runner.live
+    pending = [t for t in members if t["status"] in ("queued", "running") or t["id"] in live]
+    if pending:
+        if batch["status"] == "cancelled":
+            raise HTTPException(
+                409,
+                f"batch {batch_id!r} is cancelled but {len(pending)} of its trials are still stopping: "
+                "delete it once they have",
+            )
+        raise HTTPException(
+            409,
+            f"batch {batch_id!r} is still running ({len(pending)} of its {len(members)} trials queued or running): "
+            f"cancel it first (POST /api/batches/{batch_id}/cancel), then delete it",
+        )
+    if not store.delete_batch(batch_id):  # deleted meanwhile by another request
+        raise _no_batch(request, batch_id)
+    return BatchDeleted(id=batch_id, trials_kept=len(members))
+
+
 @router.get("/{batch_id}/timing")
 def batch_timing(batch_id: BatchId, request: Request) -> dict:
     """Where each task's time went. `rows`: per primitive of its plans, mean simulated and wall seconds per run of
@@ -323,7 +368,7 @@ def batch_timing(batch_id: BatchId, request: Request) -> dict:
     store = request.app.state.store
     batch = store.get_batch(batch_id)
     if batch is None:
-        raise HTTPException(404, f"no batch {batch_id!r}")
+        raise _no_batch(request, batch_id)
     sums: dict[tuple[str, str], list[float]] = {}  # (task, primitive) -> [runs, sim s, wall s]
     for t in batch["trials"]:
         if t["status"] != "done":

@@ -116,6 +116,8 @@ def get_trial(trial_id: TrialId, request: Request) -> dict:
         raise HTTPException(404, f"no trial {trial_id!r}")
     # files are served by name (GET .../artifacts/{name}); where they lie on the server is nobody's business
     trial["artifacts"] = [{k: v for k, v in a.items() if k != "path"} for a in trial.get("artifacts") or []]
+    if trial.get("batch_id"):  # a deleted batch's trials are kept, naming it: say it is gone (no link to follow)
+        trial["batch_deleted"] = not request.app.state.store.has_batch(trial["batch_id"])
     live = request.app.state.runner.live.get(trial_id)
     if live is not None:  # still running: the stored events lag, serve the live ones
         trial["events"] = list(live.history)

@@ -255,6 +255,21 @@ class TraceStore:
                 raise KeyError(f"no batch {batch_id!r}")
             row.status = status
 
+    def delete_batch(self, batch_id: str) -> bool:
+        """Remove the batch's record (status, spec, manifest); False if there is none. Its trials are kept as they
+        were recorded, each still naming the batch it ran in (`trials.batch_id` has no foreign key: a trial
+        outlives its batch, and `trial_ids(batch=...)` still finds them)."""
+        with self.Session.begin() as s:
+            row = s.get(BatchRow, batch_id)
+            if row is None:
+                return False
+            s.delete(row)
+        return True
+
+    def has_batch(self, batch_id: str) -> bool:
+        with self.Session() as s:
+            return s.scalar(select(BatchRow.id).where(BatchRow.id == batch_id)) is not None
+
     def get_batch(self, batch_id: str) -> dict | None:
         """The batch, its trials' summaries and per-task success."""
         with self.Session() as s:
