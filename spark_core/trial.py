@@ -77,7 +77,10 @@ class TrialConfig:
                 f"({', '.join(p for p in PLANNERS if p != 'reference')}) or give a plan"
             )
         if PLANNERS[self.planner].needs_model and not self.model:
-            raise TrialConfigError(f"model: the {self.planner} planner needs a model name")
+            given = " (a given plan runs without calling it: name a model, or leave the planner out)"
+            raise TrialConfigError(
+                f"model: the {self.planner} planner needs a model name{given if self.plan_text is not None else ''}"
+            )
         if self.endpoint is not None:
             from .planning.endpoints import resolve_endpoint
 
