@@ -50,7 +50,12 @@ class RemoteControl(StepControl):
         """Start forwarding; returns the state the worker starts from."""
         with self._cond:
             self._forward = forward
-            return {"paused": self._paused, "aborted": self._aborted, "breakpoints": sorted(self._breakpoints)}
+            return {
+                "paused": self._paused,
+                "aborted": self._aborted,
+                "breakpoints": sorted(self._breakpoints),
+                "steps": self._step_budget,  # steps asked for while queued: each lets one more node run
+            }
 
     def _send(self, action: str, arg=None) -> None:
         if self._forward is not None:

@@ -143,6 +143,8 @@ def child_main(inbox, outbox, store_url: str, artifacts_dir: str, feed_hz: float
             control = StepControl(state["breakpoints"])
             if state["paused"]:
                 control.pause()
+            for _ in range(state.get("steps", 0)):
+                control.step()
             if state["aborted"]:
                 control.abort()
             current.update(id=trial_id, control=control)
