@@ -341,7 +341,14 @@ export interface paths {
         get: operations["get_batch_api_batches__batch_id__get"];
         put?: never;
         post?: never;
-        delete?: never;
+        /**
+         * Delete Batch
+         * @description Remove a finished or cancelled batch's record (its settings, manifest and result table). Nothing recorded
+         *     is lost: its trials stay in the history, each still naming the batch (`batch_id`; GET /api/trials/{id} says
+         *     `batch_deleted: true`, and GET /api/trials?batch=... lists them). 409 while any of its trials is queued or
+         *     running.
+         */
+        delete: operations["delete_batch_api_batches__batch_id__delete"];
         options?: never;
         head?: never;
         patch?: never;
@@ -433,11 +440,35 @@ export interface paths {
             path?: never;
             cookie?: never;
         };
-        get?: never;
+        /**
+         * List Exports
+         * @description Every export on this server, newest first: when, how many trials, its size on disk, its download.
+         */
+        get: operations["list_exports_api_exports_get"];
         put?: never;
         /** Create Export */
         post: operations["create_export_api_exports_post"];
         delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/api/exports/{export_id}": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        get?: never;
+        put?: never;
+        post?: never;
+        /**
+         * Delete Export
+         * @description Remove the export's files (dataset and zip); it cannot be undone. 409 while it is being written.
+         */
+        delete: operations["delete_export_api_exports__export_id__delete"];
         options?: never;
         head?: never;
         patch?: never;
@@ -525,6 +556,16 @@ export interface components {
              */
             capture: boolean;
         };
+        /** BatchDeleted */
+        BatchDeleted: {
+            /** Id */
+            id: string;
+            /**
+             * Trials Kept
+             * @description its trials, still in the history and still naming the batch
+             */
+            trials_kept: number;
+        };
         /**
          * BatchTrial
          * @description One trial of an explicit batch; unset fields take the batch's values.
@@ -586,6 +627,61 @@ export interface components {
              * @default lerobot
              */
             format: string;
+        };
+        /** ExportDeleted */
+        ExportDeleted: {
+            /** Id */
+            id: string;
+            /** Bytes Freed */
+            bytes_freed: number;
+        };
+        /** ExportPage */
+        ExportPage: {
+            /** Total */
+            total: number;
+            /** Limit */
+            limit: number;
+            /** Offset */
+            offset: number;
+            /** Items */
+            items: components["schemas"]["ExportSummary"][];
+        };
+        /** ExportSummary */
+        ExportSummary: {
+            /** Id */
+            id: string;
+            /**
+             * Status
+             * @enum {string}
+             */
+            status: "writing" | "ready" | "incomplete";
+            /**
+             * Created At
+             * @description ISO time (UTC) the export was written
+             */
+            created_at: string;
+            /**
+             * Trials
+             * @description trials in the dataset (one episode each); None until it is written
+             */
+            trials: number | null;
+            /** Frames */
+            frames: number | null;
+            /**
+             * Bytes
+             * @description bytes on disk: the dataset and its zip
+             */
+            bytes: number;
+            /**
+             * Batch
+             * @description the batch it was made from, if any
+             */
+            batch?: string | null;
+            /**
+             * Download
+             * @description the zip's URL once it is ready
+             */
+            download: string | null;
         };
         /** HTTPValidationError */
         HTTPValidationError: {
@@ -1406,6 +1502,37 @@ export interface operations {
             };
         };
     };
+    delete_batch_api_batches__batch_id__delete: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path: {
+                batch_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["BatchDeleted"];
+                };
+            };
+            /** @description Validation Error */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["HTTPValidationError"];
+                };
+            };
+        };
+    };
     batch_results_csv_api_batches__batch_id__results_csv_get: {
         parameters: {
             query?: never;
@@ -1534,6 +1661,38 @@ export interface operations {
             };
         };
     };
+    list_exports_api_exports_get: {
+        parameters: {
+            query?: {
+                limit?: number;
+                offset?: number;
+            };
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ExportPage"];
+                };
+            };
+            /** @description Validation Error */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["HTTPValidationError"];
+                };
+            };
+        };
+    };
     create_export_api_exports_post: {
         parameters: {
             query?: never;
@@ -1556,6 +1715,37 @@ export interface operations {
                     "application/json": {
                         [key: string]: unknown;
                     };
+                };
+            };
+            /** @description Validation Error */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["HTTPValidationError"];
+                };
+            };
+        };
+    };
+    delete_export_api_exports__export_id__delete: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path: {
+                export_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ExportDeleted"];
                 };
             };
             /** @description Validation Error */
