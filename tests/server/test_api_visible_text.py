@@ -29,7 +29,12 @@ def client(tmp_path_factory):
         ("/api/trials", {"task": "lift_block", "breakpoints": ["tree\u200b"]}, "breakpoints.0", "U+200B"),
         ("/api/trials", {"task": "lift_block", "planner": "openai", "model": "gpt\u2060x"}, "model", "U+2060"),
         ("/api/trials", {"task": "lift_block\u202a"}, "task", "U+202A"),
-        ("/api/batches", {"specs": [{"task": "lift_block", "instruction": "a\u2066b"}]}, "specs.0.instruction", ""),
+        (
+            "/api/batches",
+            {"specs": [{"task": "lift_block", "instruction": "a\u2066b"}]},
+            "specs.0.instruction",
+            "U+2066",
+        ),
         ("/api/batches", {"tasks": ["lift_block\u00ad"]}, "tasks.0", "U+00AD"),
         ("/api/exports", {"trial_ids": ["a\x1b[2Jb"]}, "trial_ids.0", "U+001B"),
         ("/api/exports", {"batch": "b\ufeffx"}, "batch", "U+FEFF"),
