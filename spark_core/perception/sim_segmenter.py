@@ -15,7 +15,7 @@ from .detection import Detection
 from .frame import CameraFrame
 from .qualifiers import QUALIFIERS, split_qualifier, split_relation
 from .text_encoder import SHARED_ENCODER, TextEncoder
-from .variants import GENERIC, KIND_OF, MATERIALS, NOT_NOUNS, PACKAGING, PARTS, SHAPES, SIZES
+from .variants import CONSUMABLES, GENERIC, KIND_OF, MATERIALS, NOT_NOUNS, PACKAGING, PARTS, SHAPES, SIZES, SPELLINGS
 
 HEAD_NOUN_BONUS = 0.08
 # An object whose colour, shape or kind contradicts the prompt is no match at any similarity: the score drops by
@@ -67,9 +67,16 @@ class SimSegmenter:
         its knob), minus MISMATCH_PENALTY when the prompt contradicts the object (`mismatch`)."""
         if not self._labels:
             return {}
-        norm = normalise_colours(text)
+        norm = " ".join(SPELLINGS.get(w, w) for w in normalise_colours(text).split())
         q = self.encoder.encode([norm])[0]
         cos = self._doc_vecs @ q
+        # a word the kinds table files with the object's own noun is that noun ("platter" for a plate, "hob" for a
+        # stove): the object scores at least as the prompt with its own noun in that word's place would
+        own = self._own_noun_prompts(norm)
+        if own:
+            own_vecs = self.encoder.encode(list(own.values()))
+            for (i, _), v in zip(own.items(), own_vecs):
+                cos[i] = max(cos[i], float(self._doc_vecs[i] @ v))
         words = norm.split()
         head = words[-1] if words else ""
         # a part's noun names the part when some object is one ("the handle of the drawer"); only when none is
@@ -88,6 +95,18 @@ class SimSegmenter:
             out[label] = c
         return out
 
+    def _own_noun_prompts(self, norm: str) -> dict[int, str]:
+        """object index -> the prompt with each word the kinds table files with that object's own noun replaced
+        by the noun, for the objects where that changes the prompt."""
+        out = {}
+        words = norm.split()
+        for i, label in enumerate(self._labels):
+            noun = self._names[label].split()[-1]
+            swapped = [noun if w != noun and noun in (_kind(w) or ()) else w for w in words]
+            if swapped != words:
+                out[i] = " ".join(swapped)
+        return out
+
     def segment(self, frame: CameraFrame, prompts: Sequence[str]) -> list[Detection]:
         if frame.object_ids is None:
             raise ValueError(
@@ -99,6 +118,15 @@ class SimSegmenter:
             head, relation, anchors = split_relation(prompt)
             if relation is not None:
                 out.extend(self._related(frame, prompt, head, anchors, negated=relation.startswith("not ")))
+                continue
+            unlike = re.fullmatch(r"(.+?) not (.+)", prompt.strip().lower())
+            if unlike:  # "block not blue": the blocks the negated words contradict
+                core, said = unlike.group(1), unlike.group(2)
+                out.extend(
+                    Detection(prompt, prompt, d.mask, d.score, d.camera, d.privileged, {**d.detail, "unlike": said})
+                    for d in self.segment(frame, [core])
+                    if mismatch(f"{said} {core}", self._names[d.detail["object"]], self.catalog[d.detail["object"]])
+                )
                 continue
             qualifier, core = split_qualifier(prompt)
             sims = self.similarities(core)
@@ -163,7 +191,7 @@ class SimSegmenter:
 
 
 def _words(text: str) -> list[str]:
-    return [w for w in re.findall(r"[a-z]+", text.lower()) if w not in _FILLER]
+    return [SPELLINGS.get(w, w) for w in re.findall(r"[a-z]+", text.lower()) if w not in _FILLER]
 
 
 def _forms(word: str) -> set[str]:
@@ -215,7 +243,12 @@ def mismatch(prompt: str, name: str, description: str, part_is_whole: bool = Tru
         # bottle"), or when it is the object's own noun ("burner plate" of a stove): "wine glass" is no wine bottle
         own_noun = any(k & _forms(nw[-1]) for _, k in owners) if nw else False
         via_owner = owners and part_is_whole and (kinds[-1][0] in PARTS | PACKAGING or own_noun)
-        if any(not k & doc for _, k in owners) or not via_owner and not is_head:
+        foreign = [w for w, k in owners if not k & doc]
+        if nw and head_kind & _forms(nw[-1]) and kinds[-1][0] not in PARTS | PACKAGING:
+            # the object is of the head's kind: another object's kind before it says what it is for ("bottle
+            # rack"); food or drink says what it holds ("beer bottle" is no wine bottle)
+            foreign = [w for w in foreign if _forms(w) & CONSUMABLES]
+        if foreign or not via_owner and not is_head:
             return f"kind: {' '.join(w for w, _ in kinds)}"
     attributes = SHAPES | MATERIALS | SIZES | set(QUALIFIERS) | set(BASE_COLOURS) | set(COLOUR_SYNONYMS)
     said_head = said_kinds[-1]

@@ -46,26 +46,27 @@ KINDS: tuple[frozenset[str], ...] = tuple(
     for s in (
         "block cube brick",
         "plate dish saucer platter",
-        "bowl dish",
+        "bowl dish basin",
         "ramekin",
-        "basket hamper",
-        "tray",
+        # "bin" and "crate" are wider words: a basket or a tray
+        "basket hamper bin crate",
+        "tray bin",
         "mug cup",
         "glass tumbler",
         "bottle flask",
         "jar",
-        "sponge",
+        "sponge scrubber scourer pad",
         "brush",
         "towel cloth rag",
         "knob dial",
         "handle pull grip",
         "drawer layer",  # LIBERO's word for a cabinet's drawers ("the top layer of the wooden cabinet")
-        "cabinet cupboard",
-        "stove cooktop burner hob",
+        "cabinet cupboard dresser",
+        "stove cooktop burner hob cooker stovetop",
         "oven",
         "microwave",
         "fridge refrigerator",
-        "sink",
+        "sink basin",
         "toaster",
         "kettle",
         "pan skillet",
@@ -75,13 +76,13 @@ KINDS: tuple[frozenset[str], ...] = tuple(
         "fork",
         "knife",
         "spatula",
-        "peg rod",
+        "peg rod post pole pin",
         "nut",
         "bolt",
         "screw",
         "hammer mallet",
         "bead marble ball",
-        "area zone region",
+        "area zone region target patch spot",
         "rack",
         "shelf",
         "vase",
@@ -116,8 +117,25 @@ KINDS: tuple[frozenset[str], ...] = tuple(
         "pen pencil",
         "cylinder",
         "pyramid",
+        "yogurt yoghurt",
+        "jam jelly marmalade",
+        "honey",
+        "pasta noodles",
+        "rice",
+        "bucket pail",
+        "blender",
+        "napkin serviette",
     )
 )
+# Kinds that are food or drink: as a modifier they say what a thing holds or is made of ("beer bottle", "wine
+# rack"), so they must be the object's own; another kind as a modifier may say what a thing is for ("bottle rack").
+CONSUMABLES = frozenset(
+    ["butter", "milk", "ketchup", "cheese", "soup", "pudding", "juice", "dressing", "sauce", "cookie", "biscuit"]
+    + ["cereal", "bread", "apple", "banana", "lemon", "wine", "egg", "mustard", "mayonnaise", "mayo", "soda", "cola"]
+    + ["beer", "yogurt", "yoghurt", "jam", "jelly", "marmalade", "honey", "pasta", "noodles", "rice"]
+)
+# Other spellings and abbreviations of a word in an object's name: read as that word.
+SPELLINGS: dict[str, str] = {"barbecue": "bbq", "barbeque": "bbq", "yoghurt": "yogurt"}
 # word -> every word of a kind it may name ("dish": a plate or a bowl)
 KIND_OF: dict[str, frozenset[str]] = {w: frozenset().union(*(k for k in KINDS if w in k)) for s in KINDS for w in s}
 # Attribute words: a mention may add them without naming another kind; colours are in colors.py.

@@ -66,6 +66,16 @@ def test_spatial_qualifier_picks_the_instance(scene, prompt, expected):
     assert objects(seg.segment(frame, [prompt])) == [expected]  # bowl 1 is at +y: the robot's left
 
 
+@pytest.mark.parametrize(
+    "prompt,expected", [("block not blue", ["red block"]), ("black bowl not black", []), ("bowl not red", None)]
+)
+def test_a_negated_attribute_keeps_the_instances_it_contradicts(scene, prompt, expected):
+    w, seg, frame = scene
+    got = objects(seg.segment(frame, [prompt]))
+    assert got == (expected if expected is not None else ["black bowl 1", "black bowl 2"])
+    assert all(d.label == prompt for d in seg.segment(frame, [prompt]))
+
+
 def test_unrelated_prompt_finds_nothing(scene):
     w, seg, frame = scene
     assert seg.segment(frame, ["giraffe"]) == []

@@ -50,6 +50,23 @@ def clauses(text):
         ("put the mug closest to the lamp on the tray", [("put", "mug near lamp", "on", "tray")]),
         ("pick up the mug farthest from the lamp", [("pick", "mug not near lamp", None, None)]),
         ("put the mug that isn't on the shelf on the tray", [("put", "mug not on shelf", "on", "tray")]),
+        # an object picked out by an attribute it does not have
+        ("pick up the mug that isn't red", [("pick", "mug not red", None, None)]),
+        ("put the cup other than the green one on the saucer", [("put", "cup not green", "on", "saucer")]),
+        # the goal as what a holder holds, or with any modal and verb of ending up
+        ("the tray should contain the spoon", [("put", "spoon", "in", "tray")]),
+        ("the saucer needs the cup on it", [("put", "cup", "on", "saucer")]),
+        ("the box must hold both pens", [("put", "pens", "in", "box")]),
+        ("the lamp ought to stand on the shelf", [("put", "lamp", "on", "shelf")]),
+        ("the pen has to wind up in the cup", [("put", "pen", "in", "cup")]),
+        (
+            "the spoon should be in the drawer, so open it first",
+            [("open", "drawer", None, None), ("put", "spoon", "in", "drawer")],
+        ),
+        # how to hold it is no object; a ring slid over a post is carried onto it
+        ("lift the crate with both arms, gripping it by its handles", [("pick", "crate with arms", None, None)]),
+        ("pick up the kettle by its handle", [("pick", "kettle", None, None)]),
+        ("slide the ring over the post", [("put", "ring", "on", "post")]),
         # other verbs and checks stated as goals
         ("push the drawer back in", [("close", "drawer", None, None)]),
         ("pull the drawer out", [("open", "drawer", None, None)]),
@@ -72,7 +89,7 @@ def clauses(text):
         ),
         (
             "the box should hold the pen, which you'll need to open first",
-            None,  # no goal this reader knows: see test below
+            [("open", "box", None, None), ("put", "pen", "in", "box")],
         ),
     ],
 )

@@ -180,7 +180,7 @@ PARTICIPLES: dict[str, str] = {
     "emptied": "pour",
 }
 # Words that state a goal between the object and the place ("the apple belongs in the bowl").
-COPULAS = (
+COPULAS: tuple[str, ...] = (
     "should end up",
     "should be",
     "should go",
@@ -209,3 +209,10 @@ COPULAS = (
     "to sit",
     "needs",
 )
+# A modal and a verb of ending up: any pair states a goal ("ought to sit", "has to end up", "should land").
+MODALS: tuple[str, ...] = ("should", "must", "ought to", "needs to", "need to", "has to", "have to", "is to", "are to")
+MODALS += ("will", "is supposed to", "are supposed to", "is meant to", "are meant to")
+END_UP = ("be", "go", "sit", "rest", "stay", "end up", "stand", "lie", "land", "get", "wind up", "finish")
+COPULAS += tuple(f"{m} {v}" for m in MODALS for v in END_UP)
+# Verbs that say a container or a surface holds something ("the basket should contain the block").
+HOLDS = ("contain", "contains", "hold", "holds", "have", "has", "get", "gets", "receive", "receives", "need", "needs")

@@ -106,6 +106,8 @@ def object_phrase(words: str) -> str:
     text = re.sub(r"'s\b", "", text)
     text = re.sub(r"^(?:other|one) |(?<=\w) ones?$", "", text).strip()
     text = re.sub(r"^(.+?) (?:that|which) (?:is|are) (\w+)$", r"\2 \1", text)  # "peg that is square"
+    # "block (that) is not blue", "block other than the blue one": perception keeps the blocks not blue
+    text = re.sub(r"^(.+?) (?:(?:which )?(?:is|are) not|other than) (\w+)(?: ones?)?$", r"\1 not \2", text)
     if re.search(r"\b(between|next to|beside|near|by|on top of|on|in|inside|at|from|under|not)\b", text):
         # the object it is located by reads as a noun phrase too ("next to the box of cookies" -> "cookies box")
         return re.sub(r"\b(\w+) of (\w+)$", _reorder_container, text)

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import re
 
-from .lexicon import CONTAINERS, CONTENTS, COPULAS, FILLERS, HELD, PARTICIPLES, STATE_ACTIONS, VERBS
+from .lexicon import CONTAINERS, CONTENTS, COPULAS, FILLERS, HELD, HOLDS, MODALS, PARTICIPLES, STATE_ACTIONS, VERBS
 
 CONTRACTIONS = {
     "there's": "there is",
@@ -37,9 +37,14 @@ ACTION_WORDS = {
 _VERB_FORMS = sorted({f for forms in VERBS.values() for f in forms} | {"turn", "switch", "use", "there is"}, key=len)
 _FIRST_WORDS = {f.split()[0] for f in _VERB_FORMS}
 _TRAILING = re.compile(
-    r"(?:\s*,\s*|\s+)(?:and\s+)?(?:then\s+)?(?:keep|hold|make sure|let go|release|stop|ensure|check|wait|"
+    r"(?:\s*,\s*|\s+)(?:and\s+)?(?:then\s+)?(?:keep|hold(?= (?:it|them|still|steady|on|up|there)\b)|make sure|"
+    r"let go|release|stop|ensure|check|wait|"
+    # how to hold it, said after the action ("..., holding it by its two handles")
+    r"(?:while )?(?:holding|gripping|grasping|grabbing) (?:it|them)\b|"
     r"(?:put|set|place) (?:it|them) back|leave (?:it|them)\b(?!.*\b(?:on|in|into|onto|inside) (?:the|a|an)\b))\b.*$"
 )
+# Where to grip it is no object and no place: "pick up the mug by its handle" picks up the mug.
+_GRIP = re.compile(r"\s+by (?:its|the|their) (?:two |both )?(?:handles?|grips?|rims?|edges?)\b")
 _PURPOSE = re.compile(r"(?:\s*,\s*|\s+)(?:so(?: that)?|in order that|until)\s+(.*)$")
 _PURPOSE_PLACE = re.compile(
     r"\b(?:sits?|is|are|ends? up|rests?|lands?|stays?|goes|fall|falls|drops?)\s+"
@@ -92,6 +97,10 @@ def _gerund(text: str) -> str:
     return text
 
 
+def strip_article(phrase: str) -> str:
+    return re.sub(r"^(?:the|a|an|this|that|my|your) ", "", phrase)
+
+
 def _head(phrase: str) -> str:
     words = phrase.split()
     return words[-1] if words else ""
@@ -136,12 +145,32 @@ def _colon(left: str, right: str) -> list[str]:
     return [f"put {i} {prep} {left}" for i in items]
 
 
+def _holds(text: str) -> str | None:
+    """ "the basket should contain the block", "the plate needs the block on it": a carry into the holder."""
+    modals = "|".join(re.escape(m) for m in sorted(MODALS, key=len, reverse=True))
+    holds = "|".join(re.escape(h) for h in HOLDS)
+    m = re.fullmatch(
+        rf"((?:the|a|an|this|that|my|your) [\w' ]+?)\s+(?:(?:{modals})\s+)?(?:{holds})\s+"
+        r"((?:the|a|an|both|all|some) [\w' ]+?)(?:\s+(in|on|inside|on top of|into|onto) (?:it|them))?",
+        text,
+    )
+    if not m:
+        return None
+    holder, thing, prep = m.group(1), m.group(2), m.group(3)
+    if prep is None:
+        prep = "in" if _head(holder) in CONTAINERS else "on"
+    return f"put {thing} {'in' if prep in ('in', 'inside', 'into') else 'on'} {holder}"
+
+
 def goal_to_action(text: str) -> str | None:
     """The imperative for a stated goal, or None when `text` states none this reader knows. Tried in turn: a goal
     verb ("belongs", "should be"), a state ("the stove on") or a participle ("the cup placed on the saucer"), a
     bare "is" ("make sure the cup is on the saucer"), a wish naming a place ("I want the cup on the saucer")."""
     wish = re.fullmatch(r"i (?:want|need)\s+(.+)", text)
     body = wish.group(1) if wish else text
+    held = _holds(body)
+    if held:
+        return held
     copulas = "|".join(re.escape(c) for c in sorted(COPULAS, key=len, reverse=True))
     states = "|".join(re.escape(s) for s, _ in STATE_ACTIONS)
     parts = "|".join(re.escape(p) for p in sorted(PARTICIPLES, key=len, reverse=True))
@@ -195,16 +224,18 @@ def imperatives(instruction: str) -> list[str]:
     for sentence in sentences(instruction):
         s = _gerund(re.sub(r"^(?:make sure|ensure|see to it|check) (?:that )?(?=the |a |an )", "", sentence))
         first = re.fullmatch(
-            r"(.*\b(?:in|into|inside) (?:the )?(.+?)),? which you (?:will |would )?(?:need to|have to|must) open"
-            r"(?: it)?(?: first)?",
+            r"(.+?),? (?:which|so|and|then) (?:you (?:will |would )?(?:need to|have to|must|should) )?open"
+            r"(?: it| that)?(?: first| beforehand| before that)?",
             s,
         )
-        if first:  # "the bowl should end up in the top drawer, which you'll need to open first"
-            out.append(f"open the {first.group(2)}")
+        into = re.search(r"\b(?:in|into|inside) (?:the )?(.+?)$", first.group(1)) if first else None
+        holder = re.match(r"put .+ in (.+)$", _holds(first.group(1)) or "") if first else None
+        if first and (into or holder):  # "the bowl should end up in the top drawer, which you'll need to open first"
+            out.append(f"open the {into.group(1) if into else strip_article(holder.group(1) if holder else '')}")
             s = first.group(1)
         s = re.sub(r"^the other (.+?),? not the one (.+?),\s*", r"the \1 not \2 ", s)
         s = re.sub(r",?\s*the one (?:on|sitting on|lying on|that is on) the table,?", " ", s).strip()
-        s = _TRAILING.sub("", s)
+        s = _TRAILING.sub("", _GRIP.sub("", s))
         s = _purpose(s)
         if ":" in s:
             left, right = (x.strip() for x in s.split(":", 1))
