@@ -64,7 +64,7 @@ def clauses(text):
             [("open", "drawer", None, None), ("put", "spoon", "in", "drawer")],
         ),
         # how to hold it is no object; a ring slid over a post is carried onto it
-        ("lift the crate with both arms, gripping it by its handles", [("pick", "crate with arms", None, None)]),
+        ("lift the crate, gripping it by its handles", [("pick", "crate", None, None)]),
         ("pick up the kettle by its handle", [("pick", "kettle", None, None)]),
         ("slide the ring over the post", [("put", "ring", "on", "post")]),
         # other verbs and checks stated as goals
@@ -202,3 +202,28 @@ def test_a_push_into_an_area_perception_did_not_find_says_what_was_understood_an
     res = RulesPlanner().plan(PlanRequest("push the red block into the blue area", view))
     assert not res.ok and "could not find 'blue area'" in res.error
     assert "understood: push obj=red block" in res.error and "found in the scene: red block" in res.error
+
+
+def test_a_lift_with_both_arms_by_the_handles_grips_one_handle_per_arm_at_once():
+    text = "raise the crate with both hands, gripping it by its two handles"
+    assert [(c.action, c.obj, c.together) for c in parse_instruction(text)] == [
+        ("pick", "left crate handle", True),
+        ("pick", "right crate handle", True),
+    ]
+    view = SceneView(
+        {
+            "left crate handle": kp("left crate handle", (0.5, 0.3, 0.1)),
+            "right crate handle": kp("right crate handle", (0.5, -0.3, 0.1)),
+        }
+    )
+    res = RulesPlanner().plan(PlanRequest(text, view, arms={"left": (0.0, 0.5), "right": (0.0, -0.5)}))
+    assert res.ok, res.error
+    grip, lift = plan_to_dict(res.plan)["tree"]["children"]
+    assert grip["type"] == lift["type"] == "parallel"
+    arms = {c["params"]["arm"]: c["params"]["keypoint_label"] for c in grip["children"]}
+    assert arms == {"left": "left crate handle", "right": "right crate handle"}  # each arm the nearer handle
+    assert sorted(c["params"]["arm"] for c in lift["children"]) == ["left", "right"]
+    one_arm = RulesPlanner().plan(PlanRequest(text, view, arms={"right": (0.0, -0.5)}))
+    assert not one_arm.ok and "needs two arms" in one_arm.error
+    # without handles named, a two-handed lift stays one pick of the thing
+    assert [c.together for c in parse_instruction("lift the crate with both hands")] == [False]

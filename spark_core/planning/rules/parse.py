@@ -27,6 +27,7 @@ class Clause:
     source: str | None = None  # pour from
     direction: str | None = None  # forward | backward | left | right
     distance_m: float | None = None
+    together: bool = False  # one of the handles a two-armed lift grips at once ("... with both arms")
     text: str = field(default="", compare=False)
 
 
@@ -225,6 +226,9 @@ def _clause(action: str, rest: str, text: str) -> Clause:
             text=text,
         )
     if action == "pick":
+        both = re.fullmatch(r"(.+ handle) with (?:both|two) arms", rest)
+        if both:  # a handle of something lifted with both arms: its own arm grips it, the other arm the other one
+            return Clause(action, obj=object_phrase(both.group(1)), together=True, text=text)
         # "take the block into the basket": a destination makes it a carry; "pick the bowl on the stove": where
         # it is picks out which bowl, and stays in the phrase
         if not re.search(r"(?<!next )(?<!close )\b(into|onto|to)\b", rest):

@@ -107,6 +107,7 @@ class RulesPlanner:
         last_object: str | None = None
         last_container: str | None = None
         held: str | None = None  # what the previous step left in the hand (a bare "pick X")
+        together: list[str] = []  # handles of a two-armed lift, gripped at once
         for _i, c in enumerate(clauses):
             obj = last_object if is_pronoun(c.obj) else c.obj
             target = (last_container or last_object) if is_pronoun(c.target) else c.target
@@ -120,6 +121,11 @@ class RulesPlanner:
                 need(target, "region", c)
                 direction, distance = self._push_geometry(c, o, target, scene)
                 out.append(_prim("push_object", keypoint_label=o, direction=direction, distance=distance))
+            elif c.action == "pick" and c.together:
+                together.append(need(obj, "handle", c))
+                if len(together) == 2:
+                    out += _lift_together(together, request)
+                    together = []
             elif c.action == "pick":
                 o = need(obj, "object", c)
                 inside = re.search(r"\b(in|inside)\b", o) is not None  # out of a drawer or a box: clear its walls
@@ -205,6 +211,8 @@ class RulesPlanner:
                     ]
             held = obj if c.action == "pick" else held if c.action == "mention" else None
             last_object = obj or last_object
+        if together:
+            raise CannotPlan(f"lifting {together[0]!r} with both arms needs a second handle for the other arm")
         if clauses and clauses[-1].action in ("open", "close", "turn_on", "turn_off"):
             out.append(_prim("go_home"))  # leave the fixture's neighbourhood
         return out
@@ -224,6 +232,35 @@ class RulesPlanner:
         if not c.direction:
             raise CannotPlan(f"{c.text!r}: push which way? (forward, backward, left, right, or into something)")
         return c.direction, round(min(c.distance_m or 0.10, 0.5), 3)
+
+
+TWO_ARM_LIFT_M = 0.15
+
+
+def _lift_together(handles: list[str], request: PlanRequest) -> list[dict]:
+    """Each handle to the arm whose base is nearer (the pairing with the shorter total reach), both gripped at
+    once, then both arms lift together."""
+    if len(request.arms) != 2:
+        raise CannotPlan(
+            f"lifting by {handles[0]!r} and {handles[1]!r} at once needs two arms; this robot has {len(request.arms)}"
+        )
+    scene = request.scene.keypoints
+    a, b = sorted(request.arms)
+
+    def reach(arm: str, label: str) -> float:
+        return float(np.linalg.norm(scene[label].position_m[:2] - np.asarray(request.arms[arm])))
+
+    first, second = handles
+    if reach(a, first) + reach(b, second) > reach(a, second) + reach(b, first):
+        first, second = second, first
+    grips = [(a, first), (b, second)]
+    return [
+        {
+            "type": "parallel",
+            "children": [_prim("pick_with_arm", arm=arm, keypoint_label=h, lift_height=0.0) for arm, h in grips],
+        },
+        {"type": "parallel", "children": [_prim("lift", arm=arm, height=TWO_ARM_LIFT_M) for arm, _ in grips]},
+    ]
 
 
 CARRY_ENDS = ("place", "place_in")

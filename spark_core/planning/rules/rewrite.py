@@ -43,6 +43,11 @@ _TRAILING = re.compile(
     r"(?:while )?(?:holding|gripping|grasping|grabbing) (?:it|them)\b|"
     r"(?:put|set|place) (?:it|them) back|leave (?:it|them)\b(?!.*\b(?:on|in|into|onto|inside) (?:the|a|an)\b))\b.*$"
 )
+# "lift the pot with both arms, holding it by its two handles": one handle to each arm, lifted together.
+_TWO_HANDED = re.compile(
+    r"(?:pick up|lift up|lift|raise|hoist|hold up) (?:the |a )?(.+?) with (?:both|two|the two) (?:arms|hands)\b.*"
+    r"\bby (?:its|the|their) (?:two |both )?handles\b.*"
+)
 # Where to grip it is no object and no place: "pick up the mug by its handle" picks up the mug.
 _GRIP = re.compile(r"\s+by (?:its|the|their) (?:two |both )?(?:handles?|grips?|rims?|edges?)\b")
 _PURPOSE = re.compile(r"(?:\s*,\s*|\s+)(?:so(?: that)?|in order that|until)\s+(.*)$")
@@ -233,6 +238,10 @@ def imperatives(instruction: str) -> list[str]:
         if first and (into or holder):  # "the bowl should end up in the top drawer, which you'll need to open first"
             out.append(f"open the {into.group(1) if into else strip_article(holder.group(1) if holder else '')}")
             s = first.group(1)
+        two = _TWO_HANDED.fullmatch(s)
+        if two:
+            out += [f"pick up the {side} {two.group(1)} handle with both arms" for side in ("left", "right")]
+            continue
         s = re.sub(r"^the other (.+?),? not the one (.+?),\s*", r"the \1 not \2 ", s)
         s = re.sub(r",?\s*the one (?:on|sitting on|lying on|that is on) the table,?", " ", s).strip()
         s = _TRAILING.sub("", _GRIP.sub("", s))
