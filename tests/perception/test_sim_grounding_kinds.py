@@ -153,6 +153,7 @@ def test_a_head_of_the_objects_kind_after_a_food_word_is_still_refused():
         ("the cooker knob", "stove"),
         ("the wicker hamper", "basket"),
         ("the green target", "green area"),
+        ("the range", "stove"),
     ],
 )
 def test_a_kinds_table_synonym_grounds_however_far_the_encoder_puts_it(prompt, expected):
@@ -170,3 +171,11 @@ def test_a_kinds_table_synonym_of_the_bowl_and_of_the_peg():
     seg = SimSegmenter({"square peg": "square metal peg standing on the table", "square nut": "brass square nut"})
     sims = seg.similarities("square post")
     assert sims["square peg"] >= seg.threshold > sims["square nut"]
+
+
+def test_everyday_names_of_a_mess_and_of_groceries_ground():
+    seg = SimSegmenter({"dirt": "brown dirt stains on the table"})
+    assert seg.similarities("the mess")["dirt"] >= seg.threshold
+    seg = SimSegmenter(GROCERIES | {"orange juice": "orange juice"})
+    sims = seg.similarities("the oj")
+    assert max(sims, key=sims.__getitem__) == "orange juice" and sims["orange juice"] >= seg.threshold
