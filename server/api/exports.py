@@ -115,9 +115,11 @@ class ExportSummary(BaseModel):
     id: str
     status: Literal["writing", "ready", "incomplete"]
     created_at: str = Field(description="ISO time (UTC) the export was written")
-    trials: int | None = Field(description="trials in the dataset (one episode each); None until it is written")
-    frames: int | None
-    bytes: int = Field(description="bytes on disk: the dataset and its zip")
+    trials: int | None = Field(
+        ge=0, le=2**31, description="trials in the dataset (one episode each); None until it is written"
+    )
+    frames: int | None = Field(ge=0, le=2**53, description="frames in the dataset; None until it is written")
+    bytes: int = Field(ge=0, le=2**63, description="bytes on disk: the dataset and its zip")
     batch: str | None = Field(None, description="the batch it was made from, if any")
     download: str | None = Field(description="the zip's URL once it is ready")
 

@@ -190,8 +190,12 @@ def test_workspace_steps_breakpoints_then_scrubs_tree_camera_and_3d_together(ser
     cursor_sim = float(page.locator("#cursor-time").inner_text().split("·")[1].split()[0])
     assert t_mid < last["t_sim_s"] and t_mid <= cursor_sim + 0.005  # the latest at or before the cursor
     assert page.locator("#grounding-now table.candidates tbody tr").count() >= 1
-    # just before: the earlier grounding in effect; a re-detection of the same label has its own image
-    page.locator("#scrub").fill(str(t1 - 0.05))
+    # inside the first node: the earlier grounding in effect; a re-detection of the same label has its own image
+    # (not "just before t1": the step's pause sits there, where sim time stands still at the next grounding's time)
+    t0 = float(page.locator("#event-table tr[data-kind=started]").nth(1).get_attribute("data-t"))
+    t0_end = float(page.locator("#event-table tr[data-kind=succeeded]").first.get_attribute("data-t"))
+    assert t0 < t0_end < t1
+    page.locator("#scrub").fill(str((t0 + t0_end) / 2))
     page.wait_for_function(f"() => document.querySelector('#grounding-now').dataset.t !== '{t_mid}'")
     imgs_before = _grounding_images(page)
     assert imgs_before and imgs_before != imgs_mid

@@ -665,7 +665,10 @@ export interface components {
              * @description trials in the dataset (one episode each); None until it is written
              */
             trials: number | null;
-            /** Frames */
+            /**
+             * Frames
+             * @description frames in the dataset; None until it is written
+             */
             frames: number | null;
             /**
              * Bytes
