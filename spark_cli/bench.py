@@ -24,6 +24,7 @@ def register(sub) -> None:
             "capbench",
             "liberopro",
             "liberopro-table",
+            "liberopro-ablation",
             "embodiments",
             "grounding",
             "paraphrases",
@@ -125,7 +126,7 @@ def register(sub) -> None:
         "--runs",
         nargs="+",
         metavar="FILE.json",
-        help="liberopro-table: runs to compare per cell (files written by `spark bench liberopro --json`)",
+        help="liberopro-table / liberopro-ablation: runs to compare (files written by `spark bench liberopro --json`)",
     )
     b.add_argument("--store-size", type=int, default=10_000, help="trials in the trace store (api, console suites)")
     b.add_argument("--write", metavar="BENCHMARKS.md", help="replace this benchmark's section in the file")
@@ -299,6 +300,23 @@ def _bench(args: argparse.Namespace) -> int:
             print(f"--runs: {e}", file=sys.stderr)
             return 2
         title, body = "LIBERO-PRO per cell: our runs and the published rows", liberopro_table.section(runs, command)
+        print(body)
+    elif args.suite == "liberopro-ablation":
+        from spark_core.bench import liberopro_ablation, liberopro_table
+
+        if not args.runs:
+            print(
+                "liberopro-ablation compares three runs: --runs FULL.json NO_ADAPTIVE.json NO_RECOVERY.json",
+                file=sys.stderr,
+            )
+            return 2
+        try:
+            runs = [(Path(f), liberopro_table.load_run(Path(f))) for f in args.runs]
+            body = liberopro_ablation.section(runs, command)
+        except liberopro_table.RunError as e:
+            print(f"--runs: {e}", file=sys.stderr)
+            return 2
+        title = "LIBERO-PRO ablations: adaptive prompts and recovery (learned segmenter)"
         print(body)
     elif args.suite == "grounding":
         from spark_core.bench import grounding
