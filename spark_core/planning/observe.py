@@ -29,6 +29,8 @@ def phrases_for(instruction: str) -> list[str]:
         for p in (c.obj, c.target, c.tool, c.source):
             if p and not is_pronoun(p):
                 out.setdefault(p, None)
+        if c.to_arm and c.obj:  # handed from arm to arm: gripped by its handle, if it has one
+            out.setdefault(f"{c.obj} handle", None)
         part = PART_OF_ACTION.get(c.action)
         if part and c.obj:
             out.setdefault(f"{c.obj} {part}", None)

@@ -227,3 +227,44 @@ def test_a_lift_with_both_arms_by_the_handles_grips_one_handle_per_arm_at_once()
     assert not one_arm.ok and "needs two arms" in one_arm.error
     # without handles named, a two-handed lift stays one pick of the thing
     assert [c.together for c in parse_instruction("lift the crate with both hands")] == [False]
+
+
+def test_one_arm_picks_and_hands_over_to_the_other_by_the_handle_when_there_is_one():
+    from spark_core.planning.observe import phrases_for
+
+    text = "grab the spatula with one hand and pass it over to the other hand"
+    assert [(c.action, c.obj, c.arm, c.to_arm) for c in parse_instruction(text)] == [
+        ("pick", "spatula", "one", "other")
+    ]
+    assert "spatula handle" in phrases_for(text)  # perception is asked for the grip
+    arms = {"left": (0.0, 0.5), "right": (0.0, -0.5)}
+    view = SceneView(
+        {"spatula": kp("spatula", (0.5, -0.2, 0.02)), "spatula handle": kp("spatula handle", (0.5, -0.3, 0.02))}
+    )
+    res = RulesPlanner().plan(PlanRequest(text, view, arms=arms))
+    assert res.ok, res.error
+    (node,) = plan_to_dict(res.plan)["tree"]["children"]
+    assert node["type"] == "handoff"  # the nearer arm (right) gives, by the handle
+    assert node["params"] == {"keypoint_label": "spatula handle", "from_arm": "right", "to_arm": "left"}
+    named = RulesPlanner().plan(
+        PlanRequest(
+            "pick up the bar with the left arm and hand it to the right arm",
+            SceneView({"bar": kp("bar", (0.5, -0.2, 0.02))}),
+            arms=arms,
+        )
+    )
+    assert named.ok and plan_to_dict(named.plan)["tree"]["children"][0]["params"] == {
+        "keypoint_label": "bar",
+        "from_arm": "left",
+        "to_arm": "right",
+    }
+    one_arm = RulesPlanner().plan(PlanRequest(text, view, arms={"right": (0.0, -0.5)}))
+    assert not one_arm.ok and "needs two arms" in one_arm.error
+    same = RulesPlanner().plan(
+        PlanRequest(
+            "pick up the bar with the left arm and hand it to the left arm",
+            SceneView({"bar": kp("bar", (0.5, -0.2, 0.02))}),
+            arms=arms,
+        )
+    )
+    assert not same.ok and "to itself" in same.error

@@ -28,6 +28,8 @@ class Clause:
     direction: str | None = None  # forward | backward | left | right
     distance_m: float | None = None
     together: bool = False  # one of the handles a two-armed lift grips at once ("... with both arms")
+    arm: str | None = None  # the arm that picks it: right | left | one (the nearer)
+    to_arm: str | None = None  # the arm it is handed to: right | left | other
     text: str = field(default="", compare=False)
 
 
@@ -226,6 +228,11 @@ def _clause(action: str, rest: str, text: str) -> Clause:
             text=text,
         )
     if action == "pick":
+        handed = re.fullmatch(r"(.+?) with the (right|left|one) arm for the (right|left|other) arm", rest)
+        if handed:  # rewritten from "pick up X with one arm and hand it to the other arm"
+            return Clause(
+                action, obj=object_phrase(handed.group(1)), arm=handed.group(2), to_arm=handed.group(3), text=text
+            )
         both = re.fullmatch(r"(.+ handle) with (?:both|two) arms", rest)
         if both:  # a handle of something lifted with both arms: its own arm grips it, the other arm the other one
             return Clause(action, obj=object_phrase(both.group(1)), together=True, text=text)

@@ -121,6 +121,8 @@ class RulesPlanner:
                 need(target, "region", c)
                 direction, distance = self._push_geometry(c, o, target, scene)
                 out.append(_prim("push_object", keypoint_label=o, direction=direction, distance=distance))
+            elif c.action == "pick" and c.to_arm:
+                out.append(_handoff(need(obj, "object", c), c.arm or "one", c.to_arm, request, scene))
             elif c.action == "pick" and c.together:
                 together.append(need(obj, "handle", c))
                 if len(together) == 2:
@@ -235,6 +237,27 @@ class RulesPlanner:
 
 
 TWO_ARM_LIFT_M = 0.15
+
+
+def _handoff(label: str, giver: str, receiver: str, request: PlanRequest, scene) -> dict:
+    """One arm picks `label` (by its handle when perception found one) and hands it to the other: "one" is the
+    arm whose base is nearer the object (or the arm not named as the receiver), "other" the arm not giving."""
+    arms = sorted(request.arms)
+    if len(arms) != 2:
+        raise CannotPlan(f"handing {label!r} from one arm to another needs two arms; this robot has {len(arms)}")
+    grip = f"{label} handle" if f"{label} handle" in scene else label
+    if giver == "one":
+        xy = scene[grip].position_m[:2]
+        nearer = min(arms, key=lambda a: float(np.linalg.norm(xy - np.asarray(request.arms[a]))))
+        giver = next(a for a in arms if a != receiver) if receiver in arms else nearer
+    if receiver == "other":
+        receiver = next(a for a in arms if a != giver)
+    for arm in (giver, receiver):
+        if arm not in arms:
+            raise CannotPlan(f"this robot's arms are {' and '.join(arms)}: it has no {arm} arm")
+    if giver == receiver:
+        raise CannotPlan(f"hand {label!r} from the {giver} arm to itself? name two different arms")
+    return _prim("handoff", keypoint_label=grip, from_arm=giver, to_arm=receiver)
 
 
 def _lift_together(handles: list[str], request: PlanRequest) -> list[dict]:
