@@ -10,8 +10,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 from pathlib import Path
 
-from .liberopro_table import RunError, run_label
-from .report import footer, pct, wilson
+from .liberopro_table import RunError, rate_with_interval, run_label
+from .report import footer
 
 SUITES = ("libero_spatial", "libero_object", "libero_goal")
 # The paper's ablation effects (percentage points, switch on minus off): adaptive prompts on the spatial and
@@ -44,17 +44,11 @@ def _in(rows: list[dict], suite: str) -> list[dict]:
     return rows if suite == "all" else [r for r in rows if r["task"].startswith(suite + "_")]
 
 
-def _cell(rows: list[dict]) -> str:
-    k = sum(bool(r["success"]) for r in rows)
-    lo, hi = wilson(k, len(rows))
-    return f"{pct(k / len(rows))} [{100 * lo:.1f}–{100 * hi:.1f}] ({len(rows)})" if rows else "–"
-
-
 def table(runs: dict[str, list[dict]]) -> str:
     cols = [*SUITES, "all"]
     lines = ["| configuration | " + " | ".join(cols) + " |", "|" + "---|" * (len(cols) + 1)]
     for name in CONFIGS:
-        lines.append(f"| {name} | " + " | ".join(_cell(_in(runs[name], s)) for s in cols) + " |")
+        lines.append(f"| {name} | " + " | ".join(rate_with_interval(_in(runs[name], s)) for s in cols) + " |")
     for switch, off in (("adaptive prompts", "adaptive prompts off"), ("recovery", "recovery off")):
         ours = []
         for s in cols:

@@ -73,7 +73,8 @@ def _tasks(rows: list[dict]) -> str:
     return f"{n} task{'s' if n != 1 else ''}"
 
 
-def _cell(rows: list[dict]) -> str:
+def rate_with_interval(rows: list[dict]) -> str:
+    """'success [95 % Wilson interval] (trials)' of some trial rows; '–' for none."""
     if not rows:
         return "–"
     k = sum(bool(r["success"]) for r in rows)
@@ -100,7 +101,7 @@ def table(runs: Sequence[tuple[str, list[dict]]]) -> str:
         values, rates = [], []
         for cell in cells:
             rs = [r for r in rows if r["task"].split(":", 1)[0] == cell]
-            values.append(_cell(rs))
+            values.append(rate_with_interval(rs))
             if rs:
                 rates.append(sum(bool(r["success"]) for r in rs) / len(rs))
         mean = f"**{pct(sum(rates) / len(rates))}**" if len(rates) == len(cells) else "– (not every cell)"
