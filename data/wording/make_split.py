@@ -2,6 +2,8 @@
 
 Each line of source.txt is `alias | style | instruction`. The split is fixed by a hash: an entry goes to the
 test half when the first byte of sha256("<task>|<instruction>") is odd, else to dev.
+Historical: dev.yaml has since grown (later probes, the retired first test half) and test.yaml is now the
+second test half (make_test2.py); do not re-run this script over them.
 """
 
 from __future__ import annotations

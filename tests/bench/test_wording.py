@@ -14,20 +14,29 @@ from spark_core.planning import SceneView
 
 def test_the_corpus_is_large_enough_split_by_its_hash_rule_and_names_real_tasks():
     dev, test = wording.load("dev"), wording.load("test")
-    # probes added later (ids ".pN" and ".qN", README) go to dev only; the hash split holds for the original corpus
+    # dev: the original 351 (hash split; the odd-hash half is the retired first test half), then later probes (.pN,
+    # .qN); test: the second test half (.rN), written apart from the others (README)
     later = [e for e in dev if re.search(r"\.[pq][0-9]+$", e["id"])]
     first = [e for e in dev if e not in later]
-    assert later and not any(re.search(r"\.[pq][0-9]+$", e["id"]) for e in test)
-    assert len(first) + len(test) >= 300 and abs(len(first) - len(test)) < 0.1 * (len(first) + len(test))
-    for e in first + test:
-        odd = hashlib.sha256(f"{e['task']}|{e['instruction']}".encode()).digest()[0] % 2
-        assert e["half"] == ("test" if odd else "dev"), e["id"]
+    assert later and len(first) >= 300
+    odd = [hashlib.sha256(f"{e['task']}|{e['instruction']}".encode()).digest()[0] % 2 for e in first]
+    assert 0.4 < sum(odd) / len(first) < 0.6  # the retired first test half is in dev, next to the first dev half
+    assert len(test) >= 180 and all(re.search(r"\.r[0-9]+$", e["id"]) for e in test)
+    assert not any(re.search(r"\.r[0-9]+$", e["id"]) for e in dev)
+    seen = {e["instruction"].lower().strip() for e in dev}
+    assert not [e["id"] for e in test if e["instruction"].lower().strip() in seen]  # fresh wording, not reused
     for e in dev + test:
         assert e["expect"] == "goal" or e["expect"] == f"refuse:{e['style']}"
     assert len({e["id"] for e in dev + test}) == len(dev) + len(test)
-    styles = {e["style"] for e in dev + test}
-    assert {"goal_state", "trailing", "source_dest", "located", "ordinal", "possessive", "synonym"} <= styles
-    assert {"pronoun", "multistep", "nonsense", "absent", "ambiguous"} <= styles
+    styles = {"goal_state", "trailing", "source_dest", "located", "ordinal", "possessive", "synonym", "negation"}
+    styles |= {"polite", "pronoun", "multistep", "nonsense", "absent", "ambiguous"}
+    assert {e["style"] for e in dev} >= styles and {e["style"] for e in test} == styles
+    assert {e["suite"] for e in test} == {"builtin", "capbench", "liberopro"}
+    cells = {e["task"].split(":")[0] for e in test if e["suite"] == "liberopro"}
+    assert cells == {f"libero_{s}_{v}" for s in ("spatial", "object", "goal") for v in ("swap", "task")}
+    assert 0.6 < sum(e["expect"] == "goal" for e in test) / len(test) < 0.9
+    for task in wording.EXEC_TASKS:  # the execution sample has its full share in the test half
+        assert sum(e["task"] == task and e["expect"] == "goal" for e in test) >= wording.EXEC_PER_TASK, task
     with pytest.raises(ValueError, match="unknown corpus half"):
         wording.load("train")
 
