@@ -101,11 +101,19 @@ class PerceptionResolver:
 
 
 def fused_evidence(evidence: list[PointEvidence]) -> list[PointEvidence]:
-    """Fuse views only when they saw the same thing; otherwise trust the most confident view."""
+    """Fuse views only when they saw the same thing; otherwise trust the most confident view. The same thing: the
+    medians of the views' points within FUSE_AGREEMENT_M in xy and, in height, within FUSE_AGREEMENT_M or half
+    the most confident view's visible height (stacked drawers' handles share xy and differ in height by less than
+    a handle's spacing; a bottle seen from above and from the side differs by more than 5 cm and is one thing)."""
     if len(evidence) < 2:
         return evidence
     best = max(evidence, key=lambda e: e.detection.score)
     centre = np.median(best.points_world, axis=0)
-    return [
-        e for e in evidence if np.linalg.norm(np.median(e.points_world, axis=0)[:2] - centre[:2]) < FUSE_AGREEMENT_M
-    ]
+    z = best.points_world[:, 2]
+    z_tol = max(FUSE_AGREEMENT_M, 0.5 * float(np.percentile(z, 98) - np.percentile(z, 2)))
+    out = []
+    for e in evidence:
+        c = np.median(e.points_world, axis=0)
+        if np.linalg.norm(c[:2] - centre[:2]) < FUSE_AGREEMENT_M and abs(c[2] - centre[2]) < z_tol:
+            out.append(e)
+    return out
