@@ -63,3 +63,22 @@ def test_rules_bimanual_plan_runs_on_the_two_arm_cell_with_perception():
         assert trial.outcome == "success" and task.success(world), trial.reason
     finally:
         world.close()
+
+
+def test_a_shared_destination_between_the_arms_leaves_each_object_to_its_nearer_arm():
+    kp = lambda label, x, y: Keypoint(label, np.array([x, y, 0.02]), np.array([0.04, 0.04, 0.04]))
+    view = SceneView({k.label: k for k in (kp("spoon", 0.42, 0.18), kp("pen", 0.42, -0.18), kp("box", 0.6, 0.0))})
+    text = "put the spoon and the pen in the box"
+    result = RulesPlanner().plan(PlanRequest(text, view, arms={"left": (0.0, 0.3), "right": (0.0, -0.3)}))
+    assert result.ok, result.error
+    grasp, *puts = result.plan.tree.children
+    assert isinstance(grasp, Composite) and grasp.type.value == "parallel"  # both grasp at once
+    assert {b.arm: [(c.primitive, c.labels) for c in b.children] for b in grasp.children} == {
+        "left": [("pick_with_arm", ["spoon"])],
+        "right": [("pick_with_arm", ["pen"])],
+    }
+    # then one after the other into the one box, each arm standing back after its turn
+    assert [(b.type.value, b.arm, [c.primitive for c in b.children]) for b in puts] == [
+        ("sequence", "left", ["place_in", "go_home"]),
+        ("sequence", "right", ["place_in", "go_home"]),
+    ]

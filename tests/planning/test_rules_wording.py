@@ -268,3 +268,22 @@ def test_one_arm_picks_and_hands_over_to_the_other_by_the_handle_when_there_is_o
         )
     )
     assert not same.ok and "to itself" in same.error
+
+
+@pytest.mark.parametrize(
+    "text,expected",
+    [
+        ("put the spoon and the pen in the cup", [("put", "spoon", "in", "cup"), ("put", "pen", "in", "cup")]),
+        (
+            "stack the mug and the cup on the saucer",
+            [("stack", "mug", "on", "saucer"), ("stack", "cup", "on", "saucer")],
+        ),
+        # each object has its own destination: nothing is shared
+        (
+            "put the spoon in the cup and the pen in the box",
+            [("put", "spoon", "in", "cup"), ("put", "pen", "in", "box")],
+        ),
+    ],
+)
+def test_coordinated_objects_share_the_destination_named_last(text, expected):
+    assert clauses(text) == expected

@@ -131,14 +131,25 @@ def parse_instruction(instruction: str) -> list[Clause]:
                 known = ", ".join(sorted({f for forms in VERBS.values() for f in forms[:2]}))
                 raise ParseError(f"no action I know in {part!r}; I understand verbs such as {known}")
             verb = (previous, part)  # ellipsis: "..., then the red block on the green block"
+            gapped = True
+        else:
+            gapped = False
         action, rest = verb
         clause = _clause(action, rest, part)
         clause = _resolve(clause, clauses)
+        if gapped and clause.target and clauses and _shares_destination(clauses[-1], clause):
+            # "put the fork and the knife in the tray": coordinated objects share the one destination named last
+            clauses[-1] = replace(clauses[-1], target=clause.target, relation=clause.relation)
         previous = clause.action
         clauses.append(clause)
     if all(c.action == "mention" for c in clauses):
         raise ParseError(f"{instruction.strip()!r} names {', '.join(c.obj or '?' for c in clauses)} but no action")
     return clauses
+
+
+def _shares_destination(first: Clause, second: Clause) -> bool:
+    """A carry that names no destination, then an elided carry of the same kind that does ("put A and B in C")."""
+    return first.action == second.action and first.action in ("put", "stack", "sort") and first.target is None
 
 
 def _anchor(phrase: str | None) -> str | None:

@@ -291,9 +291,9 @@ CARRY_ENDS = ("place", "place_in")
 
 def _two_arm_branches(steps: list[dict], request: PlanRequest) -> list[dict] | None:
     """On a two-arm robot, independent carries (pick X, then place / place_in Y) are shared out: each to the
-    arm whose base is closer to both its object and its destination, the two arms' carries in parallel
-    (the paper's bimanual silverware sort). None when the plan is not made of such carries, or one arm would
-    get them all."""
+    arm whose base is closer to its object and its destination together (sum of the two reaches), the two arms'
+    carries in parallel (the paper's bimanual silverware sort); two carries to one destination grasp in parallel
+    and set down in turn. None when the plan is not made of such carries, or one arm would get them all."""
     if len(request.arms) != 2 or len(steps) < 4 or len(steps) % 2:
         return None
     pairs = [steps[i : i + 2] for i in range(0, len(steps), 2)]
@@ -306,14 +306,26 @@ def _two_arm_branches(steps: list[dict], request: PlanRequest) -> list[dict] | N
         labels = [pick["params"]["keypoint_label"], next(iter(put["params"].values()))]
         if not all(lb in scene for lb in labels):
             return None
+        # the whole way: a shared destination (one tray between the arms) is as far from both, and the object decides
         reach = {
-            a: max(float(np.linalg.norm(scene[lb].position_m[:2] - np.asarray(request.arms[a]))) for lb in labels)
+            a: sum(float(np.linalg.norm(scene[lb].position_m[:2] - np.asarray(request.arms[a]))) for lb in labels)
             for a in arms
         }
         arm = min(arms, key=reach.__getitem__)
         branches[arm] += [{"primitive": "pick_with_arm", "params": dict(pick["params"])}, put]
     if not all(branches.values()):
         return None
+    ends = [next(iter(put["params"].values())) for _, put in pairs]
+    if len(pairs) == 2 and ends[0] == ends[1]:
+        # one destination for both: grasp at once, then set down one arm after the other (each then stands
+        # back), as two hands at the same spot would meet
+        return [
+            {
+                "type": "parallel",
+                "children": [{"type": "sequence", "arm": a, "children": branches[a][:1]} for a in arms],
+            },
+            *({"type": "sequence", "arm": a, "children": [branches[a][1], _prim("go_home")]} for a in arms),
+        ]
     return [{"type": "parallel", "children": [{"type": "sequence", "arm": a, "children": branches[a]} for a in arms]}]
 
 
