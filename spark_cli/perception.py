@@ -1,4 +1,5 @@
-"""`spark perception dataset|train`: render training data for the learned segmenter and train it."""
+"""`spark perception dataset|train|train-patches`: render training data for the learned segmenter and train its
+per-pixel network and its patch classifier."""
 
 from __future__ import annotations
 
@@ -56,6 +57,19 @@ def register(sub) -> None:
         help="draw crops that show a rare category more often (in proportion to its --balance weight)",
     )
     t.set_defaults(func=_cmd_train)
+    tp = ps.add_parser(
+        "train-patches",
+        help="train the patch classifier that names LIBERO's small items from camera-resolution patches",
+    )
+    tp.add_argument("--data", required=True, nargs="+", help="dataset directories (LIBERO ones hold the items)")
+    tp.add_argument("--out", required=True, help="weights file to write (.pt)")
+    tp.add_argument("--minutes", type=float, default=12.0, help="wall-time budget")
+    tp.add_argument("--steps", type=int, default=100_000, help="step budget (whichever comes first)")
+    tp.add_argument("--batch", type=int, default=96)
+    tp.add_argument("--lr", type=float, default=2e-3)
+    tp.add_argument("--seed", type=int, default=0)
+    tp.add_argument("--threads", type=int, default=1, help="torch CPU threads")
+    tp.set_defaults(func=_cmd_train_patches)
 
 
 def _positive(name: str, value: float) -> None:
@@ -113,6 +127,33 @@ def _cmd_train(args: argparse.Namespace) -> int:
         balance=args.balance,
         balance_max=args.balance_max,
         oversample_rare=args.oversample_rare,
+    )
+    try:
+        train(cfg, log=lambda s: print(s, flush=True))
+    except (FileNotFoundError, ValueError) as e:
+        print(e, file=sys.stderr)
+        return 2
+    return 0
+
+
+def _cmd_train_patches(args: argparse.Namespace) -> int:
+    from spark_core.perception.learned.train_patches import PatchTrainConfig, train
+
+    try:
+        for name in ("minutes", "steps", "batch", "lr", "threads"):
+            _positive(name, getattr(args, name))
+    except ValueError as e:
+        print(e, file=sys.stderr)
+        return 2
+    cfg = PatchTrainConfig(
+        tuple(args.data),
+        args.out,
+        minutes=args.minutes,
+        steps=args.steps,
+        batch=args.batch,
+        lr=args.lr,
+        seed=args.seed,
+        threads=args.threads,
     )
     try:
         train(cfg, log=lambda s: print(s, flush=True))

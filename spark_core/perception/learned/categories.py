@@ -14,6 +14,13 @@ class Category:
     name: str
     description: str
     thing: bool = True  # False for stuff that is never a prompt's target (background, table, robot)
+    part_of: tuple[str, ...] = ()  # a part is only ever seen on one of these (instances elsewhere are dropped)
+    # widest an object of this kind is (m, world xy): pieces a depth edge cut apart (a bowl's rim and bottom) are
+    # joined up to it; 0 for kinds seen as one surface
+    max_extent_m: float = 0.0
+    # a part standing proud of its parent's face by about this much (m): mask pixels further than this behind the
+    # part's nearest pixels are the face around it (a handle's mask found at half resolution spills onto it)
+    proud_m: float = 0.0
 
 
 CATEGORIES: tuple[Category, ...] = (
@@ -21,30 +28,32 @@ CATEGORIES: tuple[Category, ...] = (
     Category("table", "the table top surface", thing=False),
     Category("robot", "the robot arm, its gripper and fingers", thing=False),
     Category("block", "small cube block, a wooden box-shaped cube"),
-    Category("bowl", "round open ceramic bowl, a dish"),
+    Category("bowl", "round open ceramic bowl, a dish", max_extent_m=0.18),
     Category("plate", "flat round ceramic plate, a dinner dish"),
-    Category("mug", "ceramic mug with a handle, a cylindrical cup"),
-    Category("tray", "shallow square plastic tray"),
-    Category("basket", "deep square woven wicker basket"),
+    Category("mug", "ceramic mug with a handle, a cylindrical cup", max_extent_m=0.15),
+    Category("tray", "shallow square plastic tray", max_extent_m=0.32),
+    Category("basket", "deep square woven wicker basket", max_extent_m=0.30),
     Category("sponge", "soft rectangular kitchen sponge"),
     Category("bottle", "tall cylindrical plastic bottle"),
     Category("peg", "square wooden peg, a short upright rod"),
     Category("nut", "square metal nut with a hole"),
     Category("brush", "scrubbing brush with a handle and bristles"),
     Category("zone", "flat square target area marked on the table, a region"),
-    Category("cabinet", "wooden cabinet, a cupboard with a drawer"),
-    Category("drawer", "the cabinet's sliding drawer"),
-    Category("drawer handle", "metal handle on the cabinet drawer, a pull"),
+    Category("cabinet", "wooden cabinet, a cupboard with a drawer", max_extent_m=0.40),
+    Category("drawer", "the cabinet's sliding drawer", part_of=("cabinet",)),
+    Category(
+        "drawer handle", "metal handle on the cabinet drawer, a pull", part_of=("drawer", "cabinet"), proud_m=0.02
+    ),
     Category("stove", "electric stove, a cooktop with a burner"),
-    Category("knob", "round control knob or dial on the stove"),
+    Category("knob", "round control knob or dial on the stove", part_of=("stove",)),
     Category("bead", "tiny round bead, a small ball"),
     Category("bar", "long straight rectangular wooden bar, a stick"),
     Category("carry tray", "long serving tray with a handle at each end"),
     # LIBERO objects (appended: the indices above are those of earlier weights, see train.expand_categories)
     Category("wine bottle", "dark glass wine bottle with a long neck"),
-    Category("wine rack", "metal wine rack, a stand that holds bottles"),
+    Category("wine rack", "metal wine rack, a stand that holds bottles", max_extent_m=0.40),
     Category("cream cheese", "small rectangular box of cream cheese"),
-    Category("ramekin", "small round white porcelain ramekin with a glazed rim"),
+    Category("ramekin", "small round white porcelain ramekin with a glazed rim", max_extent_m=0.15),
     Category("cookie box", "rectangular cardboard box of cookies"),
     Category("alphabet soup", "can of alphabet soup, a food tin"),
     Category("bbq sauce", "bottle of barbecue sauce"),

@@ -26,14 +26,21 @@ from ..frame import CameraFrame
 from ..qualifiers import split_qualifier, split_relation
 from ..sim_segmenter import calibrated_score, pick_by_qualifier
 from ..text_encoder import SHARED_ENCODER, TextEncoder
-from .categories import CATEGORIES, COLOURS
+from . import patch_classifier
+from .categories import CATEGORIES, CATEGORY_INDEX, COLOURS, TABLE
 
 WEIGHTS = "weights/learned_segmenter.pt"  # package data, next to MODEL_CARD.md
 HEAD_NOUN_BONUS = 0.08
 MATERIAL_WORDS = {"wooden", "wood", "metal", "plastic", "ceramic", "wicker"}  # not colour filters
+SECOND_LOOK = ("bowl",)  # per-pixel categories a GROUP member is mistaken for (a ramekin for a bowl)
+SECOND_LOOK_P = 0.8  # the patch classifier's probability that overrules the per-pixel category
+OTHER_DROP_P = 0.5  # a group blob the patch classifier calls "other" with more than this is no group member
 MIN_INSTANCE_SCORE = 0.3  # instances the network is less sure of are dropped (stray pixels, table edges)
 FRAGMENT_AREA = 0.15
 BOUNDARY_PROB = 0.8  # the boundary head is trained with positives weighted 4x: 0.8 is about even odds
+PART_REACH_PX = 3  # a part instance must come this close (network pixels) to a pixel of what it is part of
+BELOW_TABLE_M = 0.05  # an instance whose median point lies further below the seen table top is off the table
+DEPTH_SPREAD_M = 0.25  # mask pixels further than this in depth from the instance's median are another surface
 DEPTH_EDGE_M = 0.015  # a depth jump between neighbouring pixels larger than this (and 2 %) splits instances
 _NETS: dict[str, Any] = {}
 _LOCK = threading.Lock()
@@ -73,7 +80,9 @@ def _words(text: str) -> list[str]:
 
 class LearnedSegmenter:
     """Camera-only segmenter. `threshold`: minimum cosine of a prompt with a category; categories within
-    `margin` of the best one also count; instances smaller than `min_area_px` (camera pixels) are dropped."""
+    `margin` of the best one also count; instances smaller than `min_area_px` (camera pixels) are dropped.
+    `patch_weights`: the second-stage patch classifier naming LIBERO's small items (patch_classifier.py);
+    False turns that stage off (the per-pixel network's categories stand)."""
 
     name = "learned"
     privileged = False
@@ -85,8 +94,14 @@ class LearnedSegmenter:
         margin: float = 0.04,
         min_area_px: int = 40,
         encoder: TextEncoder | None = None,
+        patch_weights: str | Path | bool | None = None,
     ):
         self.weights = Path(weights) if weights else default_weights()
+        self.patch_weights: Path | None = None
+        if patch_weights is not False:
+            self.patch_weights = (
+                Path(patch_weights) if isinstance(patch_weights, str | Path) else patch_classifier.default_weights()
+            )
         self.threshold = threshold
         self.margin = margin
         self.min_area_px = min_area_px
@@ -166,26 +181,106 @@ class LearnedSegmenter:
         split = (bnd > BOUNDARY_PROB) | _depth_edges(depth)
         cat = _merge_confused(cat, probs, split)
         out: list[Instance] = []
+        named_by_patch: set[int] = set()
+        if self.patch_weights is not None:
+            out.extend(self._group_instances(frame, cat, probs, col, split, factor_sq))
+            named_by_patch = set(patch_classifier.GROUP_INDEX.tolist())
         for c in np.unique(cat):
-            if not CATEGORIES[c].thing:
+            if not CATEGORIES[c].thing or int(c) in named_by_patch:
                 continue
             region = cat == c
             n, comp = cv2.connectedComponents((region & ~split).astype(np.uint8), connectivity=4)
             comp = _grow_into(comp, region)
+            if CATEGORIES[c].max_extent_m:
+                comp, n = _rejoin(comp, n, CATEGORIES[c].max_extent_m, depth, frame, H // cat.shape[0])
+            parents = _anchored(cat, CATEGORIES[c].part_of)
             for k in range(1, n):
                 m = comp == k
                 if m.sum() * factor_sq < self.min_area_px:
                     continue
+                if CATEGORIES[c].part_of and not _touches(m, parents):
+                    continue  # a handle or knob on nothing: the network's mistake (a label, a bottle's rim)
                 score = float(np.median(prob[m]))
                 if score < MIN_INSTANCE_SCORE:
                     continue
                 colour_p = col[1:, m].mean(1)
-                full = cv2.resize(m.astype(np.uint8), (W, H), interpolation=cv2.INTER_NEAREST).astype(bool)
+                full = _one_surface(
+                    cv2.resize(m.astype(np.uint8), (W, H), interpolation=cv2.INTER_NEAREST).astype(bool), frame
+                )
+                if CATEGORIES[c].proud_m:
+                    full = _proud(full, frame, CATEGORIES[c].proud_m)
+                if full.sum() < self.min_area_px:
+                    continue
                 out.append(Instance(int(c), full, score, COLOURS[1 + int(colour_p.argmax())]))
-        out = _drop_fragments(out)
+        if self.patch_weights is not None:
+            out = self._second_look(out, frame)
+        out = _above_table(_drop_fragments(out), cat, frame)
         if len(self._cache) > 8:
             self._cache.clear()
         self._cache[key] = out
+        return out
+
+    def _group_instances(
+        self,
+        frame: CameraFrame,
+        cat: np.ndarray,
+        probs: np.ndarray,
+        col: np.ndarray,
+        split: np.ndarray,
+        factor_sq: float,
+    ) -> list[Instance]:
+        """Instances of the patch classifier's GROUP: the per-pixel network's group pixels (whichever member it
+        named) cut into blobs at boundaries and depth edges, each named by the classifier from a camera-resolution
+        patch. Score: geometric mean of the blob's median group probability and the classifier's."""
+        net = patch_classifier.load(self.patch_weights)  # type: ignore[arg-type]  # set when called
+        H, W = frame.shape
+        region = np.isin(cat, patch_classifier.GROUP_INDEX)
+        n, comp = cv2.connectedComponents((region & ~split).astype(np.uint8), connectivity=4)
+        comp = _grow_into(comp, region)
+        mass = probs[patch_classifier.GROUP_INDEX].sum(0)
+        depth = np.nan_to_num(frame.depth_m.astype(np.float32), nan=0.0, posinf=10.0)
+        blobs, patches = [], []
+        for k in range(1, n):
+            m = comp == k
+            if m.sum() * factor_sq < self.min_area_px:
+                continue
+            full = _one_surface(
+                cv2.resize(m.astype(np.uint8), (W, H), interpolation=cv2.INTER_NEAREST).astype(bool), frame
+            )
+            p = patch_classifier.patch(frame.rgb, depth, full)
+            if p is not None:
+                blobs.append((m, full))
+                patches.append(p)
+        out = []
+        for (m, full), p_cls in zip(blobs, patch_classifier.classify(net, patches)):
+            if p_cls[patch_classifier.OTHER] > OTHER_DROP_P:
+                continue
+            best = int(p_cls[: patch_classifier.OTHER].argmax())
+            score = float(np.sqrt(np.median(mass[m]) * p_cls[best]))
+            if score < MIN_INSTANCE_SCORE:
+                continue
+            colour_p = col[1:, m].mean(1)
+            category = int(patch_classifier.GROUP_INDEX[best])
+            out.append(Instance(category, full, score, COLOURS[1 + int(colour_p.argmax())]))
+        return out
+
+    def _second_look(self, instances: list[Instance], frame: CameraFrame) -> list[Instance]:
+        """Instances of SECOND_LOOK categories the patch classifier confidently names as a GROUP member take
+        that name (the per-pixel network calls LIBERO's white ramekin a bowl about half the time)."""
+        idx = [k for k, i in enumerate(instances) if CATEGORIES[i.category].name in SECOND_LOOK]
+        if not idx:
+            return instances
+        depth = np.nan_to_num(frame.depth_m.astype(np.float32), nan=0.0, posinf=10.0)
+        patches = [patch_classifier.patch(frame.rgb, depth, instances[k].mask) for k in idx]
+        keep = [(k, p) for k, p in zip(idx, patches) if p is not None]
+        probs = patch_classifier.classify(patch_classifier.load(self.patch_weights), [p for _, p in keep])  # type: ignore[arg-type]
+        out = list(instances)
+        for (k, _), p_cls in zip(keep, probs):
+            best = int(p_cls.argmax())
+            if best != patch_classifier.OTHER and p_cls[best] >= SECOND_LOOK_P:
+                i = out[k]
+                score = float(np.sqrt(i.score * p_cls[best]))
+                out[k] = Instance(int(patch_classifier.GROUP_INDEX[best]), i.mask, score, i.colour)
         return out
 
     # -- the Segmenter protocol --------------------------------------------------------------------------------
@@ -209,6 +304,9 @@ class LearnedSegmenter:
         cats, colours = self.ground(core)
         if not cats:
             return []
+        seen = {i.category for i in self.instances(frame)}
+        if not seen & set(cats):
+            cats = _parent_named(cats, core) or cats
         dets = []
         for k, inst in enumerate(self.instances(frame)):
             if inst.category not in cats or (colours and inst.colour not in colours):
@@ -296,6 +394,152 @@ def _drop_fragments(instances: list[Instance]) -> list[Instance]:
     for inst in instances:
         largest[inst.category] = max(largest.get(inst.category, 0), int(inst.mask.sum()))
     return [i for i in instances if i.mask.sum() >= FRAGMENT_AREA * largest[i.category]]
+
+
+def _parent_named(cats: dict[int, float], prompt: str) -> dict[int, float]:
+    """For a prompt naming a part the network sees nowhere ("stove knob" on a stove whose knob it never learned),
+    the part's parent when the prompt names it too: the part is on it, and the parent is what can be seen (as the
+    `sim` oracle, which has no knob on that stove either, resolves such a prompt to the stove)."""
+    words = set(_words(prompt))
+    out = {}
+    for c, cos in cats.items():
+        for parent in CATEGORIES[c].part_of:
+            if parent.split()[-1] in words:
+                out[CATEGORY_INDEX[parent]] = cos
+    return out
+
+
+def _rejoin(
+    comp: np.ndarray, n: int, max_extent_m: float, depth_m: np.ndarray, frame: CameraFrame, factor: int
+) -> tuple[np.ndarray, int]:
+    """Join touching components of one category while together they are no wider than one object can be.
+
+    A depth edge splits a bowl's near rim from its bottom and far rim (one object, centimetres apart in depth);
+    two bowls side by side are split the same way. Their sizes tell them apart: the pieces of one bowl together
+    span at most a bowl's width in the world's xy, two bowls span about two. Network-resolution components and
+    depth; pixel (v, u) is camera pixel (v * factor, u * factor)."""
+    xy: dict[int, np.ndarray] = {}
+    for k in range(1, n):
+        vs, us = np.nonzero(comp == k)
+        z = depth_m[vs, us]
+        ok = np.isfinite(z) & (z > 0)
+        if ok.sum() >= 3:
+            xy[k] = frame.backproject(us[ok] * float(factor), vs[ok] * float(factor), z[ok])[:, :2]
+    if len(xy) < 2:
+        return comp, n
+    kernel = np.ones((5, 5), np.uint8)
+    owner = {k: k for k in xy}
+
+    def root(k: int) -> int:
+        while owner[k] != k:
+            k = owner[k]
+        return k
+
+    def width(pts: np.ndarray) -> float:
+        return float((np.percentile(pts, 98, axis=0) - np.percentile(pts, 2, axis=0)).max())
+
+    touching = set()
+    for k in xy:
+        near = np.unique(comp[cv2.dilate((comp == k).astype(np.uint8), kernel).astype(bool)])
+        touching |= {(min(k, j), max(k, j)) for j in near.tolist() if j in xy and j != k}
+    while True:  # the narrowest join first: a bowl's own pieces before a neighbour's
+        best: tuple[float, int, int] | None = None
+        for k, j in touching:
+            a, b = root(k), root(j)
+            if a != b:
+                w = width(np.concatenate([xy[a], xy[b]]))
+                if w <= max_extent_m and (best is None or w < best[0]):
+                    best = (w, a, b)
+        if best is None:
+            break
+        _, a, b = best
+        owner[b] = a
+        xy[a] = np.concatenate([xy[a], xy[b]])
+    out = comp.copy()
+    for k in owner:
+        out[comp == k] = root(k)
+    return out, n
+
+
+def _proud(mask: np.ndarray, frame: CameraFrame, proud_m: float) -> np.ndarray:
+    """The pixels of a part's mask within proud_m behind its nearest ones (5th percentile depth, not the very
+    nearest: a stray pixel on something in front would move it)."""
+    d = frame.depth_m[mask]
+    ok = np.isfinite(d) & (d > 0)
+    if ok.sum() < 10:
+        return mask
+    near = float(np.percentile(d[ok], 5))
+    keep = np.zeros_like(mask)
+    keep[mask] = ok & (d <= near + proud_m)
+    return keep if keep.sum() >= 0.2 * mask.sum() else mask
+
+
+def _median_z(mask: np.ndarray, frame: CameraFrame, n: int = 400) -> float | None:
+    """Median world height (m) of up to n evenly spaced pixels of the mask with a finite depth."""
+    vs, us = np.nonzero(mask)
+    if not len(vs):
+        return None
+    step = max(1, len(vs) // n)
+    vs, us = vs[::step], us[::step]
+    z = frame.depth_m[vs, us]
+    ok = np.isfinite(z) & (z > 0)
+    if not ok.any():
+        return None
+    return float(np.median(frame.backproject(us[ok].astype(float), vs[ok].astype(float), z[ok])[:, 2]))
+
+
+def _above_table(instances: list[Instance], cat: np.ndarray, frame: CameraFrame) -> list[Instance]:
+    """Objects stand on the table or above it: an instance whose median point lies BELOW_TABLE_M under the table
+    top the network sees in this frame is the wall or floor behind, mislabelled (a frame with no table in view,
+    e.g. a wrist close-up, keeps everything)."""
+    table = cat == TABLE
+    if table.sum() < 50:
+        return instances
+    full = cv2.resize(table.astype(np.uint8), (frame.shape[1], frame.shape[0]), interpolation=cv2.INTER_NEAREST)
+    top = _median_z(full.astype(bool), frame)
+    if top is None:
+        return instances
+    keep = []
+    for inst in instances:
+        z = _median_z(inst.mask, frame)
+        if z is None or z >= top - BELOW_TABLE_M:
+            keep.append(inst)
+    return keep
+
+
+def _anchored(cat: np.ndarray, names: tuple[str, ...]) -> np.ndarray:
+    """Pixels of the named categories, keeping of a category that is itself a part (a drawer) only the connected
+    pieces that touch what it is part of (the cabinet)."""
+    out = np.zeros(cat.shape, bool)
+    for name in names:
+        region = cat == CATEGORY_INDEX[name]
+        part_of = CATEGORIES[CATEGORY_INDEX[name]].part_of
+        if part_of and region.any():
+            base = np.isin(cat, [CATEGORY_INDEX[p] for p in part_of])
+            n, comp = cv2.connectedComponents(region.astype(np.uint8), connectivity=8)
+            region = np.isin(comp, [k for k in range(1, n) if _touches(comp == k, base)])
+        out |= region
+    return out
+
+
+def _touches(mask: np.ndarray, other: np.ndarray, reach_px: int = PART_REACH_PX) -> bool:
+    """Whether `mask` comes within `reach_px` pixels of any pixel of `other`."""
+    k = np.ones((2 * reach_px + 1, 2 * reach_px + 1), np.uint8)
+    return bool((cv2.dilate(mask.astype(np.uint8), k).astype(bool) & other).any())
+
+
+def _one_surface(mask: np.ndarray, frame: CameraFrame) -> np.ndarray:
+    """The mask without pixels far in depth from its median: where a mask found at half resolution and scaled up
+    spills past an object's silhouette onto the wall or floor behind (meters away), those pixels would drag the
+    object's 3D points with them."""
+    d = frame.depth_m[mask]
+    ok = np.isfinite(d)
+    if not ok.any():
+        return mask
+    med = float(np.median(d[ok]))
+    keep = np.zeros_like(mask)
+    keep[mask] = ok & (np.abs(d - med) <= DEPTH_SPREAD_M)
+    return keep
 
 
 def _depth_edges(depth_m: np.ndarray) -> np.ndarray:

@@ -1,0 +1,159 @@
+"""Second stage of the learned segmenter: a small CNN that names one object from a full-resolution patch around it.
+
+The per-pixel network sees frames at half resolution, where LIBERO's grocery items (a few dozen pixels across,
+printed labels telling them apart) look alike: it marks their pixels as *some* grocery item reliably but often
+names the wrong one (see MODEL_CARD.md). So the segmenter takes every blob of pixels the per-pixel network puts
+in GROUP, cuts it at boundaries and depth edges, and asks this classifier which member of GROUP it is, from the
+camera-resolution RGB, the blob's mask and its depth relief. "other" means none of them (a bowl's rim the
+per-pixel network took for a grocery item): the per-pixel vote then stands.
+
+Camera-only: the input is RGB, depth and a mask the segmenter itself predicted.
+"""
+
+from __future__ import annotations
+
+import threading
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+import cv2
+import numpy as np
+import torch
+from torch import nn
+
+from .categories import CATEGORY_INDEX
+
+PATCH_PX = 48  # side of the square network input
+MARGIN = 0.25  # context around the mask's bounding box, as a fraction of its longer side
+DEPTH_RELIEF_M = 0.1  # depth channel = (depth - the mask's median depth) / this, clipped to [-2, 2]
+GROUP: tuple[str, ...] = (
+    "cream cheese",
+    "ramekin",
+    "cookie box",
+    "alphabet soup",
+    "bbq sauce",
+    "butter",
+    "chocolate pudding",
+    "ketchup",
+    "milk",
+    "orange juice",
+    "salad dressing",
+    "tomato sauce",
+)
+CLASSES: tuple[str, ...] = (*GROUP, "other")
+OTHER = len(GROUP)
+GROUP_INDEX = np.array([CATEGORY_INDEX[n] for n in GROUP])
+WEIGHTS = "weights/patch_classifier.pt"
+_NETS: dict[str, Any] = {}
+_LOCK = threading.Lock()
+
+
+def square_box(mask: np.ndarray, margin: float = MARGIN) -> tuple[int, int, int, int] | None:
+    """(row0, col0, side) of a square window around the mask's bounding box with `margin` context, and the
+    box's longer side (px); None for an empty mask. The window may reach past the image (padded when cut)."""
+    vs, us = np.nonzero(mask)
+    if not len(vs):
+        return None
+    r0, r1, c0, c1 = vs.min(), vs.max() + 1, us.min(), us.max() + 1
+    side = int(max(r1 - r0, c1 - c0))
+    win = int(np.ceil(side * (1 + 2 * margin))) + 4
+    return int((r0 + r1 - win) // 2), int((c0 + c1 - win) // 2), win, side
+
+
+def patch(
+    rgb: np.ndarray, depth_m: np.ndarray, mask: np.ndarray, window: tuple[int, int, int] | None = None
+) -> np.ndarray | None:
+    """(5, PATCH_PX, PATCH_PX) float32 network input for the object under `mask` (all arrays at camera
+    resolution): RGB in [0, 1], the mask, the depth relief around the mask's median depth. `window` =
+    (row0, col0, side) overrides the box (training jitters it). None for an empty mask."""
+    if window is None:
+        box = square_box(mask)
+        if box is None:
+            return None
+        window = box[:3]
+    r0, c0, win = window
+    H, W = mask.shape
+    pad = max(0, -r0, -c0, r0 + win - H, c0 + win - W)
+    if pad:  # a window past the image edge: pad (black, no mask, far depth) so the object stays centred
+        rgb = cv2.copyMakeBorder(rgb, pad, pad, pad, pad, cv2.BORDER_CONSTANT, value=0)
+        depth_m = cv2.copyMakeBorder(depth_m, pad, pad, pad, pad, cv2.BORDER_CONSTANT, value=0.0)
+        mask = cv2.copyMakeBorder(mask.astype(np.uint8), pad, pad, pad, pad, cv2.BORDER_CONSTANT, value=0)
+        r0, c0 = r0 + pad, c0 + pad
+    sl = (slice(r0, r0 + win), slice(c0, c0 + win))
+    m = mask[sl].astype(bool)
+    if not m.any():
+        return None
+    size = (PATCH_PX, PATCH_PX)
+    img = cv2.resize(np.ascontiguousarray(rgb[sl]), size, interpolation=cv2.INTER_AREA).astype(np.float32) / 255.0
+    d = np.nan_to_num(depth_m[sl].astype(np.float32), nan=0.0, posinf=0.0)
+    ref = float(np.median(d[m]))
+    rel = np.clip((d - ref) / DEPTH_RELIEF_M, -2, 2)
+    rel = cv2.resize(rel, size, interpolation=cv2.INTER_NEAREST)
+    mk = cv2.resize(m.astype(np.float32), size, interpolation=cv2.INTER_AREA)
+    return np.concatenate([img.transpose(2, 0, 1), mk[None], rel[None]]).astype(np.float32)
+
+
+def _conv(c_in: int, c_out: int) -> nn.Sequential:
+    return nn.Sequential(nn.Conv2d(c_in, c_out, 3, padding=1, bias=False), nn.BatchNorm2d(c_out), nn.ReLU(True))
+
+
+class PatchNet(nn.Module):
+    """(B, 5, PATCH_PX, PATCH_PX) -> (B, len(CLASSES)) logits."""
+
+    def __init__(self, widths: tuple[int, int, int] = (24, 48, 96)):
+        super().__init__()
+        self.widths = tuple(widths)
+        layers: list[nn.Module] = [_conv(5, widths[0]), nn.MaxPool2d(2)]  # one conv at full size: most of the cost
+        c = widths[0]
+        for w in widths[1:]:
+            layers += [_conv(c, w), _conv(w, w), nn.MaxPool2d(2)]
+            c = w
+        self.features = nn.Sequential(*layers)
+        self.head = nn.Sequential(nn.Dropout(0.2), nn.Linear(c, len(CLASSES)))
+
+    def forward(self, x: torch.Tensor) -> torch.Tensor:
+        return self.head(self.features(x).mean((2, 3)))
+
+
+def default_weights() -> Path:
+    return Path(str(resources.files(__package__).joinpath(WEIGHTS)))
+
+
+def save(net: PatchNet, path: Path, meta: dict) -> None:
+    """float16 weights with the architecture, the class list and training metadata."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    state = {k: (v.half() if v.is_floating_point() else v) for k, v in net.state_dict().items()}
+    torch.save({"widths": net.widths, "classes": list(CLASSES), "state": state, "meta": meta}, path)
+
+
+def load(path: Path) -> PatchNet:
+    """Weights file -> network in eval mode (cached per path); a clear error for a missing file or one trained
+    for another class list."""
+    key = str(path)
+    with _LOCK:
+        if key not in _NETS:
+            if not path.is_file():
+                raise FileNotFoundError(
+                    f"patch classifier weights not found at {path}: train them with `spark perception train-patches`"
+                )
+            ckpt = torch.load(path, map_location="cpu", weights_only=True)
+            if tuple(ckpt["classes"]) != CLASSES:
+                raise ValueError(f"{path} classifies {ckpt['classes']}, not this version's {list(CLASSES)}")
+            net = PatchNet(tuple(ckpt["widths"]))
+            net.load_state_dict({k: v.float() if v.is_floating_point() else v for k, v in ckpt["state"].items()})
+            _NETS[key] = net.eval()
+        return _NETS[key]
+
+
+def classify(net: PatchNet, patches: list[np.ndarray]) -> np.ndarray:
+    """(N, len(CLASSES)) class probabilities of N patches (one thread: see LearnedSegmenter.predict)."""
+    if not patches:
+        return np.zeros((0, len(CLASSES)), np.float32)
+    threads = torch.get_num_threads()
+    torch.set_num_threads(1)
+    try:
+        with torch.no_grad():
+            return torch.softmax(net(torch.from_numpy(np.stack(patches))), 1).numpy()
+    finally:
+        torch.set_num_threads(threads)
