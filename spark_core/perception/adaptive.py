@@ -11,12 +11,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import numpy as np
+
 from .detection import Detection
 from .frame import CameraFrame
 from .lifting import merge_duplicates
 from .segmenter import Segmenter
 
 CONFIDENT = 0.5
+TRACK_RADIUS_M = 0.08  # how far an object may be from where it was last resolved to be taken as the same one
 
 
 @dataclass(frozen=True)
@@ -24,7 +27,7 @@ class PromptCandidate:
     prompt: str
     n_detections: int
     best_score: float
-    verdict: str  # chosen | single | ambiguous | none | weak
+    verdict: str  # chosen | single | ambiguous | none | weak | tracked
 
 
 @dataclass(frozen=True)
@@ -48,10 +51,16 @@ def select_prompt(
     variants: list[str],
     confident: float | None = None,
     keep_apart: frozenset[str] = frozenset(),
+    seen_at_m: np.ndarray | None = None,
 ) -> PromptSelection:
     """Segment with the label and its variants in one call (split masks of one object merged first, except for
     prompts in `keep_apart`); keep the best single confident detection. `confident` None: the threshold rule
-    above (CONFIDENT with alternatives, the segmenter's own threshold for the label alone)."""
+    above (CONFIDENT with alternatives, the segmenter's own threshold for the label alone).
+
+    `seen_at_m`: where this label's object was last resolved (world frame, m). When every prompt is ambiguous,
+    the confident detection nearest that point (within TRACK_RADIUS_M) is kept, verdict "tracked": in the middle
+    of a task the scene holds new look-alikes (an opened drawer's inside looks like a bowl to a small network)
+    while the object itself has not moved far since it was last seen."""
     prompts = list(dict.fromkeys([label, *variants]))
     if confident is None:
         confident = detection_threshold(segmenter, adaptive=len(prompts) > 1)
@@ -73,6 +82,16 @@ def select_prompt(
             verdict = "single"
             singles.append(ds[0])
         candidates.append(PromptCandidate(p, len(ds), round(best, 4), verdict))
+    if not singles and seen_at_m is not None:
+        near = _nearest([d for d in dets if d.score >= confident], frame, np.asarray(seen_at_m, float), TRACK_RADIUS_M)
+        if near is not None:
+            candidates = [
+                PromptCandidate(
+                    c.prompt, c.n_detections, c.best_score, "tracked" if c.prompt == near.prompt else c.verdict
+                )
+                for c in candidates
+            ]
+            return PromptSelection(label, near.with_label(label), tuple(candidates))
     if not singles:
         return PromptSelection(label, None, tuple(candidates))
     chosen = max(singles, key=lambda d: d.score)
@@ -89,3 +108,19 @@ def detection_threshold(segmenter: Segmenter, adaptive: bool) -> float:
     CONFIDENT for segmenters without one."""
     own = getattr(segmenter, "score_threshold", None)
     return CONFIDENT if adaptive or own is None else float(own)
+
+
+def _nearest(dets: list[Detection], frame: CameraFrame, point_m: np.ndarray, radius_m: float) -> Detection | None:
+    """The detection whose mask's median 3D point lies nearest `point_m`, if within `radius_m`."""
+    best, best_d = None, radius_m
+    for d in dets:
+        vs, us = np.nonzero(d.mask)
+        z = frame.depth_m[vs, us]
+        ok = np.isfinite(z) & (z > 0)
+        if not ok.any():
+            continue
+        c = np.median(frame.backproject(us[ok].astype(float), vs[ok].astype(float), z[ok]), axis=0)
+        dist = float(np.linalg.norm(c - point_m))
+        if dist < best_d:
+            best, best_d = d, dist
+    return best

@@ -48,6 +48,7 @@ class PerceptionResolver:
         self.refreshes = 0
         self.groundings: list[dict] = []  # every resolution: label, prompt candidates, choice, keypoint
         self.detections: dict[str, dict[str, Detection]] = {}  # camera -> label -> latest chosen detection
+        self._seen_at: dict[str, np.ndarray] = {}  # label -> where it was last resolved (world, m)
 
     def use_variants(self, table: dict[str, list[str]]) -> None:
         """Alternative prompts per label from elsewhere (an LLM's prompt-synthesis call); labels it has none for
@@ -78,8 +79,9 @@ class PerceptionResolver:
         variants = self.variants(label) if self.adaptive else []
         evidence: list[PointEvidence] = []
         record: dict[str, Any] = {"label": label, "t_sim_s": self._captured_at, "cameras": {}}
+        seen_at = self._seen_at.get(label)
         for cam, frame in self.frames.items():
-            sel = select_prompt(self.segmenter, frame, label, variants)
+            sel = select_prompt(self.segmenter, frame, label, variants, seen_at_m=seen_at)
             record["cameras"][cam] = sel.to_dict()
             if sel.detection is None:
                 continue
@@ -95,6 +97,7 @@ class PerceptionResolver:
             self.groundings.append(record)
             raise LabelNotFound(label, f"no single confident detection in {', '.join(self.cameras)} (prompts: {tried})")
         kp = keypoint_from_points(label, evidence, self.source)
+        self._seen_at[label] = kp.position_m
         record["keypoint"] = kp.to_dict()
         self.groundings.append(record)
         return kp
