@@ -287,3 +287,27 @@ def test_one_arm_picks_and_hands_over_to_the_other_by_the_handle_when_there_is_o
 )
 def test_coordinated_objects_share_the_destination_named_last(text, expected):
     assert clauses(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text,expected",
+    [
+        # "from" before a place preposition only marks the source: where the object is stays a relation
+        (
+            "take the pen from inside the box and put it in the cup",
+            [("pick", "pen inside box", None, None), ("put", "pen inside box", "in", "cup")],
+        ),
+        ("move the mug from under the shelf onto the tray", [("put", "mug under shelf", "on", "tray")]),
+        # an "X of Y" anchor reads as a noun phrase, head last, like any other ("the second tier of the rack")
+        ("pick up the cup on the upper tier of the rack", [("pick", "cup on rack upper tier", None, None)]),
+        ("pick up the cup on top of the rack", [("pick", "cup on top of rack", None, None)]),
+        # a relative clause with an adjective, on a destination too
+        ("put the ring on the post that is round", [("put", "ring", "on", "round post")]),
+        ("put the ring which is small on the post", [("put", "small ring", "on", "post")]),
+        # "slide X over to Y" moves it along the table to Y; "slide X over Y" sets it on Y
+        ("slide the box over to the front of the lamp", [("push", "box", "near", "lamp")]),
+        ("slide the ring over the post", [("put", "ring", "on", "post")]),
+    ],
+)
+def test_sources_anchors_and_relative_clauses(text, expected):
+    assert clauses(text) == expected

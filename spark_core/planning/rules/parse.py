@@ -118,7 +118,9 @@ def parse_instruction(instruction: str) -> list[Clause]:
     previous: str | None = None
     for part in (p for t in texts for p in split_clauses(t)):
         part = re.sub(r"^use (.+?) to (\w+) (.+)$", r"\2 \3 with \1", part)  # "use the sponge to scrub the plate"
-        part = re.sub(r"^slide (.+) (?:over|onto|on to|on top of) ", r"put \1 on ", part)  # slid on top: a carry
+        part = re.sub(
+            r"^slide (.+) (?:over(?! to\b)|onto|on to|on top of) ", r"put \1 on ", part
+        )  # slid on top: a carry
         verb = _match_verb(part)
         if verb is None:
             goal = goal_to_action(part)

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import re
 
+from ...perception.qualifiers import split_relation
 from .lexicon import CONTENTS, DETERMINERS, SELF_PARTS, TABLE
 
 # "the closer of the two mugs" -> "closest mug"; "the bowl nearer to the robot" -> "nearest bowl"
@@ -88,7 +89,8 @@ def locator(text: str) -> str:
     itself says nothing ("block off the table" -> "block")."""
     text = _PARTICIPLE.sub("", text)
     text = _TABLE_TAIL.sub("", text)
-    text = re.sub(r"\bfrom between\b", "between", text)
+    # "from" before a place preposition only marks the source: the preposition says where it is
+    text = re.sub(r"\bfrom (?=(?:between|inside|in|under|beside|next to|on top of)\b)", "", text)
     text = re.sub(r"\bout of\b", "in", text)
     text = re.sub(r"\boff of\b|\boff\b", "on", text)
     if not re.search(r"\b(center|centre|middle)\b", text):
@@ -105,20 +107,30 @@ def object_phrase(words: str) -> str:
     text = locator(comparative(strip_determiners(words)))
     text = re.sub(r"'s\b", "", text)
     text = re.sub(r"^(?:other|one) |(?<=\w) ones?$", "", text).strip()
-    text = re.sub(r"^(.+?) (?:that|which) (?:is|are) (\w+)$", r"\2 \1", text)  # "peg that is square"
+    text = _predicative(text)
     # "block (that) is not blue", "block other than the blue one": perception keeps the blocks not blue
     text = re.sub(r"^(.+?) (?:(?:which )?(?:is|are) not|other than) (\w+)(?: ones?)?$", r"\1 not \2", text)
     if re.search(r"\b(between|next to|beside|near|by|on top of|on|in|inside|at|from|under|not)\b", text):
-        # the object it is located by reads as a noun phrase too ("next to the box of cookies" -> "cookies box")
+        # the object it is located by reads as a noun phrase too ("next to the box of cookies" -> "cookies box",
+        # "in the top tier of the shelf" -> "in shelf top tier")
+        head, relation, anchors = split_relation(text)
+        if relation and len(anchors) == 1 and " of " in anchors[0] and not relation.endswith("between"):
+            return f"{head} {relation} {noun_phrase(anchors[0])}"
         return re.sub(r"\b(\w+) of (\w+)$", _reorder_container, text)
     return noun_phrase(text)
+
+
+def _predicative(text: str) -> str:
+    """A relative clause with an adjective is that adjective before the noun: "peg (that) is square" ->
+    "square peg" (the relative pronoun went with the determiners)."""
+    return re.sub(r"^(.+?) (?:(?:that|which) )?(?:is|are) (\w+)$", r"\2 \1", text)
 
 
 def noun_phrase(words: str) -> str:
     """Strip determiners and tidy "drawer of the cabinet" -> "cabinet drawer", "cabinet's drawer" -> the same,
     "the plate's centre" -> "plate"."""
     text = possessive(strip_determiners(words).strip())
-    text = re.sub(r"^(?:other|one) |(?<=\w) ones?$", "", text).strip()
+    text = _predicative(re.sub(r"^(?:other|one) |(?<=\w) ones?$", "", text).strip())
     m = re.fullmatch(r"(?:contents?|beads) of (.+)", text)
     if m:
         return m.group(1)
