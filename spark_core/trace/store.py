@@ -51,10 +51,17 @@ def alembic_config(url: str, connection=None):
     return cfg
 
 
+def store_url(value: str) -> str:
+    """A trace store given as a SQLAlchemy URL, or as a plain file path (a SQLite file: `var/x.db`)."""
+    return value if "://" in value else f"sqlite:///{value}"
+
+
 class TraceStore:
-    """One store per process; thread-safe through SQLAlchemy sessions. SQLite files use WAL."""
+    """One store per process; thread-safe through SQLAlchemy sessions. SQLite files use WAL. `url`: a SQLAlchemy
+    URL or a SQLite file path."""
 
     def __init__(self, url: str = "sqlite:///var/spark.db", migrate: bool = True):
+        url = store_url(url)
         if url.startswith("sqlite:///") and not url.startswith("sqlite:///:memory:"):
             Path(url[len("sqlite:///") :]).parent.mkdir(parents=True, exist_ok=True)
         self.url = url

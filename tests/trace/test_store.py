@@ -155,3 +155,16 @@ def test_the_console_lease_has_one_holder_on_every_backend(store_url):
     first.release()
     assert second.acquire() is None and second.holder().owner == second.owner  # free again: taken
     assert not first.renew()
+
+
+def test_a_plain_file_path_is_a_sqlite_store(tmp_path, capsys):
+    """`--store var/x.db` (no URL scheme) is a SQLite file, for the CLI as for the library (it used to end in a
+    SQLAlchemy traceback: 'Could not parse SQLAlchemy URL')."""
+    from spark_cli import main
+    from spark_core.trace.store import TraceStore
+
+    path = tmp_path / "plain.db"
+    store = TraceStore(str(path))
+    assert store.url == f"sqlite:///{path}" and path.is_file()
+    assert main(["trials", "--store", str(path)]) == 0
+    assert "0 trial(s)" in capsys.readouterr().out
