@@ -47,7 +47,7 @@ KINDS: tuple[frozenset[str], ...] = tuple(
         "block cube brick",
         "plate dish saucer platter",
         "bowl dish basin",
-        "ramekin",
+        "ramekin dish",  # a ramekin is a small dish: "dish" may name it too
         # "bin" and "crate" are wider words: a basket or a tray
         "basket hamper bin crate",
         "tray bin",
