@@ -71,3 +71,21 @@ def test_a_handle_mask_loses_the_drawer_face_around_it():
     mask[106:130, 98:202] = True  # handle + face below
     kept = _proud(mask, _frame(depth), 0.015)
     assert kept[110:118, 100:200].all() and not kept[120:130].any()
+
+
+def test_a_renamed_piece_joins_the_rest_of_its_object():
+    """The front of a bowl renamed 'bowl' by the second look and the back the per-pixel network named bowl: one
+    bowl; a third bowl further on stays apart."""
+    from spark_core.perception.learned.categories import CATEGORY_INDEX
+    from spark_core.perception.learned.segmenter import Instance, _join_renamed
+
+    bowl = CATEGORY_INDEX["bowl"]
+    depth = np.ones((H, W))
+    front, back, other = (np.zeros((H, W), bool) for _ in range(3))
+    front[100:130, 80:120] = True  # 6 x 8 cm
+    back[70:100, 80:120] = True
+    other[70:130, 200:240] = True  # 24 cm further along x
+    insts = [Instance(bowl, m, 0.9, "black") for m in (front, back, other)]
+    out = _join_renamed(insts, {bowl}, _frame(depth))
+    assert len(out) == 2
+    assert (out[0].mask == (front | back)).all() and (out[1].mask == other).all()

@@ -32,7 +32,7 @@ def test_patch_is_centred_on_the_mask_even_at_the_image_edge():
 
 
 def _synthetic(n_crops: int = 3, with_items: bool = True) -> dict[str, np.ndarray]:
-    """Crops with one rectangle per GROUP item (when with_items), a bowl, and a 5-pixel speck."""
+    """Crops with one rectangle per GROUP item and a bowl (when with_items), and a 5-pixel speck."""
     rng = np.random.default_rng(0)
     H, W = 96, 160
     data = {
@@ -43,7 +43,7 @@ def _synthetic(n_crops: int = 3, with_items: bool = True) -> dict[str, np.ndarra
         "colour": np.zeros((n_crops, H, W), np.uint8),
         "seeds": np.arange(n_crops) + 1_500_000,
     }
-    names = [*pc.GROUP, "bowl"] if with_items else ["bowl"]
+    names = [*pc.GROUP, "bowl"] if with_items else []
     for k in range(n_crops):
         for j, name in enumerate(names):
             r, c = 4 + 22 * (j // 7), 4 + 22 * (j % 7)
@@ -54,11 +54,12 @@ def _synthetic(n_crops: int = 3, with_items: bool = True) -> dict[str, np.ndarra
     return data
 
 
-def test_samples_name_group_items_and_call_the_rest_other():
+def test_samples_are_named_by_their_category():
     rows = samples(_synthetic(1))
-    labels = {int(i): int(c) for _, i, c in rows}
-    blob = {BLOB: pc.OTHER}  # a random patch of table or floor
-    assert labels == {**{j + 1: j for j in range(len(pc.GROUP))}, len(pc.GROUP) + 1: pc.OTHER, **blob}  # no speck
+    labels = {int(i): pc.CLASSES[int(c)] for _, i, c in rows}
+    items = {j + 1: name for j, name in enumerate(pc.GROUP)}
+    blob = {BLOB: "other"}  # a random patch of table or floor
+    assert labels == {**items, len(pc.GROUP) + 1: "bowl", **blob}  # no speck
 
 
 def test_train_patches_command_runs_one_step_and_the_segmenter_uses_the_weights(tmp_path, capsys):
@@ -74,12 +75,12 @@ def test_train_patches_command_runs_one_step_and_the_segmenter_uses_the_weights(
     assert pc.load(weights).training is False
 
 
-def test_train_patches_refuses_data_without_the_items(tmp_path, capsys):
+def test_train_patches_refuses_data_without_objects(tmp_path, capsys):
     data = tmp_path / "data"
     data.mkdir()
     np.savez_compressed(data / "shard_1000000.npz", **_synthetic(2, with_items=False))  # type: ignore[arg-type]
     assert main(["perception", "train-patches", "--data", str(data), "--out", str(tmp_path / "p.pt")]) == 2
-    assert "no training samples of" in capsys.readouterr().err
+    assert "no training samples of objects" in capsys.readouterr().err
     assert main(["perception", "train-patches", "--data", str(data), "--out", "p.pt", "--minutes", "0"]) == 2
     assert "--minutes" in capsys.readouterr().err
 

@@ -3,9 +3,10 @@
 The per-pixel network sees frames at half resolution, where LIBERO's grocery items (a few dozen pixels across,
 printed labels telling them apart) look alike: it marks their pixels as *some* grocery item reliably but often
 names the wrong one (see MODEL_CARD.md). So the segmenter takes every blob of pixels the per-pixel network puts
-in GROUP, cuts it at boundaries and depth edges, and asks this classifier which member of GROUP it is, from the
-camera-resolution RGB, the blob's mask and its depth relief. "other" means none of them (a bowl's rim the
-per-pixel network took for a grocery item): the per-pixel vote then stands.
+in GROUP, cuts it at boundaries and depth edges, and asks this classifier what it is, from the camera-resolution
+RGB, the blob's mask and its depth relief; and it takes a second look at every other whole object the per-pixel
+network found (a plate on a stove it called stove). CLASSES: every whole-object category (parts, which are only
+ever seen on their parent, are left to the per-pixel network) and "other" (a shadow, a part, the floor).
 
 Camera-only: the input is RGB, depth and a mask the segmenter itself predicted.
 """
@@ -22,7 +23,7 @@ import numpy as np
 import torch
 from torch import nn
 
-from .categories import CATEGORY_INDEX
+from .categories import CATEGORIES, CATEGORY_INDEX
 
 PATCH_PX = 48  # side of the square network input
 MARGIN = 0.25  # context around the mask's bounding box, as a fraction of its longer side
@@ -41,8 +42,9 @@ GROUP: tuple[str, ...] = (
     "salad dressing",
     "tomato sauce",
 )
-CLASSES: tuple[str, ...] = (*GROUP, "other")
-OTHER = len(GROUP)
+CLASSES: tuple[str, ...] = (*(c.name for c in CATEGORIES if c.thing and not c.part_of), "other")
+OTHER = len(CLASSES) - 1
+CLASS_CATEGORY = np.array([CATEGORY_INDEX[n] for n in CLASSES[:OTHER]])  # class index -> category index
 GROUP_INDEX = np.array([CATEGORY_INDEX[n] for n in GROUP])
 WEIGHTS = "weights/patch_classifier.pt"
 _NETS: dict[str, Any] = {}

@@ -32,8 +32,7 @@ from .categories import CATEGORIES, CATEGORY_INDEX, COLOURS, TABLE
 WEIGHTS = "weights/learned_segmenter.pt"  # package data, next to MODEL_CARD.md
 HEAD_NOUN_BONUS = 0.08
 MATERIAL_WORDS = {"wooden", "wood", "metal", "plastic", "ceramic", "wicker"}  # not colour filters
-SECOND_LOOK = ("bowl",)  # per-pixel categories a GROUP member is mistaken for (a ramekin for a bowl)
-SECOND_LOOK_P = 0.8  # the patch classifier's probability that overrules the per-pixel category
+SECOND_LOOK_P = 0.85  # the patch classifier's probability that overrules the per-pixel network's category
 OTHER_DROP_P = 0.5  # a group blob the patch classifier calls "other" with more than this is no group member
 MIN_INSTANCE_SCORE = 0.3  # instances the network is less sure of are dropped (stray pixels, table edges)
 FRAGMENT_AREA = 0.15
@@ -264,28 +263,35 @@ class LearnedSegmenter:
             if score < MIN_INSTANCE_SCORE:
                 continue
             colour_p = col[1:, m].mean(1)
-            category = int(patch_classifier.GROUP_INDEX[best])
+            category = int(patch_classifier.CLASS_CATEGORY[best])
             out.append(Instance(category, full, score, COLOURS[1 + int(colour_p.argmax())]))
         return out
 
     def _second_look(self, instances: list[Instance], frame: CameraFrame) -> list[Instance]:
-        """Instances of SECOND_LOOK categories the patch classifier confidently names as a GROUP member take
-        that name (the per-pixel network calls LIBERO's white ramekin a bowl about half the time)."""
-        idx = [k for k, i in enumerate(instances) if CATEGORIES[i.category].name in SECOND_LOOK]
+        """Whole objects the per-pixel network named (GROUP blobs are named by the classifier already) take the
+        patch classifier's name when it is confident of another one (a plate standing on a stove that the
+        per-pixel network called stove, LIBERO's white ramekin called a bowl)."""
+        group = set(patch_classifier.GROUP_INDEX.tolist())
+        idx = [k for k, i in enumerate(instances) if i.category not in group and not CATEGORIES[i.category].part_of]
         if not idx:
             return instances
         depth = np.nan_to_num(frame.depth_m.astype(np.float32), nan=0.0, posinf=10.0)
         patches = [patch_classifier.patch(frame.rgb, depth, instances[k].mask) for k in idx]
         keep = [(k, p) for k, p in zip(idx, patches) if p is not None]
-        probs = patch_classifier.classify(patch_classifier.load(self.patch_weights), [p for _, p in keep])  # type: ignore[arg-type]
+        net = patch_classifier.load(self.patch_weights)  # type: ignore[arg-type]  # set when called
+        probs = patch_classifier.classify(net, [p for _, p in keep])
         out = list(instances)
+        renamed = set()
         for (k, _), p_cls in zip(keep, probs):
             best = int(p_cls.argmax())
-            if best != patch_classifier.OTHER and p_cls[best] >= SECOND_LOOK_P:
+            if best == patch_classifier.OTHER or p_cls[best] < SECOND_LOOK_P:
+                continue
+            category = int(patch_classifier.CLASS_CATEGORY[best])
+            if category != out[k].category:
                 i = out[k]
-                score = float(np.sqrt(i.score * p_cls[best]))
-                out[k] = Instance(int(patch_classifier.GROUP_INDEX[best]), i.mask, score, i.colour)
-        return out
+                out[k] = Instance(category, i.mask, float(np.sqrt(i.score * p_cls[best])), i.colour)
+                renamed.add(category)
+        return _join_renamed(out, renamed, frame)
 
     # -- the Segmenter protocol --------------------------------------------------------------------------------
     def segment(self, frame: CameraFrame, prompts: Sequence[str]) -> list[Detection]:
@@ -440,6 +446,50 @@ def _apart_in_space(mask: np.ndarray, frame: CameraFrame) -> list[np.ndarray]:
             piece[vs[sel], us[sel]] = True
             out.append(piece)
     return out or [mask]
+
+
+def _join_renamed(instances: list[Instance], categories: set[int], frame: CameraFrame) -> list[Instance]:
+    """After renaming, a renamed piece and another instance of its new category that touch in the image are one
+    object when together no wider than one can be (Category.max_extent_m): the front of a bowl the per-pixel
+    network took for the wine rack behind it, and the bowl's back it got right."""
+    out = list(instances)
+    kernel = np.ones((5, 5), np.uint8)
+    for c in categories:
+        limit = CATEGORIES[c].max_extent_m
+        if not limit:
+            continue
+        merged = True
+        while merged:
+            merged = False
+            same = [k for k, i in enumerate(out) if i.category == c]
+            for a in same:
+                grown = cv2.dilate(out[a].mask.astype(np.uint8), kernel).astype(bool)
+                for b in same:
+                    if b == a or not (grown & out[b].mask).any():
+                        continue
+                    union = out[a].mask | out[b].mask
+                    if _xy_width(union, frame) <= limit:
+                        keep = out[a] if out[a].mask.sum() >= out[b].mask.sum() else out[b]
+                        out[a] = Instance(c, union, max(out[a].score, out[b].score), keep.colour)
+                        del out[b]
+                        merged = True
+                        break
+                if merged:
+                    break
+    return out
+
+
+def _xy_width(mask: np.ndarray, frame: CameraFrame, n: int = 800) -> float:
+    """Widest extent (m) of the mask's 3D points along world x or y (2nd to 98th percentile)."""
+    vs, us = np.nonzero(mask)
+    step = max(1, len(vs) // n)
+    vs, us = vs[::step], us[::step]
+    z = frame.depth_m[vs, us]
+    ok = np.isfinite(z) & (z > 0)
+    if ok.sum() < 3:
+        return 0.0
+    xy = frame.backproject(us[ok].astype(float), vs[ok].astype(float), z[ok])[:, :2]
+    return float((np.percentile(xy, 98, axis=0) - np.percentile(xy, 2, axis=0)).max())
 
 
 def _parent_named(cats: dict[int, float], prompt: str) -> dict[int, float]:

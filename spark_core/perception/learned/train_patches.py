@@ -1,8 +1,8 @@
 """Train the patch classifier (patch_classifier.py) on a rendered dataset's crops (dataset.py).
 
-Every object instance of a crop is a sample: members of GROUP by their category, every other object as "other";
-so is, once per crop, a random blob of table, floor or robot (what a shadow the per-pixel network took for an
-item looks like), as "other".
+Every object instance of a crop is a sample, labelled with its category (parts as "other"); so is, once per crop,
+a random blob of table, floor or robot (what a shadow the per-pixel network took for an item looks like), as
+"other".
 Patches are cut as the segmenter cuts them at run time, with the differences between a true mask and a predicted
 one simulated: the window jittered in place and scale, the mask eroded or dilated, made blocky as a half-resolution
 mask scaled up, or cut to a part of the object; brightness and white balance jittered, flipped left-right.
@@ -23,7 +23,7 @@ from torch.nn import functional as F
 
 from .categories import CATEGORIES
 from .dataset import load_shards
-from .patch_classifier import CLASSES, GROUP_INDEX, OTHER, PatchNet, patch, save, square_box
+from .patch_classifier import CLASS_CATEGORY, CLASSES, OTHER, PatchNet, patch, save, square_box
 
 MIN_AREA_PX = 40  # instances smaller than this (camera pixels) are not samples
 
@@ -49,7 +49,7 @@ def samples(data: dict[str, np.ndarray]) -> np.ndarray:
     """(N, 3) int array: crop index, instance id, class index (CLASSES) of every instance of at least
     MIN_AREA_PX pixels, and one BLOB ("other") row per crop."""
     to_class = np.full(len(CATEGORIES), -1)
-    to_class[GROUP_INDEX] = np.arange(len(GROUP_INDEX))
+    to_class[CLASS_CATEGORY] = np.arange(len(CLASS_CATEGORY))
     for i, category in enumerate(CATEGORIES):
         if category.thing and to_class[i] < 0:
             to_class[i] = OTHER
@@ -160,7 +160,8 @@ def train(cfg: PatchTrainConfig, log: Callable[[str], None] = print) -> dict:
     train_rows, val_rows, datas = [], [], []
     for d in cfg.data_dirs:
         data = load_shards(Path(d))
-        keep = {k: data[k] for k in ("rgb", "depth_mm", "category", "instance", "seeds")}
+        keep = {k: data.pop(k) for k in ("rgb", "depth_mm", "category", "instance", "seeds")}
+        del data
         rows = samples(keep)
         is_val = keep["seeds"][rows[:, 0]] % cfg.val_every == cfg.val_every - 1
         datas.append(keep)
@@ -168,19 +169,21 @@ def train(cfg: PatchTrainConfig, log: Callable[[str], None] = print) -> dict:
         train_rows.append(np.c_[np.full(int((~is_val).sum()), di), rows[~is_val]])
         val_rows.append(np.c_[np.full(int(is_val.sum()), di), rows[is_val]])
     tr, va = np.concatenate(train_rows), np.concatenate(val_rows)
-    data = {k: np.concatenate([d[k] for d in datas]) for k in datas[0]}
     offsets = np.cumsum([0] + [len(d["seeds"]) for d in datas])[:-1]
+    data = {}
+    for k in list(datas[0]):  # key by key, freeing each part once copied (the crops take GBs)
+        data[k] = np.concatenate([d.pop(k) for d in datas])
     tr = np.c_[tr[:, 1] + offsets[tr[:, 0]], tr[:, 2:]]
     va = np.c_[va[:, 1] + offsets[va[:, 0]], va[:, 2:]]
     counts = np.bincount(tr[:, 2], minlength=len(CLASSES))
     log("training samples per class: " + ", ".join(f"{c} {n}" for c, n in zip(CLASSES, counts.tolist())))
-    if (counts[:OTHER] == 0).any():
-        missing = [CLASSES[c] for c in np.nonzero(counts[:OTHER] == 0)[0]]
-        raise ValueError(f"no training samples of {missing}: render LIBERO-Object scenes (`--source libero`)")
-    # balanced draws: every GROUP class equally often, "other" as other_fraction of the batch
-    p = np.where(tr[:, 2] == OTHER, cfg.other_fraction / max(1, counts[OTHER]), 0.0)
-    grp = tr[:, 2] != OTHER
-    p[grp] = (1 - cfg.other_fraction) / OTHER / counts[tr[grp, 2]]
+    if counts[OTHER] == 0 or not counts[:OTHER].any():
+        raise ValueError("no training samples of objects: render scenes first (`spark perception dataset`)")
+    # balanced draws: every class seen in the data equally often, "other" as other_fraction of the batch
+    present = int((counts[:OTHER] > 0).sum())
+    p = np.where(tr[:, 2] == OTHER, cfg.other_fraction / counts[OTHER], 0.0)
+    obj = tr[:, 2] != OTHER
+    p[obj] = (1 - cfg.other_fraction) / present / counts[tr[obj, 2]]
     p /= p.sum()
     net = PatchNet()
     opt = torch.optim.AdamW(net.parameters(), lr=cfg.lr, weight_decay=1e-4)
