@@ -6,6 +6,7 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+from collections.abc import Callable
 from pathlib import Path
 
 
@@ -128,12 +129,7 @@ def _cmd_train(args: argparse.Namespace) -> int:
         balance_max=args.balance_max,
         oversample_rare=args.oversample_rare,
     )
-    try:
-        train(cfg, log=lambda s: print(s, flush=True))
-    except (FileNotFoundError, ValueError) as e:
-        print(e, file=sys.stderr)
-        return 2
-    return 0
+    return _run_training(train, cfg)
 
 
 def _cmd_train_patches(args: argparse.Namespace) -> int:
@@ -155,6 +151,11 @@ def _cmd_train_patches(args: argparse.Namespace) -> int:
         seed=args.seed,
         threads=args.threads,
     )
+    return _run_training(train, cfg)
+
+
+def _run_training(train: Callable[..., dict], cfg: object) -> int:
+    """Run a training function with progress on stdout; bad data or paths end with exit code 2 and the reason."""
     try:
         train(cfg, log=lambda s: print(s, flush=True))
     except (FileNotFoundError, ValueError) as e:
