@@ -88,7 +88,7 @@ def patch(
         return None
     size = (PATCH_PX, PATCH_PX)
     img = cv2.resize(np.ascontiguousarray(rgb[sl]), size, interpolation=cv2.INTER_AREA).astype(np.float32) / 255.0
-    d = np.nan_to_num(depth_m[sl].astype(np.float32), nan=0.0, posinf=0.0)
+    d = np.nan_to_num(depth_m[sl].astype(np.float32), nan=0.0, posinf=10.0)
     ref = float(np.median(d[m]))
     rel = np.clip((d - ref) / DEPTH_RELIEF_M, -2, 2)
     rel = cv2.resize(rel, size, interpolation=cv2.INTER_NEAREST)

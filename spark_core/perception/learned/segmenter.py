@@ -237,7 +237,6 @@ class LearnedSegmenter:
         n, comp = cv2.connectedComponents((region & ~split).astype(np.uint8), connectivity=4)
         comp = _grow_into(comp, region)
         mass = probs[patch_classifier.GROUP_INDEX].sum(0)
-        depth = np.nan_to_num(frame.depth_m.astype(np.float32), nan=0.0, posinf=10.0)
         blobs, patches = [], []
         for k in range(1, n):
             m = comp == k
@@ -249,7 +248,7 @@ class LearnedSegmenter:
             for piece in _apart_in_space(full, frame):
                 if piece.sum() < self.min_area_px:
                     continue
-                p = patch_classifier.patch(frame.rgb, depth, piece)
+                p = patch_classifier.patch(frame.rgb, frame.depth_m, piece)
                 if p is not None:
                     small = cv2.resize(piece.astype(np.uint8), m.shape[::-1], interpolation=cv2.INTER_NEAREST)
                     blobs.append((m & small.astype(bool) if (m & small.astype(bool)).any() else m, piece))
@@ -275,8 +274,7 @@ class LearnedSegmenter:
         idx = [k for k, i in enumerate(instances) if i.category not in group and not CATEGORIES[i.category].part_of]
         if not idx:
             return instances
-        depth = np.nan_to_num(frame.depth_m.astype(np.float32), nan=0.0, posinf=10.0)
-        patches = [patch_classifier.patch(frame.rgb, depth, instances[k].mask) for k in idx]
+        patches = [patch_classifier.patch(frame.rgb, frame.depth_m, instances[k].mask) for k in idx]
         keep = [(k, p) for k, p in zip(idx, patches) if p is not None]
         net = patch_classifier.load(self.patch_weights)  # type: ignore[arg-type]  # set when called
         probs = patch_classifier.classify(net, [p for _, p in keep])
