@@ -89,3 +89,58 @@ def test_a_renamed_piece_joins_the_rest_of_its_object():
     out = _join_renamed(insts, {bowl}, _frame(depth))
     assert len(out) == 2
     assert (out[0].mask == (front | back)).all() and (out[1].mask == other).all()
+
+
+def test_a_part_counts_only_on_what_it_is_part_of():
+    """A drawer touching the cabinet anchors handles; a 'drawer' blob alone on the table does not, so a handle on
+    it does not count either."""
+    from spark_core.perception.learned.categories import CATEGORY_INDEX
+    from spark_core.perception.learned.segmenter import _anchored, _touches
+
+    cat = np.zeros((H, W), np.uint8)
+    cat[20:100, 20:100] = CATEGORY_INDEX["cabinet"]
+    cat[40:60, 100:120] = CATEGORY_INDEX["drawer"]  # on the cabinet's side
+    cat[150:170, 200:220] = CATEGORY_INDEX["drawer"]  # alone
+    parents = _anchored(cat, ("drawer", "cabinet"))
+    on_cabinet, alone = np.zeros((H, W), bool), np.zeros((H, W), bool)
+    on_cabinet[45:55, 121:124] = True
+    alone[155:165, 221:224] = True
+    assert _touches(on_cabinet, parents)
+    assert not _touches(alone, parents)
+
+
+def test_mask_pixels_on_the_wall_behind_are_dropped():
+    from spark_core.perception.learned.segmenter import _one_surface
+
+    depth = np.ones((H, W))
+    depth[100:140, 100:140] = 0.9
+    depth[100:140, 140:150] = 3.0  # the mask spilled past the silhouette onto the far wall
+    mask = np.zeros((H, W), bool)
+    mask[100:140, 100:150] = True
+    kept = _one_surface(mask, _frame(depth))
+    assert kept[100:140, 100:140].all() and not kept[:, 140:150].any()
+
+
+def test_an_instance_under_the_table_top_is_dropped():
+    """The network's table pixels give the table top's height; an 'object' 30 cm under it is the floor behind."""
+    from spark_core.perception.learned.categories import CATEGORY_INDEX, TABLE
+    from spark_core.perception.learned.segmenter import Instance, _above_table
+
+    depth = np.full((H, W), 0.8)  # table top 20 cm above the floor (camera 1 m above the floor)
+    depth[10:40, 10:40] = 1.1  # seen through a gap: 10 cm under the floor level, 30 cm under the table
+    cat = np.full((H, W), TABLE, np.uint8)
+    on, under = np.zeros((H, W), bool), np.zeros((H, W), bool)
+    on[100:120, 100:120] = True
+    under[10:40, 10:40] = True
+    bowl = CATEGORY_INDEX["bowl"]
+    out = _above_table([Instance(bowl, on, 0.9, "red"), Instance(bowl, under, 0.9, "red")], cat, _frame(depth))
+    assert [i.mask is on for i in out] == [True]
+
+
+def test_a_part_seen_nowhere_falls_back_to_the_parent_the_prompt_names():
+    from spark_core.perception.learned.categories import CATEGORY_INDEX
+    from spark_core.perception.learned.segmenter import _parent_named
+
+    knob, stove = CATEGORY_INDEX["knob"], CATEGORY_INDEX["stove"]
+    assert _parent_named({knob: 0.8}, "stove knob") == {stove: 0.8}
+    assert _parent_named({knob: 0.8}, "knob") == {}  # no parent named: nothing to fall back to
