@@ -15,8 +15,8 @@ from spark_core.planning import SceneView
 def test_the_corpus_is_large_enough_split_by_its_hash_rule_and_names_real_tasks():
     dev, test = wording.load("dev"), wording.load("test")
     # dev: the original 351 (hash split; the odd-hash half is the retired first test half), then later probes (.pN,
-    # .qN); test: the second test half (.rN), written apart from the others (README)
-    later = [e for e in dev if re.search(r"\.[pq][0-9]+$", e["id"])]
+    # .qN, .sN); test: the second test half (.rN), written apart from the others (README)
+    later = [e for e in dev if re.search(r"\.[pqs][0-9]+$", e["id"])]
     first = [e for e in dev if e not in later]
     assert later and len(first) >= 300
     odd = [hashlib.sha256(f"{e['task']}|{e['instruction']}".encode()).digest()[0] % 2 for e in first]
