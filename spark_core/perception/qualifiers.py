@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import re
 
+import numpy as np
+
 # qualifier -> (world axis index, sign): the chosen instance maximises sign * coordinate.
 # World frame: x forward (away from the robot), y left (robot's view).
 QUALIFIERS: dict[str, tuple[int, float]] = {
@@ -61,3 +63,26 @@ def split_relation(prompt: str) -> tuple[str, str | None, list[str]]:
     anchors = re.split(r"\s+and\s+", rest) if relation.endswith("between") else [rest]
     anchors = [" ".join(w for w in a.split() if w not in ("the", "a", "an")) for a in anchors]
     return head.strip(), relation, [a for a in anchors if a]
+
+
+SUPPORT_RELATIONS = ("on top of", "on", "in", "inside", "at", "from")  # the head stands on or in the anchor
+NEAR_RELATIONS = ("next to", "beside", "near", "by")
+SUPPORT_MARGIN_M = 0.03  # a bowl's centre may overhang its support's seen footprint by this much
+NEAR_M = 0.2  # "next to": centres at most the anchor's radius plus this apart (table plane)
+
+
+def relation_holds(relation: str, head_xy_m: np.ndarray, anchors: list[tuple[np.ndarray, float]]) -> bool:
+    """Whether a chosen instance (its centroid in the table plane, world m) stands in `relation` to the anchors
+    (each: centroid xy and footprint radius, m) - the check a view's pick must pass to outvote another view that
+    chose differently. "on/in X": within X's footprint; "next to X": within NEAR_M of its edge; "between A and
+    B": nearer their midpoint than half their distance. A "not ..." relation holds where the relation does not."""
+    negated = relation.startswith("not ")
+    rel = relation[4:] if negated else relation
+    centres = [np.asarray(c, float) for c, _ in anchors]
+    if rel == "between" and len(centres) >= 2:
+        mid = np.mean(centres, axis=0)
+        holds = float(np.linalg.norm(head_xy_m - mid)) < 0.5 * float(np.linalg.norm(centres[0] - centres[1]))
+    else:
+        (c, r), reach = anchors[0], NEAR_M if rel in NEAR_RELATIONS else SUPPORT_MARGIN_M
+        holds = float(np.linalg.norm(head_xy_m - np.asarray(c, float))) <= r + reach
+    return holds != negated

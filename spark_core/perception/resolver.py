@@ -107,10 +107,12 @@ def fused_evidence(evidence: list[PointEvidence]) -> list[PointEvidence]:
     """Fuse views only when they saw the same thing; otherwise trust the most confident view. The same thing: the
     medians of the views' points within FUSE_AGREEMENT_M in xy and, in height, within FUSE_AGREEMENT_M or half
     the most confident view's visible height (stacked drawers' handles share xy and differ in height by less than
-    a handle's spacing; a bottle seen from above and from the side differs by more than 5 cm and is one thing)."""
+    a handle's spacing; a bottle seen from above and from the side differs by more than 5 cm and is one thing).
+    For a relational label ("the bowl on the stove") a view whose pick was seen to stand in the relation is
+    trusted before one whose pick was seen not to (one view may hold only the wrong bowl), whatever the scores."""
     if len(evidence) < 2:
         return evidence
-    best = max(evidence, key=lambda e: e.detection.score)
+    best = max(evidence, key=lambda e: (_relation_rank(e), e.detection.score))
     centre = np.median(best.points_world, axis=0)
     z = best.points_world[:, 2]
     z_tol = max(FUSE_AGREEMENT_M, 0.5 * float(np.percentile(z, 98) - np.percentile(z, 2)))
@@ -120,3 +122,9 @@ def fused_evidence(evidence: list[PointEvidence]) -> list[PointEvidence]:
         if np.linalg.norm(c[:2] - centre[:2]) < FUSE_AGREEMENT_M and abs(c[2] - centre[2]) < z_tol:
             out.append(e)
     return out
+
+
+def _relation_rank(e: PointEvidence) -> int:
+    """2: the view saw its pick stand in the label's relation; 0: saw it not; 1: no relation, or not checked."""
+    holds = e.detection.detail.get("relation_holds")
+    return 1 if holds is None else 2 if holds else 0

@@ -40,6 +40,13 @@ def test_libero_prompts_ground_to_their_category(prompt, category, colours):
     assert wanted == colours
 
 
+def test_a_compound_noun_grounds_to_its_head_not_its_modifier():
+    """ "cabinet drawer layer" (an adaptive variant of "drawer middle layer") is a drawer: the last word naming a
+    kind is the head, though "layer" names none; the cabinet it modifies must not tie with it."""
+    cats, _ = LearnedSegmenter().ground("cabinet drawer layer")
+    assert [CATEGORIES[c].name for c in cats] == ["drawer"]
+
+
 def test_libero_labels_map_to_categories():
     assert CATEGORIES[category_of_libero("akita black bowl 2")].name == "bowl"
     assert CATEGORIES[category_of_libero("glazed rim porcelain ramekin")].name == "ramekin"

@@ -9,10 +9,16 @@ from spark_core.perception.lifting import PointEvidence
 from spark_core.perception.resolver import fused_evidence
 
 
-def _evidence(camera: str, centre_m: tuple[float, float, float], size_m: tuple[float, float, float], score: float):
+def _evidence(
+    camera: str,
+    centre_m: tuple[float, float, float],
+    size_m: tuple[float, float, float],
+    score: float,
+    detail: dict | None = None,
+):
     rng = np.random.default_rng(len(camera))
     pts = np.asarray(centre_m) + (rng.random((400, 3)) - 0.5) * np.asarray(size_m)
-    det = Detection("handle", "handle", np.zeros((4, 4), bool), score, camera, False)
+    det = Detection("handle", "handle", np.zeros((4, 4), bool), score, camera, False, detail or {})
     return PointEvidence(det, pts, pts.mean(0))
 
 
@@ -36,6 +42,32 @@ def test_views_apart_in_xy_are_not_fused():
     a = _evidence("agentview", (0.40, 0.00, 0.02), (0.05, 0.05, 0.04), 0.9)
     b = _evidence("frontview", (0.50, 0.00, 0.02), (0.05, 0.05, 0.04), 0.8)
     assert [e.detection.camera for e in fused_evidence([a, b])] == ["agentview"]
+
+
+def test_a_view_that_saw_its_pick_off_the_anchor_does_not_outvote_one_that_saw_it_on():
+    """ "The bowl on the stove": one view holds only the bowl on the cabinet (seen not on the stove), more
+    confidently than the other view's bowl on the stove. The relation decides, not the score."""
+    wrong = _evidence("frontview", (0.65, -0.28, 0.26), (0.1, 0.1, 0.05), 0.95, {"relation_holds": False})
+    right = _evidence("agentview", (0.40, -0.15, 0.06), (0.1, 0.1, 0.05), 0.76, {"relation_holds": True})
+    assert [e.detection.camera for e in fused_evidence([wrong, right])] == ["agentview"]
+    unchecked = _evidence("agentview", (0.40, -0.15, 0.06), (0.1, 0.1, 0.05), 0.76)
+    assert [e.detection.camera for e in fused_evidence([wrong, unchecked])] == ["agentview"]
+    both_unchecked = _evidence("frontview", (0.65, -0.28, 0.26), (0.1, 0.1, 0.05), 0.95)
+    assert [e.detection.camera for e in fused_evidence([both_unchecked, unchecked])] == ["frontview"]
+
+
+def test_relations_in_the_table_plane():
+    from spark_core.perception.qualifiers import relation_holds
+
+    stove = (np.array([0.45, -0.10]), 0.09)
+    assert relation_holds("on", np.array([0.40, -0.15]), [stove])
+    assert not relation_holds("on", np.array([0.65, -0.28]), [stove])
+    assert relation_holds("not on", np.array([0.65, -0.28]), [stove])
+    assert relation_holds("next to", np.array([0.65, -0.18]), [stove])  # 20 cm from the centre, 11 from its edge
+    assert not relation_holds("next to", np.array([0.85, -0.10]), [stove])
+    plate, ramekin = (np.array([0.0, 0.0]), 0.06), (np.array([0.0, 0.3]), 0.05)
+    assert relation_holds("between", np.array([0.02, 0.14]), [plate, ramekin])
+    assert not relation_holds("between", np.array([0.2, 0.14]), [plate, ramekin])
 
 
 class _TwoBowls:

@@ -21,6 +21,10 @@ class Category:
     # a part standing proud of its parent's face by about this much (m): mask pixels further than this behind the
     # part's nearest pixels are the face around it (a handle's mask found at half resolution spills onto it)
     proud_m: float = 0.0
+    # tallest an object of this kind stands (m, world z): mask pixels further below its seen top are what it
+    # stands on (a bowl on a cookie box or a ramekin; the per-pixel network paints the support's top as bowl);
+    # 0 for kinds whose height varies too much to say
+    max_height_m: float = 0.0
 
 
 CATEGORIES: tuple[Category, ...] = (
@@ -28,8 +32,8 @@ CATEGORIES: tuple[Category, ...] = (
     Category("table", "the table top surface", thing=False),
     Category("robot", "the robot arm, its gripper and fingers", thing=False),
     Category("block", "small cube block, a wooden box-shaped cube"),
-    Category("bowl", "round open ceramic bowl, a dish", max_extent_m=0.18),
-    Category("plate", "flat round ceramic plate, a dinner dish"),
+    Category("bowl", "round open ceramic bowl, a dish", max_extent_m=0.18, max_height_m=0.06),
+    Category("plate", "flat round ceramic plate, a dinner dish", max_height_m=0.03),
     Category("mug", "ceramic mug with a handle, a cylindrical cup", max_extent_m=0.15),
     Category("tray", "shallow square plastic tray", max_extent_m=0.32),
     Category("basket", "deep square woven wicker basket", max_extent_m=0.30),
@@ -53,7 +57,7 @@ CATEGORIES: tuple[Category, ...] = (
     Category("wine bottle", "dark glass wine bottle with a long neck"),
     Category("wine rack", "metal wine rack, a stand that holds bottles", max_extent_m=0.40),
     Category("cream cheese", "small rectangular box of cream cheese"),
-    Category("ramekin", "small round white porcelain ramekin with a glazed rim", max_extent_m=0.15),
+    Category("ramekin", "small round white porcelain ramekin with a glazed rim", max_extent_m=0.15, max_height_m=0.06),
     Category("cookie box", "rectangular cardboard box of cookies"),
     Category("alphabet soup", "can of alphabet soup, a food tin"),
     Category("bbq sauce", "bottle of barbecue sauce"),

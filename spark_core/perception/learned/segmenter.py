@@ -23,11 +23,12 @@ import numpy as np
 from ..colors import BASE_COLOURS, normalise_colours
 from ..detection import Detection
 from ..frame import CameraFrame
-from ..qualifiers import split_qualifier, split_relation
+from ..qualifiers import relation_holds, split_qualifier, split_relation
 from ..sim_segmenter import calibrated_score, pick_by_qualifier
 from ..text_encoder import SHARED_ENCODER, TextEncoder
 from . import patch_classifier
 from .categories import CATEGORIES, CATEGORY_INDEX, COLOURS, TABLE
+from .layers import is_stacked, layer_mask
 
 WEIGHTS = "weights/learned_segmenter.pt"  # package data, next to MODEL_CARD.md
 HEAD_NOUN_BONUS = 0.08
@@ -126,7 +127,9 @@ class LearnedSegmenter:
         if not core:
             return {}, colours
         cos = self._doc_vecs @ self.encoder.encode([core])[0]
-        head = core.split()[-1]
+        heads = {CATEGORIES[i].name.split()[-1] for i in self._things}
+        # the head noun: the last word naming a kind ("cabinet drawer layer": a drawer, "layer" names none)
+        head = next((w for w in reversed(core.split()) if w in heads or w.rstrip("s") in heads), core.split()[-1])
         scores = {}
         for i, c in zip(self._things, cos.tolist()):
             name = CATEGORIES[i].name
@@ -213,7 +216,7 @@ class LearnedSegmenter:
                 out.append(Instance(int(c), full, score, COLOURS[1 + int(colour_p.argmax())]))
         if self.patch_weights is not None:
             out = self._second_look(out, frame)
-        out = _above_table(_drop_fragments(out), cat, frame)
+        out = _above_table(_drop_fragments([_standing_part(i, frame) for i in out]), cat, frame)
         if len(self._cache) > 8:
             self._cache.clear()
         self._cache[key] = out
@@ -297,13 +300,15 @@ class LearnedSegmenter:
         for prompt in prompts:
             head, relation, anchors = split_relation(prompt)
             if relation is not None:
-                out.extend(self._related(frame, prompt, head, anchors, negated=relation.startswith("not ")))
+                out.extend(self._related(frame, prompt, head, relation, anchors))
                 continue
             qualifier, core = split_qualifier(prompt)
             if re.search(r"\bof\b", prompt):  # "the top drawer of the cabinet": the drawer is the target
                 core = split_qualifier(re.split(r"\bof\b", prompt)[0])[1] or core
             dets = self._matches(frame, prompt, core)
-            if qualifier and len(dets) > 1:
+            if is_stacked(qualifier) and dets and all(d.detail["category"] == "drawer" for d in dets):
+                dets = self._drawer_layer(frame, dets, qualifier)  # type: ignore[arg-type]  # is_stacked: a str
+            elif qualifier and len(dets) > 1:
                 dets = [pick_by_qualifier(dets, frame, qualifier)]
             out.extend(dets)
         return out
@@ -325,28 +330,50 @@ class LearnedSegmenter:
             dets.append(Detection(prompt, prompt, inst.mask, round(score, 4), frame.camera, False, detail))
         return dets
 
+    def _drawer_layer(self, frame: CameraFrame, dets: list[Detection], qualifier: str) -> list[Detection]:
+        """The drawer a stacked qualifier names, cut from the drawer fronts by its handle's height (layers.py);
+        the qualifier among the drawer instances when no handle is seen."""
+        handles = [i.mask for i in self.instances(frame) if i.category == CATEGORY_INDEX["drawer handle"]]
+        union = np.logical_or.reduce([d.mask for d in dets])
+        mask = layer_mask(union, handles, qualifier, frame)
+        if mask is None or mask.sum() < self.min_area_px:
+            return [pick_by_qualifier(dets, frame, qualifier)] if len(dets) > 1 else dets
+        best = max(dets, key=lambda d: d.score)
+        return [
+            Detection(
+                best.prompt, best.prompt, mask, best.score, frame.camera, False, {**best.detail, "layer": qualifier}
+            )
+        ]
+
     def _related(
-        self, frame: CameraFrame, prompt: str, head: str, anchors: list[str], negated: bool = False
+        self, frame: CameraFrame, prompt: str, head: str, relation: str, anchors: list[str]
     ) -> list[Detection]:
         """Instances of `head`; when several, the one nearest the anchor objects (their midpoint for "between"),
-        or the farthest when negated; "the table center" is the middle of every instance in view."""
+        or the farthest when negated; "the table center" is the middle of every instance in view. Each detection
+        records whether it stands in the relation to the anchors this view saw (detail "relation_holds"; absent
+        when the view saw no anchor): a view that sees only the wrong bowl must not outvote one that sees both."""
+        negated = relation.startswith("not ")
         dets = self.segment(frame, [head])
         taken = {d.detail["instance"] for d in dets}
-        found = []
+        found: list[tuple[np.ndarray, float]] = []
         for a in anchors:
             cands = [d for d in self.segment(frame, [a]) if d.detail.get("instance") not in taken]
             if cands:
-                found.append(_centroid_xy(max(cands, key=lambda d: d.score).mask, frame))
+                found.append(_footprint_xy(max(cands, key=lambda d: d.score).mask, frame))
+        centres = [c for c, _ in found]
         if len(dets) > 1 and not found and any(w in a for a in anchors for w in ("center", "centre", "middle")):
-            found = [np.mean([_centroid_xy(i.mask, frame) for i in self.instances(frame)], axis=0)]
-        if len(dets) > 1 and found:
-            target = np.mean(found, axis=0)
+            centres = [np.mean([_centroid_xy(i.mask, frame) for i in self.instances(frame)], axis=0)]
+        if len(dets) > 1 and centres:
+            target = np.mean(centres, axis=0)
             pick = max if negated else min
             dets = [pick(dets, key=lambda d: float(np.linalg.norm(_centroid_xy(d.mask, frame) - target)))]
-        return [
-            Detection(prompt, prompt, d.mask, d.score, d.camera, False, {**d.detail, "relation_anchors": anchors})
-            for d in dets
-        ]
+        out = []
+        for d in dets:
+            detail: dict[str, Any] = {**d.detail, "relation_anchors": anchors}
+            if len(found) == len(anchors):
+                detail["relation_holds"] = relation_holds(relation, _centroid_xy(d.mask, frame), found)
+            out.append(Detection(prompt, prompt, d.mask, d.score, d.camera, False, detail))
+        return out
 
 
 _NAMED_MARK = "qq"  # glues a category name's colour word to the next word, so it is no colour filter
@@ -568,6 +595,28 @@ def _proud(mask: np.ndarray, frame: CameraFrame, proud_m: float) -> np.ndarray:
     return keep if keep.sum() >= 0.2 * mask.sum() else mask
 
 
+def _standing_part(inst: Instance, frame: CameraFrame) -> Instance:
+    """The instance without the mask pixels more than its category's max_height_m below its seen top (98th
+    percentile of world z): what it stands on, painted with its category. Kept whole when that would leave less
+    than a fifth of the mask (then the "top" itself is doubtful)."""
+    limit = CATEGORIES[inst.category].max_height_m
+    if not limit:
+        return inst
+    vs, us = np.nonzero(inst.mask)
+    z = frame.depth_m[vs, us]
+    ok = np.isfinite(z) & (z > 0)
+    if ok.sum() < 10:
+        return inst
+    height = np.full(len(vs), np.inf)
+    height[ok] = frame.backproject(us[ok].astype(float), vs[ok].astype(float), z[ok])[:, 2]
+    low = ok & (height < float(np.percentile(height[ok], 98)) - limit)
+    if not low.any() or (~low).sum() < 0.2 * len(vs):
+        return inst
+    mask = inst.mask.copy()
+    mask[vs[low], us[low]] = False
+    return Instance(inst.category, mask, inst.score, inst.colour)
+
+
 def _median_z(mask: np.ndarray, frame: CameraFrame, n: int = 400) -> float | None:
     """Median world height (m) of up to n evenly spaced pixels of the mask with a finite depth."""
     vs, us = np.nonzero(mask)
@@ -656,6 +705,18 @@ def _grow_into(comp: np.ndarray, region: np.ndarray, iterations: int = 4) -> np.
         grown = cv2.dilate(comp.astype(np.float32), kernel).astype(np.int32)
         comp = np.where(free & (grown > 0), grown, comp)
     return comp
+
+
+def _footprint_xy(mask: np.ndarray, frame: CameraFrame) -> tuple[np.ndarray, float]:
+    """Median xy of a mask's world points and the radius of its seen footprint (half its wider xy extent between
+    the 5th and 95th percentiles), in m."""
+    vs, us = np.nonzero(mask)
+    pts = frame.backproject(us.astype(float), vs.astype(float), frame.depth_m[vs, us])[:, :2]
+    pts = pts[np.isfinite(pts).all(1)]
+    if not len(pts):
+        return np.full(2, np.nan), 0.0
+    lo, hi = np.percentile(pts, 5, axis=0), np.percentile(pts, 95, axis=0)
+    return np.median(pts, axis=0), float(0.5 * (hi - lo).max())
 
 
 def _centroid_xy(mask: np.ndarray, frame: CameraFrame) -> np.ndarray:

@@ -1,0 +1,57 @@
+"""Stacked drawers seen as one: the per-pixel network paints a cabinet's drawer fronts as one "drawer" region
+(they touch, share a colour and a depth), while each drawer's handle is an instance of its own. "The middle
+drawer" is then the band of drawer pixels at the height of the handle the qualifier picks, between the midpoints
+to the handles above and below it."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..frame import CameraFrame
+from ..qualifiers import QUALIFIERS
+
+LONE_HALF_M = 0.04  # half a drawer front's height (m) when only one handle is seen
+SAME_LAYER_M = 0.02  # handle pieces whose heights differ by less are one handle
+
+
+def is_stacked(qualifier: str | None) -> bool:
+    """Whether a qualifier picks among instances stacked in height ("top", "middle", "bottom", ...)."""
+    return qualifier is not None and qualifier in QUALIFIERS and QUALIFIERS[qualifier][0] == 2
+
+
+def layer_mask(drawer: np.ndarray, handles: list[np.ndarray], qualifier: str, frame: CameraFrame) -> np.ndarray | None:
+    """The pixels of the `drawer` mask (one or several stacked drawer fronts) that belong to the drawer whose
+    handle `qualifier` picks among `handles` (masks); None when no handle or no drawer pixel is in that band."""
+    heights = [h for h in (_median_z(m, frame) for m in handles) if h is not None]
+    if not heights:
+        return None
+    zs: list[float] = []
+    for h in sorted(heights):  # one handle seen as two pieces is one layer
+        if not zs or h - zs[-1] > SAME_LAYER_M:
+            zs.append(h)
+    sign = QUALIFIERS[qualifier][1]
+    k = len(zs) // 2 if sign == 0.0 else (len(zs) - 1 if sign > 0 else 0)
+    half = float(np.median(np.diff(zs))) / 2 if len(zs) > 1 else LONE_HALF_M  # the outermost: as tall as the rest
+    lo = (zs[k - 1] + zs[k]) / 2 if k > 0 else zs[k] - half
+    hi = (zs[k] + zs[k + 1]) / 2 if k + 1 < len(zs) else zs[k] + half
+    vs, us = np.nonzero(drawer)
+    z = frame.depth_m[vs, us]
+    ok = np.isfinite(z) & (z > 0)
+    if not ok.any():
+        return None
+    height = frame.backproject(us[ok].astype(float), vs[ok].astype(float), z[ok])[:, 2]
+    inside = (height >= lo) & (height < hi)
+    if not inside.any():
+        return None
+    out = np.zeros_like(drawer)
+    out[vs[ok][inside], us[ok][inside]] = True
+    return out
+
+
+def _median_z(mask: np.ndarray, frame: CameraFrame) -> float | None:
+    vs, us = np.nonzero(mask)
+    z = frame.depth_m[vs, us]
+    ok = np.isfinite(z) & (z > 0)
+    if not ok.any():
+        return None
+    return float(np.median(frame.backproject(us[ok].astype(float), vs[ok].astype(float), z[ok])[:, 2]))
