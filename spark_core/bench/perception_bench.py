@@ -1,10 +1,9 @@
 """Perception benchmark of the learned (camera-only) segmenter on held-out scenes: per-category mask IoU,
 instance precision and recall, keypoint error against ground truth, and inference time per 640x480 frame.
 
-Held-out scenes use seeds from BENCH_SEED0 (900,000 + k), disjoint from the training seeds (1,000,000 + k) and
-from every task benchmark's seeds (0..999). Ground truth (renderer ids, object poses) is read here for scoring
-only; the segmenter sees frames without ids.
-"""
+Held-out scenes use seeds from BENCH_SEED0 (940,000 + k; LIBERO 918,000 + k), disjoint from the training seeds
+(1,000,000 + k), from the development scenes tests use, and from every task benchmark's seeds (0..999). Ground truth
+(renderer ids, object poses) is read here for scoring only; the segmenter sees frames without ids."""
 
 from __future__ import annotations
 

@@ -152,11 +152,11 @@ def test_dataset_refuses_an_unknown_source(tmp_path):
 
 
 def test_libero_objects_resolve_from_cameras_alone():
-    """A held-out LIBERO-Object scene (LIBERO's samplers, seed in the benchmark range) seen only through frames
-    stripped of ids, the world out of reach: the basket the task names resolves onto the true basket (checked
-    afterwards against the privileged pose)."""
+    """A LIBERO-Object scene never trained on (LIBERO's samplers, a seed of the development range) seen only
+    through frames stripped of ids, the world out of reach: the basket the task names resolves onto the true
+    basket (checked afterwards against the privileged pose)."""
     pytest.importorskip("libero")
-    from spark_core.perception.learned.libero_data import LIBERO_BENCH_SEED0, LiberoScenes, libero_tasks
+    from spark_core.perception.learned.libero_data import LIBERO_DEV_SEED0, LiberoScenes, libero_tasks
     from spark_core.perception.privileged import PrivilegedResolver
     from spark_core.perception.resolver import PerceptionResolver
     from tests.perception.test_learned import CamerasOnly
@@ -164,7 +164,7 @@ def test_libero_objects_resolve_from_cameras_alone():
     k = next(i for i, t in enumerate(libero_tasks()) if t.cell == "libero_object_swap")
     scenes = LiberoScenes()
     try:
-        world = scenes.scene(LIBERO_BENCH_SEED0 + 10 * k + 1)
+        world = scenes.scene(LIBERO_DEV_SEED0 + 10 * k + 1)
         proxy = CamerasOnly(world)
         kp = PerceptionResolver(proxy, LearnedSegmenter(), cameras=("agentview", "frontview")).resolve("basket")
         assert kp.source == "learned"

@@ -101,11 +101,11 @@ def test_shipped_patch_weights_are_small():
 
 @pytest.mark.parametrize("j", [0, 1, 2])
 def test_libero_items_resolve_from_cameras_alone(j):
-    """The j-th LIBERO-Object swap task's item, in a held-out scene of it (LIBERO's samplers, a bench seed) seen
+    """The j-th LIBERO-Object swap task's item, in a scene never trained on (LIBERO's samplers, a development seed) seen
     only through frames stripped of ids: it resolves onto the true one (checked afterwards against the privileged
     pose). The per-pixel network alone missed most such items (MODEL_CARD.md)."""
     pytest.importorskip("libero")
-    from spark_core.perception.learned.libero_data import LIBERO_BENCH_SEED0, LiberoScenes, libero_tasks
+    from spark_core.perception.learned.libero_data import LIBERO_DEV_SEED0, LiberoScenes, libero_tasks
     from spark_core.perception.privileged import PrivilegedResolver
     from spark_core.perception.resolver import PerceptionResolver
     from tests.perception.test_learned import CamerasOnly
@@ -114,7 +114,7 @@ def test_libero_items_resolve_from_cameras_alone(j):
     item = task.name.split(":pick_up_the_")[1].split("_and_place")[0].replace("_", " ")
     scenes = LiberoScenes()
     try:
-        world = scenes.scene(LIBERO_BENCH_SEED0 + 10 * k + 2)
+        world = scenes.scene(LIBERO_DEV_SEED0 + 10 * k + 2)
         seg = LearnedSegmenter()
         kp = PerceptionResolver(CamerasOnly(world), seg, cameras=("agentview", "frontview")).resolve(item)
         assert kp.source == "learned"

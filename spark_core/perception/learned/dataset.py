@@ -25,7 +25,10 @@ import numpy as np
 from .categories import BACKGROUND, COLOUR_INDEX, ROBOT, TABLE, category_of_kind
 
 TRAIN_SEED0 = 1_000_000
-BENCH_SEED0 = 900_000
+# The perception benchmark's held-out scenes. Moved from 900,000 on 2026-11-26: some scenes of that range were
+# looked at while developing the learned segmenter; DEV_SEED0 keeps them for tests and diagnostics.
+BENCH_SEED0 = 940_000
+DEV_SEED0 = 900_000
 RENDER_SIZE = (640, 480)  # (width, height): the cameras' run-time resolution; the network sees it at full scale
 CROP_SIZE = (320, 240)  # (width, height) of the stored training crops
 RANDOM_KINDS = ("block", "bowl", "plate", "mug", "tray", "basket", "sponge", "bottle", "peg", "nut", "brush", "zone")

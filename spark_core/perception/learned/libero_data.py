@@ -6,7 +6,8 @@ package's init files are what `spark bench liberopro` evaluates on, and nothing 
 TRAINING / SCORING ONLY: labels come from the renderer's ids (privileged). The segmenter never imports this.
 
 Seeds: scene seed `s` uses task `tasks()[(s // 10) % 60]`; training uses LIBERO_TRAIN_SEED0 + k, the perception
-benchmark LIBERO_BENCH_SEED0 + k: disjoint ranges, both far from the benchmarks' init-state indices (0..49).
+benchmark LIBERO_BENCH_SEED0 + k, tests and diagnostics LIBERO_DEV_SEED0 + k: disjoint ranges, all far from
+the benchmarks' init-state indices (0..49).
 """
 
 from __future__ import annotations
@@ -21,7 +22,10 @@ import numpy as np
 from .categories import BACKGROUND, CATEGORIES, CATEGORY_INDEX, COLOUR_INDEX, ROBOT, TABLE, category_of_libero
 
 LIBERO_TRAIN_SEED0 = 1_500_000
-LIBERO_BENCH_SEED0 = 912_000  # = 0 mod 600: seed 912_000 + 10 * i + k is a scene of task i
+# = 0 mod 600: seed LIBERO_BENCH_SEED0 + 10 * i + k is a scene of task i. Moved from 912,000 on 2026-11-26: some
+# scenes of that range were looked at while developing; LIBERO_DEV_SEED0 keeps them for tests and diagnostics.
+LIBERO_BENCH_SEED0 = 918_000
+LIBERO_DEV_SEED0 = 912_000
 CAMERAS = ("agentview", "frontview", "robot0_eye_in_hand")  # the suite's perception cameras and the wrist
 SCENES_PER_TASK = 10
 SETTLE_STEPS = 250  # 0.5 s of physics after the reset (the benchmark's 10 no-op robosuite steps)
