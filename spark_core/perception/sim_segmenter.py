@@ -117,9 +117,19 @@ class SimSegmenter:
         for prompt in prompts:
             head, relation, anchors = split_relation(prompt)
             if relation is not None:
-                out.extend(self._related(frame, prompt, head, anchors, negated=relation.startswith("not ")))
+                out.extend(self._related(frame, prompt, head, anchors, relation))
                 continue
             unlike = re.fullmatch(r"(.+?) not (.+)", prompt.strip().lower())
+            if unlike and _is_qualifier(unlike.group(2)):
+                # "bowl not leftmost": every instance but the one the qualifier picks
+                core, said = unlike.group(1), unlike.group(2)
+                ruled_out = {d.detail["object"] for d in self.segment(frame, [f"{said} {core}"])}
+                out.extend(
+                    Detection(prompt, prompt, d.mask, d.score, d.camera, d.privileged, {**d.detail, "unlike": said})
+                    for d in self.segment(frame, [core])
+                    if d.detail["object"] not in ruled_out
+                )
+                continue
             if unlike:  # "block not blue": the blocks the negated words contradict
                 core, said = unlike.group(1), unlike.group(2)
                 out.extend(
@@ -128,7 +138,8 @@ class SimSegmenter:
                     if mismatch(f"{said} {core}", self._names[d.detail["object"]], self.catalog[d.detail["object"]])
                 )
                 continue
-            qualifier, core = split_qualifier(prompt)
+            rank, prompt_q = split_rank(prompt)
+            qualifier, core = split_qualifier(prompt_q)
             sims = self.similarities(core)
             if not sims:
                 continue
@@ -148,16 +159,54 @@ class SimSegmenter:
                 )
                 for k in chosen
             ]
-            if qualifier and len(dets) > 1:
+            if qualifier and rank > 1:  # "second leftmost bowl": counted from the left; too few seen, none
+                dets = [pick_by_qualifier(dets, frame, qualifier, rank)] if len(dets) >= rank else []
+            elif qualifier and len(dets) > 1:
                 dets = [pick_by_qualifier(dets, frame, qualifier)]
             out.extend(dets)
         return out
 
+    def _supported(
+        self, frame: CameraFrame, dets: list[Detection], relation: str, anchors: list[str]
+    ) -> list[bool] | None:
+        """For "on" and "in" one anchor: whether each instance rests on it (its centre over the anchor's footprint
+        and above its top) or is inside it (over its footprint, below its top): a bowl in a cabinet's drawer and a
+        bowl on the cabinet are both nearest the cabinet in the table plane. None when the relation is another,
+        the anchor is not seen, or this tells no single instance apart (then nearness decides)."""
+        rel = relation.removeprefix("not ")
+        if rel not in ("on", "on top of", "in", "inside") or len(anchors) != 1:
+            return None
+        ids = {d.detail.get("object") for d in dets}
+        cands = [d for d in self.segment(frame, [anchors[0]]) if d.detail.get("object") not in ids]
+        if not cands:
+            return None
+        anchor = _points(max(cands, key=lambda d: d.score), frame)
+        if len(anchor) < 10:
+            return None
+        lo, hi = np.percentile(anchor[:, :2], 2, axis=0), np.percentile(anchor[:, :2], 98, axis=0)
+        top = float(np.percentile(anchor[:, 2], 98))
+        on, inside = [], []
+        for d in dets:
+            centre = np.median(_points(d, frame), axis=0)
+            over = bool(np.all(centre[:2] >= lo - SUPPORT_SLACK_M) and np.all(centre[:2] <= hi + SUPPORT_SLACK_M))
+            above = float(centre[2]) >= top - SUPPORT_SLACK_M
+            on.append(over and above)
+            inside.append(over and not above)
+        if rel.startswith("on"):
+            return on if sum(on) == 1 else None
+        if sum(inside) == 1:
+            return inside
+        # what rests on top of it is not in it (a drawer's bowl may stand out of the cabinet's seen footprint)
+        rest = [not o for o in on]
+        return rest if any(on) and sum(rest) == 1 else None
+
     def _related(
-        self, frame: CameraFrame, prompt: str, head: str, anchors: list[str], negated: bool = False
+        self, frame: CameraFrame, prompt: str, head: str, anchors: list[str], relation: str
     ) -> list[Detection]:
-        """Instances of `head`; when several, the one nearest the anchor objects (their midpoint for "between"),
-        or the farthest when negated ("not between")."""
+        """Instances of `head`; when several, the one resting on or inside the anchor ("on", "in": `_supported`),
+        else the one nearest the anchor objects (their midpoint for "between"), or the farthest when negated ("not
+        between")."""
+        negated = relation.startswith("not ")
         dets = self.segment(frame, [head])
         assert frame.object_ids is not None  # segment() refuses frames without object ids
         found = []
@@ -178,7 +227,10 @@ class SimSegmenter:
                     axis=0,
                 )
             ]
-        if len(dets) > 1 and found:
+        supported = self._supported(frame, dets, relation, anchors) if len(dets) > 1 else None
+        if supported is not None:  # "on" / "in" said by where it rests, not by how near it is
+            dets = [d for d, holds in zip(dets, supported) if holds != negated]
+        elif len(dets) > 1 and found:
             target = np.mean(found, axis=0)
             pick = max if negated else min
             dets = [pick(dets, key=lambda d: float(np.linalg.norm(_centroid_xy(d, frame) - target)))]
@@ -256,7 +308,9 @@ def mismatch(prompt: str, name: str, description: str, part_is_whole: bool = Tru
         why = _unknown_head(said_head, [w for w in said_kinds[:-1] if w not in attributes], nw, doc)
         if why:
             return why
-    if len(pw) > 1 and len(nw) > 1 and _forms(pw[-1]) & _forms(nw[-1]):
+    same_noun = bool(nw) and bool((_forms(pw[-1]) | (_kind(pw[-1]) or frozenset())) & _forms(nw[-1]))
+    if len(pw) > 1 and len(nw) > 1 and same_noun:
+        # "whiskey flask" is no wine bottle: the same kind of noun, and a word of its own where the object has another
         said = {w for w in pw[:-1] if w not in attributes and _kind(w) is None and not _forms(w) & doc}
         # the object's own distinguishing words, kinds included: "beer bottle" is not the "wine bottle"
         own = {w for w in nw[:-1] if w not in attributes and w not in pw}
@@ -284,6 +338,13 @@ def _unknown_head(head: str, modifiers: list[str], name_words: list[str], doc: s
         return None
     if _noun_cosine(head, name_words[-1]) < UNKNOWN_NOUN_MIN_COSINE:
         return f"noun: {head} vs {name_words[-1]}"
+    kind_words = [
+        w for w in name_words[:-1] if not w.isdigit() and w not in SIZES | MATERIALS
+    ]  # "cream" is no colour here
+    if own_head & CONSUMABLES and kind_words:
+        # a food named by a kind of it ("cream cheese"): a noun that is only near its noun is another kind of that
+        # food ("cheddar", "custard"), not this one
+        return f"noun: {head} vs {' '.join(name_words)}"
     return None
 
 
@@ -309,16 +370,38 @@ def _centroid_xy(d: Detection, frame: CameraFrame) -> np.ndarray:
     return np.median(pts[:, :2], axis=0)
 
 
-def pick_by_qualifier(dets: list[Detection], frame: CameraFrame, qualifier: str) -> Detection:
-    """The instance a spatial qualifier points at, from each mask's back-projected centroid ("middle": the
-    median one along its axis)."""
+def pick_by_qualifier(dets: list[Detection], frame: CameraFrame, qualifier: str, rank: int = 1) -> Detection:
+    """The instance a spatial qualifier points at, from each mask's back-projected centroid; `rank` counts from
+    that end ("second leftmost"). "middle": the median one along the axis the instances spread along most (stacked
+    drawers: height; blocks in a row on the table: across or along it)."""
     axis, sign = QUALIFIERS[qualifier]
-
-    def coord(d: Detection) -> float:
-        vs, us = np.nonzero(d.mask)
-        z = frame.depth_m[vs, us]
-        return float(np.median(frame.backproject(us.astype(float), vs.astype(float), z)[:, axis]))
-
+    centres = {id(d): np.median(_points(d, frame), axis=0) for d in dets}
     if sign == 0.0:
-        return sorted(dets, key=coord)[len(dets) // 2]
-    return max(dets, key=lambda d: sign * coord(d))
+        spread = np.ptp(np.array(list(centres.values())), axis=0)
+        axis = int(np.argmax(spread))
+        return sorted(dets, key=lambda d: float(centres[id(d)][axis]))[len(dets) // 2]
+    ordered = sorted(dets, key=lambda d: -sign * float(centres[id(d)][axis]))
+    return ordered[min(rank, len(ordered)) - 1]
+
+
+# Ordinal words before a qualifier ("second leftmost bowl"): how far from that end to count.
+RANKS = {"second": 2, "third": 3, "fourth": 4, "fifth": 5}
+# Slack when testing that a thing rests on or in another (m): masks and their depth are a little noisy at edges.
+SUPPORT_SLACK_M = 0.01
+
+
+def split_rank(prompt: str) -> tuple[int, str]:
+    """(2, "leftmost bowl") for "second leftmost bowl"; (1, prompt) without an ordinal."""
+    first, _, rest = prompt.strip().partition(" ")
+    return (RANKS[first.lower()], rest) if first.lower() in RANKS and rest else (1, prompt)
+
+
+def _is_qualifier(words: str) -> bool:
+    """ "leftmost", "second leftmost", "top": a qualifier alone, which picks one instance of the noun before it."""
+    _, rest = split_rank(words)
+    return len(rest.split()) == 1 and rest in QUALIFIERS
+
+
+def _points(d: Detection, frame: CameraFrame) -> np.ndarray:
+    vs, us = np.nonzero(d.mask)
+    return frame.backproject(us.astype(float), vs.astype(float), frame.depth_m[vs, us])

@@ -8,6 +8,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field, replace
 
+from ...perception.qualifiers import split_relation
 from .lexicon import CONTAINERS, DIRECTIONS, FROM, IN, ON, PARTICLE_VERBS, PRONOUNS, VERBS, WITH
 from .phrases import noun_phrase, object_phrase
 from .rewrite import goal_to_action, imperatives
@@ -273,6 +274,7 @@ def _clause(action: str, rest: str, text: str) -> Clause:
     dest = _destination(rest)
     if dest:
         obj, relation, target = dest
+        target = _elided_noun(target, object_phrase(obj) if obj else "")
         return Clause(
             action,
             obj=object_phrase(obj) or None,
@@ -283,6 +285,16 @@ def _clause(action: str, rest: str, text: str) -> Clause:
             text=text,
         )
     return Clause(action, obj=object_phrase(rest) or None, direction=direction, distance_m=distance, text=text)
+
+
+def _elided_noun(target: str, obj: str) -> str:
+    """ "one" stands for the noun just named: "put the farther block onto the nearer one" -> "... nearest block";
+    "stack the red block on the blue one" -> "blue block"."""
+    m = re.fullmatch(r"(.*\S)\s+ones?", target)
+    if not m or not obj or m.group(1) in ("the", "that", "this", "the other", "other"):
+        return target
+    head = re.split(r" not ", split_relation(obj)[0])[0].split()
+    return f"{m.group(1)} {head[-1]}" if head else target
 
 
 def is_pronoun(phrase: str | None) -> bool:

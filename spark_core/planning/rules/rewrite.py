@@ -7,6 +7,7 @@ from __future__ import annotations
 import re
 
 from .lexicon import CONTAINERS, CONTENTS, COPULAS, FILLERS, HELD, HOLDS, MODALS, PARTICIPLES, STATE_ACTIONS, VERBS
+from .qualify import qualify
 
 CONTRACTIONS = {
     "there's": "there is",
@@ -21,6 +22,8 @@ CONTRACTIONS = {
     "don't": "do not",
     "doesn't": "does not",
     "isn't": "is not",
+    "aren't": "are not",
+    "wasn't": "was not",
 }
 ACTION_WORDS = {
     "pick": "pick up",
@@ -38,7 +41,7 @@ _VERB_FORMS = sorted({f for forms in VERBS.values() for f in forms} | {"turn", "
 _FIRST_WORDS = {f.split()[0] for f in _VERB_FORMS}
 _TRAILING = re.compile(
     r"(?:\s*,\s*|\s+)(?:and\s+)?(?:then\s+)?(?:keep|hold(?= (?:it|them|still|steady|on|up|there)\b)|make sure|"
-    r"let go|release|stop|ensure|check|wait|"
+    r"let go|release|stop|ensure|check|wait|let (?:it|them)\b|"
     # how to hold it, said after the action ("..., holding it by its two handles")
     r"(?:while )?(?:holding|gripping|grasping|grabbing) (?:it|them)\b|"
     r"(?:put|set|place) (?:it|them) back|leave (?:it|them)\b(?!.*\b(?:on|in|into|onto|inside) (?:the|a|an)\b))\b.*$"
@@ -77,8 +80,9 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(r"\bi would (like|love)\b(?! you to)", r"i want", text)
     # "give the plate a scrub": the action is the noun after the object
     text = re.sub(r"\bgive ((?:the|this|that|my) [\w ]+?) an? (\w+)\b", _give_a, text)
-    # "the first bowl from the left" is the leftmost ("first" is otherwise a filler)
-    text = re.sub(r"\b(first|last) ((?:\w+ )?\w+) from the (left|right)", _first_from, text)
+    # which one of several: "the second bowl from the left", "the farther of the two", "not the blue one" (before
+    # the fillers: "first" is otherwise one)
+    text = qualify(text)
     text = re.sub(r"[!?;]+|\.(?=\s|$)", " . ", text)
     text = text.replace("next to", "next_to")  # a relation, not the filler "next"
     for f in sorted(FILLERS, key=len, reverse=True):
@@ -90,11 +94,6 @@ def sentences(instruction: str) -> list[str]:
 
 def _give_a(m: re.Match) -> str:
     return f"{m.group(2)} {m.group(1)}" if m.group(2) in _VERB_FORMS else m.group(0)
-
-
-def _first_from(m: re.Match) -> str:
-    side = m.group(3) if m.group(1) == "first" else {"left": "right", "right": "left"}[m.group(3)]
-    return f"{side}most {m.group(2)}"
 
 
 def _gerund(text: str) -> str:

@@ -1,0 +1,218 @@
+"""Which one of several of a kind: ordinals, superlatives, sides and negation brought to the forms perception
+reads ("leftmost bowl", "second leftmost bowl", "farthest block", "bowl not on cabinet", "block not blue").
+
+English picks one of several things of one kind in a few ways: by counting in a direction ("the second bowl from
+the left", "the last cup on the right"), by an extreme or a comparison ("the farther of the two", "the bowl nearest
+the robot", "the highest bowl"), by a side ("the mug at the back"), or by ruling one out ("not the bowl on the
+stove, the other one", "any bowl except the one near the box", "the non-blue block"). These rewrites run on a whole
+sentence before it is split into clauses, so that "on the left" is never read as a destination and "the other one"
+finds the kind it stands for.
+"""
+
+from __future__ import annotations
+
+import re
+
+# A noun phrase of one to three words after its determiner (no preposition, relative pronoun or negation in it).
+_STOP = r"(?:on|in|at|to|from|that|which|who|not|of|and|or|but|the|a|an|is|are|it|them|one|ones|then|near|by)"
+_WORD = rf"(?!{_STOP}\b)[\w-]+"
+NP = rf"(?:{_WORD} ){{0,2}}{_WORD}"
+DET = r"(?:the|a|an|any|every|each|whichever)"
+# A side, as the qualifier perception knows for it.
+SIDES = {"left": "leftmost", "right": "rightmost", "front": "nearest", "back": "farthest", "rear": "farthest"}
+_OPPOSITE = {"left": "right", "right": "left", "front": "back", "back": "front", "rear": "front"}
+RANKS = {"first": 1, "1st": 1, "second": 2, "2nd": 2, "third": 3, "3rd": 3, "fourth": 4, "4th": 4, "fifth": 5}
+RANK_WORDS = {1: "", 2: "second ", 3: "third ", 4: "fourth ", 5: "fifth "}
+# Comparatives and superlatives of position, as perception's qualifier words.
+EXTREMES = {
+    "farther": "farthest",
+    "further": "farthest",
+    "furthest": "farthest",
+    "farthest": "farthest",
+    "rearmost": "farthest",
+    "backmost": "farthest",
+    "hindmost": "farthest",
+    "nearer": "nearest",
+    "closer": "nearest",
+    "closest": "nearest",
+    "nearest": "nearest",
+    "frontmost": "nearest",
+    "foremost": "nearest",
+    "higher": "top",
+    "highest": "top",
+    "upper": "top",
+    "uppermost": "top",
+    "topmost": "top",
+    "lower": "bottom",
+    "lowest": "bottom",
+    "lowermost": "bottom",
+    "bottommost": "bottom",
+    "leftmost": "leftmost",
+    "rightmost": "rightmost",
+}
+_EXTREME = "|".join(EXTREMES)
+_SIDE = r"(left|right|front|back|rear)"
+_SIDE_TAIL = r"(?: side| hand side| end| edge)?"
+# a side says where something is on the table, not where it is beside another ("the left side of the plate")
+_SIDE_END = r"\b(?!(?: side| hand side| end| edge)? of\b)"
+# where a noun phrase ends: a preposition, a conjunction, a verb of a stated goal, or punctuation ("the bowl on the
+# left goes ..."; not "the left tray", where "left" is an adjective of the next noun)
+_NP_END = (
+    r"(?=$|[,.;:!?]|\s+(?:on|onto|in|into|to|and|then|with|from|at|over|inside|next|near|beside|by|goes|go|should|"
+    r"must|has|have|needs|belongs|is|are|please|for|so|until|forwards?|backwards?|towards?|away|ahead)\b)"
+)
+_ME = r"(?:the robot|you|me|us|the arm|the gripper)"
+_NEG = r"(?:is not|are not|was not|isn't|aren't|is n't)"
+
+
+def ordinals(text: str) -> str:
+    """Counting in a direction: "the second bowl from the left" -> "the second leftmost bowl"; "the last cup on the
+    right" and "the first cup from the right" -> "the rightmost cup"; "the last bowl from the left" -> "the
+    rightmost bowl" (counted from the left, the last is at the other end); "the bowl second from the left" too."""
+
+    def counted(rank_word: str, noun: str, prep: str, side: str) -> str:
+        if rank_word == "last":
+            side = _OPPOSITE[side] if prep == "from" else side
+            return f"{SIDES[side]} {noun}"
+        return f"{RANK_WORDS[RANKS[rank_word]]}{SIDES[side]} {noun}"
+
+    ranks = "|".join([*RANKS, "last"])
+    text = re.sub(
+        rf"\b({ranks}) ({NP}) (from|on|at|in|to) the {_SIDE}{_SIDE_TAIL}{_SIDE_END}{_NP_END}",
+        lambda m: counted(m.group(1), m.group(2), m.group(3), m.group(4)),
+        text,
+    )
+    return re.sub(
+        rf"\b({NP}) (?:(?:that|which) is )?({ranks}) (from|on|at|in) the {_SIDE}{_SIDE_TAIL}{_SIDE_END}{_NP_END}",
+        lambda m: counted(m.group(2), m.group(1), m.group(3), m.group(4)),
+        text,
+    )
+
+
+def extremes(text: str, push: bool = False) -> str:
+    """Comparisons and extremes of position: "the farther of the two bowls" / "the farthest of the bowls" ->
+    "the farthest bowl"; "the nearer one" -> "the nearest one"; "the highest bowl" -> "the top bowl"; "the block
+    (that is) farther away from the robot" / "the bowl nearest you" -> "the farthest block" / "the nearest bowl";
+    "the bowl at the back" / "on the left" -> "the farthest bowl" / "the leftmost bowl"; "the bowl nearest (to) the
+    plate" -> "the bowl near the plate" (the one by another object)."""
+    text = re.sub(
+        rf"\b({_EXTREME}) (?:one )?of (?:the |these |those )?(?:(?:two|three|four|both|all) )?({NP})\b",
+        lambda m: f"{EXTREMES[m.group(1)]} {_singular_phrase(m.group(2))}",
+        text,
+    )
+    if push:  # "push the cup closer to you", "further away": the way to move it
+        return _sides(text)
+    text = re.sub(
+        rf"\b({DET}) ({NP}) (?:(?:that|which) (?:is|are) |)(?:the )?"
+        rf"(?:(?:farther|further)(?: away| back| out)? from {_ME}\b|(?:farthest|furthest)(?: away| back| out)?"
+        rf"(?: from {_ME}\b)?(?=$|[\s,.]))",
+        lambda m: f"{m.group(1)} farthest {m.group(2)}",
+        text,
+    )
+    text = re.sub(
+        rf"\b({DET}) ({NP}) (?:(?:that|which) (?:is|are) |)(?:the )?(nearer|closer|nearest|closest)(?: to)? {_ME}\b",
+        lambda m: f"{m.group(1)} nearest {m.group(2)}",
+        text,
+    )
+    text = re.sub(
+        rf"\b({DET}) ({NP}) (?:(?:that|which) (?:is|are) |)(?:the )?(nearer|closer|nearest|closest)(?: to)? "
+        rf"(?!{_ME}\b)(the |a )",
+        lambda m: f"{m.group(1)} {m.group(2)} near {m.group(4)}",
+        text,
+    )
+    return _sides(text)
+
+
+def _sides(text: str) -> str:
+    """ "the bowl on the left" / "at the back" -> "the leftmost bowl" / "the farthest bowl"; an extreme before the
+    noun as perception's word ("the farther block", "the lower bowl", "the nearer one")."""
+    text = re.sub(
+        rf"\b({DET}) ({NP}) (?:(?:that|which) (?:is|are) |(?:sitting|standing|lying) )?(?:on|at|in) the (?:far |very )?"
+        rf"{_SIDE}{_SIDE_TAIL}{_SIDE_END}{_NP_END}",
+        lambda m: f"{m.group(1)} {SIDES[m.group(3)]} {m.group(2)}",
+        text,
+    )
+    return re.sub(rf"\b({DET}) ({_EXTREME}) ", lambda m: f"{m.group(1)} {EXTREMES[m.group(2)]} ", text)
+
+
+def negations(text: str) -> str:
+    """Ruling one out, as "<kind> not <what rules it out>": "not the bowl on the stove, the other one" / "the other
+    block, not the blue one" / "any bowl except the one near the box" / "the bowl other than the one further back" /
+    "the non-blue block" / "the block that is not the blue one" / "leave the bowl on the cabinet alone and put the
+    other bowl on the plate"; then a side or an extreme after "not" as its qualifier ("not on the left" -> "not
+    leftmost")."""
+    # "leave the bowl on the cabinet alone and put the other bowl ...": the one left alone is ruled out
+    text = re.sub(
+        rf"^(?:leave|ignore|skip|do not touch|do not move|forget|never mind) the ({NP}) ([^,]+?)"
+        rf"(?: alone| be| where it is| in place| as it is)?,? (?:and |but |then )?(\w+(?: up)?) "
+        rf"the other (?:one|{NP})\b",
+        r"\3 the \1 not \2",
+        text,
+    )
+    # "not the bowl on the burner, the other one goes ..." / "not the blue block but the other one"
+    text = re.sub(
+        rf"^not the ({NP})( [^,:;]+?)?(?: ones?)?\s*[,:;]?\s*(?:but |rather )?the other (?:one|{NP})\b",
+        lambda m: _ruled_out_noun(m.group(1), (m.group(2) or "").strip()),
+        text,
+    )
+    # "the other block, not the blue one" / "the other bowl, not the one on the stove"
+    text = re.sub(rf"\bthe other ({NP}),? (?:and )?not the ({_WORD}) ones?\b", r"the \1 not \2", text)
+    # (a parenthetical "..., not the one between A and B, goes on ..." closes with its comma)
+    text = re.sub(rf"\bthe other ({NP}),? (?:and )?not the (?:ones?|{NP}) ([^,;:]+),?", r"the \1 not \2", text)
+    # "any bowl except (for) the one near the box", "the bowl other than the one further back", "... the blue one"
+    but = r"(?:except(?: for)?|but not|other than|apart from|besides|save for|excluding|rather than)"
+    text = re.sub(rf"\b{DET} ({NP}),? {but} (?:the|that) ({_WORD}) ones?\b", r"the \1 not \2", text)
+    text = re.sub(rf"\b{DET} ({NP}),? {but} (?:the|that) (?:ones?|{NP}) ([^,;:]+),?", r"the \1 not \2", text)
+    # "whichever block is not the blue one", "the block that is not the blue one"
+    text = re.sub(rf"\b{DET} ({NP}) (?:(?:that|which) )?{_NEG} the ({_WORD}) ones?\b", r"the \1 not \2", text)
+    text = re.sub(rf"\bwhichever ({NP}) {_NEG} ", r"the \1 not ", text)
+    # "the non-blue block", "the non red one"
+    text = re.sub(r"\bthe non[- ]?(\w+) (\w+)\b", r"the \2 not \1", text)
+    # a side or an extreme after "not" is the qualifier that would pick the one ruled out
+    return re.sub(
+        rf"\b(?:(?:that|which) )?(?:(?:is|are) )?not (?:the )?((?:up |down |over )?(?:on|at|in) the (?:far )?{_SIDE}"
+        rf"{_SIDE_TAIL}{_SIDE_END}{_NP_END}|(?:further|farther) (?:back|away)\b(?! from)|"
+        rf"(?:{_EXTREME})\b(?: one)?(?: away| back)?(?: (?:from|to) {_ME}\b)?)",
+        lambda m: f"not {_ruled_out(m.group(1))}",
+        text,
+    )
+
+
+def _ruled_out(what: str) -> str:
+    """What rules a candidate out, as perception reads it: a side or an extreme as its qualifier ("on the left" ->
+    "leftmost", "further back" -> "farthest"), a place as a relation ("up on the cabinet" -> "on the cabinet"),
+    an attribute as itself ("blue")."""
+    what = re.sub(r"^(?:that is|which is|that|which|is|are|sitting|standing|lying|resting|placed) ", "", what.strip())
+    what = re.sub(r"^(?:up|down|over) (?=on|in|at)\b", "", what)
+    side = re.fullmatch(rf"(?:on|at|in) the (?:far )?{_SIDE}{_SIDE_TAIL}", what)
+    if side:
+        return SIDES[side.group(1)]
+    m = re.fullmatch(rf"(?:the )?({_EXTREME})(?: one)?(?: away| back)?(?: (?:from|to) {_ME})?", what)
+    if m:
+        return EXTREMES[m.group(1)]
+    if re.fullmatch(r"(?:further|farther) (?:back|away)", what):
+        return "farthest"
+    return what
+
+
+def _ruled_out_noun(noun: str, rest: str) -> str:
+    """ "not the blue block" -> "the block not blue"; "not the bowl on the stove" -> "the bowl not on the stove"."""
+    if rest:
+        return f"the {noun} not {_ruled_out(rest)}"
+    words = noun.split()
+    if len(words) > 1:
+        return f"the {words[-1]} not {' '.join(words[:-1])}"
+    return f"the other {noun}"  # "not the bowl, the other one": nothing rules it out
+
+
+def _singular_phrase(phrase: str) -> str:
+    from .phrases import singular
+
+    return " ".join(singular(w) for w in phrase.split())
+
+
+def qualify(text: str) -> str:
+    """A sentence with its ordinals, extremes, sides and negations in perception's forms. A push keeps its words:
+    there "further", "closer" and "to the left" say which way to move, not which object."""
+    push = re.match(r"(?:push|shove|nudge|slide)\b", text) is not None
+    return extremes(ordinals(negations(text)), push)
