@@ -122,3 +122,34 @@ def test_libero_items_resolve_from_cameras_alone(j):
         assert np.linalg.norm(kp.position_m - truth) < 0.03, item
     finally:
         scenes.close()
+
+
+@pytest.mark.parametrize(
+    ("p_new", "p_own", "renamed"),
+    [
+        (0.9, 0.05, True),  # sure of another name
+        (0.6, 0.02, True),  # fairly sure of it, and the network's own name implausible
+        (0.6, 0.30, False),  # fairly sure, but the network's name still plausible
+        (0.4, 0.01, False),  # not sure enough of anything
+    ],
+)
+def test_the_second_look_overrules_the_network_when_sure_or_when_its_name_is_implausible(
+    monkeypatch, p_new, p_own, renamed
+):
+    """A 'stove' instance that the patch classifier calls a bowl: renamed by the rule in the parameters."""
+    from spark_core.perception.frame import CameraFrame
+    from spark_core.perception.learned.segmenter import Instance
+
+    bowl, stove = CATEGORY_INDEX["bowl"], CATEGORY_INDEX["stove"]
+    probs = np.zeros(len(pc.CLASSES))
+    probs[list(pc.CLASSES).index("bowl")] = p_new
+    probs[list(pc.CLASSES).index("stove")] = p_own
+    probs[pc.OTHER] = 1.0 - p_new - p_own
+    monkeypatch.setattr(pc, "classify", lambda net, patches: np.array([probs] * len(patches)))
+    depth = np.ones((120, 160), np.float32)
+    K = np.array([[100.0, 0, 80], [0, 100.0, 60], [0, 0, 1]])
+    frame = CameraFrame("top", np.zeros((120, 160, 3), np.uint8), depth, K, np.eye(4))
+    mask = np.zeros((120, 160), bool)
+    mask[40:80, 60:100] = True
+    (out,) = LearnedSegmenter()._second_look([Instance(stove, mask, 0.9, "black")], frame)
+    assert out.category == (bowl if renamed else stove)

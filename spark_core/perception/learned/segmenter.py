@@ -34,6 +34,8 @@ WEIGHTS = "weights/learned_segmenter.pt"  # package data, next to MODEL_CARD.md
 HEAD_NOUN_BONUS = 0.08
 MATERIAL_WORDS = {"wooden", "wood", "metal", "plastic", "ceramic", "wicker"}  # not colour filters
 SECOND_LOOK_P = 0.85  # the patch classifier's probability that overrules the per-pixel network's category
+SECOND_LOOK_FAIR_P = 0.5  # ... or this much, when it gives the network's category less than IMPLAUSIBLE_P
+IMPLAUSIBLE_P = 0.05
 OTHER_DROP_P = 0.5  # a group blob the patch classifier calls "other" with more than this is no group member
 MIN_INSTANCE_SCORE = 0.3  # instances the network is less sure of are dropped (stray pixels, table edges)
 FRAGMENT_AREA = 0.15
@@ -285,7 +287,11 @@ class LearnedSegmenter:
         renamed = set()
         for (k, _), p_cls in zip(keep, probs):
             best = int(p_cls.argmax())
-            if best == patch_classifier.OTHER or p_cls[best] < SECOND_LOOK_P:
+            own = int(np.nonzero(out[k].category == patch_classifier.CLASS_CATEGORY)[0][0])
+            # overruled when the classifier is sure of another name, or fairly sure of it while finding the
+            # network's name implausible (a bowl on a stove that the per-pixel network painted as stove)
+            sure = p_cls[best] >= SECOND_LOOK_P or (p_cls[best] >= SECOND_LOOK_FAIR_P and p_cls[own] < IMPLAUSIBLE_P)
+            if best == patch_classifier.OTHER or not sure:
                 continue
             category = int(patch_classifier.CLASS_CATEGORY[best])
             if category != out[k].category:
