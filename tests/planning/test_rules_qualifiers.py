@@ -24,7 +24,7 @@ def clauses(text):
         # comparisons and extremes of position
         ("lift the cup that is farther away from the robot", [("pick", "farthest cup", None, None)]),
         ("put the highest cup on the tray", [("put", "top cup", "on", "tray")]),
-        ("put the lower of the two mugs on the tray", [("put", "bottom mug", "on", "tray")]),
+        ("put the lower of the two mugs on the tray", [("put", "lower mug", "on", "tray")]),
         ("move the farthest of the cups to the plate", [("put", "farthest cup", "on", "plate")]),
         ("put the rearmost mug on the tray", [("put", "farthest mug", "on", "tray")]),
         ("put the cup nearest the lamp on the tray", [("put", "cup near lamp", "on", "tray")]),

@@ -22,6 +22,8 @@ VERBS: dict[str, tuple[str, ...]] = {
         "seize",
         "collect",
         "hoist",
+        "choose",
+        "select",
     ),
     "put": (
         "put",

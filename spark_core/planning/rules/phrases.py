@@ -33,7 +33,14 @@ _PARTICIPLE = re.compile(
 # "up on the cabinet", "down in the drawer", "over by the box": the particle adds nothing to where it is
 _PARTICLE = re.compile(r"\b(?:up|down|over|back) (?=(?:on|onto|in|inside|on top of|at|by|near|next to|beside)\b)")
 # where one thing stands relative to another, as the relation perception measures ("in front of the box": near it)
-_BESIDE = re.compile(r"\b(?:in front of|behind|to the (?:left|right) of|on the (?:left|right) side of|alongside)\b")
+_BESIDE = re.compile(
+    r"\b(?:in front of|behind|to (?:the )?(?:left|right) of|on (?:the )?(?:left|right)(?: hand)? side of|alongside)\b"
+)
+# "is not sitting on": the participle adds nothing to the negated place
+_NOT_PARTICIPLE = re.compile(
+    r"\b(?:(?:that|which) )?(?:is |are )?not (?:sitting|resting|standing|lying|placed|located|kept|stacked|perched|set|"
+    r"left|found|parked)\s+(?=(?:on|in|inside|on top of|at|by|near|next to|beside|between|under)\b)"
+)
 _TABLE_TAIL = re.compile(
     r"\s+(?:on|off|off of|from|at)\s+(?:the\s+)?(?:" + "|".join(TABLE) + r")\b(?!\s+(?:center|centre|middle))"
 )
@@ -92,7 +99,7 @@ def locator(text: str) -> str:
     """Where an object is, as a relation perception can use: "bowl sitting on the stove" -> "bowl on stove";
     "bowl from the stove" -> "bowl on stove"; "bowl out of the top drawer" -> "bowl in top drawer"; the table
     itself says nothing ("block off the table" -> "block")."""
-    text = _BESIDE.sub("near", _PARTICLE.sub("", text))
+    text = _BESIDE.sub("near", _PARTICLE.sub("", _NOT_PARTICIPLE.sub("not ", text)))
     text = _PARTICIPLE.sub("", text)
     text = _TABLE_TAIL.sub("", text)
     # "from" before a place preposition only marks the source: the preposition says where it is

@@ -14,7 +14,10 @@ from __future__ import annotations
 import re
 
 # A noun phrase of one to three words after its determiner (no preposition, relative pronoun or negation in it).
-_STOP = r"(?:on|in|at|to|from|that|which|who|not|of|and|or|but|the|a|an|is|are|it|them|one|ones|then|near|by)"
+_STOP = (
+    r"(?:on|in|at|to|from|that|which|who|not|of|and|or|but|the|a|an|is|are|it|them|one|ones|then|near|by|sitting|"
+    r"standing|lying|resting|placed)"
+)
 _WORD = rf"(?!{_STOP}\b)[\w-]+"
 NP = rf"(?:{_WORD} ){{0,2}}{_WORD}"
 DET = r"(?:the|a|an|any|every|each|whichever)"
@@ -33,17 +36,17 @@ EXTREMES = {
     "backmost": "farthest",
     "hindmost": "farthest",
     "nearer": "nearest",
-    "closer": "nearest",
-    "closest": "nearest",
+    "closer": "closest",
+    "closest": "closest",
     "nearest": "nearest",
     "frontmost": "nearest",
     "foremost": "nearest",
     "higher": "top",
     "highest": "top",
-    "upper": "top",
+    "upper": "upper",
     "uppermost": "top",
     "topmost": "top",
-    "lower": "bottom",
+    "lower": "lower",
     "lowest": "bottom",
     "lowermost": "bottom",
     "bottommost": "bottom",
@@ -77,6 +80,11 @@ def ordinals(text: str) -> str:
         return f"{RANK_WORDS[RANKS[rank_word]]}{SIDES[side]} {noun}"
 
     ranks = "|".join([*RANKS, "last"])
+    text = re.sub(  # "the second-from-left bowl"
+        rf"\b({ranks})[- ](from|on)[- ](?:the[- ])?{_SIDE} ({NP})",
+        lambda m: counted(m.group(1), m.group(4), m.group(2), m.group(3)),
+        text,
+    )
     text = re.sub(
         rf"\b({ranks}) ({NP}) (from|on|at|in|to) the {_SIDE}{_SIDE_TAIL}{_SIDE_END}{_NP_END}",
         lambda m: counted(m.group(1), m.group(2), m.group(3), m.group(4)),
@@ -100,26 +108,46 @@ def extremes(text: str, push: bool = False) -> str:
         lambda m: f"{EXTREMES[m.group(1)]} {_singular_phrase(m.group(2))}",
         text,
     )
+    text = re.sub(rf"\b({DET}) (?:more|most) (?:distant|remote) ", r"\1 farthest ", text)
+    text = re.sub(r"\b(left|right)-hand side\b", r"\1 side", text)
+    text = re.sub(rf"\b({DET}) (left|right)-hand(?:ed)? ", r"\1 \2most ", text)
     if push:  # "push the cup closer to you", "further away": the way to move it
         return _sides(text)
+    where = r"(?:(?:that|which) (?:is|are) |(?:sitting|standing|lying|resting|placed) )?"
+    # "the bowl furthest to the left", "the bowl farthest left": the leftmost
     text = re.sub(
-        rf"\b({DET}) ({NP}) (?:(?:that|which) (?:is|are) |)(?:the )?"
-        rf"(?:(?:farther|further)(?: away| back| out)? from {_ME}\b|(?:farthest|furthest)(?: away| back| out)?"
-        rf"(?: from {_ME}\b)?(?=$|[\s,.]))",
+        rf"\b({DET}) ({NP}) {where}(?:the )?(?:farthest|furthest|most|far) (?:to |on |toward |towards )?(?:the )?"
+        rf"(left|right)\b(?! of)",
+        lambda m: f"{m.group(1)} {SIDES[m.group(3)]} {m.group(2)}",
+        text,
+    )
+    # "the bowl nearest the back", "closest to the front": the side it is nearest
+    text = re.sub(
+        rf"\b({DET}) ({NP}) {where}(?:the )?(?:nearest|closest|nearer|closer) (?:to )?the {_SIDE}{_SIDE_TAIL}"
+        rf"{_SIDE_END}",
+        lambda m: f"{m.group(1)} {SIDES[m.group(3)]} {m.group(2)}",
+        text,
+    )
+    relative = r"(?:(?:that|which) (?:is|are) |(?:sitting|standing|lying|resting|placed) )"
+    text = re.sub(
+        rf"\b({DET}) ({NP}) (?:{relative}(?:the )?(?:farther|further|farthest|furthest)(?: away| back| out)?"
+        rf"(?: from {_ME}\b)?(?=$|[\s,.])(?! from\b)|(?:the )?(?:(?:farther|further)(?: away| back| out)? from {_ME}\b|"
+        rf"(?:farthest|furthest)(?: away| back| out)?(?: from {_ME}\b)?(?=$|[\s,.])(?! from\b)))",
         lambda m: f"{m.group(1)} farthest {m.group(2)}",
         text,
     )
     text = re.sub(
-        rf"\b({DET}) ({NP}) (?:(?:that|which) (?:is|are) |)(?:the )?(nearer|closer|nearest|closest)(?: to)? {_ME}\b",
+        rf"\b({DET}) ({NP}) {where}(?:the )?(nearer|closer|nearest|closest)(?: to)? {_ME}\b",
         lambda m: f"{m.group(1)} nearest {m.group(2)}",
         text,
     )
     text = re.sub(
-        rf"\b({DET}) ({NP}) (?:(?:that|which) (?:is|are) |)(?:the )?(nearer|closer|nearest|closest)(?: to)? "
-        rf"(?!{_ME}\b)(the |a )",
+        rf"\b({DET}) ({NP}) {where}(?:the )?(nearer|closer|nearest|closest)(?: to)? (?!{_ME}\b)(the |a )",
         lambda m: f"{m.group(1)} {m.group(2)} near {m.group(4)}",
         text,
     )
+    # "the closest bowl to you": the extreme is said before the noun, the point of view after it
+    text = re.sub(rf"\b(nearest|farthest|closest|furthest) ({NP}) (?:to|from) {_ME}\b", r"\1 \2", text)
     return _sides(text)
 
 
@@ -132,6 +160,7 @@ def _sides(text: str) -> str:
         lambda m: f"{m.group(1)} {SIDES[m.group(3)]} {m.group(2)}",
         text,
     )
+    text = re.sub(rf"\b({DET}) ({NP}) (?:(?:that|which) (?:is|are) )?in front{_NP_END}", r"\1 nearest \2", text)
     return re.sub(rf"\b({DET}) ({_EXTREME}) ", lambda m: f"{m.group(1)} {EXTREMES[m.group(2)]} ", text)
 
 
@@ -165,7 +194,14 @@ def negations(text: str) -> str:
     text = re.sub(rf"\b{DET} ({NP}),? {but} (?:the|that) (?:ones?|{NP}) ([^,;:]+),?", r"the \1 not \2", text)
     # "whichever block is not the blue one", "the block that is not the blue one"
     text = re.sub(rf"\b{DET} ({NP}) (?:(?:that|which) )?{_NEG} the ({_WORD}) ones?\b", r"the \1 not \2", text)
+    text = re.sub(rf"\b{DET} ({NP}) (?:(?:that|which) )?{_NEG} the (?:ones?|{NP}) ", r"the \1 not ", text)
     text = re.sub(rf"\bwhichever ({NP}) {_NEG} ", r"the \1 not ", text)
+    # an apposition says which: "the bowl, the one not on the stove, ..." / "the block, i mean the one on the left,"
+    text = re.sub(
+        rf"\bthe ({NP}),? (?:i mean |that is |namely )?the ones? ([^,;:]+),?",
+        lambda m: f"the {m.group(1)} {m.group(2)}",
+        text,
+    )
     # "the non-blue block", "the non red one"
     text = re.sub(r"\bthe non[- ]?(\w+) (\w+)\b", r"the \2 not \1", text)
     # a side or an extreme after "not" is the qualifier that would pick the one ruled out
