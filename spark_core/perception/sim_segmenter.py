@@ -338,12 +338,11 @@ def _unknown_head(head: str, modifiers: list[str], name_words: list[str], doc: s
         return None
     if _noun_cosine(head, name_words[-1]) < UNKNOWN_NOUN_MIN_COSINE:
         return f"noun: {head} vs {name_words[-1]}"
-    kind_words = [
-        w for w in name_words[:-1] if not w.isdigit() and w not in SIZES | MATERIALS
-    ]  # "cream" is no colour here
-    if own_head & CONSUMABLES and kind_words:
-        # a food named by a kind of it ("cream cheese"): a noun that is only near its noun is another kind of that
-        # food ("cheddar", "custard"), not this one
+    food = own_head & CONSUMABLES or own_head & PACKAGING and any(_forms(w) & CONSUMABLES for w in name_words[:-1])
+    if food:
+        # groceries are a closed vocabulary (their own words and the kinds table's synonyms): a food or drink noun
+        # that is only near this one's names another food ("cheddar" is no cream cheese, "oil" no butter, "vodka"
+        # no wine bottle), however close the encoder puts them
         return f"noun: {head} vs {' '.join(name_words)}"
     return None
 

@@ -93,7 +93,9 @@ def test_on_and_in_are_said_by_support_not_by_nearness(cabinet):
 @pytest.mark.parametrize(
     "prompt,name",
     [
-        ("cheddar", "cream cheese"),  # only near the noun of a food named by a kind of it: another kind
+        ("cheddar", "cream cheese"),  # a food noun only near this food's: another food (groceries: a closed set)
+        ("oil", "butter"),
+        ("vodka", "wine bottle"),  # a drink noun only near the bottle's: another drink
         ("mozzarella", "cream cheese"),
         ("lemonade", "orange juice"),
         ("whiskey flask", "wine bottle"),  # the same kind of noun, and a word of its own where the object has another
@@ -104,7 +106,15 @@ def test_a_near_name_of_another_thing_does_not_ground(prompt, name):
 
 
 @pytest.mark.parametrize(
-    "prompt,name", [("cheese", "cream cheese"), ("wine flask", "wine bottle"), ("pudding", "chocolate pudding")]
+    "prompt,name",
+    [
+        ("cheese", "cream cheese"),
+        ("wine flask", "wine bottle"),
+        ("pudding", "chocolate pudding"),
+        ("margarine", "butter"),  # the kinds table's synonyms of a food still name it
+        ("oj", "orange juice"),
+        ("coffee cup", "mug"),
+    ],
 )
 def test_the_objects_own_words_and_kinds_still_ground(prompt, name):
     assert mismatch(prompt, name, name) is None
