@@ -27,8 +27,9 @@ from ..qualifiers import relation_holds, split_qualifier, split_relation
 from ..sim_segmenter import calibrated_score, pick_by_qualifier
 from ..text_encoder import SHARED_ENCODER, TextEncoder
 from . import patch_classifier
-from .categories import CATEGORIES, CATEGORY_INDEX, COLOURS, TABLE
+from .categories import CATEGORIES, CATEGORY_INDEX, COLOURS, ROBOT, TABLE
 from .layers import is_stacked, layer_mask
+from .refine import grow_by_depth
 
 WEIGHTS = "weights/learned_segmenter.pt"  # package data, next to MODEL_CARD.md
 HEAD_NOUN_BONUS = 0.08
@@ -36,6 +37,7 @@ MATERIAL_WORDS = {"wooden", "wood", "metal", "plastic", "ceramic", "wicker"}  # 
 SECOND_LOOK_P = 0.85  # the patch classifier's probability that overrules the per-pixel network's category
 SECOND_LOOK_FAIR_P = 0.5  # ... or this much, when it gives the network's category less than IMPLAUSIBLE_P
 IMPLAUSIBLE_P = 0.05
+GROW_MASKS = True  # refine whole objects' masks by depth at camera resolution (refine.py)
 OTHER_DROP_P = 0.5  # a group blob the patch classifier calls "other" with more than this is no group member
 MIN_INSTANCE_SCORE = 0.3  # instances the network is less sure of are dropped (stray pixels, table edges)
 FRAGMENT_AREA = 0.15
@@ -218,7 +220,7 @@ class LearnedSegmenter:
                 out.append(Instance(int(c), full, score, COLOURS[1 + int(colour_p.argmax())]))
         if self.patch_weights is not None:
             out = self._second_look(out, frame)
-        out = _above_table(_drop_fragments([_standing_part(i, frame) for i in out]), cat, frame)
+        out = _above_table(_drop_fragments([_standing_part(i, frame) for i in _grown(out, cat, frame)]), cat, frame)
         if len(self._cache) > 8:
             self._cache.clear()
         self._cache[key] = out
@@ -641,11 +643,7 @@ def _above_table(instances: list[Instance], cat: np.ndarray, frame: CameraFrame)
     """Objects stand on the table or above it: an instance whose median point lies BELOW_TABLE_M under the table
     top the network sees in this frame is the wall or floor behind, mislabelled (a frame with no table in view,
     e.g. a wrist close-up, keeps everything)."""
-    table = cat == TABLE
-    if table.sum() < 50:
-        return instances
-    full = cv2.resize(table.astype(np.uint8), (frame.shape[1], frame.shape[0]), interpolation=cv2.INTER_NEAREST)
-    top = _median_z(full.astype(bool), frame)
+    top = _table_top_z(cat, frame)
     if top is None:
         return instances
     keep = []
@@ -654,6 +652,45 @@ def _above_table(instances: list[Instance], cat: np.ndarray, frame: CameraFrame)
         if z is None or z >= top - BELOW_TABLE_M:
             keep.append(inst)
     return keep
+
+
+def _table_top_z(cat: np.ndarray, frame: CameraFrame) -> float | None:
+    """World height (m) of the table top the network sees in this frame; None when too little table is in view."""
+    table = cat == TABLE
+    if table.sum() < 50:
+        return None
+    full = cv2.resize(table.astype(np.uint8), (frame.shape[1], frame.shape[0]), interpolation=cv2.INTER_NEAREST)
+    return _median_z(full.astype(bool), frame)
+
+
+def _grown(instances: list[Instance], cat: np.ndarray, frame: CameraFrame) -> list[Instance]:
+    """Whole objects' masks grown at camera resolution into what the network called background or table where
+    the depth continues their surface above the table top (refine.py: thin necks lost at half resolution)."""
+    top = _table_top_z(cat, frame) if GROW_MASKS else None
+    if top is None:
+        return instances
+    H, W = frame.shape
+    free = cv2.resize(
+        np.isin(cat, [c for c, k in enumerate(CATEGORIES) if not k.thing and c != ROBOT]).astype(np.uint8),
+        (W, H),
+        interpolation=cv2.INTER_NEAREST,
+    ).astype(bool)
+    vs, us = np.mgrid[:H, :W]
+    depth = frame.depth_m
+    ok = np.isfinite(depth) & (depth > 0)
+    height = np.full((H, W), -np.inf)
+    height[ok] = frame.backproject(us[ok].astype(float), vs[ok].astype(float), depth[ok])[:, 2]
+    out = []
+    for i in instances:
+        kind = CATEGORIES[i.category]
+        # parts have their own clean-up (_proud); short kinds (max_height_m: bowls, plates) have no thin top to
+        # lose, and grown they spread onto what they stand next to
+        out.append(
+            i
+            if kind.part_of or kind.max_height_m
+            else Instance(i.category, grow_by_depth(i.mask, free, depth, height, top), i.score, i.colour)
+        )
+    return out
 
 
 def _anchored(cat: np.ndarray, names: tuple[str, ...]) -> np.ndarray:
