@@ -50,3 +50,26 @@ def test_no_handle_no_layer_and_only_height_words_are_stacked():
     assert layer_mask(fronts, [], "top", frame) is None
     assert is_stacked("top") and is_stacked("middle") and is_stacked("bottom")
     assert not is_stacked("left") and not is_stacked(None)
+
+
+def test_the_learned_segmenter_answers_the_middle_drawer_with_its_layer(monkeypatch):
+    """The drawer fronts seen as one instance and three handles: "drawer middle layer" (a LIBERO label) is the
+    middle band, not the whole front."""
+    from spark_core.perception.learned.categories import CATEGORY_INDEX
+    from spark_core.perception.learned.segmenter import Instance, LearnedSegmenter
+
+    frame = _front_frame()
+    fronts = np.zeros((H, W), bool)
+    fronts[_row(0.21) : _row(0.0), 100:220] = True
+    handles = []
+    for z in (0.035, 0.105, 0.175):
+        m = np.zeros((H, W), bool)
+        m[_row(z) - 3 : _row(z) + 3, 150:170] = True
+        handles.append(Instance(CATEGORY_INDEX["drawer handle"], m, 0.98, "grey"))
+    seen = [Instance(CATEGORY_INDEX["drawer"], fronts, 0.97, "brown"), *handles]
+    seg = LearnedSegmenter()
+    monkeypatch.setattr(seg, "instances", lambda f: seen)
+    (det,) = seg.segment(frame, ["drawer middle layer"])
+    rows = np.nonzero(det.mask.any(1))[0]
+    assert abs(rows.min() - _row(0.14)) <= 1 and abs(rows.max() - _row(0.07)) <= 1
+    assert det.detail["layer"] == "middle"

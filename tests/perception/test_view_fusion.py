@@ -106,3 +106,34 @@ def test_ambiguous_prompts_keep_the_instance_where_the_object_was_last_seen():
     assert "tracked" in {c.verdict for c in sel.candidates}
     far = left + [0.0, 0.0, 0.5]  # nothing near where it was: still ambiguous
     assert select_prompt(_TwoBowls(), frame, "bowl", ["round bowl"], seen_at_m=far).detection is None
+
+
+def test_the_learned_segmenter_records_whether_its_pick_stands_in_the_relation(monkeypatch):
+    """Top-down synthetic frame (1 px = 2 mm): a stove, a bowl on it and a bowl 30 cm away. "bowl on stove" picks
+    the bowl on it and records that the relation holds; a view holding only the far bowl records that it does not
+    (so fusion can prefer the other view)."""
+    from spark_core.perception.frame import CameraFrame
+    from spark_core.perception.learned.categories import CATEGORY_INDEX
+    from spark_core.perception.learned.segmenter import Instance, LearnedSegmenter
+
+    H, W = 240, 320
+    K = np.array([[500.0, 0, W / 2], [0, 500.0, H / 2], [0, 0, 1]])
+    T = np.eye(4)
+    T[:3, :3] = np.diag([1.0, -1.0, -1.0])
+    T[2, 3] = 1.0
+    frame = CameraFrame("top", np.zeros((H, W, 3), np.uint8), np.ones((H, W), np.float32), K, T)
+
+    def box(r0, r1, c0, c1):
+        m = np.zeros((H, W), bool)
+        m[r0:r1, c0:c1] = True
+        return m
+
+    stove = Instance(CATEGORY_INDEX["stove"], box(60, 180, 20, 140), 0.99, "black")
+    on_it = Instance(CATEGORY_INDEX["bowl"], box(100, 140, 60, 100), 0.8, "black")
+    far = Instance(CATEGORY_INDEX["bowl"], box(100, 140, 230, 270), 0.95, "black")
+    seg = LearnedSegmenter()
+    for seen, expected in (([stove, on_it, far], True), ([stove, far], False)):
+        monkeypatch.setattr(seg, "instances", lambda f, seen=seen: seen)
+        (det,) = seg.segment(frame, ["black bowl on stove"])
+        assert det.detail["relation_holds"] is expected
+        assert (det.mask is on_it.mask) == expected
