@@ -91,7 +91,7 @@ KINDS: tuple[frozenset[str], ...] = tuple(
         "door",
         "butter margarine",
         "milk",
-        "ketchup",
+        "ketchup catsup",
         "cheese",
         "soup",
         "pudding",
