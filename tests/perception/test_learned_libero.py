@@ -41,10 +41,13 @@ def test_libero_prompts_ground_to_their_category(prompt, category, colours):
 
 
 def test_a_compound_noun_grounds_to_its_head_not_its_modifier():
-    """ "cabinet drawer layer" (an adaptive variant of "drawer middle layer") is a drawer: the last word naming a
-    kind is the head, though "layer" names none; the cabinet it modifies must not tie with it."""
+    """ "cabinet drawer layer" (an adaptive variant of "drawer middle layer") is a drawer: "layer" names a region
+    of the noun before it, which is the head; the cabinet it modifies must not tie with it."""
     cats, _ = LearnedSegmenter().ground("cabinet drawer layer")
     assert [CATEGORIES[c].name for c in cats] == ["drawer"]
+    # an unknown last word is still the head: a grip of the drawer is its handle, not the drawer
+    cats, _ = LearnedSegmenter().ground("cabinet drawer grip")
+    assert "drawer handle" in [CATEGORIES[c].name for c in cats]
 
 
 def test_libero_labels_map_to_categories():

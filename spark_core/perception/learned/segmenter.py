@@ -33,6 +33,7 @@ from .refine import grow_by_depth
 
 WEIGHTS = "weights/learned_segmenter.pt"  # package data, next to MODEL_CARD.md
 HEAD_NOUN_BONUS = 0.08
+REGION_WORDS = {"layer", "level", "tier", "section", "part", "portion"}  # a region of the noun before them
 MATERIAL_WORDS = {"wooden", "wood", "metal", "plastic", "ceramic", "wicker"}  # not colour filters
 SECOND_LOOK_P = 0.85  # the patch classifier's probability that overrules the per-pixel network's category
 SECOND_LOOK_FAIR_P = 0.5  # ... or this much, when it gives the network's category less than IMPLAUSIBLE_P
@@ -131,9 +132,10 @@ class LearnedSegmenter:
         if not core:
             return {}, colours
         cos = self._doc_vecs @ self.encoder.encode([core])[0]
-        heads = {CATEGORIES[i].name.split()[-1] for i in self._things}
-        # the head noun: the last word naming a kind ("cabinet drawer layer": a drawer, "layer" names none)
-        head = next((w for w in reversed(core.split()) if w in heads or w.rstrip("s") in heads), core.split()[-1])
+        # the head noun: the last word, unless it names a region of the thing before it ("cabinet drawer layer"
+        # is a drawer); an unknown last word stays the head ("cabinet drawer grip" is a handle, not a drawer)
+        words_core = core.split()
+        head = words_core[-2] if len(words_core) > 1 and words_core[-1] in REGION_WORDS else words_core[-1]
         scores = {}
         for i, c in zip(self._things, cos.tolist()):
             name = CATEGORIES[i].name
