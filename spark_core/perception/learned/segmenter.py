@@ -291,7 +291,7 @@ class LearnedSegmenter:
         renamed = set()
         for (k, _), p_cls in zip(keep, probs):
             best = int(p_cls.argmax())
-            own = int(np.nonzero(out[k].category == patch_classifier.CLASS_CATEGORY)[0][0])
+            own = int(np.flatnonzero(np.equal(patch_classifier.CLASS_CATEGORY, out[k].category))[0])
             # overruled when the classifier is sure of another name, or fairly sure of it while finding the
             # network's name implausible (a bowl on a stove that the per-pixel network painted as stove)
             sure = p_cls[best] >= SECOND_LOOK_P or (p_cls[best] >= SECOND_LOOK_FAIR_P and p_cls[own] < IMPLAUSIBLE_P)
