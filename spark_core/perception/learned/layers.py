@@ -22,7 +22,7 @@ def is_stacked(qualifier: str | None) -> bool:
 def layer_mask(drawer: np.ndarray, handles: list[np.ndarray], qualifier: str, frame: CameraFrame) -> np.ndarray | None:
     """The pixels of the `drawer` mask (one or several stacked drawer fronts) that belong to the drawer whose
     handle `qualifier` picks among `handles` (masks); None when no handle or no drawer pixel is in that band."""
-    heights = [h for h in (_median_z(m, frame) for m in handles) if h is not None]
+    heights = [h for h in (median_height_m(m, frame) for m in handles) if h is not None]
     if not heights:
         return None
     zs: list[float] = []
@@ -48,8 +48,13 @@ def layer_mask(drawer: np.ndarray, handles: list[np.ndarray], qualifier: str, fr
     return out
 
 
-def _median_z(mask: np.ndarray, frame: CameraFrame) -> float | None:
+def median_height_m(mask: np.ndarray, frame: CameraFrame, n: int = 400) -> float | None:
+    """Median world height (m) of up to n evenly spaced pixels of the mask with a finite depth."""
     vs, us = np.nonzero(mask)
+    if not len(vs):
+        return None
+    step = max(1, len(vs) // n)
+    vs, us = vs[::step], us[::step]
     z = frame.depth_m[vs, us]
     ok = np.isfinite(z) & (z > 0)
     if not ok.any():

@@ -28,7 +28,7 @@ from ..sim_segmenter import calibrated_score, pick_by_qualifier
 from ..text_encoder import SHARED_ENCODER, TextEncoder
 from . import patch_classifier
 from .categories import CATEGORIES, CATEGORY_INDEX, COLOURS, ROBOT, TABLE
-from .layers import is_stacked, layer_mask
+from .layers import is_stacked, layer_mask, median_height_m
 from .refine import grow_by_depth
 
 WEIGHTS = "weights/learned_segmenter.pt"  # package data, next to MODEL_CARD.md
@@ -627,20 +627,6 @@ def _standing_part(inst: Instance, frame: CameraFrame) -> Instance:
     return Instance(inst.category, mask, inst.score, inst.colour)
 
 
-def _median_z(mask: np.ndarray, frame: CameraFrame, n: int = 400) -> float | None:
-    """Median world height (m) of up to n evenly spaced pixels of the mask with a finite depth."""
-    vs, us = np.nonzero(mask)
-    if not len(vs):
-        return None
-    step = max(1, len(vs) // n)
-    vs, us = vs[::step], us[::step]
-    z = frame.depth_m[vs, us]
-    ok = np.isfinite(z) & (z > 0)
-    if not ok.any():
-        return None
-    return float(np.median(frame.backproject(us[ok].astype(float), vs[ok].astype(float), z[ok])[:, 2]))
-
-
 def _above_table(instances: list[Instance], cat: np.ndarray, frame: CameraFrame) -> list[Instance]:
     """Objects stand on the table or above it: an instance whose median point lies BELOW_TABLE_M under the table
     top the network sees in this frame is the wall or floor behind, mislabelled (a frame with no table in view,
@@ -650,7 +636,7 @@ def _above_table(instances: list[Instance], cat: np.ndarray, frame: CameraFrame)
         return instances
     keep = []
     for inst in instances:
-        z = _median_z(inst.mask, frame)
+        z = median_height_m(inst.mask, frame)
         if z is None or z >= top - BELOW_TABLE_M:
             keep.append(inst)
     return keep
@@ -662,7 +648,7 @@ def _table_top_z(cat: np.ndarray, frame: CameraFrame) -> float | None:
     if table.sum() < 50:
         return None
     full = cv2.resize(table.astype(np.uint8), (frame.shape[1], frame.shape[0]), interpolation=cv2.INTER_NEAREST)
-    return _median_z(full.astype(bool), frame)
+    return median_height_m(full.astype(bool), frame)
 
 
 def _grown(instances: list[Instance], cat: np.ndarray, frame: CameraFrame) -> list[Instance]:
