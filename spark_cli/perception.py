@@ -36,6 +36,12 @@ def register(sub) -> None:
         default=None,
         help="views per scene (default: builtin agentview side wrist; libero agentview frontview wrist)",
     )
+    d.add_argument(
+        "--rearrange",
+        action="store_true",
+        help="libero: objects also trade places or are set on top of others (a bowl on the stove or the cabinet), "
+        "from the scene seed",
+    )
     d.set_defaults(func=_cmd_dataset)
     t = ps.add_parser("train", help="train the segmenter on a dataset directory")
     t.add_argument(
@@ -95,8 +101,8 @@ def _cmd_dataset(args: argparse.Namespace) -> int:
     for start in range(0, args.scenes, args.shard_scenes):
         n = min(args.shard_scenes, args.scenes - start)
         try:
-            summary = generate(out, n, seed0 + start, cameras, source=args.source)
-        except RuntimeError as e:  # e.g. the LIBERO extras are not installed
+            summary = generate(out, n, seed0 + start, cameras, source=args.source, rearrange=args.rearrange)
+        except (RuntimeError, ValueError) as e:  # e.g. the LIBERO extras are not installed
             print(e, file=sys.stderr)
             return 2
         print(json.dumps(summary), flush=True)

@@ -208,7 +208,9 @@ SOURCES = ("builtin", "libero")
 DEFAULT_CAMERAS = {"builtin": ("agentview", "side", "wrist"), "libero": ("agentview", "frontview", "wrist")}
 
 
-def _scenes(source: str, seeds: list[int]) -> Iterator[tuple[int, Any, tuple, np.random.Generator]]:
+def _scenes(
+    source: str, seeds: list[int], rearrange: bool = False
+) -> Iterator[tuple[int, Any, tuple, np.random.Generator]]:
     """(seed, world, label tables, rng) per scene; the world is valid until the next one is drawn."""
     if source == "builtin":
         for seed in seeds:
@@ -220,7 +222,7 @@ def _scenes(source: str, seeds: list[int]) -> Iterator[tuple[int, Any, tuple, np
     elif source == "libero":
         from .libero_data import LiberoScenes, libero_geom_tables, task_index
 
-        scenes = LiberoScenes()
+        scenes = LiberoScenes(rearrange=rearrange)
         try:  # a task's scenes one after another: its env is built once
             for seed in sorted(seeds, key=lambda s: (task_index(s), s)):
                 world = scenes.scene(seed)
@@ -239,19 +241,23 @@ def generate(
     size: tuple[int, int] = CROP_SIZE,
     log: Callable[[str], None] = print,
     source: str = "builtin",
+    rearrange: bool = False,
 ) -> dict:
     """Render `n_scenes` scenes of `source` (seeds seed0 .. seed0+n_scenes-1), every listed camera of each
     ("wrist" = one robot's wrist camera; default: the source's DEFAULT_CAMERAS) at 640x480, and store two crops of
-    `size` (width, height) per view into out_dir/shard_<seed0>.npz. Returns a summary."""
+    `size` (width, height) per view into out_dir/shard_<seed0>.npz. `rearrange` (libero only): objects trade
+    places or stand on others (rearrange.py). Returns a summary."""
     if source not in SOURCES:
         raise ValueError(f"unknown dataset source {source!r}; have: {', '.join(SOURCES)}")
+    if rearrange and source != "libero":
+        raise ValueError("--rearrange applies to the libero source only (builtin scenes randomise placement already)")
     cameras = cameras or DEFAULT_CAMERAS[source]
     out_dir.mkdir(parents=True, exist_ok=True)
     keys = ("rgb", "depth_mm", "category", "instance", "colour", "seeds")
     rows: dict[str, list[np.ndarray]] = {k: [] for k in keys}
     w, h = size
     t0 = time.perf_counter()
-    for i, (seed, world, tables, rng) in enumerate(_scenes(source, list(range(seed0, seed0 + n_scenes)))):
+    for i, (seed, world, tables, rng) in enumerate(_scenes(source, list(range(seed0, seed0 + n_scenes)), rearrange)):
         for cam in cameras:
             name = cam
             if cam == "wrist":

@@ -79,10 +79,13 @@ def _seeded_numpy(seed: int) -> Iterator[None]:
 class LiberoScenes:
     """Randomised LIBERO scenes, one env per task kept while consecutive scenes use it. `scene(seed)` resets the
     env with LIBERO's samplers from `seed`, settles it, then (from the same seed) jitters lighting and, in 70 %
-    of scenes, the arm's joints, and returns the world (valid until the next `scene` call or `close`)."""
+    of scenes, the arm's joints, and returns the world (valid until the next `scene` call or `close`). With
+    `rearrange`, objects also trade places or are set on top of others (rearrange.py) before the settle."""
 
-    def __init__(self, perturb: bool = True):
+    def __init__(self, perturb: bool = True, rearrange: bool = False):
         self.perturb = perturb
+        self.rearrange = rearrange
+        self.moves: list[tuple[str, str, str]] = []  # what rearrange did to the last scene (rearrange.Move)
         self._task = None
         self._env: Any = None
         self._world: Any = None
@@ -101,6 +104,11 @@ class LiberoScenes:
             m = self._world.model
             self._light0 = (m.light_diffuse.copy(), m.light_pos.copy())
         world = self._world
+        self.moves = []
+        if self.rearrange:
+            from .rearrange import rearrange
+
+            self.moves = rearrange(world, np.random.default_rng([seed, 2]), float(world.origin_m[2]))
         world.reset()  # hold the arm where the reset left it
         world._tick(SETTLE_STEPS)
         m, d = world.model, world.data
