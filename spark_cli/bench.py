@@ -136,6 +136,11 @@ def register(sub) -> None:
         choices=["dev", "test"],
         help="wording suite: plan and execute only this half of the corpus (default: both; develop on dev alone)",
     )
+    b.add_argument(
+        "--plan-only",
+        action="store_true",
+        help="wording suite: the planning check alone, without the execution sample (trials take minutes)",
+    )
     bench_manifest.add_arguments(b)
     b.set_defaults(func=_cmd_bench)
 
@@ -217,16 +222,20 @@ def _export_section(r: dict, command: str) -> str:
 
 
 def _wording(args: argparse.Namespace, command: str) -> str:
-    """Both corpus halves planned, then the execution sample (min(--trials, 2) seeds per instruction)."""
+    """Both corpus halves planned, then (unless --plan-only) the execution sample (min(--trials, 2) seeds each)."""
     from spark_core.bench import wording
 
     entries = [e for half in ([args.half] if args.half else wording.HALVES) for e in wording.load(half)]
     rows = wording.plan_entries(entries, args.seed, lambda r: print(_wording_line(r), flush=True))
     seeds = min(args.trials or 2, 2)
-    exec_rows = wording.execute_sample(
-        entries,
-        seeds,
-        lambda r: print(f"{'ok  ' if r['success'] else 'FAIL'} {r['half']} {r['task'][:40]} {r['wording']}"),
+    exec_rows = (
+        []
+        if args.plan_only
+        else wording.execute_sample(
+            entries,
+            seeds,
+            lambda r: print(f"{'ok  ' if r['success'] else 'FAIL'} {r['half']} {r['task'][:40]} {r['wording']}"),
+        )
     )
     if args.json:
         Path(args.json).write_text(json.dumps({"planning": rows, "execution": exec_rows}, indent=1, default=str))

@@ -113,3 +113,24 @@ def test_two_place_targets_with_the_same_support_are_the_same_destination():
     assert wording.same_effect(carry("cabinet"), carry("drawer top"))
     assert not wording.same_effect(carry("drawer top", into=True), carry("cabinet"))  # into a drawer is not on top
     assert not wording.same_effect(carry("plate"), carry("cabinet"))
+
+
+def test_plan_only_skips_the_execution_sample(monkeypatch, tmp_path):
+    import argparse
+    import json
+
+    from spark_cli import bench as cli
+
+    entry = {"id": "a", "style": "synonym", "suite": "builtin", "task": "block_on_plate", "expect": "goal"}
+    row = dict(entry, half="dev", instruction="x", planned=True, correct=True, error="", understood=[])
+    ran: list[str] = []
+    monkeypatch.setattr(wording, "load", lambda half: [dict(entry, half=half)])
+    monkeypatch.setattr(wording, "plan_entries", lambda entries, seed, progress: ran.append("plan") or [row])
+    monkeypatch.setattr(wording, "execute_sample", lambda *a, **k: ran.append("execute") or [])
+    out = tmp_path / "rows.json"
+    args = argparse.Namespace(half="dev", seed=0, trials=None, json=str(out), plan_only=True)
+    text = cli._wording(args, "spark bench wording --half dev --plan-only")
+    assert ran == ["plan"] and json.loads(out.read_text())["execution"] == []
+    assert "execution success" not in text
+    cli._wording(argparse.Namespace(**{**vars(args), "plan_only": False}), "spark bench wording --half dev")
+    assert ran == ["plan", "plan", "execute"]
