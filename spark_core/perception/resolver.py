@@ -109,7 +109,11 @@ def fused_evidence(evidence: list[PointEvidence]) -> list[PointEvidence]:
     the most confident view's visible height (stacked drawers' handles share xy and differ in height by less than
     a handle's spacing; a bottle seen from above and from the side differs by more than 5 cm and is one thing).
     For a relational label ("the bowl on the stove") a view whose pick was seen to stand in the relation is
-    trusted before one whose pick was seen not to (one view may hold only the wrong bowl), whatever the scores."""
+    trusted before one whose pick was seen not to (one view may hold only the wrong bowl), whatever the scores.
+    A view that did not see a named part and answered with its parent ("drawer handle" -> the cabinet) gives way
+    to any view that saw the part itself."""
+    direct = [e for e in evidence if not e.detection.detail.get("stand_in_for_part")]
+    evidence = direct or evidence
     if len(evidence) < 2:
         return evidence
     best = max(evidence, key=lambda e: (_relation_rank(e), e.detection.score))

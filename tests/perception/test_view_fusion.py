@@ -137,3 +137,44 @@ def test_the_learned_segmenter_records_whether_its_pick_stands_in_the_relation(m
         (det,) = seg.segment(frame, ["black bowl on stove"])
         assert det.detail["relation_holds"] is expected
         assert (det.mask is on_it.mask) == expected
+
+
+def test_a_parent_standing_in_for_an_unseen_part_gives_way_to_a_view_that_saw_the_part():
+    """ "cabinet drawer handle": one view saw no handle and answered with the cabinet (more confidently), the other
+    saw the handle. The handle's view wins; with no view of the part, the stand-in is all there is."""
+    cabinet = _evidence("agentview", (0.82, 0.20, 0.17), (0.28, 0.38, 0.17), 0.99, {"stand_in_for_part": True})
+    handle = _evidence("side", (0.63, 0.20, 0.09), (0.01, 0.04, 0.02), 0.97)
+    assert [e.detection.camera for e in fused_evidence([cabinet, handle])] == ["side"]
+    assert [e.detection.camera for e in fused_evidence([cabinet])] == ["agentview"]
+
+
+def test_the_segmenter_marks_a_parent_that_stands_in_for_an_unseen_part():
+    """The learned segmenter answers a part it sees nowhere with the part's parent, marked as a stand-in; a part it
+    sees is answered as itself, unmarked."""
+    from spark_core.perception.learned import segmenter as seg_mod
+    from spark_core.perception.learned.categories import CATEGORY_INDEX
+
+    seg = seg_mod.LearnedSegmenter()
+
+    def with_instances(cats: list[str]):
+        masks = []
+        for k, name in enumerate(cats):
+            m = np.zeros((48, 64), bool)
+            m[4 + 10 * k : 12 + 10 * k, 8:40] = True
+            masks.append(seg_mod.Instance(CATEGORY_INDEX[name], m, 0.95, "none"))
+        return masks
+
+    frame = _frame()
+    seg.instances = lambda f: with_instances(["cabinet"])  # type: ignore[method-assign]
+    (det,) = seg._matches(frame, "cabinet drawer handle", "cabinet drawer handle")
+    assert det.detail["category"] == "cabinet" and det.detail["stand_in_for_part"]
+    seg.instances = lambda f: with_instances(["cabinet", "drawer handle"])  # type: ignore[method-assign]
+    (det,) = seg._matches(frame, "cabinet drawer handle", "cabinet drawer handle")
+    assert det.detail["category"] == "drawer handle" and "stand_in_for_part" not in det.detail
+
+
+def _frame():
+    from spark_core.perception.frame import CameraFrame
+
+    K = np.array([[60.0, 0, 32], [0, 60.0, 24], [0, 0, 1]])
+    return CameraFrame("side", np.zeros((48, 64, 3), np.uint8), np.ones((48, 64), np.float32), K, np.eye(4))

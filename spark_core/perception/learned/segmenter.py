@@ -328,15 +328,19 @@ class LearnedSegmenter:
         if not cats:
             return []
         seen = {i.category for i in self.instances(frame)}
+        stand_in = False
         if not seen & set(cats):
-            cats = _parent_named(cats, core) or cats
+            parents = _parent_named(cats, core)
+            cats, stand_in = parents or cats, bool(parents)
         dets = []
         for k, inst in enumerate(self.instances(frame)):
             if inst.category not in cats or (colours and inst.colour not in colours):
                 continue
             # grounding and pixel confidence together; their geometric mean keeps 0.5 as "as sure as not"
             score = float(np.sqrt(calibrated_score(cats[inst.category], self.threshold) * inst.score))
-            detail = {"category": CATEGORIES[inst.category].name, "colour": inst.colour, "instance": k}
+            detail: dict[str, Any] = {"category": CATEGORIES[inst.category].name, "colour": inst.colour, "instance": k}
+            if stand_in:  # the part was not seen in this view: its parent stands in (fused_evidence ranks it last)
+                detail["stand_in_for_part"] = True
             dets.append(Detection(prompt, prompt, inst.mask, round(score, 4), frame.camera, False, detail))
         return dets
 
