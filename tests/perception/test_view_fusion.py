@@ -178,3 +178,18 @@ def _frame():
 
     K = np.array([[60.0, 0, 32], [0, 60.0, 24], [0, 0, 1]])
     return CameraFrame("side", np.zeros((48, 64, 3), np.uint8), np.ones((48, 64), np.float32), K, np.eye(4))
+
+
+def test_a_prompt_that_grounds_to_a_part_and_its_parent_marks_the_parent_where_the_part_is_unseen():
+    """ "cabinet drawer grip" grounds to the handle and, nearly as well, to the drawer: in a view with drawers but
+    no handle, the drawer it picks stands in for the handle (it must not outvote a view that saw the handle)."""
+    from spark_core.perception.learned import segmenter as seg_mod
+    from spark_core.perception.learned.categories import CATEGORY_INDEX
+
+    seg = seg_mod.LearnedSegmenter()
+    seg.ground = lambda core: ({CATEGORY_INDEX["drawer handle"]: 0.68, CATEGORY_INDEX["drawer"]: 0.66}, set())  # type: ignore[method-assign]
+    mask = np.zeros((48, 64), bool)
+    mask[10:20, 8:40] = True
+    seg.instances = lambda f: [seg_mod.Instance(CATEGORY_INDEX["drawer"], mask, 0.95, "none")]  # type: ignore[method-assign]
+    (det,) = seg._matches(_frame(), "cabinet drawer grip", "cabinet drawer grip")
+    assert det.detail["category"] == "drawer" and det.detail["stand_in_for_part"]

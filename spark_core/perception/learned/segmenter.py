@@ -328,10 +328,11 @@ class LearnedSegmenter:
         if not cats:
             return []
         seen = {i.category for i in self.instances(frame)}
-        stand_in = False
+        best = max(cats, key=cats.__getitem__)
+        # the part the prompt names best is not in view: its parent's instances here only stand in for it
+        stand_ins = set() if best in seen else {CATEGORY_INDEX[p] for p in CATEGORIES[best].part_of}
         if not seen & set(cats):
-            parents = _parent_named(cats, core)
-            cats, stand_in = parents or cats, bool(parents)
+            cats = _parent_named(cats, core) or cats
         dets = []
         for k, inst in enumerate(self.instances(frame)):
             if inst.category not in cats or (colours and inst.colour not in colours):
@@ -339,7 +340,7 @@ class LearnedSegmenter:
             # grounding and pixel confidence together; their geometric mean keeps 0.5 as "as sure as not"
             score = float(np.sqrt(calibrated_score(cats[inst.category], self.threshold) * inst.score))
             detail: dict[str, Any] = {"category": CATEGORIES[inst.category].name, "colour": inst.colour, "instance": k}
-            if stand_in:  # the part was not seen in this view: its parent stands in (fused_evidence ranks it last)
+            if inst.category in stand_ins:  # fused_evidence prefers a view that saw the part itself
                 detail["stand_in_for_part"] = True
             dets.append(Detection(prompt, prompt, inst.mask, round(score, 4), frame.camera, False, detail))
         return dets
