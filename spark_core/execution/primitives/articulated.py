@@ -16,16 +16,32 @@ PULL_SPEED_M_S = 0.2
 
 def handle_facing(ctx: Ctx, kp: Keypoint) -> np.ndarray:
     """The way a handle faces (unit, horizontal, world): away from the object it belongs to (a drawer handle from
-    its drawer or cabinet), snapped to that object's sides; toward the robot (-x) when perception knows no such
+    its drawer or cabinet), along one of that object's sides; toward the robot (-x) when perception knows no such
     object. A drawer opens along it."""
-    for whole in ctx.wholes_of(kp.label):
-        d = kp.position_m[:2] - whole.position_m[:2]  # a closed drawer, seen by its front only: 1-2 cm, still right
+    return facing_from_wholes(kp, list(ctx.wholes_of(kp.label)))
+
+
+FACE_FLOOR_M = 0.005  # a side's half depth is at least this: a drawer front seen face-on is a few mm deep
+
+
+def facing_from_wholes(part: Keypoint, wholes: list[Keypoint]) -> np.ndarray:
+    """Which face of its wholes a part sits on: over every whole and each of its four sides, the part's offset
+    from the whole's centre along the side, as a fraction of the whole's half depth that way; the largest wins.
+    A point on a face is about one half depth out along it and less than that across, whatever its place on the
+    face: unlike the bare offset, this tells a handle near a drawer front's end (2 cm along the front, 1 cm out)
+    and a part seen only in part from the side it is on. -x when there is no whole, or the part is at a centre."""
+    best, best_ratio = np.array([-1.0, 0.0, 0.0]), 0.0
+    for whole in wholes:
+        d = part.position_m[:2] - whole.position_m[:2]
         base = whole.yaw_rad or 0.0
-        sides = [np.array([np.cos(a), np.sin(a)]) for a in (base + k * np.pi / 2 for k in range(4))]
-        best = max(sides, key=lambda v: float(np.dot(d, v)))
-        if float(np.dot(d, best)) > 0.01:
-            return np.array([best[0], best[1], 0.0])
-    return np.array([-1.0, 0.0, 0.0])
+        for k in range(4):
+            a = base + k * np.pi / 2
+            v = np.array([np.cos(a), np.sin(a)])
+            half = max(0.5 * float(np.dot(np.abs(v), whole.extent_m[:2])), FACE_FLOOR_M)
+            ratio = float(np.dot(d, v)) / half
+            if ratio > best_ratio and float(np.dot(d, v)) > 0.005:
+                best, best_ratio = np.array([v[0], v[1], 0.0]), ratio
+    return best
 
 
 def _handle_rotations(kp: Keypoint, facing: np.ndarray) -> list[np.ndarray]:
