@@ -167,3 +167,26 @@ def test_a_bowl_on_a_box_loses_what_lies_further_below_than_a_bowl_is_tall():
     whole = np.zeros((H, W), bool)
     whole[85:155, 125:195] = True  # the bowl and a thin floor ring: 5 cm below its top, within a bowl's height
     assert _standing_part(Instance(bowl, whole, 0.9, "black"), _frame(floor)).mask.sum() == whole.sum()
+
+
+def test_a_part_touching_its_parent_only_in_the_image_is_not_on_it():
+    """A handle-coloured fringe next to a cabinet in the image but 30 cm behind it (the floor seen past a small
+    handle) is not a handle on the cabinet; one at the cabinet's depth is, and so is one beside a cabinet side
+    face that is nearer the camera as long as some cabinet pixel beside it is at its depth."""
+    from spark_core.perception.learned.segmenter import _on_parent
+
+    depth = np.full((40, 40), 1.45, np.float32)
+    parent = np.zeros((40, 40), bool)
+    parent[10:30, 5:20] = True
+    part = np.zeros((40, 40), bool)
+    part[15:20, 20:23] = True  # right of the parent, touching
+    assert _on_parent(part, parent, depth)
+    far = depth.copy()
+    far[part] = 1.75
+    assert not _on_parent(part, parent, far)
+    side = depth.copy()
+    side[10:30, 5:19] = 1.25  # the parent's nearer side face, but its front edge column is at the part's depth
+    assert _on_parent(part, parent, side)
+    away = np.zeros((40, 40), bool)
+    away[35:38, 35:38] = True
+    assert not _on_parent(away, parent, depth)
