@@ -74,6 +74,15 @@ class PerceptionResolver:
         if self._captured_at is None or self.world.sim_time_s != self._captured_at:
             self._capture()
 
+    def inventory(self) -> list[str]:
+        """Names of the things in the current frames, for segmenters that can list them (`names_in`: the sim
+        oracle, from its privileged object ids); empty for the others."""
+        names_in = getattr(self.segmenter, "names_in", None)
+        if names_in is None:
+            return []
+        self._ensure_fresh()
+        return sorted({n for frame in self.frames.values() for n in names_in(frame)})
+
     def resolve(self, label: str) -> Keypoint:
         self._ensure_fresh()
         variants = self.variants(label) if self.adaptive else []

@@ -107,6 +107,13 @@ class SimSegmenter:
                 out[i] = " ".join(swapped)
         return out
 
+    def names_in(self, frame: CameraFrame) -> list[str]:
+        """The names of the catalogued objects this frame shows (privileged: from the renderer's object ids)."""
+        if frame.object_ids is None:
+            return []
+        shown = (frame.labels.get(int(i)) for i in np.unique(frame.object_ids) if i)
+        return sorted({self._names[label] for label in shown if label in self._names})
+
     def segment(self, frame: CameraFrame, prompts: Sequence[str]) -> list[Detection]:
         if frame.object_ids is None:
             raise ValueError(

@@ -13,6 +13,7 @@ from ..perception import Keypoint, LabelNotFound
 from ..perception.resolver_protocol import Resolver
 from ..perception.summary import summarise
 from .protocol import SceneView
+from .rules.mentions import clause_mentions, read_past
 from .rules.parse import ParseError, is_pronoun, parse_instruction
 
 PART_OF_ACTION = {"open": "handle", "close": "handle", "turn_on": "knob", "turn_off": "knob"}
@@ -36,6 +37,9 @@ def phrases_for(instruction: str) -> list[str]:
             out.setdefault(f"{c.obj} {part}", None)
             if "drawer" in c.obj:
                 out.setdefault(f"drawer {part}", None)
+    # what the phrases are located by, and what the parser read past: each must be in the scene (rules/mentions.py)
+    for p in [*clause_mentions(clauses), *read_past(instruction, clauses)]:
+        out.setdefault(p, None)
     return list(out)
 
 
@@ -48,7 +52,8 @@ def observe(instruction: str, resolver: Resolver, extra: Sequence[str] = ()) -> 
         except LabelNotFound:
             unresolved[phrase] = _why_unresolved(resolver, phrase)
     summary = summarise(keypoints) if keypoints else "perception found none of the objects mentioned"
-    return SceneView(keypoints, summary, unresolved=unresolved)
+    listing = getattr(resolver, "inventory", None)
+    return SceneView(keypoints, summary, unresolved=unresolved, inventory=tuple(listing()) if listing else ())
 
 
 def _why_unresolved(resolver: Resolver, phrase: str) -> str:
@@ -89,7 +94,9 @@ def annotated_view(view: SceneView, resolver: Resolver) -> SceneView:
     camera, frame = next(iter(frames.items()))
     kept = getattr(resolver, "detections", {}).get(camera, {})
     detections = [d for label, d in kept.items() if label in view.keypoints]
-    return SceneView(view.keypoints, view.summary, annotate(frame, detections, view.keypoints), view.unresolved)
+    return SceneView(
+        view.keypoints, view.summary, annotate(frame, detections, view.keypoints), view.unresolved, view.inventory
+    )
 
 
 def agentview_png(resolver: Resolver) -> bytes | None:

@@ -22,6 +22,9 @@ class SceneView:
     # phrases perception could not single out, and why ("several match: 2", "none found"): what a planner needs
     # to ask which one rather than say it is absent
     unresolved: dict[str, str] = field(default_factory=dict)
+    # the names of everything perception can list in the scene (segmenters that can list it: the sim oracle), so
+    # a refusal can say what is there to name instead
+    inventory: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)

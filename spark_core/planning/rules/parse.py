@@ -117,7 +117,8 @@ def parse_instruction(instruction: str) -> list[Clause]:
         raise ParseError("the instruction is empty")
     clauses: list[Clause] = []
     previous: str | None = None
-    for part in (p for t in texts for p in split_clauses(t)):
+    parts = [p for t in texts for p in split_clauses(t)]
+    for i, part in enumerate(parts):
         part = re.sub(r"^use (.+?) to (\w+) (.+)$", r"\2 \3 with \1", part)  # "use the sponge to scrub the plate"
         part = re.sub(
             r"^slide (.+) (?:over(?! to\b)|onto|on to|on top of) ", r"put \1 on ", part
@@ -127,6 +128,10 @@ def parse_instruction(instruction: str) -> list[Clause]:
             goal = goal_to_action(part)
             verb = _match_verb(goal) if goal else None
         verbless_carry = re.match(r"(?:the|a|an) \w.* (?:into|onto|on top of|inside|in|on) (?:the|a|an) \w", part)
+        # without an article only with a preposition that can only say where it goes ("red block onto the plate")
+        verbless_carry = verbless_carry or re.match(r"[a-z][\w ]* (?:into|onto|on to) (?:the|a|an) \w", part)
+        if verb is None and previous in (None, "mention") and _topic(part, parts[i + 1 :]):
+            verb = ("mention", part)  # "the bowl on the stove, move it to the plate": named first, then acted on
         if verb is None and previous in (None, "mention") and verbless_carry:
             verb = ("put", part)  # "first the red block into the green tray", "I want the cup on the saucer"
         if verb is None:
@@ -145,9 +150,43 @@ def parse_instruction(instruction: str) -> list[Clause]:
             clauses[-1] = replace(clauses[-1], target=clause.target, relation=clause.relation)
         previous = clause.action
         clauses.append(clause)
+    clauses = [_remaining(c, clauses[:i]) for i, c in enumerate(clauses)]
     if all(c.action == "mention" for c in clauses):
         raise ParseError(f"{instruction.strip()!r} names {', '.join(c.obj or '?' for c in clauses)} but no action")
     return clauses
+
+
+def _remaining(c: Clause, before: list[Clause]) -> Clause:
+    """ "then the remaining block on top of the green one": the one of the kind not named yet, i.e. not any of the
+    kind's attributes said before ("block not green blue": perception keeps the blocks those words contradict)."""
+    updates = {}
+    for name in ("obj", "target"):
+        phrase = getattr(c, name)
+        m = re.fullmatch(r"(?:remaining|leftover|last remaining|spare) (\w+)", phrase or "")
+        if not m:
+            continue
+        noun = m.group(1)
+        said = [
+            w
+            for b in before
+            for p in (b.obj, b.target)
+            if p and p.split()[-1] == noun
+            for w in p.split()[:-1]
+            if w not in ("not",)
+        ]
+        if said:
+            updates[name] = f"{noun} not {' '.join(dict.fromkeys(said))}"
+    return replace(c, **updates) if updates else c
+
+
+def _topic(part: str, later: list[str]) -> bool:
+    """A noun phrase said on its own before a clause that refers back to it ("the black bowl on the stove, move
+    that one onto the plate", "the ketchup? put it in the basket"): it names the thing the pronoun stands for."""
+    if not re.match(r"(?:the|a|an|this|that|these|those) \w", part) or not later:
+        return False
+    if re.search(r"\b(?:onto|into|on to)\b", part):  # "the red block onto the plate, then ...": a carry
+        return False
+    return re.search(r"\b(?:it|them|that one|this one)\b", later[0]) is not None
 
 
 def _shares_destination(first: Clause, second: Clause) -> bool:
@@ -186,15 +225,50 @@ def _resolve(c: Clause, before: list[Clause]) -> Clause:
                 break
     if is_pronoun(c.tool):
         updates["tool"] = prev.obj
+    if is_pronoun(c.source):  # "pick up the mug and pour its beads into the bowl": poured from the mug
+        updates["source"] = prev.obj
     return replace(c, **updates) if updates else c
 
 
+# A preposition after one of these says where a thing is, not where it goes ("the plate that sits on the box").
+_LOCATIVE_BEFORE = re.compile(
+    r"\b(?:(?:that|which) (?:is|are)|(?:that|which) (?:sits?|rests?|stands?|lies|lie)|is|are|sitting|resting|"
+    r"standing|lying|located|placed|found|kept|stacked|perched|parked|waiting|positioned|stored|sat|left|already)"
+    r"(?: (?:up|down|over|back|right))?\s*$"
+)
+_PLACED = re.compile(
+    r"\b(?:(?:that|which) (?:is|are|sits?|rests?|stands?|lies|lie)|sitting|resting|standing|lying|located|perched|"
+    r"placed|kept|parked|positioned)(?: (?:up|down|over|back|right))? (?:on|in|inside|on top of|at|by|near|next to|"
+    r"beside|between|under)\b"
+)
+# Prepositions that only say where a thing goes; "on", "in", "inside", "on top of" may also say where it is.
+_STRONG = ("onto", "on to", "into")
+
+
+def _destination_first(rest: str) -> str:
+    """ "put on the plate the black bowl", "place into the basket whichever box is nearest": a destination said
+    before the object is the same carry ("the black bowl onto the plate")."""
+    m = re.fullmatch(
+        r"(onto|on to|into|on top of|inside|in|on) ((?:the|a|an) (?:(?!the |a |an |whichever |any )\S+ )*?\S+) "
+        r"((?:the|a|an|whichever|any|each|every) .+)",
+        rest,
+    )
+    if not m:
+        return rest
+    prep = {"in": "into", "inside": "into", "on": "onto"}.get(m.group(1), m.group(1))
+    return f"{m.group(3)} {prep} {m.group(2)}"
+
+
 def _destination(rest: str) -> tuple[str, str, str] | None:
-    """(object words, relation, destination words) at the last destination preposition, or None."""
+    """(object words, relation, destination words), or None. The destination starts at the last preposition that
+    can only say where a thing goes ("onto", "into"), else at the last destination preposition; one right after a
+    locating verb ("that sits on", "resting on") says where a thing is, not where it goes."""
     matches = list(_DEST.finditer(rest))
     if not matches:
         return None
-    m = matches[-1]
+    free = [m for m in matches if not _LOCATIVE_BEFORE.search(rest[: m.start()])] or matches
+    strong = [m for m in free if m.group(1) in _STRONG]
+    m = (strong or free)[-1]
     prep, obj, target = m.group(1), re.sub(r"\s+and$", "", rest[: m.start()].strip()), rest[m.end() :].strip()
     if not target:
         return obj, ("in" if prep in IN else "on"), ""
@@ -214,7 +288,8 @@ def _clause(action: str, rest: str, text: str) -> Clause:
     if action == "pick" and rest.startswith("up "):
         rest = rest[3:]
     rest = re.sub(r"\s+down(?=\s+(?:on|onto|in|into|from|with|to)\b|$)|^down\s+", " ", rest).strip()
-    rest = re.sub(r"\bover to\b", "to", rest)
+    # "over to", "across onto", "back into": the particle adds nothing to where it goes
+    rest = re.sub(r"\b(?:over|across|back|away|off) (?=(?:to|onto|into|on to|in|on|inside)\b)", "", rest)
     rest = re.sub(r"\s+in front of (?:it|them)$", "", rest)
     distance, rest = _distance(rest)
     direction = None
@@ -271,14 +346,16 @@ def _clause(action: str, rest: str, text: str) -> Clause:
                 text=text,
             )
         return Clause(action, obj=object_phrase(rest) or None, direction=direction, distance_m=distance, text=text)
-    dest = _destination(rest)
+    dest = _destination(_destination_first(rest))
     if dest:
         obj, relation, target = dest
         target = _elided_noun(target, object_phrase(obj) if obj else "")
+        # "the plate that sits on the cookie box": a destination located by what it rests on reads as an object does
+        located = _PLACED.search(target)
         return Clause(
             action,
             obj=object_phrase(obj) or None,
-            target=noun_phrase(target) or None,
+            target=(object_phrase(target) if located else noun_phrase(target)) or None,
             relation=relation,
             direction=direction,
             distance_m=distance,

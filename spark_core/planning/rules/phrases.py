@@ -7,7 +7,7 @@ from __future__ import annotations
 import re
 
 from ...perception.qualifiers import split_relation
-from .lexicon import CONTENTS, DETERMINERS, SELF_PARTS, TABLE
+from .lexicon import CONTENTS, DETERMINERS, PRONOUNS, SELF_PARTS, TABLE
 
 # "the closer of the two mugs" -> "closest mug"; "the bowl nearer to the robot" -> "nearest bowl"
 COMPARATIVES = {
@@ -62,7 +62,11 @@ def strip_determiners(words: str) -> str:
 
 
 def possessive(text: str) -> str:
-    """ "cabinet's top drawer" -> "cabinet top drawer"; "plate's centre" -> "plate"; "mug's beads" -> "mug"."""
+    """ "cabinet's top drawer" -> "cabinet top drawer"; "plate's centre" -> "plate"; "mug's beads" -> "mug"; "its
+    beads" -> "it" (the thing named before)."""
+    own = re.fullmatch(r"(?:its|their) (.+)", text)
+    if own and (own.group(1) in SELF_PARTS or own.group(1) in CONTENTS):
+        return "it"
     m = re.search(r"\b([\w ]+?)'s? (.+)$", text)
     if not m:
         return text
@@ -116,7 +120,10 @@ def _reorder_container(m: re.Match) -> str:
 
 
 def object_phrase(words: str) -> str:
-    """An object phrase for perception: determiners go; a relation to another object stays in place."""
+    """An object phrase for perception: determiners go; a relation to another object stays in place. A pronoun
+    ("that one", "this") stays one, for the clause before to resolve."""
+    if words.strip() in (*PRONOUNS, "that", "this"):
+        return "that one" if words.strip() in ("that", "this") else words.strip()
     text = locator(comparative(strip_determiners(words)))
     text = re.sub(r"'s\b", "", text)
     text = re.sub(r"^(?:other|one) |(?<=\w) ones?$", "", text).strip()

@@ -11,6 +11,7 @@ from ...grammar import PlanError, check_plan, to_yaml
 from ...perception.qualifiers import split_relation
 from ..protocol import PlanRequest, PlanResult
 from .lexicon import REGIONS
+from .mentions import clause_mentions, read_past
 from .parse import Clause, ParseError, is_pronoun, parse_instruction
 
 POUR_ANGLE_RAD = 2.2
@@ -75,7 +76,10 @@ class RulesPlanner:
     # -- composition -------------------------------------------------------------------------------------------
     def _compose(self, clauses: list[Clause], request: PlanRequest) -> list[dict]:
         scene = request.scene.keypoints
-        seen = ", ".join(scene) or "nothing"
+        # what was found for the instruction's phrases, and what else the scene holds (when perception can list it)
+        seen = (", ".join(scene) or "nothing") + (
+            f"; the scene holds: {', '.join(request.scene.inventory)}" if request.scene.inventory else ""
+        )
         understood = "; ".join(_describe(c) for c in clauses)
 
         def need(phrase: str | None, role: str, clause: Clause) -> str:
@@ -103,6 +107,15 @@ class RulesPlanner:
                 )
             return phrase
 
+        # safety: every thing the instruction names must be there, whatever its role: an object, a destination,
+        # what another is located by, or a noun the parser read past (rules/mentions.py); perception looked for
+        # each (observe) and found nothing
+        for phrase in [*clause_mentions(clauses), *read_past(request.instruction, clauses)]:
+            if phrase not in scene and request.scene.unresolved.get(phrase, "").startswith("none"):
+                raise CannotPlan(
+                    f"could not find {phrase!r} in the scene: perception found nothing that matches it "
+                    f"(understood: {understood}; found in the scene: {seen})"
+                )
         out: list[dict] = []
         last_object: str | None = None
         last_container: str | None = None
@@ -134,6 +147,11 @@ class RulesPlanner:
                 out.append(_prim("pick", keypoint_label=o, **({"lift_height": 0.2} if inside else {})))
             elif c.action in ("put", "sort", "stack"):
                 o, t = need(obj, "object", c), need(target, "destination", c)
+                if o == t or _same_detection(scene[o], scene[t]):
+                    raise CannotPlan(
+                        f"{c.text!r}: {o!r} and {t!r} are the same thing to perception: a thing cannot be put in or on "
+                        f"itself (understood: {understood}; found in the scene: {seen})"
+                    )
                 if c.relation == "near":
                     raise CannotPlan(f"{c.text!r}: I can put things on or in something, not next to it")
                 pick = [] if held == o else [_prim("pick", keypoint_label=o)]  # "pick X and place it": X is in hand
@@ -192,6 +210,8 @@ class RulesPlanner:
             elif c.action == "pour":
                 src = need(c.source or obj, "container to pour from", c)
                 dst = need(target, "container to pour into", c)
+                if held == src and out and out[-1]["primitive"] == "pick":
+                    out.pop()  # "pick up the mug and pour it": pouring grasps it from the side itself
                 out += [
                     _prim("grasp_se3", keypoint_label=src, strategy="side", force=40.0),
                     _prim("lift", height=0.12),

@@ -161,7 +161,8 @@ def _sides(text: str) -> str:
         text,
     )
     text = re.sub(rf"\b({DET}) ({NP}) (?:(?:that|which) (?:is|are) )?in front{_NP_END}", r"\1 nearest \2", text)
-    return re.sub(rf"\b({DET}) ({_EXTREME}) ", lambda m: f"{m.group(1)} {EXTREMES[m.group(2)]} ", text)
+    # after a determiner or a possessive ("the cabinet's lowest drawer")
+    return re.sub(rf"\b({DET}|\w+'s?) ({_EXTREME}) ", lambda m: f"{m.group(1)} {EXTREMES[m.group(2)]} ", text)
 
 
 def negations(text: str) -> str:
@@ -204,6 +205,7 @@ def negations(text: str) -> str:
     )
     # "the non-blue block", "the non red one"
     text = re.sub(r"\bthe non[- ]?(\w+) (\w+)\b", r"the \2 not \1", text)
+    text = _trailing_not(text)
     # a side or an extreme after "not" is the qualifier that would pick the one ruled out
     return re.sub(
         rf"\b(?:(?:that|which) )?(?:(?:is|are) )?not (?:the )?((?:up |down |over )?(?:on|at|in) the (?:far )?{_SIDE}"
@@ -212,6 +214,31 @@ def negations(text: str) -> str:
         lambda m: f"not {_ruled_out(m.group(1))}",
         text,
     )
+
+
+def _trailing_not(text: str) -> str:
+    """ "put the black bowl on the plate, not the one on the cabinet" / "..., not the bowl on the stove": a
+    correction after the clause rules out one of the kind of the clause's object ("the black bowl not on the
+    cabinet"). (A correction of the place, "..., not on the stove", is dropped as a trailing clause.)"""
+    m = re.fullmatch(
+        rf"(.+?),? (?:and |but )?not (?:the|a|an|that|this) (?:({_WORD}) ones?|ones?|({NP}))(?: ([^,;:]+))?", text
+    )
+    if not m:
+        return text
+    main, named, rest = m.group(1), m.group(3), (m.group(4) or m.group(2) or "").strip()
+    obj = re.search(rf"\b(the|a|an) ({NP})(?=\s|$)", main)
+    if obj is None:
+        return text
+    head = _singular_phrase(obj.group(2)).split()[-1]
+    if named is not None:
+        said = _singular_phrase(named).split()
+        if said[-1] != head:
+            return text
+        if not rest and len(said) > 1:  # "..., not the blue block": its words rule it out
+            rest = " ".join(said[:-1])
+    if not rest:
+        return text
+    return f"{main[: obj.end()]} not {_ruled_out(rest)}{main[obj.end() :]}"
 
 
 def _ruled_out(what: str) -> str:

@@ -24,6 +24,25 @@ CONTRACTIONS = {
     "isn't": "is not",
     "aren't": "are not",
     "wasn't": "was not",
+    "you're": "you are",
+    "we're": "we are",
+    "they're": "they are",
+    "i've": "i have",
+    "you've": "you have",
+    "we've": "we have",
+    "i'll": "i will",
+    "we'll": "we will",
+    "it'll": "it will",
+    "that'll": "that will",
+    "won't": "will not",
+    "can't": "cannot",
+    "shouldn't": "should not",
+    "mustn't": "must not",
+    "needn't": "need not",
+    "what's": "what is",
+    "where's": "where is",
+    "he's": "he is",
+    "she's": "she is",
 }
 ACTION_WORDS = {
     "pick": "pick up",
@@ -44,7 +63,16 @@ _TRAILING = re.compile(
     r"let go|release|stop|ensure|check|wait|let (?:it|them)\b|"
     # how to hold it, said after the action ("..., holding it by its two handles")
     r"(?:while )?(?:holding|gripping|grasping|grabbing) (?:it|them)\b|"
-    r"(?:put|set|place) (?:it|them) back|leave (?:it|them)\b(?!.*\b(?:on|in|into|onto|inside) (?:the|a|an)\b))\b.*$"
+    r"(?:put|set|place) (?:it|them) back|leave (?:it|them)\b(?!.*\b(?:on|in|into|onto|inside) (?:the|a|an)\b)|"
+    # how to do it or a check on the result, said after the action ("..., making sure it ends up inside",
+    # "..., taking care not to tip it", "... without knocking anything over", "... rather than on the rim")
+    r"(?:while |by )?(?:making sure|ensuring|checking|being careful|taking care|careful|trying|without|rather than|"
+    r"instead of|as (?:gently|carefully|slowly) as)|"
+    # a remark to the listener, not a step ("..., then you are done", "..., that is all", "that is the goal")
+    r"(?:you|we|i) (?:are|am|will be|should be) (?:done|finished|all set|good)|"
+    # which way up it stands: no object, no place ("..., right side up", "... upside down")
+    r"(?:(?:the )?(?:right|correct) (?:side|way) up|upside down|upright)(?=\s*$)|that (?:is|will be|should be) "
+    r"(?:all|it|everything|the (?:goal|plan|idea|task|job|aim))|that is all|thanks?(?: you)?)\b.*$"
 )
 # "lift the pot with both arms, holding it by its two handles": one handle to each arm, lifted together.
 _TWO_HANDED = re.compile(
@@ -59,6 +87,10 @@ _HANDOFF = re.compile(
 )
 # Where to grip it is no object and no place: "pick up the mug by its handle" picks up the mug.
 _GRIP = re.compile(r"\s+by (?:its|the|their) (?:two |both )?(?:handles?|grips?|rims?|edges?)\b")
+# a place ruled out after the one given ("put the bowl on the plate, not on the stove"): the place said stands
+_NOT_THERE = re.compile(
+    r",\s*(?:and |but )?not (?:on|in|into|onto|inside|on top of|next to|beside|near) (?:the|a|an) .*$"
+)
 _PURPOSE = re.compile(r"(?:\s*,\s*|\s+)(?:so(?: that)?|in order that|until)\s+(.*)$")
 _PURPOSE_PLACE = re.compile(
     r"\b(?:sits?|is|are|ends? up|rests?|lands?|stays?|goes|fall|falls|drops?)\s+"
@@ -78,6 +110,11 @@ def sentences(instruction: str) -> list[str]:
     for short, long in CONTRACTIONS.items():
         text = re.sub(rf"\b{re.escape(short)}", long, text)
     text = re.sub(r"\bi would (like|love)\b(?! you to)", r"i want", text)
+    # "what i want is the cup on the saucer" (a cleft), "i want to see the cup on the saucer": the wish itself
+    text = re.sub(r"\bwhat (?:i|we) (?:want|need|would like|am after|are after) (?:is|are)\b", "i want", text)
+    text = re.sub(
+        r"\b(i|we) (want|need|like|love) to (?:see|have|find|get)\b(?= (?:the|a|an|both|all) )", r"\1 \2", text
+    )
     # "give the plate a scrub": the action is the noun after the object
     text = re.sub(r"\bgive ((?:the|this|that|my) [\w ]+?) an? (\w+)\b", _give_a, text)
     # which one of several: "the second bowl from the left", "the farther of the two", "not the blue one" (before
@@ -161,7 +198,8 @@ def _holds(text: str) -> str | None:
     holds = "|".join(re.escape(h) for h in HOLDS)
     m = re.fullmatch(
         rf"((?:the|a|an|this|that|my|your) [\w' ]+?)\s+(?:(?:{modals})\s+)?(?:{holds})\s+"
-        r"((?:the|a|an|both|all|some) [\w' ]+?)(?:\s+(in|on|inside|on top of|into|onto) (?:it|them))?",
+        r"((?:the|a|an|both|all|some) [\w' ]+?)(?:\s+(?:sitting|resting|standing|lying|placed|stacked|set|put))?"
+        r"(?:\s+(in|on|inside|on top of|into|onto) (?:it|them))?",
         text,
     )
     if not m:
@@ -233,6 +271,13 @@ def imperatives(instruction: str) -> list[str]:
     out: list[str] = []
     for sentence in sentences(instruction):
         s = _gerund(re.sub(r"^(?:make sure|ensure|see to it|check) (?:that )?(?=the |a |an )", "", sentence))
+        # "see the red block? put it on the plate": pointing a thing out names it for what follows
+        s = re.sub(
+            r"^(?:do you |can you )?(?:see|notice|spot|you see|you can see|you will see|you will find) "
+            r"(?=(?:the|a|an|that|this) )",
+            "there is ",
+            s,
+        )
         first = re.fullmatch(
             r"(.+?),? (?:which|so|and|then) (?:you (?:will |would )?(?:need to|have to|must|should) )?open"
             r"(?: it| that)?(?: first| beforehand| before that)?",
@@ -254,7 +299,7 @@ def imperatives(instruction: str) -> list[str]:
             continue
         s = re.sub(r"^the other (.+?),? not the one (.+?),\s*", r"the \1 not \2 ", s)
         s = re.sub(r",?\s*the one (?:on|sitting on|lying on|that is on) the table,?", " ", s).strip()
-        s = _TRAILING.sub("", _GRIP.sub("", s))
+        s = _TRAILING.sub("", _GRIP.sub("", _NOT_THERE.sub("", s)))
         s = _purpose(s)
         if ":" in s:
             left, right = (x.strip() for x in s.split(":", 1))

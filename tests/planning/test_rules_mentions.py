@@ -1,0 +1,118 @@
+"""Safety: every thing an instruction names must be in the scene, in whatever role (object, destination, the
+anchor another is located by, a noun the parser read past), or the whole instruction is refused; and a thing
+cannot be put in or on itself.
+
+(Examples are written for these tests; none comes from data/wording/.)"""
+
+import numpy as np
+import pytest
+
+from spark_core.perception import Keypoint
+from spark_core.planning import PlanRequest, SceneView
+from spark_core.planning.observe import phrases_for
+from spark_core.planning.rules import RulesPlanner, parse_instruction
+from spark_core.planning.rules.mentions import anchors, clause_mentions, read_past
+
+
+def kp(label, xyz, size=(0.05, 0.05, 0.05)):
+    return Keypoint(label, np.array(xyz, float), np.array(size, float))
+
+
+@pytest.mark.parametrize(
+    "phrase,expected",
+    [
+        ("black bowl next to toaster", ["toaster"]),
+        ("mug between kettle and lamp", ["kettle", "lamp"]),
+        ("bowl not on stove", ["stove"]),
+        ("cup", []),
+        ("bowl not in middle of table", []),  # a place on the table is no object
+    ],
+)
+def test_the_things_a_phrase_is_located_by(phrase, expected):
+    assert anchors(phrase) == expected
+
+
+@pytest.mark.parametrize(
+    "text,dropped",
+    [
+        ("place the mug on the tray without bumping the kettle", ["kettle"]),
+        ("put the mug on the tray, rather than on the old stool", ["old stool"]),
+        ("put the mug on the tray, then you are done", []),
+        ("put the cup on the left side of the table into the bin", []),
+    ],
+)
+def test_nouns_the_parser_read_past_are_listed(text, dropped):
+    assert read_past(text, parse_instruction(text)) == dropped
+
+
+def test_observe_looks_for_anchors_and_nouns_read_past():
+    phrases = phrases_for("put the mug next to the kettle on the tray without knocking over the lamp")
+    assert {"kettle", "lamp"} <= set(phrases)
+    assert "kettle" in clause_mentions(parse_instruction("put the mug next to the kettle on the tray"))
+
+
+def _plan(text, keypoints, unresolved):
+    view = SceneView({k: kp(k, xyz) for k, xyz in keypoints.items()}, unresolved=unresolved)
+    return RulesPlanner().plan(PlanRequest(text, view))
+
+
+def test_an_absent_anchor_refuses_even_when_the_object_itself_was_found():
+    # one mug in view: perception resolves "mug next to kettle" to it whatever the kettle; the kettle is absent
+    res = _plan(
+        "put the mug next to the kettle on the tray",
+        {"mug next to kettle": (0.4, 0, 0.02), "tray": (0.6, 0, 0.01)},
+        {"kettle": "none found"},
+    )
+    assert not res.ok and "could not find 'kettle'" in res.error and "found in the scene" in res.error
+
+
+def test_an_absent_noun_the_parser_read_past_refuses():
+    res = _plan(
+        "place the mug on the tray without bumping the kettle",
+        {"mug": (0.4, 0, 0.02), "tray": (0.6, 0, 0.01)},
+        {"kettle": "none found"},
+    )
+    assert not res.ok and "could not find 'kettle'" in res.error
+
+
+def test_an_absent_object_in_a_later_step_refuses_the_whole_instruction():
+    res = _plan(
+        "put the mug on the tray, then put the kettle on the tray",
+        {"mug": (0.4, 0, 0.02), "tray": (0.6, 0, 0.01)},
+        {"kettle": "none found"},
+    )
+    assert not res.ok and "could not find 'kettle'" in res.error
+
+
+def test_anchors_that_are_there_still_plan():
+    res = _plan(
+        "put the mug next to the kettle on the tray",
+        {"mug next to kettle": (0.4, 0, 0.02), "kettle": (0.4, 0.1, 0.05), "tray": (0.6, 0, 0.01)},
+        {},
+    )
+    assert res.ok, res.error
+
+
+def test_a_thing_cannot_be_its_own_destination():
+    # "dish" and "cheese" resolved to one and the same detection
+    view = SceneView({"cheese": kp("cheese", (0.4, 0, 0.02)), "dish": kp("dish", (0.4, 0, 0.02))})
+    res = RulesPlanner().plan(PlanRequest("put the cheese in the dish", view))
+    assert not res.ok and "cannot be put in or on itself" in res.error
+
+
+def test_a_refusal_says_what_the_scene_holds():
+    view = SceneView(
+        {"tray": kp("tray", (0.6, 0, 0.01))}, unresolved={"kettle": "none found"}, inventory=("mug", "tray")
+    )
+    res = RulesPlanner().plan(PlanRequest("put the kettle on the tray", view))
+    assert not res.ok and "could not find 'kettle'" in res.error and "the scene holds: mug, tray" in res.error
+
+
+def test_the_sim_segmenter_lists_the_things_a_frame_shows():
+    from spark_core.perception.sim_segmenter import SimSegmenter
+
+    from .test_rules_grounding import frame
+
+    f = frame({"black bowl 1": (0.45, 0.15, 0.03, 0.0, 0.07), "plate": (0.5, -0.1, 0.05, 0.0, 0.01)})
+    seg = SimSegmenter({"black bowl 1": "a black bowl", "plate": "a plate", "mug": "a mug (out of view)"})
+    assert seg.names_in(f) == ["black bowl 1", "plate"]
