@@ -75,13 +75,18 @@ class PerceptionResolver:
             self._capture()
 
     def inventory(self) -> list[str]:
-        """Names of the things in the current frames, for segmenters that can list them (`names_in`: the sim
-        oracle, from its privileged object ids); empty for the others."""
+        """Names of the things in the current frames ("black bowl (2)" for two), for segmenters that can list them
+        (`names_in`: the sim oracle, from its privileged object ids); empty for the others."""
         names_in = getattr(self.segmenter, "names_in", None)
         if names_in is None:
             return []
         self._ensure_fresh()
-        return sorted({n for frame in self.frames.values() for n in names_in(frame)})
+        count: dict[str, int] = {}
+        for frame in self.frames.values():
+            names = names_in(frame)
+            for n in set(names):
+                count[n] = max(count.get(n, 0), names.count(n))
+        return [n if k == 1 else f"{n} ({k})" for n, k in sorted(count.items())]
 
     def resolve(self, label: str) -> Keypoint:
         self._ensure_fresh()

@@ -108,11 +108,12 @@ class SimSegmenter:
         return out
 
     def names_in(self, frame: CameraFrame) -> list[str]:
-        """The names of the catalogued objects this frame shows (privileged: from the renderer's object ids)."""
+        """The names of the catalogued objects this frame shows, once per instance (two black bowls: the name twice;
+        privileged: from the renderer's object ids)."""
         if frame.object_ids is None:
             return []
         shown = (frame.labels.get(int(i)) for i in np.unique(frame.object_ids) if i)
-        return sorted({self._names[label] for label in shown if label in self._names})
+        return sorted(self._names[label] for label in shown if label in self._names)
 
     def segment(self, frame: CameraFrame, prompts: Sequence[str]) -> list[Detection]:
         if frame.object_ids is None:

@@ -129,3 +129,28 @@ def test_a_correction_after_the_clause_rules_one_out(text, expected):
 )
 def test_wishes_verbless_carries_and_the_remaining_one(text, expected):
     assert clauses(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text,expected",
+    [
+        # the table is the lowest place: not on it is any but the lowest, on it (when said) the lowest
+        ("move whichever mug isn't on the table onto the tray", [("put", "mug not bottom", "on", "tray")]),
+        ("put the mug on the table into the box", [("put", "bottom mug", "in", "box")]),
+        ("lift the mug off the table", [("pick", "mug", None, None)]),
+        # a dash between two parts, a relative pronoun before a participle
+        (
+            "the mug which is standing on the shelf - put it on the tray",
+            [("mention", "mug on shelf", None, None), ("put", "mug on shelf", "on", "tray")],
+        ),
+        # a manner clause with "leaving"
+        ("put the mug on the tray, leaving the cup where it is", [("put", "mug", "on", "tray")]),
+        # the kind said first stands for "the one"
+        (
+            "of the two mugs, take the one on the shelf and set it on the tray",
+            [("pick", "mug on shelf", None, None), ("put", "mug on shelf", "on", "tray")],
+        ),
+    ],
+)
+def test_the_table_dashes_leaving_and_partitives(text, expected):
+    assert clauses(text) == expected

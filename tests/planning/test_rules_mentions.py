@@ -113,6 +113,14 @@ def test_the_sim_segmenter_lists_the_things_a_frame_shows():
 
     from .test_rules_grounding import frame
 
-    f = frame({"black bowl 1": (0.45, 0.15, 0.03, 0.0, 0.07), "plate": (0.5, -0.1, 0.05, 0.0, 0.01)})
-    seg = SimSegmenter({"black bowl 1": "a black bowl", "plate": "a plate", "mug": "a mug (out of view)"})
-    assert seg.names_in(f) == ["black bowl 1", "plate"]
+    f = frame(
+        {
+            "black bowl 1": (0.45, 0.15, 0.03, 0.0, 0.07),
+            "black bowl 2": (0.45, -0.15, 0.03, 0.0, 0.07),
+            "plate": (0.6, 0.0, 0.05, 0.0, 0.01),
+        }
+    )
+    seg = SimSegmenter(
+        {"black bowl 1": "a black bowl", "black bowl 2": "a black bowl", "plate": "a plate", "mug": "a mug"}
+    )
+    assert seg.names_in(f) == ["black bowl", "black bowl", "plate"]  # the mug is out of view

@@ -103,8 +103,15 @@ def locator(text: str) -> str:
     """Where an object is, as a relation perception can use: "bowl sitting on the stove" -> "bowl on stove";
     "bowl from the stove" -> "bowl on stove"; "bowl out of the top drawer" -> "bowl in top drawer"; the table
     itself says nothing ("block off the table" -> "block")."""
+    # "which is standing on", "that are kept in": the relative pronoun and its verb go with the participle
+    text = re.sub(r"\b(?:that|which|who) (?:is|are) (?=\w+(?:ing|ed)\b)", "", text)
     text = _BESIDE.sub("near", _PARTICLE.sub("", _NOT_PARTICIPLE.sub("not ", text)))
     text = _PARTICIPLE.sub("", text)
+    # on the table is the lowest place a thing can be: "the bowl not on the table" is any bowl but the lowest, "the
+    # bowl on the table" (another is up on something) the lowest; "off"/"from" the table only says where it is
+    table = r"(?:the )?(?:table|tabletop|table top|counter)\b(?!\s+(?:center|centre|middle))"
+    text = re.sub(rf"\bnot (?:on|at) {table}", "not bottom", text)
+    text = re.sub(rf"^(.+?) (?:on|at) {table}$", r"bottom \1", text)
     text = _TABLE_TAIL.sub("", text)
     # "from" before a place preposition only marks the source: the preposition says where it is
     text = re.sub(r"\bfrom (?=(?:between|inside|in|under|beside|next to|on top of)\b)", "", text)

@@ -274,8 +274,19 @@ def _singular_phrase(phrase: str) -> str:
     return " ".join(singular(w) for w in phrase.split())
 
 
+def partitive(text: str) -> str:
+    """ "of the two black bowls, take the one on the cabinet ..." -> "take the black bowl on the cabinet ...": the
+    kind said first stands for "the one" after it."""
+    m = re.match(rf"(?:out )?of (?:the|these|those|all the) (?:(?:two|three|four|both|several) )?({NP}),\s*(.+)$", text)
+    if not m:
+        return text
+    kind = _singular_phrase(m.group(1))
+    return re.sub(r"\b(the|which|whichever) ones?\b", rf"\1 {kind}", m.group(2), count=1)
+
+
 def qualify(text: str) -> str:
     """A sentence with its ordinals, extremes, sides and negations in perception's forms. A push keeps its words:
     there "further", "closer" and "to the left" say which way to move, not which object."""
+    text = partitive(text)
     push = re.match(r"(?:push|shove|nudge|slide)\b", text) is not None
     return extremes(ordinals(negations(text)), push)

@@ -63,7 +63,8 @@ _TRAILING = re.compile(
     r"let go|release|stop|ensure|check|wait|let (?:it|them)\b|"
     # how to hold it, said after the action ("..., holding it by its two handles")
     r"(?:while )?(?:holding|gripping|grasping|grabbing) (?:it|them)\b|"
-    r"(?:put|set|place) (?:it|them) back|leave (?:it|them)\b(?!.*\b(?:on|in|into|onto|inside) (?:the|a|an)\b)|"
+    r"(?:put|set|place) (?:it|them) back|leaving\b|"
+    r"leave (?:it|them)\b(?!.*\b(?:on|in|into|onto|inside) (?:the|a|an)\b)|"
     # how to do it or a check on the result, said after the action ("..., making sure it ends up inside",
     # "..., taking care not to tip it", "... without knocking anything over", "... rather than on the rim")
     r"(?:while |by )?(?:making sure|ensuring|checking|being careful|taking care|careful|trying|without|rather than|"
@@ -120,6 +121,7 @@ def sentences(instruction: str) -> list[str]:
     # which one of several: "the second bowl from the left", "the farther of the two", "not the blue one" (before
     # the fillers: "first" is otherwise one)
     text = qualify(text)
+    text = re.sub(r"\s+[-\u2013\u2014]+\s+", ", ", text)  # a dash between two parts is a comma
     text = re.sub(r"[!?;]+|\.(?=\s|$)", " . ", text)
     text = text.replace("next to", "next_to")  # a relation, not the filler "next"
     for f in sorted(FILLERS, key=len, reverse=True):
@@ -242,8 +244,8 @@ def _predicate(subject: str, predicate: str) -> str | None:
     noun_phrase = r"(?:the|a|an|this|that|these|those|both|my|your|some) [\w' ]+"
     if not re.fullmatch(rf"{noun_phrase}|it|they|that one|this one", subject):
         return None  # a goal is said of a noun phrase ("the apple belongs ..."), not of a word salad
-    if re.search(r"\b(?:in|on|into|onto|of|to|the|a|an)$", subject):
-        return None
+    if re.search(r"\b(?:in|on|into|onto|of|to|the|a|an|(?:which|that|who)(?: is| are)?)$", subject):
+        return None  # "the bowl which is on the stove" names a bowl: it states no goal
     state = dict(STATE_ACTIONS).get(predicate)
     if state:
         return f"{ACTION_WORDS[state]} {subject}"
