@@ -61,6 +61,11 @@ def test_remarks_and_manner_after_the_action_are_no_steps(text, expected):
             "see the spoon? drop it in the cup",
             [("mention", "spoon", None, None), ("put", "spoon", "in", "cup")],
         ),
+        # a short bare noun phrase, then a verbless carry onto it
+        (
+            "green mug, then blue mug on it",
+            [("mention", "green mug", None, None), ("put", "blue mug", "on", "green mug")],
+        ),
     ],
 )
 def test_a_thing_named_first_and_acted_on_through_a_pronoun(text, expected):

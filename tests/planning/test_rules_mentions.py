@@ -124,3 +124,12 @@ def test_the_sim_segmenter_lists_the_things_a_frame_shows():
         {"black bowl 1": "a black bowl", "black bowl 2": "a black bowl", "plate": "a plate", "mug": "a mug"}
     )
     assert seg.names_in(f) == ["black bowl", "black bowl", "plate"]  # the mug is out of view
+
+
+def test_what_is_poured_from_a_named_source_need_not_be_seen_itself():
+    res = _plan(
+        "pour the beads from the mug into the bowl",
+        {"mug": (0.4, 0, 0.05), "bowl": (0.6, 0, 0.03)},
+        {"beads": "none found"},
+    )
+    assert res.ok, res.error

@@ -12,7 +12,7 @@ from ...perception.colors import BASE_COLOURS
 from ...perception.colors import SYNONYMS as COLOUR_SYNONYMS
 from ...perception.qualifiers import QUALIFIERS, split_relation
 from ...perception.variants import MATERIALS, SHAPES, SIZES
-from .lexicon import DETERMINERS, PRONOUNS, REGIONS, TABLE
+from .lexicon import CONTENTS, DETERMINERS, PRONOUNS, REGIONS, TABLE
 from .parse import Clause, is_pronoun
 from .phrases import singular
 from .rewrite import sentences
@@ -59,6 +59,8 @@ def clause_mentions(clauses: list[Clause]) -> list[str]:
         for p in (c.obj, c.target, c.tool, c.source):
             if not p or is_pronoun(p):
                 continue
+            if p == c.obj and c.action == "pour" and c.source and c.source != c.obj:
+                continue  # what is poured out of the source (its beads, its water) is the source's to hold
             out.setdefault(p, None)
             for a in anchors(p):
                 out.setdefault(a, None)
@@ -73,7 +75,7 @@ def read_past(instruction: str, clauses: list[Clause]) -> list[str]:
     """Noun phrases of the instruction that share no word but attributes with any clause's phrase, and whose last
     word is no place word: what the parser dropped, which must still be in the scene. (A phrase that shares a noun,
     "red block held" for "red block", is the clause's own thing with a verb after it.)"""
-    said = _words(clause_mentions(clauses))
+    said = _words([*clause_mentions(clauses), *(c.obj for c in clauses if c.obj)])
     out: dict[str, None] = {}
     for sentence in sentences(instruction):
         for m in _DET.finditer(sentence):
@@ -86,8 +88,8 @@ def read_past(instruction: str, clauses: list[Clause]) -> list[str]:
             if not words:
                 continue
             head = words[-1]
-            if {head, singular(head)} & PLACE_WORDS or head in REGIONS:
-                continue
+            if {head, singular(head)} & PLACE_WORDS or head in REGIONS or set(words) & set(CONTENTS):
+                continue  # a place, or what a container holds ("so the beads fall in")
             if any({w, singular(w)} & said for w in words if w not in ATTRIBUTES):
                 continue
             out.setdefault(" ".join(words), None)

@@ -127,9 +127,14 @@ def parse_instruction(instruction: str) -> list[Clause]:
         if verb is None:
             goal = goal_to_action(part)
             verb = _match_verb(goal) if goal else None
-        verbless_carry = re.match(r"(?:the|a|an) \w.* (?:into|onto|on top of|inside|in|on) (?:the|a|an) \w", part)
-        # without an article only with a preposition that can only say where it goes ("red block onto the plate")
-        verbless_carry = verbless_carry or re.match(r"[a-z][\w ]* (?:into|onto|on to) (?:the|a|an) \w", part)
+        verbless_carry = bool(
+            re.match(r"(?:the|a|an) \w.* (?:into|onto|on top of|inside|in|on) (?:the|a|an) \w", part)
+            # without an article only with a preposition that can only say where it goes ("red block onto the plate")
+            or re.match(r"[a-z][\w ]* (?:into|onto|on to) (?:the|a|an) \w", part)
+            # after a thing named on its own: "blue block, then red block on it"
+            or previous == "mention"
+            and re.fullmatch(r"[a-z][\w ]* (?:on top of|onto|into|on|in|inside) (?:it|them)", part)
+        )
         if verb is None and previous in (None, "mention") and _topic(part, parts[i + 1 :]):
             verb = ("mention", part)  # "the bowl on the stove, move it to the plate": named first, then acted on
         if verb is None and previous in (None, "mention") and verbless_carry:
@@ -182,7 +187,10 @@ def _remaining(c: Clause, before: list[Clause]) -> Clause:
 def _topic(part: str, later: list[str]) -> bool:
     """A noun phrase said on its own before a clause that refers back to it ("the black bowl on the stove, move
     that one onto the plate", "the ketchup? put it in the basket"): it names the thing the pronoun stands for."""
-    if not re.match(r"(?:the|a|an|this|that|these|those) \w", part) or not later:
+    if not later:
+        return False
+    bare = re.fullmatch(r"[a-z]+(?: [a-z]+){0,2}", part)  # without an article: a short bare noun phrase only
+    if not re.match(r"(?:the|a|an|this|that|these|those) \w", part) and not bare:
         return False
     if re.search(r"\b(?:onto|into|on to)\b", part):  # "the red block onto the plate, then ...": a carry
         return False
