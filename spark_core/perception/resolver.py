@@ -76,7 +76,8 @@ class PerceptionResolver:
 
     def inventory(self) -> list[str]:
         """Names of the things in the current frames ("black bowl (2)" for two), for segmenters that can list them
-        (`names_in`: the sim oracle, from its privileged object ids); empty for the others."""
+        (`names_in`: the sim oracle from its privileged object ids, the learned segmenter from its own instances);
+        empty for the others."""
         names_in = getattr(self.segmenter, "names_in", None)
         if names_in is None:
             return []

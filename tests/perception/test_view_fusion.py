@@ -193,3 +193,18 @@ def test_a_prompt_that_grounds_to_a_part_and_its_parent_marks_the_parent_where_t
     seg.instances = lambda f: [seg_mod.Instance(CATEGORY_INDEX["drawer"], mask, 0.95, "none")]  # type: ignore[method-assign]
     (det,) = seg._matches(_frame(), "cabinet drawer grip", "cabinet drawer grip")
     assert det.detail["category"] == "drawer" and det.detail["stand_in_for_part"]
+
+
+def test_the_learned_segmenter_lists_what_it_sees_by_its_own_names():
+    """For a refusal that says what the scene holds: one name per instance it found, parts left out; nothing from
+    the simulator (the frame has no ids)."""
+    from spark_core.perception.learned import segmenter as seg_mod
+    from spark_core.perception.learned.categories import CATEGORY_INDEX
+
+    seg = seg_mod.LearnedSegmenter()
+    mask = np.ones((48, 64), bool)
+    found = [seg_mod.Instance(CATEGORY_INDEX[n], mask, 0.9, "red") for n in ("bowl", "plate", "bowl", "drawer handle")]
+    seg.instances = lambda f: found  # type: ignore[method-assign]
+    frame = _frame()
+    assert frame.object_ids is None
+    assert seg.names_in(frame) == ["bowl", "bowl", "plate"]

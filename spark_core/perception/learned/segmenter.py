@@ -305,6 +305,13 @@ class LearnedSegmenter:
         return _join_renamed(out, renamed, frame)
 
     # -- the Segmenter protocol --------------------------------------------------------------------------------
+    def names_in(self, frame: CameraFrame) -> list[str]:
+        """What this frame shows, once per instance, by the network's own category names (no colours: they are
+        supervised only for some objects); parts are left out (a refusal lists things). Camera-only, like
+        everything here: for a planner that says what the scene holds."""
+        shown = (CATEGORIES[i.category] for i in self.instances(frame))
+        return sorted(c.name for c in shown if not c.part_of)
+
     def segment(self, frame: CameraFrame, prompts: Sequence[str]) -> list[Detection]:
         out: list[Detection] = []
         for prompt in prompts:
