@@ -159,3 +159,18 @@ def test_wishes_verbless_carries_and_the_remaining_one(text, expected):
 )
 def test_the_table_dashes_leaving_and_partitives(text, expected):
     assert clauses(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text,expected",
+    [
+        # "is" before a participle goes with it, with or without the relative pronoun
+        ("grab the mug that is sitting on the shelf", [("pick", "mug on shelf", None, None)]),
+        ("lift the mug, which is resting on the shelf", [("pick", "mug on shelf", None, None)]),
+        # a possessive of a thing that is no part or package of it says where it is
+        ("pick up the shelf's mug", [("pick", "mug on shelf", None, None)]),
+        ("open the dresser's top drawer", [("open", "dresser top drawer", None, None)]),
+    ],
+)
+def test_participles_and_possessives_that_locate(text, expected):
+    assert clauses(text) == expected

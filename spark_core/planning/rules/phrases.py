@@ -7,6 +7,7 @@ from __future__ import annotations
 import re
 
 from ...perception.qualifiers import split_relation
+from ...perception.variants import PACKAGING, PARTS
 from .lexicon import CONTENTS, DETERMINERS, PRONOUNS, SELF_PARTS, TABLE
 
 # "the closer of the two mugs" -> "closest mug"; "the bowl nearer to the robot" -> "nearest bowl"
@@ -73,6 +74,8 @@ def possessive(text: str) -> str:
     owner, part = m.group(1), m.group(2)
     if part in SELF_PARTS or part in CONTENTS:
         return owner
+    if part.split()[-1] not in PARTS | PACKAGING and owner.split()[-1] not in DETERMINERS:
+        return f"{part} on {owner}"  # "the stove's bowl": not a part of the stove, the bowl on it
     return f"{owner} {part}"
 
 
@@ -104,7 +107,7 @@ def locator(text: str) -> str:
     "bowl from the stove" -> "bowl on stove"; "bowl out of the top drawer" -> "bowl in top drawer"; the table
     itself says nothing ("block off the table" -> "block")."""
     # "which is standing on", "that are kept in": the relative pronoun and its verb go with the participle
-    text = re.sub(r"\b(?:that|which|who) (?:is|are) (?=\w+(?:ing|ed)\b)", "", text)
+    text = re.sub(r"\b(?:(?:that|which|who) )?(?:is|are) (?=\w+(?:ing|ed)\b)", "", text)
     text = _BESIDE.sub("near", _PARTICLE.sub("", _NOT_PARTICIPLE.sub("not ", text)))
     text = _PARTICIPLE.sub("", text)
     # on the table is the lowest place a thing can be: "the bowl not on the table" is any bowl but the lowest, "the
@@ -132,7 +135,7 @@ def object_phrase(words: str) -> str:
     if words.strip() in (*PRONOUNS, "that", "this"):
         return "that one" if words.strip() in ("that", "this") else words.strip()
     text = locator(comparative(strip_determiners(words)))
-    text = re.sub(r"'s\b", "", text)
+    text = re.sub(r"'s\b", "", possessive(text) if re.search(r"\w's \w+$", text) else text)
     text = re.sub(r"^(?:other|one) |(?<=\w) ones?$", "", text).strip()
     text = _predicative(text)
     # "block (that) is not blue", "block other than the blue one": perception keeps the blocks not blue

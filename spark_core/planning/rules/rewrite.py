@@ -122,6 +122,7 @@ def sentences(instruction: str) -> list[str]:
     # the fillers: "first" is otherwise one)
     text = qualify(text)
     text = re.sub(r"\s+[-\u2013\u2014]+\s+", ", ", text)  # a dash between two parts is a comma
+    text = re.sub(r",\s*(?=(?:which|who) (?:is|are)\b)", " ", text)  # "the block, which is on the plate," locates it
     text = re.sub(r"[!?;]+|\.(?=\s|$)", " . ", text)
     text = text.replace("next to", "next_to")  # a relation, not the filler "next"
     for f in sorted(FILLERS, key=len, reverse=True):
