@@ -164,7 +164,7 @@ def parse_instruction(instruction: str) -> list[Clause]:
 def _remaining(c: Clause, before: list[Clause]) -> Clause:
     """ "then the remaining block on top of the green one": the one of the kind not named yet, i.e. not any of the
     kind's attributes said before ("block not green blue": perception keeps the blocks those words contradict)."""
-    updates = {}
+    updates: dict = {}
     for name in ("obj", "target"):
         phrase = getattr(c, name)
         m = re.fullmatch(r"(?:remaining|leftover|last remaining|spare) (\w+)", phrase or "")
