@@ -61,28 +61,38 @@ def task_of(alias: str) -> tuple[str, str]:
     return "liberopro", PREFIX[kind] + GOAL[key]
 
 
-def main() -> None:
-    halves: dict[str, list[dict]] = {"dev": [], "test": []}
+def entries(source: Path, id_mark: str = "") -> list[dict]:
+    """Corpus entries from a hand-written list (`alias | style | instruction` lines); ids are
+    `<alias>.<style>.<id_mark>N`, numbered per alias and style."""
+    out: list[dict] = []
     counts: dict[str, int] = {}
-    for line in (HERE / "source.txt").read_text().splitlines():
+    for line in source.read_text().splitlines():
         if not line.strip() or line.startswith("#"):
             continue
         alias, style, instruction = (p.strip() for p in line.split("|", 2))
         suite, task = task_of(alias)
         n = counts[f"{alias}.{style}"] = counts.get(f"{alias}.{style}", 0) + 1
-        entry = {
-            "id": f"{alias}.{style}.{n}",
-            "style": style,
-            "suite": suite,
-            "task": task,
-            "expect": f"refuse:{style}" if style in REFUSALS else "goal",
-            "instruction": instruction,
-        }
-        odd = hashlib.sha256(f"{task}|{instruction}".encode()).digest()[0] % 2
+        out.append(
+            {
+                "id": f"{alias}.{style}.{id_mark}{n}",
+                "style": style,
+                "suite": suite,
+                "task": task,
+                "expect": f"refuse:{style}" if style in REFUSALS else "goal",
+                "instruction": instruction,
+            }
+        )
+    return out
+
+
+def main() -> None:
+    halves: dict[str, list[dict]] = {"dev": [], "test": []}
+    for entry in entries(HERE / "source.txt"):
+        odd = hashlib.sha256(f"{entry['task']}|{entry['instruction']}".encode()).digest()[0] % 2
         halves["test" if odd else "dev"].append(entry)
-    for name, entries in halves.items():
-        (HERE / f"{name}.yaml").write_text(yaml.safe_dump(entries, sort_keys=False, width=200))
-        print(name, len(entries))
+    for name, half in halves.items():
+        (HERE / f"{name}.yaml").write_text(yaml.safe_dump(half, sort_keys=False, width=200))
+        print(name, len(half))
 
 
 if __name__ == "__main__":

@@ -1,4 +1,5 @@
-"""Builds the second test half, test.yaml, from source_test2.txt (run once; the half is then frozen).
+"""Built the second test half from source_test2.txt (run once; the half was then frozen, and later retired into
+dev.yaml: README, "Third test half"). It now writes test2.yaml, so a re-run cannot overwrite the current half.
 
 The first test half was retired into dev.yaml (README, "Second test half"). Lines are `alias | style | instruction`
 with the aliases of make_split.py; ids are `<alias>.<style>.rN`, so they never collide with the first corpus's ids.
@@ -9,32 +10,15 @@ from __future__ import annotations
 from pathlib import Path
 
 import yaml
-from make_split import REFUSALS, task_of
+from make_split import entries
 
 HERE = Path(__file__).parent
 
 
 def main() -> None:
-    entries: list[dict] = []
-    counts: dict[str, int] = {}
-    for line in (HERE / "source_test2.txt").read_text().splitlines():
-        if not line.strip() or line.startswith("#"):
-            continue
-        alias, style, instruction = (p.strip() for p in line.split("|", 2))
-        suite, task = task_of(alias)
-        n = counts[f"{alias}.{style}"] = counts.get(f"{alias}.{style}", 0) + 1
-        entries.append(
-            {
-                "id": f"{alias}.{style}.r{n}",
-                "style": style,
-                "suite": suite,
-                "task": task,
-                "expect": f"refuse:{style}" if style in REFUSALS else "goal",
-                "instruction": instruction,
-            }
-        )
-    (HERE / "test.yaml").write_text(yaml.safe_dump(entries, sort_keys=False, width=200))
-    print("test", len(entries))
+    half = entries(HERE / "source_test2.txt", "r")
+    (HERE / "test2.yaml").write_text(yaml.safe_dump(half, sort_keys=False, width=200))
+    print("test2", len(half))
 
 
 if __name__ == "__main__":

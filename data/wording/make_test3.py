@@ -10,32 +10,15 @@ from __future__ import annotations
 from pathlib import Path
 
 import yaml
-from make_split import REFUSALS, task_of
+from make_split import entries
 
 HERE = Path(__file__).parent
 
 
 def main() -> None:
-    entries: list[dict] = []
-    counts: dict[str, int] = {}
-    for line in (HERE / "source_test3.txt").read_text().splitlines():
-        if not line.strip() or line.startswith("#"):
-            continue
-        alias, style, instruction = (p.strip() for p in line.split("|", 2))
-        suite, task = task_of(alias)
-        n = counts[f"{alias}.{style}"] = counts.get(f"{alias}.{style}", 0) + 1
-        entries.append(
-            {
-                "id": f"{alias}.{style}.t{n}",
-                "style": style,
-                "suite": suite,
-                "task": task,
-                "expect": f"refuse:{style}" if style in REFUSALS else "goal",
-                "instruction": instruction,
-            }
-        )
-    (HERE / "test.yaml").write_text(yaml.safe_dump(entries, sort_keys=False, width=200))
-    print("test", len(entries))
+    half = entries(HERE / "source_test3.txt", "t")
+    (HERE / "test.yaml").write_text(yaml.safe_dump(half, sort_keys=False, width=200))
+    print("test", len(half))
 
 
 if __name__ == "__main__":
