@@ -38,9 +38,9 @@ def facing_from_wholes(part: Keypoint, wholes: list[Keypoint]) -> np.ndarray:
             a = base + k * np.pi / 2
             v = np.array([np.cos(a), np.sin(a)])
             half = max(0.5 * float(np.dot(np.abs(v), whole.extent_m[:2])), FACE_FLOOR_M)
-            ratio = float(np.dot(d, v)) / half
-            if ratio > best_ratio and float(np.dot(d, v)) > 0.005:
-                best, best_ratio = np.array([v[0], v[1], 0.0]), ratio
+            out_m = float(np.dot(d, v))
+            if out_m / half > best_ratio and out_m > 0.005:
+                best, best_ratio = np.array([v[0], v[1], 0.0]), out_m / half
     return best
 
 

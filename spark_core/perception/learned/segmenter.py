@@ -716,10 +716,10 @@ def _on_parent(mask: np.ndarray, parents: np.ndarray, depth_m: np.ndarray) -> bo
     them lies within PART_GAP_M of the part's median depth: the handle-coloured fringe round a small handle seen
     from afar is floor 30 cm behind the cabinet, touching it only in the image. (Some, not most: from the side,
     the cabinet's side face beside a handle on its front is up to its depth nearer the camera.)"""
-    if not _touches(mask, parents):
-        return False
     k = np.ones((2 * PART_REACH_PX + 1, 2 * PART_REACH_PX + 1), np.uint8)
-    beside = cv2.dilate(mask.astype(np.uint8), k).astype(bool) & parents
+    beside = cv2.dilate(mask.astype(np.uint8), k).astype(bool) & parents  # what _touches tests, kept for depth
+    if not beside.any():
+        return False
     d_part, d_parent = depth_m[mask], depth_m[beside]
     d_part, d_parent = d_part[np.isfinite(d_part)], d_parent[np.isfinite(d_parent)]
     if not len(d_part) or not len(d_parent):
