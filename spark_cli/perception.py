@@ -42,6 +42,12 @@ def register(sub) -> None:
         help="libero: objects also trade places or are set on top of others (a bowl on the stove or the cabinet), "
         "from the scene seed",
     )
+    d.add_argument(
+        "--mid-task",
+        action="store_true",
+        help="libero: scenes as they look mid-task, from the scene seed: a drawer pulled out, the hand posed at an "
+        "object or the open drawer, sometimes holding the object",
+    )
     d.set_defaults(func=_cmd_dataset)
     t = ps.add_parser("train", help="train the segmenter on a dataset directory")
     t.add_argument(
@@ -101,7 +107,9 @@ def _cmd_dataset(args: argparse.Namespace) -> int:
     for start in range(0, args.scenes, args.shard_scenes):
         n = min(args.shard_scenes, args.scenes - start)
         try:
-            summary = generate(out, n, seed0 + start, cameras, source=args.source, rearrange=args.rearrange)
+            summary = generate(
+                out, n, seed0 + start, cameras, source=args.source, rearrange=args.rearrange, mid_task=args.mid_task
+            )
         except (RuntimeError, ValueError) as e:  # e.g. the LIBERO extras are not installed
             print(e, file=sys.stderr)
             return 2

@@ -209,7 +209,7 @@ DEFAULT_CAMERAS = {"builtin": ("agentview", "side", "wrist"), "libero": ("agentv
 
 
 def _scenes(
-    source: str, seeds: list[int], rearrange: bool = False
+    source: str, seeds: list[int], rearrange: bool = False, mid_task: bool = False
 ) -> Iterator[tuple[int, Any, tuple, np.random.Generator]]:
     """(seed, world, label tables, rng) per scene; the world is valid until the next one is drawn."""
     if source == "builtin":
@@ -222,7 +222,7 @@ def _scenes(
     elif source == "libero":
         from .libero_data import LiberoScenes, libero_geom_tables, task_index
 
-        scenes = LiberoScenes(rearrange=rearrange)
+        scenes = LiberoScenes(rearrange=rearrange, mid_task=mid_task)
         try:  # a task's scenes one after another: its env is built once
             for seed in sorted(seeds, key=lambda s: (task_index(s), s)):
                 world = scenes.scene(seed)
@@ -242,22 +242,28 @@ def generate(
     log: Callable[[str], None] = print,
     source: str = "builtin",
     rearrange: bool = False,
+    mid_task: bool = False,
 ) -> dict:
     """Render `n_scenes` scenes of `source` (seeds seed0 .. seed0+n_scenes-1), every listed camera of each
     ("wrist" = one robot's wrist camera; default: the source's DEFAULT_CAMERAS) at 640x480, and store two crops of
     `size` (width, height) per view into out_dir/shard_<seed0>.npz. `rearrange` (libero only): objects trade
-    places or stand on others (rearrange.py). Returns a summary."""
+    places or stand on others (rearrange.py); `mid_task` (libero only): a drawer pulled out, the hand at an object,
+    sometimes holding it (mid_task.py). Returns a summary."""
     if source not in SOURCES:
         raise ValueError(f"unknown dataset source {source!r}; have: {', '.join(SOURCES)}")
     if rearrange and source != "libero":
         raise ValueError("--rearrange applies to the libero source only (builtin scenes randomise placement already)")
+    if mid_task and source != "libero":
+        raise ValueError("--mid-task applies to the libero source only (builtin scenes have no LIBERO cabinets)")
     cameras = cameras or DEFAULT_CAMERAS[source]
     out_dir.mkdir(parents=True, exist_ok=True)
     keys = ("rgb", "depth_mm", "category", "instance", "colour", "seeds")
     rows: dict[str, list[np.ndarray]] = {k: [] for k in keys}
     w, h = size
     t0 = time.perf_counter()
-    for i, (seed, world, tables, rng) in enumerate(_scenes(source, list(range(seed0, seed0 + n_scenes)), rearrange)):
+    for i, (seed, world, tables, rng) in enumerate(
+        _scenes(source, list(range(seed0, seed0 + n_scenes)), rearrange, mid_task)
+    ):
         for cam in cameras:
             name = cam
             if cam == "wrist":

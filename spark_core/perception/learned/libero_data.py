@@ -80,12 +80,15 @@ class LiberoScenes:
     """Randomised LIBERO scenes, one env per task kept while consecutive scenes use it. `scene(seed)` resets the
     env with LIBERO's samplers from `seed`, settles it, then (from the same seed) jitters lighting and, in 70 %
     of scenes, the arm's joints, and returns the world (valid until the next `scene` call or `close`). With
-    `rearrange`, objects also trade places or are set on top of others (rearrange.py) before the settle."""
+    `rearrange`, objects also trade places or are set on top of others (rearrange.py) before the settle; with
+    `mid_task`, a drawer may be pulled out and the hand posed at an object, sometimes holding it (mid_task.py)."""
 
-    def __init__(self, perturb: bool = True, rearrange: bool = False):
+    def __init__(self, perturb: bool = True, rearrange: bool = False, mid_task: bool = False):
         self.perturb = perturb
         self.rearrange = rearrange
+        self.mid_task = mid_task
         self.moves: list[tuple[str, str, str]] = []  # what rearrange did to the last scene (rearrange.Move)
+        self.mid: list[str] = []  # what mid_task did to the last scene ("drawer opened", "hand at ...")
         self._task = None
         self._env: Any = None
         self._world: Any = None
@@ -109,6 +112,14 @@ class LiberoScenes:
             from .rearrange import rearrange
 
             self.moves = rearrange(world, np.random.default_rng([seed, 2]), float(world.origin_m[2]))
+        self.mid = []
+        mid_rng = np.random.default_rng([seed, 3])
+        drawer = None
+        if self.mid_task:
+            from .mid_task import open_drawer
+
+            drawer = open_drawer(world, mid_rng)
+            self.mid += ["drawer opened"] if drawer is not None else []
         world.reset()  # hold the arm where the reset left it
         world._tick(SETTLE_STEPS)
         m, d = world.model, world.data
@@ -122,6 +133,12 @@ class LiberoScenes:
                 for arm in world.arms:
                     adr = world._qadr[arm]
                     d.qpos[adr] = d.qpos[adr] + rng.normal(0, 0.3, len(adr))
+        if self.mid_task:
+            from .mid_task import pose_arm
+
+            mujoco.mj_forward(m, d)
+            done = pose_arm(world, mid_rng, drawer)  # replaces the jitter where it poses the hand
+            self.mid += [done] if done else []
         mujoco.mj_forward(m, d)
         world._label_cache = None  # same bodies, but a fresh table costs nothing next to a render
         return world
