@@ -25,6 +25,9 @@ class Category:
     # stands on (a bowl on a cookie box or a ramekin; the per-pixel network paints the support's top as bowl);
     # 0 for kinds whose height varies too much to say
     max_height_m: float = 0.0
+    # smallest an object of this kind measures along its longest side (m, world): a smaller piece standing on
+    # another object is part of that object (learned/pieces.py); 0 for kinds that can be any size
+    min_extent_m: float = 0.0
 
 
 CATEGORIES: tuple[Category, ...] = (
@@ -54,7 +57,7 @@ CATEGORIES: tuple[Category, ...] = (
     Category("bar", "long straight rectangular wooden bar, a stick"),
     Category("carry tray", "long serving tray with a handle at each end"),
     # LIBERO objects (appended: the indices above are those of earlier weights, see train.expand_categories)
-    Category("wine bottle", "dark glass wine bottle with a long neck"),
+    Category("wine bottle", "dark glass wine bottle with a long neck", min_extent_m=0.10),
     Category("wine rack", "metal wine rack, a stand that holds bottles", max_extent_m=0.40),
     Category("cream cheese", "small rectangular box of cream cheese"),
     Category("ramekin", "small round white porcelain ramekin with a glazed rim", max_extent_m=0.15, max_height_m=0.06),

@@ -29,6 +29,7 @@ from ..text_encoder import SHARED_ENCODER, TextEncoder
 from . import patch_classifier
 from .categories import CATEGORIES, CATEGORY_INDEX, COLOURS, ROBOT, TABLE
 from .layers import is_stacked, layer_mask, median_height_m
+from .pieces import support_of
 from .refine import grow_by_depth
 
 WEIGHTS = "weights/learned_segmenter.pt"  # package data, next to MODEL_CARD.md
@@ -222,7 +223,8 @@ class LearnedSegmenter:
                 out.append(Instance(int(c), full, score, COLOURS[1 + int(colour_p.argmax())]))
         if self.patch_weights is not None:
             out = self._second_look(out, frame)
-        out = _above_table(_drop_fragments([_standing_part(i, frame) for i in _grown(out, cat, frame)]), cat, frame)
+        out = _absorb_pieces(_grown(out, cat, frame), frame)
+        out = _above_table(_drop_fragments([_standing_part(i, frame) for i in out]), cat, frame)
         if len(self._cache) > 8:
             self._cache.clear()
         self._cache[key] = out
@@ -442,6 +444,30 @@ def _merge_confused(cat: np.ndarray, probs: np.ndarray, split: np.ndarray) -> np
             if probs[c][top].mean() > CONFUSED_P and probs[present[0]][other].mean() > CONFUSED_P:
                 out[other] = present[0]
     return out
+
+
+def _absorb_pieces(instances: list[Instance], frame: CameraFrame) -> list[Instance]:
+    """Instances smaller than their kind can be (Category.min_extent_m) that stand on a whole object joined to
+    that object's mask (pieces.py: the stove knob's fin read as a wine bottle). Where the object's kind has one
+    kind of part (a stove: its knob), the piece is also that part: the network had named it after a look-alike
+    because it did not know it as the part."""
+    out: list[Instance | None] = list(instances)
+    parts: list[Instance] = []
+    for i, inst in enumerate(instances):
+        kind = CATEGORIES[inst.category]
+        if not kind.min_extent_m:
+            continue
+        wholes = [j for j, o in enumerate(out) if o is not None and j != i and not CATEGORIES[o.category].part_of]
+        k = support_of(inst.mask, [out[j].mask for j in wholes], frame, kind.min_extent_m)  # type: ignore[union-attr]
+        if k is None:
+            continue
+        s = out[wholes[k]]
+        assert s is not None
+        out[wholes[k]], out[i] = Instance(s.category, s.mask | inst.mask, s.score, s.colour), None
+        part_kinds = [c for c, p in enumerate(CATEGORIES) if CATEGORIES[s.category].name in p.part_of]
+        if len(part_kinds) == 1:
+            parts.append(Instance(part_kinds[0], inst.mask, inst.score, inst.colour))
+    return [o for o in out if o is not None] + parts
 
 
 def _drop_fragments(instances: list[Instance]) -> list[Instance]:
