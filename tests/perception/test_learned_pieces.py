@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from spark_core.perception.learned.categories import CATEGORY_INDEX
-from spark_core.perception.learned.pieces import support_of
+from spark_core.perception.learned.pieces import support_of, world_points
 from spark_core.perception.learned.segmenter import Instance, _absorb_pieces
 from tests.perception.test_learned_geometry import H, W, _frame
 
@@ -58,3 +58,40 @@ def test_the_segmenter_joins_a_knob_fin_read_as_a_wine_bottle_to_the_stove_as_it
     cabinet = Instance(CATEGORY_INDEX["cabinet"], slab, 0.98, "brown")
     (only,) = _absorb_pieces([cabinet, bottle], _frame(depth))
     assert only.category == CATEGORY_INDEX["cabinet"]
+
+
+def test_a_stray_of_what_stands_in_front_leaves_the_mask_and_the_object_stays_whole():
+    """A bowl (5 cm tall, seen top-down) whose upscaled mask took an edge of a bottle standing beside it (15 cm
+    tall, so 10 cm nearer the camera): the bottle's pixels go, every bowl pixel stays, and the bowl's seen top is
+    its rim again."""
+    from spark_core.perception.learned.pieces import without_strays
+    from spark_core.perception.learned.segmenter import _standing_part
+
+    depth = np.ones((H, W))
+    yy, xx = np.mgrid[:H, :W]
+    bowl = np.hypot(yy - 120, xx - 160) < 40
+    depth[bowl] = 0.95 + 0.03 * (np.hypot(yy - 120, xx - 160)[bowl] < 30)  # rim 5 cm up, inside 2 cm up
+    bottle_edge = (xx >= 201) & (xx <= 213) & (np.abs(yy - 120) < 18)  # 8 % of the mask
+    depth[bottle_edge] = 0.85
+    mask = bowl | bottle_edge
+    frame = _frame(depth)
+    kept = without_strays(mask, frame)
+    assert (kept == bowl).all()
+    inst = Instance(CATEGORY_INDEX["bowl"], kept, 0.9, "black")
+    assert (_standing_part(inst, frame).mask == bowl).all()
+    # the seen top (98th percentile height), which the standing-part cut and the keypoint measure from, is the
+    # bowl's rim without the stray and the bottle's with it
+    assert bottle_edge.sum() < 0.15 * mask.sum()
+    top = {k: np.percentile(world_points(m, frame)[:, 2], 98) for k, m in (("kept", kept), ("raw", mask))}
+    assert abs(top["kept"] - 0.05) < 0.005 and top["raw"] > 0.14
+
+
+def test_a_mask_in_two_large_pieces_keeps_both():
+    """Two halves of a bowl seen either side of a thin occluder are both kept (each far over the stray share)."""
+    from spark_core.perception.learned.pieces import without_strays
+
+    depth = np.ones((H, W))
+    depth[100:140, 100:150] = 0.95
+    depth[100:140, 170:220] = 0.95
+    mask = depth < 0.97
+    assert (without_strays(mask, _frame(depth)) == mask).all()

@@ -29,7 +29,7 @@ from ..text_encoder import SHARED_ENCODER, TextEncoder
 from . import patch_classifier
 from .categories import CATEGORIES, CATEGORY_INDEX, COLOURS, ROBOT, TABLE
 from .layers import is_stacked, layer_mask, median_height_m
-from .pieces import support_of
+from .pieces import support_of, without_strays
 from .refine import grow_by_depth
 
 WEIGHTS = "weights/learned_segmenter.pt"  # package data, next to MODEL_CARD.md
@@ -218,6 +218,8 @@ class LearnedSegmenter:
                 )
                 if CATEGORIES[c].proud_m:
                     full = _proud(full, frame, CATEGORIES[c].proud_m)
+                if CATEGORIES[c].max_height_m:  # short kinds: a stray in front would raise the seen top
+                    full = without_strays(full, frame)
                 if full.sum() < self.min_area_px:
                     continue
                 out.append(Instance(int(c), full, score, COLOURS[1 + int(colour_p.argmax())]))
