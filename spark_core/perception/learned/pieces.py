@@ -63,8 +63,9 @@ STRAY_SHARE = 0.15  # a 3D-separate piece under this share of the mask is a stra
 def without_strays(mask: np.ndarray, frame: CameraFrame) -> np.ndarray:
     """The mask without the pixels of small pieces that are apart in 3D from the rest (26-neighbour voxels of
     STRAY_VOXEL_M). A mask found at half resolution and scaled up takes the edge of whatever stands in front of the
-    object (a wine bottle before a bowl): those pixels are centimetres nearer the camera and, for a bowl, raise its
-    seen top, which then cuts the bowl's own lower half away as "support". Pieces touching in space stay (the table
+    object (a wine bottle before a bowl, a bowl before a bottle): those pixels are centimetres nearer the camera,
+    drag the keypoint towards them and, for a bowl, raise its seen top, which then cuts the bowl's own lower half
+    away as "support". Pieces touching in space stay (the table
     under the object is cut elsewhere); so does every piece of a mask that falls apart into large ones."""
     from scipy import ndimage
 

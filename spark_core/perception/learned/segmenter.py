@@ -218,7 +218,7 @@ class LearnedSegmenter:
                 )
                 if CATEGORIES[c].proud_m:
                     full = _proud(full, frame, CATEGORIES[c].proud_m)
-                if CATEGORIES[c].max_height_m:  # short kinds: a stray in front would raise the seen top
+                if not CATEGORIES[c].part_of:  # a stray in front shifts the keypoint (a short kind's seen top)
                     full = without_strays(full, frame)
                 if full.sum() < self.min_area_px:
                     continue
