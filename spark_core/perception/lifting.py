@@ -13,6 +13,7 @@ from .keypoint import Keypoint
 
 MAX_DEPTH_M = 5.0
 MIN_POINTS = 12
+TRIM_MIN_POINTS = 20  # top faces with this many points lose their 2 % outermost in x and y
 FOOTPRINT_CELL_M = 0.01  # footprint points: one per 1 cm cell of the top face
 
 
@@ -50,6 +51,9 @@ def keypoint_from_points(label: str, evidence: list[PointEvidence], source: str)
     lo, hi = np.percentile(pts, 2, axis=0), np.percentile(pts, 98, axis=0)
     extent = hi - lo
     top = pts[pts[:, 2] > hi[2] - max(0.3 * extent[2], 0.004)]
+    if len(top) >= TRIM_MIN_POINTS:  # one stray pixel (a thin handle's edge seeing past it) must not move the box
+        t_lo, t_hi = np.percentile(top[:, :2], 2, axis=0), np.percentile(top[:, :2], 98, axis=0)
+        top = top[np.all((top[:, :2] >= t_lo) & (top[:, :2] <= t_hi), axis=1)]
     (cx, cy), (w, h), angle = cv2.minAreaRect(top[:, :2].astype(np.float32)) if len(top) >= 5 else ((0, 0), (0, 0), 0)
     if len(top) >= 5:
         centre_xy = np.array([cx, cy])

@@ -150,3 +150,17 @@ def test_agentview_and_wrist_fuse_and_the_wrist_finger_zone_is_excluded(world):
     det = Detection("everything", "everything", full, 1.0, "robot/wrist")
     kept = masked_points(det, wrist, wrist_self_occlusion(wrist.shape))
     assert len(kept.points_world) < 0.7 * full.sum()  # the finger bands never become object points
+
+
+def test_one_stray_point_on_the_top_face_does_not_move_the_keypoint():
+    """A handle bar 12 cm long at y 0.19-0.21 plus one pixel that saw past its edge and landed 12 cm to the side at
+    the same height: the centre stays on the bar (it was pulled halfway to the stray, 6 cm)."""
+    from spark_core.perception.lifting import PointEvidence
+
+    rng = np.random.default_rng(0)
+    bar = np.column_stack([rng.uniform(0.45, 0.49, 190), rng.uniform(0.19, 0.21, 190), rng.uniform(0.11, 0.125, 190)])
+    pts = np.vstack([bar, [[0.47, 0.075, 0.124]]])
+    det = Detection("handle", "handle", np.ones((2, 2), bool), 0.9, "side", False, {})
+    kp = keypoint_from_points("handle", [PointEvidence(det, pts, pts.mean(0))], "learned")
+    assert abs(kp.position_m[1] - 0.20) < 0.005
+    assert abs(kp.position_m[0] - 0.47) < 0.005

@@ -208,3 +208,22 @@ def test_the_learned_segmenter_lists_what_it_sees_by_its_own_names():
     frame = _frame()
     assert frame.object_ids is None
     assert seg.names_in(frame) == ["bowl", "bowl", "plate"]
+
+
+def test_a_prompt_that_grounds_to_a_part_and_its_parent_answers_only_the_part_where_the_part_is_seen():
+    """ "cabinet drawer grip" in a view with the drawer AND its handle: the handle is the answer, alone; before, the
+    drawer came too, the two were merged as one detection and the keypoint landed between them (6-7 cm off)."""
+    from spark_core.perception.learned import segmenter as seg_mod
+    from spark_core.perception.learned.categories import CATEGORY_INDEX
+
+    seg = seg_mod.LearnedSegmenter()
+    seg.ground = lambda core: ({CATEGORY_INDEX["drawer handle"]: 0.68, CATEGORY_INDEX["drawer"]: 0.66}, set())  # type: ignore[method-assign]
+    drawer, handle = np.zeros((48, 64), bool), np.zeros((48, 64), bool)
+    drawer[10:30, 8:40] = True
+    handle[18:21, 20:28] = True
+    seg.instances = lambda f: [  # type: ignore[method-assign]
+        seg_mod.Instance(CATEGORY_INDEX["drawer"], drawer, 0.95, "none"),
+        seg_mod.Instance(CATEGORY_INDEX["drawer handle"], handle, 0.95, "none"),
+    ]
+    (det,) = seg._matches(_frame(), "cabinet drawer grip", "cabinet drawer grip")
+    assert det.detail["category"] == "drawer handle" and "stand_in_for_part" not in det.detail

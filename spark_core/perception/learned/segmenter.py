@@ -342,6 +342,8 @@ class LearnedSegmenter:
         best = max(cats, key=cats.__getitem__)
         # the part the prompt names best is not in view: its parent's instances here only stand in for it
         stand_ins = set() if best in seen else {CATEGORY_INDEX[p] for p in CATEGORIES[best].part_of}
+        if best in seen:  # the part itself is here: what it is part of is no answer ("drawer grip": not the drawer)
+            cats = {c: v for c, v in cats.items() if CATEGORIES[c].name not in CATEGORIES[best].part_of}
         if not seen & set(cats):
             cats = _parent_named(cats, core) or cats
         dets = []
