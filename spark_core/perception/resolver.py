@@ -21,6 +21,7 @@ from .segmenter import Segmenter
 from .variants import prompt_variants
 
 FUSE_AGREEMENT_M = 0.05
+FUSE_OVERLAP = 0.5  # ...or when their xy point boxes overlap by more than this share of the smaller box
 
 
 class PerceptionResolver:
@@ -120,7 +121,8 @@ class PerceptionResolver:
 
 def fused_evidence(evidence: list[PointEvidence]) -> list[PointEvidence]:
     """Fuse views only when they saw the same thing; otherwise trust the most confident view. The same thing: the
-    medians of the views' points within FUSE_AGREEMENT_M in xy and, in height, within FUSE_AGREEMENT_M or half
+    medians of the views' points within FUSE_AGREEMENT_M in xy (or their xy boxes overlapping, FUSE_OVERLAP: one
+    side of a bowl seen from the front) and, in height, within FUSE_AGREEMENT_M or half
     the most confident view's visible height (stacked drawers' handles share xy and differ in height by less than
     a handle's spacing; a bottle seen from above and from the side differs by more than 5 cm and is one thing).
     For a relational label ("the bowl on the stove") a view whose pick was seen to stand in the relation is
@@ -138,9 +140,24 @@ def fused_evidence(evidence: list[PointEvidence]) -> list[PointEvidence]:
     out = []
     for e in evidence:
         c = np.median(e.points_world, axis=0)
-        if np.linalg.norm(c[:2] - centre[:2]) < FUSE_AGREEMENT_M and abs(c[2] - centre[2]) < z_tol:
+        same_xy = np.linalg.norm(c[:2] - centre[:2]) < FUSE_AGREEMENT_M or _xy_overlap(e, best) > FUSE_OVERLAP
+        if same_xy and abs(c[2] - centre[2]) < z_tol:
             out.append(e)
     return out
+
+
+def _xy_overlap(a: PointEvidence, b: PointEvidence) -> float:
+    """Area of the intersection of the two views' xy point boxes (5th-95th percentile) over the smaller box's. A
+    view that sees one side of a wide object (a bowl's near half from the front) has its median 5-6 cm from the
+    other view's, yet its box lies inside the other's."""
+    boxes = [
+        (np.percentile(e.points_world[:, :2], 5, axis=0), np.percentile(e.points_world[:, :2], 95, axis=0))
+        for e in (a, b)
+    ]
+    (la, ha), (lb, hb) = boxes
+    inter = float(np.clip(np.minimum(ha, hb) - np.maximum(la, lb), 0.0, None).prod())
+    smaller = min(float((ha - la).prod()), float((hb - lb).prod()))
+    return inter / max(smaller, 1e-9)
 
 
 def _relation_rank(e: PointEvidence) -> int:

@@ -63,6 +63,28 @@ def test_a_bowls_pieces_rejoin_but_two_bowls_do_not():
     assert out[120, 170] != out[120, 100]  # the other bowl kept apart
 
 
+def test_a_bowls_halves_on_a_support_rejoin_though_their_masks_spill_onto_it():
+    """A bowl (12 cm wide, 5 cm tall) standing on a stove top (4 cm up), its mask cut into a left and a right half,
+    each half spilling 4 cm onto the stove top beside it: on all points the two halves span 20 cm, more than a bowl
+    (18 cm), so they stayed apart; measured on their upper band (the rim) they span 12 cm and join."""
+    depth = np.ones((H, W))
+    yy, xx = np.mgrid[:H, :W]
+    r = np.hypot(yy - 120, xx - 160)
+    depth[60:180, 90:230] = 0.96  # the stove top
+    depth[r < 30] = 0.94  # the bowl's inside, 6 cm up
+    depth[(r < 30) & (r >= 24)] = 0.91  # its rim, 9 cm up
+    spill_left = (np.abs(yy - 120) < 10) & (xx >= 110) & (xx < 131)
+    spill_right = (np.abs(yy - 120) < 10) & (xx > 189) & (xx <= 210)
+    comp = np.zeros((H, W), np.int32)
+    comp[((r < 30) & (xx < 160)) | spill_left] = 1
+    comp[((r < 30) & (xx >= 160)) | spill_right] = 2
+    frame = _frame(depth)
+    apart, _ = _rejoin(comp, 3, 0.18, depth, frame, 1)
+    assert apart[120, 150] != apart[120, 170]  # without the height band: too wide for one bowl
+    out, _ = _rejoin(comp, 3, 0.18, depth, frame, 1, max_height_m=0.06)
+    assert out[120, 150] == out[120, 170]
+
+
 def test_a_handle_mask_loses_the_drawer_face_around_it():
     """Seen from the front: a handle 2 cm proud of the drawer face; the mask spilled onto the face below it."""
     depth = np.full((H, W), 0.80)

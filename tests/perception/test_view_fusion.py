@@ -30,6 +30,17 @@ def test_stacked_parts_in_two_views_are_not_fused():
     assert [e.detection.camera for e in fused_evidence([front, side])] == ["agentview"]
 
 
+def test_a_view_of_one_side_of_a_wide_object_is_fused_with_a_view_of_all_of_it():
+    """A bowl 14 cm wide: agentview sees all of it, frontview only its near rim, whose median lies 5.5 cm from
+    agentview's (over FUSE_AGREEMENT_M) while its box lies inside agentview's: one thing, both views kept. Two
+    bowls side by side (boxes apart) stay apart."""
+    whole = _evidence("agentview", (0.46, -0.05, 0.03), (0.14, 0.14, 0.05), 0.9)
+    near_half = _evidence("frontview", (0.405, -0.05, 0.03), (0.03, 0.12, 0.05), 0.95)
+    assert len(fused_evidence([whole, near_half])) == 2
+    other_bowl = _evidence("frontview", (0.60, -0.05, 0.03), (0.12, 0.12, 0.05), 0.8)
+    assert [e.detection.camera for e in fused_evidence([whole, other_bowl])] == ["agentview"]
+
+
 def test_a_tall_object_seen_from_above_and_from_the_side_is_fused():
     """A 30 cm bottle: the view from above sees mostly its upper part, the side view all of it; the medians'
     heights differ by more than 5 cm but by less than half its visible height."""

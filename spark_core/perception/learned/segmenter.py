@@ -201,7 +201,9 @@ class LearnedSegmenter:
             n, comp = cv2.connectedComponents((region & ~split).astype(np.uint8), connectivity=4)
             comp = _grow_into(comp, region)
             if CATEGORIES[c].max_extent_m:
-                comp, n = _rejoin(comp, n, CATEGORIES[c].max_extent_m, depth, frame, H // cat.shape[0])
+                comp, n = _rejoin(
+                    comp, n, CATEGORIES[c].max_extent_m, depth, frame, H // cat.shape[0], CATEGORIES[c].max_height_m
+                )
             parents = _anchored(cat, CATEGORIES[c].part_of)
             for k in range(1, n):
                 m = comp == k
@@ -583,21 +585,29 @@ def _parent_named(cats: dict[int, float], prompt: str) -> dict[int, float]:
 
 
 def _rejoin(
-    comp: np.ndarray, n: int, max_extent_m: float, depth_m: np.ndarray, frame: CameraFrame, factor: int
+    comp: np.ndarray,
+    n: int,
+    max_extent_m: float,
+    depth_m: np.ndarray,
+    frame: CameraFrame,
+    factor: int,
+    max_height_m: float = 0.0,
 ) -> tuple[np.ndarray, int]:
     """Join touching components of one category while together they are no wider than one object can be.
 
     A depth edge splits a bowl's near rim from its bottom and far rim (one object, centimetres apart in depth);
     two bowls side by side are split the same way. Their sizes tell them apart: the pieces of one bowl together
-    span at most a bowl's width in the world's xy, two bowls span about two. Network-resolution components and
-    depth; pixel (v, u) is camera pixel (v * factor, u * factor)."""
+    span at most a bowl's width in the world's xy, two bowls span about two. For a short kind (`max_height_m`, m)
+    the width is measured on the joined pieces' upper half-height band only: a bowl on the stove spills pixels onto
+    the stove top around it, which made its own two halves look wider than a bowl and kept them apart. Network-
+    resolution components and depth; pixel (v, u) is camera pixel (v * factor, u * factor)."""
     xy: dict[int, np.ndarray] = {}
     for k in range(1, n):
         vs, us = np.nonzero(comp == k)
         z = depth_m[vs, us]
         ok = np.isfinite(z) & (z > 0)
         if ok.sum() >= 3:
-            xy[k] = frame.backproject(us[ok] * float(factor), vs[ok] * float(factor), z[ok])[:, :2]
+            xy[k] = frame.backproject(us[ok] * float(factor), vs[ok] * float(factor), z[ok])
     if len(xy) < 2:
         return comp, n
     kernel = np.ones((5, 5), np.uint8)
@@ -609,7 +619,11 @@ def _rejoin(
         return k
 
     def width(pts: np.ndarray) -> float:
-        return float((np.percentile(pts, 98, axis=0) - np.percentile(pts, 2, axis=0)).max())
+        if max_height_m:
+            upper = pts[pts[:, 2] > np.percentile(pts[:, 2], 98) - 0.5 * max_height_m]
+            pts = upper if len(upper) >= 3 else pts
+        xy_m = pts[:, :2]
+        return float((np.percentile(xy_m, 98, axis=0) - np.percentile(xy_m, 2, axis=0)).max())
 
     touching = set()
     for k in xy:
