@@ -261,9 +261,11 @@ def exec_summary(rows: list[dict[str, Any]], half: str) -> dict[str, float]:
 
 
 def _why(row: dict[str, Any]) -> str:
+    """The kind of failure, without the instruction's words or the planner's message (which quotes them): the
+    report must not leak dev wording that someone keeps aside as an unseen sample."""
     if row["expect"] != "goal":
         return "planned; should have refused: " + row["expect"].split(":", 1)[1]
-    return row["error"] or "planned, not the official plan's effect"
+    return "refused" if not row["planned"] else "planned, not the official plan's effect"
 
 
 def section(rows: list[dict[str, Any]], exec_rows: list[dict[str, Any]], command: str, seeds: int) -> str:
@@ -308,7 +310,7 @@ def section(rows: list[dict[str, Any]], exec_rows: list[dict[str, Any]], command
     wrong = [r for r in rows if r["half"] == "dev" and r["correct"] is False]
     if wrong:
         lines.append("")
-        lines.append("Dev failures: " + "; ".join(f"`{r['instruction']}` ({_why(r)[:70]})" for r in wrong))
+        lines.append("Dev failures: " + "; ".join(f"`{r['id']}` ({_why(r)})" for r in wrong))
     return (
         "\n".join(lines)
         + "\n\n"
