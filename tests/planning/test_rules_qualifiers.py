@@ -90,3 +90,45 @@ def test_a_push_keeps_its_comparatives_for_the_way_to_move_and_its_sides_for_the
     assert (push.action, push.direction) == ("push", "backward")
     (push,) = parse_instruction("push the cup on the left forward")
     assert (push.obj, push.direction) == ("leftmost cup", "forward")
+
+
+@pytest.mark.parametrize(
+    "text,expected",
+    [
+        # a partitive with "pair of", and an extreme before "one"
+        ("of the pair of mugs, put the nearer one on the tray", [("put", "nearest mug", "on", "tray")]),
+        # an extreme said after the noun as a state ("sitting higher", "is highest up")
+        ("of the two cups, the one sitting lower goes on the tray", [("put", "lower cup", "on", "tray")]),
+        (
+            "whichever mug is highest up, move it onto the tray",
+            [("mention", "top mug", None, None), ("put", "top mug", "on", "tray")],
+        ),
+        # a cleft wish
+        ("it's the lower mug I want on the tray", [("put", "lower mug", "on", "tray")]),
+        # a kind ruled out by a kind of it
+        ("put the jam that isn't strawberry jam in the crate", [("put", "jam not strawberry", "in", "crate")]),
+        # the one ruled out, then the other after a dash or a semicolon
+        ("not the mug by the kettle - the other one goes on the tray", [("put", "mug not by kettle", "on", "tray")]),
+        ("skip the mug on the shelf; move the other one onto the tray", [("put", "mug not on shelf", "on", "tray")]),
+        # an apposition that locates it, and an adverb before a relation
+        ("put the jam - it's the one near the kettle - in the crate", [("put", "jam near kettle", "in", "crate")]),
+        ("the cup right beside the kettle goes on the tray", [("put", "cup beside kettle", "on", "tray")]),
+        # a place word between two things is the relation between them
+        (
+            "the cup that isn't in the gap between the tray and the kettle: put that one on the tray",
+            [
+                ("mention", "cup not between tray and kettle", None, None),
+                ("put", "cup not between tray and kettle", "on", "tray"),
+            ],
+        ),
+        # "onto it" with nothing before: the thing the object is located by
+        ("of the two cups, put the one nearer the tray onto it", [("put", "cup near tray", "on", "tray")]),
+    ],
+)
+def test_qualifiers_in_other_words(text, expected):
+    assert clauses(text) == expected
+
+
+def test_a_path_over_the_table_says_nothing_about_which_object():
+    # "across the table" / "along the table": the way it goes, not where the object is
+    assert clauses("shove the mug across the table into the green zone") == [("push", "mug", "in", "green zone")]

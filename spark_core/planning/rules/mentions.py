@@ -16,6 +16,7 @@ from .lexicon import CONTENTS, DETERMINERS, PRONOUNS, REGIONS, TABLE
 from .parse import Clause, is_pronoun
 from .phrases import singular
 from .rewrite import sentences
+from .things import names_a_thing
 
 # Words that locate or qualify without naming a thing in the scene ("the table's centre", "the left side").
 PLACE_WORDS = frozenset(
@@ -49,7 +50,9 @@ def anchors(phrase: str) -> list[str]:
     _, relation, found = split_relation(phrase)
     if relation is None:
         return []
-    return [a for a in found if not set(a.split()) - {"of", "the"} <= PLACE_WORDS and a not in PRONOUNS]
+    return [
+        a for a in found if not set(a.split()) - {"of", "the"} <= PLACE_WORDS and a not in PRONOUNS and names_a_thing(a)
+    ]
 
 
 def clause_mentions(clauses: list[Clause]) -> list[str]:
@@ -90,6 +93,8 @@ def read_past(instruction: str, clauses: list[Clause]) -> list[str]:
             head = words[-1]
             if {head, singular(head)} & PLACE_WORDS or head in REGIONS or set(words) & set(CONTENTS):
                 continue  # a place, or what a container holds ("so the beads fall in")
+            if not names_a_thing(" ".join(words)):
+                continue  # no thing at all ("the gap", "a sec", "the end"): nothing perception could look for
             if any({w, singular(w)} & said for w in words if w not in ATTRIBUTES):
                 continue
             out.setdefault(" ".join(words), None)

@@ -8,10 +8,15 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field, replace
 
+from ...perception.colors import BASE_COLOURS
 from ...perception.qualifiers import split_relation
+from ...perception.variants import SIZES
 from .lexicon import CONTAINERS, DIRECTIONS, FROM, IN, ON, PARTICLE_VERBS, PRONOUNS, VERBS, WITH
 from .phrases import noun_phrase, object_phrase
-from .rewrite import goal_to_action, imperatives
+from .rewrite import bare_goal, goal_to_action, imperatives
+from .things import is_verb, names_a_thing
+
+_ATTRIBUTE_WORDS = frozenset([*BASE_COLOURS, *SIZES])
 
 
 class ParseError(ValueError):
@@ -108,7 +113,19 @@ def split_clauses(text: str) -> list[str]:
             out.append(part)
         else:
             out += [p for p in re.split(r"\s+and\s+(?=(?:the|a|an)\s)", part) if p.strip()]
-    return out
+    # "... and balance it on the blue one": a verb the lexicon knows, outside the planner's list, starts a clause
+    split: list[str] = []
+    for part in out:
+        pieces = re.split(r"\s+and\s+(?=\w+ (?:it|them)\b)", part)
+        head = pieces[0]
+        for piece in pieces[1:]:
+            if is_verb(piece.split(" ", 1)[0]):
+                split.append(head)
+                head = piece
+            else:
+                head = f"{head} and {piece}"
+        split.append(head)
+    return split
 
 
 def parse_instruction(instruction: str) -> list[Clause]:
@@ -139,6 +156,19 @@ def parse_instruction(instruction: str) -> list[Clause]:
             verb = ("mention", part)  # "the bowl on the stove, move it to the plate": named first, then acted on
         if verb is None and previous in (None, "mention") and verbless_carry:
             verb = ("put", part)  # "first the red block into the green tray", "I want the cup on the saucer"
+        if verb is None and previous in (None, "mention"):
+            goal = bare_goal(part)  # "red block in the cabinet drawer": no verb, a thing and a place
+            verb = _match_verb(goal) if goal else None
+        if verb is None:
+            verb = _unknown_verb(part)  # "balance it on the blue one": a verb the list lacks, with a destination
+        if verb is None and previous is None and i < len(parts) - 1:
+            # a remark before the request ("hey", "when you get a sec", "someone left the drawer open"): no
+            # step, but a thing it names is there for a pronoun after it (and must be in the scene: mentions.py)
+            named = re.search(r"\b(?:the|a|an) ((?:\w+ ){0,2}?\w+)(?: (?:open|closed|shut|on|off|there|here))?$", part)
+            if named and names_a_thing(named.group(1)):
+                clauses.append(Clause("mention", obj=object_phrase(named.group(1)), text=part))
+                previous = "mention"
+            continue
         if verb is None:
             if previous is None or previous == "mention":
                 known = ", ".join(sorted({f for forms in VERBS.values() for f in forms[:2]}))
@@ -148,8 +178,11 @@ def parse_instruction(instruction: str) -> list[Clause]:
         else:
             gapped = False
         action, rest = verb
-        clause = _clause(action, rest, part)
+        clause = _clause(
+            action, rest, part, clauses[-1].obj if clauses else None, clauses[-1].target if clauses else None
+        )
         clause = _resolve(clause, clauses)
+        clause = _elided_object(clause, clauses)
         if gapped and clause.target and clauses and _shares_destination(clauses[-1], clause):
             # "put the fork and the knife in the tray": coordinated objects share the one destination named last
             clauses[-1] = replace(clauses[-1], target=clause.target, relation=clause.relation)
@@ -159,6 +192,27 @@ def parse_instruction(instruction: str) -> list[Clause]:
     if all(c.action == "mention" for c in clauses):
         raise ParseError(f"{instruction.strip()!r} names {', '.join(c.obj or '?' for c in clauses)} but no action")
     return clauses
+
+
+def _elided_object(c: Clause, before: list[Clause]) -> Clause:
+    """ "..., the red one belongs in the green tray": an object said by its colour or size alone ("one" dropped)
+    is one of the kind named before ("red block")."""
+    if not c.obj or " " in c.obj or c.obj not in _ATTRIBUTE_WORDS:
+        return c
+    kind = next((b.obj.split()[-1] for b in reversed(before) if b.obj and not is_pronoun(b.obj)), None)
+    if not kind or kind in _ATTRIBUTE_WORDS:  # "red in the tray and blue in ...": no kind was named
+        return c
+    return replace(c, obj=f"{c.obj} {kind}")
+
+
+def _unknown_verb(part: str) -> tuple[str, str] | None:
+    """A clause that starts with a verb the lexicon knows but the planner's list lacks, and says where its object
+    goes ("balance it on the blue one", "wedge the box into the basket"): a carry."""
+    first, _, rest = part.partition(" ")
+    if not rest or not is_verb(first) or not re.match(r"(?:it|them|the|a|an|this|that|these|those)\b", rest):
+        return None
+    dest = _destination(rest)
+    return ("put", rest) if dest and dest[2] and dest[0] else None
 
 
 def _remaining(c: Clause, before: list[Clause]) -> Clause:
@@ -215,6 +269,9 @@ def _resolve(c: Clause, before: list[Clause]) -> Clause:
     recent thing mentioned that is not the object itself (the previous object, its destination, or what it was
     located by); as a tool, the previous object. A push of something just picked up is a carry."""
     if not before:
+        anchor = _anchor(c.obj)
+        if is_pronoun(c.target) and anchor and not is_pronoun(c.obj):
+            return replace(c, target=anchor)  # "put the bowl nearer the plate onto it": onto the plate
         return c
     prev = before[-1]
     updates: dict = {}
@@ -289,7 +346,7 @@ def _destination(rest: str) -> tuple[str, str, str] | None:
     return obj, ("in" if prep in IN else _RELATION_OF.get(prep, "on")), target
 
 
-def _clause(action: str, rest: str, text: str) -> Clause:
+def _clause(action: str, rest: str, text: str, antecedent: str | None = None, last_target: str | None = None) -> Clause:
     particle = PARTICLE_VERBS.get(action)
     if particle and rest.endswith(" " + particle):
         rest = rest[: -len(particle) - 1]
@@ -357,7 +414,14 @@ def _clause(action: str, rest: str, text: str) -> Clause:
     dest = _destination(_destination_first(rest))
     if dest:
         obj, relation, target = dest
-        target = _elided_noun(target, object_phrase(obj) if obj else "")
+        said = object_phrase(obj) if obj else ""
+        # "balance it on the blue one": "one" stands for the noun of what "it" stands for
+        kind = antecedent if is_pronoun(said) and antecedent else said
+        # "the red block in the green tray and the blue block in the yellow one": in parallel with the last
+        # destination said by its colour or size, "one" is of that destination's kind
+        if last_target and not is_pronoun(last_target) and set(last_target.split()[:-1]) & _ATTRIBUTE_WORDS:
+            kind = last_target
+        target = _elided_noun(target, kind)
         # "the plate that sits on the cookie box": a destination located by what it rests on reads as an object does
         located = _PLACED.search(target)
         return Clause(

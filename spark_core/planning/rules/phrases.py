@@ -43,7 +43,9 @@ _NOT_PARTICIPLE = re.compile(
     r"left|found|parked)\s+(?=(?:on|in|inside|on top of|at|by|near|next to|beside|between|under)\b)"
 )
 _TABLE_TAIL = re.compile(
-    r"\s+(?:on|off|off of|from|at)\s+(?:the\s+)?(?:" + "|".join(TABLE) + r")\b(?!\s+(?:center|centre|middle))"
+    r"\s+(?:on|off|off of|from|at|across|along)\s+(?:the\s+)?(?:"
+    + "|".join(TABLE)
+    + r")\b(?!\s+(?:center|centre|middle))"
 )
 _CONTAINER_OF = re.compile(r"\b(carton|jar|bottle|box|can|tin|stick|pack|packet|tub|bag|cup|piece)s? of (.+)$")
 
@@ -108,6 +110,10 @@ def locator(text: str) -> str:
     itself says nothing ("block off the table" -> "block")."""
     # "which is standing on", "that are kept in": the relative pronoun and its verb go with the participle
     text = re.sub(r"\b(?:(?:that|which|who) )?(?:is|are) (?=\w+(?:ing|ed)\b)", "", text)
+    # "the bowl (that) was on top of the cabinet": where it was is where it is until the robot moves it
+    text = re.sub(
+        r"\b(?:was|were|used to be) (?=(?:on|in|inside|on top of|at|by|near|next to|beside|between)\b)", "", text
+    )
     text = _BESIDE.sub("near", _PARTICLE.sub("", _NOT_PARTICIPLE.sub("not ", text)))
     text = _PARTICIPLE.sub("", text)
     # on the table is the lowest place a thing can be: "the bowl not on the table" is any bowl but the lowest, "the

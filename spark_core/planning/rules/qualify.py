@@ -128,6 +128,13 @@ def extremes(text: str, push: bool = False) -> str:
         lambda m: f"{m.group(1)} {SIDES[m.group(3)]} {m.group(2)}",
         text,
     )
+    # "the bowl sitting higher", "whichever bowl is highest up": the top one
+    text = re.sub(
+        rf"\b({DET}) ({NP}) (?:(?:that|which) )?(?:is |are )?(?:sitting |standing |resting |placed |set )?"
+        rf"(higher|highest|lower|lowest|uppermost|lowermost)(?: up| down)?\b(?! than)",
+        lambda m: f"{'the' if m.group(1) == 'whichever' else m.group(1)} {EXTREMES[m.group(3)]} {m.group(2)}",
+        text,
+    )
     relative = r"(?:(?:that|which) (?:is|are) |(?:sitting|standing|lying|resting|placed) )"
     text = re.sub(
         rf"\b({DET}) ({NP}) (?:{relative}(?:the )?(?:farther|further|farthest|furthest)(?: away| back| out)?"
@@ -173,8 +180,8 @@ def negations(text: str) -> str:
     leftmost")."""
     # "leave the bowl on the cabinet alone and put the other bowl ...": the one left alone is ruled out
     text = re.sub(
-        rf"^(?:leave|ignore|skip|do not touch|do not move|forget|never mind) the ({NP}) ([^,]+?)"
-        rf"(?: alone| be| where it is| in place| as it is)?,? (?:and |but |then )?(\w+(?: up)?) "
+        rf"^(?:leave|ignore|skip|do not touch|do not move|forget|never mind) the ({NP}) ([^,;]+?)"
+        rf"(?: alone| be| where it is| in place| as it is)?[,;]? (?:and |but |then )?(\w+(?: up)?) "
         rf"the other (?:one|{NP})\b",
         r"\3 the \1 not \2",
         text,
@@ -193,13 +200,15 @@ def negations(text: str) -> str:
     but = r"(?:except(?: for)?|but not|other than|apart from|besides|save for|excluding|rather than)"
     text = re.sub(rf"\b{DET} ({NP}),? {but} (?:the|that) ({_WORD}) ones?\b", r"the \1 not \2", text)
     text = re.sub(rf"\b{DET} ({NP}),? {but} (?:the|that) (?:ones?|{NP}) ([^,;:]+),?", r"the \1 not \2", text)
+    # "the sauce that is not (the) barbecue sauce": ruled out by the words of its own kind
+    text = re.sub(rf"\b{DET} ({NP}) (?:(?:that|which) )?{_NEG} (?:the |a |an )?({NP})\b", _not_own_kind, text)
     # "whichever block is not the blue one", "the block that is not the blue one"
     text = re.sub(rf"\b{DET} ({NP}) (?:(?:that|which) )?{_NEG} the ({_WORD}) ones?\b", r"the \1 not \2", text)
     text = re.sub(rf"\b{DET} ({NP}) (?:(?:that|which) )?{_NEG} the (?:ones?|{NP}) ", r"the \1 not ", text)
     text = re.sub(rf"\bwhichever ({NP}) {_NEG} ", r"the \1 not ", text)
     # an apposition says which: "the bowl, the one not on the stove, ..." / "the block, i mean the one on the left,"
     text = re.sub(
-        rf"\bthe ({NP}),? (?:i mean |that is |namely )?the ones? ([^,;:]+),?",
+        rf"\bthe ({NP}),? (?:i mean |that is |namely |it is |the one that is )?the ones? ([^,;:]+),?",
         lambda m: f"the {m.group(1)} {m.group(2)}",
         text,
     )
@@ -214,6 +223,13 @@ def negations(text: str) -> str:
         lambda m: f"not {_ruled_out(m.group(1))}",
         text,
     )
+
+
+def _not_own_kind(m: re.Match) -> str:
+    kind, other = m.group(1).split(), m.group(2).split()
+    if len(other) < 2 or other[-1] != kind[-1]:
+        return m.group(0)
+    return f"the {m.group(1)} not {' '.join(other[:-1])}"
 
 
 def _trailing_not(text: str) -> str:
@@ -277,11 +293,15 @@ def _singular_phrase(phrase: str) -> str:
 def partitive(text: str) -> str:
     """ "of the two black bowls, take the one on the cabinet ..." -> "take the black bowl on the cabinet ...": the
     kind said first stands for "the one" after it."""
-    m = re.match(rf"(?:out )?of (?:the|these|those|all the) (?:(?:two|three|four|both|several) )?({NP}),\s*(.+)$", text)
+    m = re.match(
+        rf"(?:out )?of (?:the|these|those|all the) (?:(?:two|three|four|both|several|pair of|couple of) )?"
+        rf"({NP}),\s*(.+)$",
+        text,
+    )
     if not m:
         return text
     kind = _singular_phrase(m.group(1))
-    return re.sub(r"\b(the|which|whichever) ones?\b", rf"\1 {kind}", m.group(2), count=1)
+    return re.sub(r"\b(the|which|whichever)( \w+)? ones?\b", rf"\1\2 {kind}", m.group(2), count=1)
 
 
 def qualify(text: str) -> str:

@@ -8,6 +8,7 @@ import re
 
 from .lexicon import CONTAINERS, CONTENTS, COPULAS, FILLERS, HELD, HOLDS, MODALS, PARTICIPLES, STATE_ACTIONS, VERBS
 from .qualify import qualify
+from .things import adverb_only, is_verb
 
 CONTRACTIONS = {
     "there's": "there is",
@@ -71,6 +72,14 @@ _TRAILING = re.compile(
     r"instead of|as (?:gently|carefully|slowly) as)|"
     # a remark to the listener, not a step ("..., then you are done", "..., that is all", "that is the goal")
     r"(?:you|we|i) (?:are|am|will be|should be) (?:done|finished|all set|good)|"
+    # when the goal should hold, said after it ("... by the end", "... when you are done", "... at the end")
+    r"(?:by|at|in) the end\b|by the time\b|"
+    r"(?:when|once) (?:you are|you have|it is|that is|we are) (?:done|finished|through)\b|"
+    # a step that only takes the arm away, or a don't: no thing moves ("... and then go back to where you
+    # started", "... and move your arm out of the way", "... and do not squash it")
+    r"(?:go|come|head|return|get) (?:back|home)\b|move (?:your|the) (?:arm|gripper|hand)\b|(?:do not|never) |"
+    # the goal's own name after it ("..., that is the end state i am after", "not the other way round")
+    r"that is the (?:end state|final state|result|outcome|state|arrangement)\b|(?:and )?not the other way\b|"
     # which way up it stands: no object, no place ("..., right side up", "... upside down")
     r"(?:(?:the )?(?:right|correct) (?:side|way) up|upside down|upright)(?=\s*$)|that (?:is|will be|should be) "
     r"(?:all|it|everything|the (?:goal|plan|idea|task|job|aim))|that is all|thanks?(?: you)?)\b.*$"
@@ -111,6 +120,14 @@ def sentences(instruction: str) -> list[str]:
     for short, long in CONTRACTIONS.items():
         text = re.sub(rf"\b{re.escape(short)}", long, text)
     text = re.sub(r"\bi would (like|love)\b(?! you to)", r"i want", text)
+    # "(would it be possible to) have the cup resting on the saucer": a causative states the wish ("get the bowl
+    # sitting on the stove" is a pick of the bowl there: not "get"; and the participle is of the same clause)
+    text = re.sub(
+        r"(^|\bto |\byou )have "
+        r"(?=(?:the|a|an) (?:(?!and\b)[\w]+ )+(?:sitting|resting|standing|lying|placed|put|set|moved)\b)",
+        r"\1i want ",
+        text,
+    )
     # "what i want is the cup on the saucer" (a cleft), "i want to see the cup on the saucer": the wish itself
     text = re.sub(r"\bwhat (?:i|we) (?:want|need|would like|am after|are after) (?:is|are)\b", "i want", text)
     text = re.sub(
@@ -120,8 +137,22 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(r"\bgive ((?:the|this|that|my) [\w ]+?) an? (\w+)\b", _give_a, text)
     # which one of several: "the second bowl from the left", "the farther of the two", "not the blue one" (before
     # the fillers: "first" is otherwise one)
-    text = qualify(text)
     text = re.sub(r"\s+[-\u2013\u2014]+\s+", ", ", text)  # a dash between two parts is a comma
+    # a label for the goal said first ("end state: ...", "goal - ..."): what follows is the goal
+    text = re.sub(
+        r"^(?:the )?(?:end state|final state|end result|desired state|goal|target|objective)\s*[:,]\s*", "", text
+    )
+    # a sentence adverb said first ("ideally the cup ...", "hopefully ..."): a comment on the goal, not a word of it
+    text = re.sub(r"^(\w+ly)\b,?\s*", lambda m: "" if adverb_only(m.group(1)) else m.group(0), text)
+    # "right next to", "just by": the adverb adds nothing to the relation (and "right" is no side here)
+    text = re.sub(
+        r"\b(?:right|just|directly|immediately) (?=(?:next to|beside|by|near|behind|in front of|under)\b)", "", text
+    )
+    # "in the gap between the plate and the ramekin": between them
+    text = re.sub(r"\b(?:in|at|on) the (?:gap|space|spot|area|middle) between\b", "between", text)
+    # a cleft: "it is the upper bowl i want on the plate" is the wish "i want the upper bowl on the plate"
+    text = re.sub(r"^it is ((?:the|a|an) .+?) (?:that )?(i|we) (want|need)\b", r"\2 \3 \1", text)
+    text = qualify(text)
     text = re.sub(r",\s*(?=(?:which|who) (?:is|are)\b)", " ", text)  # "the block, which is on the plate," locates it
     text = re.sub(r"[!?;]+|\.(?=\s|$)", " . ", text)
     text = text.replace("next to", "next_to")  # a relation, not the filler "next"
@@ -162,6 +193,13 @@ def _purpose(text: str) -> str:
     if not m:
         return text
     main, purpose = text[: m.start()], m.group(1)
+    state = re.fullmatch(
+        r"(?:it|they|that|the \w+) (?:comes?|goes|turns?|switches|is|gets?|ends? up) (on|off|open|closed|shut)", purpose
+    )
+    verb, _, what = main.partition(" ")
+    if state and not starts_with_verb(main) and is_verb(verb) and what:
+        # a verb the list lacks, with the state it brings about: "twist the knob so it comes on" turns it on
+        return f"{ACTION_WORDS[dict(STATE_ACTIONS)[state.group(1)]]} {what}"
     place = _PURPOSE_PLACE.search(purpose)
     if place and starts_with_verb(main) and not _DESTINATION.search(main.split(" ", 1)[-1]):
         prep = {"in front of": "to the front of", "next to": "next to", "beside": "next to"}.get(place.group(1), "into")
@@ -185,10 +223,25 @@ def _colon(left: str, right: str) -> list[str]:
             placed[where].append(m.group(1))
         order = [x for k in ("bottom", "middle", "top") for x in placed[k]]
         return [f"stack {a} on {b}" for b, a in zip(order, order[1:])]
+    state = _predicate(left if re.match(r"(?:the|a|an) ", left) else f"the {left}", right)
+    if state and right in dict(STATE_ACTIONS):  # "drawer: open", "stove: on"
+        return [state]
     if starts_with_verb(right):
         return [f"there is {left}", right]
-    if starts_with_verb(left):  # "sort the blocks: red into the green tray ...": each item is one carry
-        return [f"put {i}" for i in items]
+    if re.match(r"(?:into|onto|on to|inside|in|on top of|on) ", right):  # "topmost bowl: onto the plate"
+        return [f"put {left} {right}"]
+    if (  # "salad dressing: basket": a thing, then the container it goes in
+        len(items) == 1
+        and not re.match(r"(?:the|a|an) ", right)
+        and _head(right) in CONTAINERS
+        and _head(left) not in CONTAINERS
+    ):
+        return [f"put {left} in {right}"]
+    verb, _, rest = left.partition(" ")
+    # a verb the list lacks, then a particle or what it acts on ("tidy up for me: ...", "arrange them: ...")
+    other_verb = is_verb(verb) and re.match(r"(?:up|out|away|them|these|those|it|everything|things|for)\b", rest)
+    if starts_with_verb(left) or other_verb:  # "sort the blocks: red into the green tray ...": each item one carry
+        return [goal_to_action(i) or f"put {i}" for i in items]  # an item may state its goal ("X goes to Y")
     if right in HELD or right.startswith(("up ", "in the gripper", "in the air")):
         return [f"pick up {left}"]
     prep = "in" if _head(left) in CONTAINERS else "on"
@@ -213,12 +266,69 @@ def _holds(text: str) -> str | None:
     return f"put {thing} {'in' if prep in ('in', 'inside', 'into') else 'on'} {holder}"
 
 
+def _with_on_it(text: str) -> str | None:
+    """ "the plate with the red block on it", "a bowl with the apple in it": the thing after "with" goes there."""
+    m = re.fullmatch(r"(.+?) with (.+?) (on top of|on|in|inside) (?:it|them)", text)
+    if not m or not _is_noun_phrase(m.group(1)) or not _is_noun_phrase(m.group(2)):
+        return None
+    return f"put {m.group(2)} {'in' if m.group(3) in ('in', 'inside') else 'on'} {m.group(1)}"
+
+
+# Words that start a clause without being a noun phrase: a goal is said of a thing, not of these.
+_NOT_SUBJECT = (
+    r"(?:i|you|we|he|she|they|there|here|what|which|who|how|why|when|where|let|do|does|can|could|would|will|should|"
+    r"if|so|and|but|or|not|no|please|thanks?|it is|that is)\b"
+)
+
+
+def _is_noun_phrase(text: str) -> bool:
+    """A noun phrase, with or without its article ("the red block", "red block", "alphabet soup")."""
+    det = r"(?:the|a|an|this|that|these|those|both|my|your|some|all(?: the)?) "
+    if re.match(det, text):
+        return re.fullmatch(rf"{det}[\w' ]+", text) is not None
+    # without an article: a few words, none of them a function word ("someone left the drawer" is a clause)
+    words = text.split()
+    inner = r"(?:the|a|an|in|on|into|onto|of|to|from|with|at|by|is|are|was|were|be|and|or|it|them)"
+    return (
+        0 < len(words) <= 4
+        and re.fullmatch(r"[\w' ]+", text) is not None
+        and re.match(_NOT_SUBJECT, text) is None
+        and not any(re.fullmatch(inner, w) for w in words)
+    )
+
+
+def bare_goal(text: str) -> str | None:
+    """A goal said as a noun phrase and a place, with no verb at all ("red block in the cabinet drawer", "wine
+    bottle in the bowl", "the plate with the red block on it"): a carry to the last place named. The mentions are
+    found first; the relation word between them gives the roles."""
+    held = _with_on_it(text)
+    if held:
+        return held
+    # "to" without a verb is a direction, not a place ("fly to the moon"): only words that say in or on
+    places = [m for m in _DESTINATION.finditer(text) if m.group(1) not in ("to", "over")]
+    if not places:
+        return None
+    return _predicate(text[: places[-1].start()].strip(), text[places[-1].start() :])
+
+
 def goal_to_action(text: str) -> str | None:
     """The imperative for a stated goal, or None when `text` states none this reader knows. Tried in turn: a goal
     verb ("belongs", "should be"), a state ("the stove on") or a participle ("the cup placed on the saucer"), a
     bare "is" ("make sure the cup is on the saucer"), a wish naming a place ("I want the cup on the saucer")."""
+    said = re.fullmatch(
+        r"(?:it|this|that|the (?:end |final )?(?:state|goal|result)) (?:should|must|has to|needs to|will) "
+        r"(?:be|look like|end up(?: as)?)\s+(.+)",
+        text,
+    )
+    if said:  # "it should be red on top of green": the goal is the thing and place after it
+        return bare_goal(said.group(1))
     wish = re.fullmatch(r"i (?:want|need)\s+(.+)", text)
     body = wish.group(1) if wish else text
+    both = body.split(" and ")
+    if wish and len(both) > 1 and all(_DESTINATION.search(b) for b in both):
+        # "i want red in the green tray and blue in the yellow tray": one carry per goal
+        steps = [goal_to_action(f"i want {b}") for b in both]
+        return ", ".join(x for x in steps if x) if all(steps) else None
     held = _holds(body)
     if held:
         return held
@@ -242,8 +352,11 @@ def goal_to_action(text: str) -> str | None:
 
 
 def _predicate(subject: str, predicate: str) -> str | None:
-    noun_phrase = r"(?:the|a|an|this|that|these|those|both|my|your|some) [\w' ]+"
-    if not re.fullmatch(rf"{noun_phrase}|it|they|that one|this one", subject):
+    # "the jug winds up in the crate": a phrasal verb the goal words lack, between the thing and its place
+    verb = re.fullmatch(r"(.+?) (\w+) (?:up|down|out)", subject)
+    if verb and is_verb(verb.group(2)) and _is_noun_phrase(verb.group(1)):
+        subject = verb.group(1)
+    if not (_is_noun_phrase(subject) or subject in ("it", "they", "that one", "this one")):
         return None  # a goal is said of a noun phrase ("the apple belongs ..."), not of a word salad
     if re.search(r"\b(?:in|on|into|onto|of|to|the|a|an|(?:which|that|who)(?: is| are)?)$", subject):
         return None  # "the bowl which is on the stove" names a bowl: it states no goal
@@ -262,7 +375,11 @@ def _predicate(subject: str, predicate: str) -> str | None:
         return f"pick up {subject}"
     if predicate.startswith("in front of"):
         return f"push {subject} to the front of {predicate[len('in front of') :].strip()}"
-    if action == "put" and _head(subject) in CONTENTS or re.search(r"'s? (?:contents?|beads)$", subject):
+    if action == "put" and (
+        _head(subject) in CONTENTS
+        or re.search(r"'s? (?:contents?|beads)$", subject)
+        or re.match(r"(?:all )?(?:the )?(?:contents?|beads|liquid|water) (?:from|in|of|out of) ", subject)
+    ):
         action = "pour"
     if not predicate or not _DESTINATION.match(predicate) and action in ("put", "stack", "pour"):
         return None
@@ -307,6 +424,11 @@ def imperatives(instruction: str) -> list[str]:
         if ":" in s:
             left, right = (x.strip() for x in s.split(":", 1))
             out += _colon(left, right)
+            continue
+        # "the soup tin, into the basket": a thing named, then only where it goes
+        where = re.fullmatch(r"([^,]+),\s*((?:into|onto|on to|inside|in|on top of|on) [^,]+)", s)
+        if where and _is_noun_phrase(where.group(1)) and not starts_with_verb(where.group(1)):
+            out.append(f"put {where.group(1)} {where.group(2)}")
             continue
         pair = re.fullmatch(r"([^,]+),\s*([^,]+)", s)
         if pair and not any(starts_with_verb(x) or _DESTINATION.search(x) for x in pair.groups()):
