@@ -63,6 +63,14 @@ def prepare(args: argparse.Namespace) -> int | None:
         return 2
     if args.split:
         seeds = SPLITS[args.split]
+        if args.seed:  # --split sets the first seed itself: a --seed beside it would be silently dropped
+            print(
+                f"--seed {args.seed} and --split {args.split} both choose the seeds (--split {args.split} is seeds "
+                f"{seeds.start}-{seeds.stop - 1}); give one: --split with --trials N for its first N, or --seed "
+                "with --trials",
+                file=sys.stderr,
+            )
+            return 2
         args.seed = seeds.start
         args.trials = len(seeds) if args.trials is None else min(args.trials, len(seeds))
     if args.trials is None:

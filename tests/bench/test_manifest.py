@@ -138,6 +138,21 @@ def test_split_flag_sets_the_seeds(flags, seed, trials):
     assert prepare(args) is None and (args.seed, args.trials) == (seed, trials)
 
 
+def test_a_seed_beside_a_split_is_refused_not_dropped(capsys):
+    """`--split heldout --seed 15` used to run seeds 10-14 without a word: the split set the first seed itself."""
+    import argparse
+
+    from spark_cli.bench import register
+    from spark_cli.bench_manifest import prepare
+
+    parser = argparse.ArgumentParser()
+    register(parser.add_subparsers())
+    args = parser.parse_args(["bench", "liberopro", "--split", "heldout", "--seed", "15", "--trials", "5"])
+    assert prepare(args) == 2
+    err = capsys.readouterr().err
+    assert "--seed 15 and --split heldout both choose the seeds" in err and "10-49" in err
+
+
 def test_bad_manifests_are_refused_naming_the_file(tmp_path, capsys):
     bad = tmp_path / "bad.json"
     bad.write_text("{not json")
