@@ -8,10 +8,7 @@ possessive pronouns and extremes after a possessive, and a correction that rules
 import pytest
 
 from spark_core.planning.rules import parse_instruction
-
-
-def clauses(text):
-    return [(c.action, c.obj, c.relation, c.target) for c in parse_instruction(text)]
+from tests.planning.clause_tuples import clauses
 
 
 @pytest.mark.parametrize(

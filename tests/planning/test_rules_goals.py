@@ -9,10 +9,7 @@ import pytest
 
 from spark_core.planning.rules import parse_instruction
 from spark_core.planning.rules.parse import ParseError
-
-
-def clauses(text):
-    return [(c.action, c.obj, c.relation, c.target) for c in parse_instruction(text)]
+from tests.planning.clause_tuples import clauses
 
 
 @pytest.mark.parametrize(

@@ -7,10 +7,7 @@ participles and particles that only say where a thing is.
 import pytest
 
 from spark_core.planning.rules import parse_instruction
-
-
-def clauses(text):
-    return [(c.action, c.obj, c.relation, c.target) for c in parse_instruction(text)]
+from tests.planning.clause_tuples import clauses
 
 
 @pytest.mark.parametrize(

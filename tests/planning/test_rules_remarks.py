@@ -7,11 +7,7 @@ it"); and verbs outside the planner's own list that the English lexicon knows ("
 
 import pytest
 
-from spark_core.planning.rules import parse_instruction
-
-
-def clauses(text):
-    return [(c.action, c.obj, c.relation, c.target) for c in parse_instruction(text)]
+from tests.planning.clause_tuples import clauses
 
 
 @pytest.mark.parametrize(

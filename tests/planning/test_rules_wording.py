@@ -11,10 +11,7 @@ from spark_core.grammar import plan_to_dict
 from spark_core.perception import Keypoint
 from spark_core.planning import PlanRequest, SceneView
 from spark_core.planning.rules import ParseError, RulesPlanner, parse_instruction
-
-
-def clauses(text):
-    return [(c.action, c.obj, c.relation, c.target) for c in parse_instruction(text)]
+from tests.planning.clause_tuples import clauses
 
 
 @pytest.mark.parametrize(
