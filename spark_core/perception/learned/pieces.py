@@ -67,28 +67,34 @@ def without_strays(mask: np.ndarray, frame: CameraFrame) -> np.ndarray:
     drag the keypoint towards them and, for a bowl, raise its seen top, which then cuts the bowl's own lower half
     away as "support". Pieces touching in space stay (the table
     under the object is cut elsewhere); so does every piece of a mask that falls apart into large ones."""
-    from scipy import ndimage
-
     vs, us = np.nonzero(mask)
     z = frame.depth_m[vs, us]
     ok = np.isfinite(z) & (z > 0)
     if ok.sum() < 20:
         return mask
     vs, us = vs[ok], us[ok]
-    pts = frame.backproject(us.astype(float), vs.astype(float), z[ok])
-    vox = np.floor((pts - pts.min(0)) / STRAY_VOXEL_M).astype(np.int64)
-    if (vox.max(0) > 400).any():  # spread over meters: not one object's surface; other filters handle it
+    lab = voxel_components(frame.backproject(us.astype(float), vs.astype(float), z[ok]), STRAY_VOXEL_M)
+    if lab is None or lab.max() <= 1:  # spread over meters (other filters handle it), or all one piece
         return mask
-    grid = np.zeros(tuple(vox.max(0) + 1), bool)
-    grid[tuple(vox.T)] = True
-    labels, n = ndimage.label(grid, structure=np.ones((3, 3, 3)))
-    if n <= 1:
-        return mask
-    lab = labels[tuple(vox.T)]
-    share = np.bincount(lab, minlength=n + 1) / len(lab)
+    share = np.bincount(lab) / len(lab)
     stray = share[lab] < STRAY_SHARE
     if stray.all():
         return mask
     out = mask.copy()
     out[vs[stray], us[stray]] = False
     return out
+
+
+def voxel_components(pts_m: np.ndarray, voxel_m: float) -> np.ndarray | None:
+    """Per point (N, 3 world m), the label (1..n) of the 3D piece it belongs to: points in 26-neighbouring voxels
+    of `voxel_m` are one piece. None when the points spread over more than 400 voxels along an axis (meters: not
+    one object's surface)."""
+    from scipy import ndimage
+
+    vox = np.floor((pts_m - pts_m.min(0)) / voxel_m).astype(np.int64)
+    if (vox.max(0) > 400).any():
+        return None
+    grid = np.zeros(tuple(vox.max(0) + 1), bool)
+    grid[tuple(vox.T)] = True
+    labels, _ = ndimage.label(grid, structure=np.ones((3, 3, 3)))
+    return labels[tuple(vox.T)]

@@ -29,7 +29,7 @@ from ..text_encoder import SHARED_ENCODER, TextEncoder
 from . import patch_classifier
 from .categories import CATEGORIES, CATEGORY_INDEX, COLOURS, ROBOT, TABLE
 from .layers import is_stacked, layer_mask, median_height_m
-from .pieces import support_of, without_strays
+from .pieces import support_of, voxel_components, without_strays
 from .refine import grow_by_depth
 
 WEIGHTS = "weights/learned_segmenter.pt"  # package data, next to MODEL_CARD.md
@@ -493,7 +493,6 @@ def _apart_in_space(mask: np.ndarray, frame: CameraFrame) -> list[np.ndarray]:
     """The mask split into the parts whose 3D points are connected (26-neighbour voxels of SPACE_VOXEL_M): a can
     standing in front of a carton overlaps it in the image with no depth edge the network marks, but the two never
     touch in space. Pieces under 10 % of the mask are dropped (stray pixels)."""
-    from scipy import ndimage
 
     vs, us = np.nonzero(mask)
     z = frame.depth_m[vs, us]
@@ -508,15 +507,10 @@ def _apart_in_space(mask: np.ndarray, frame: CameraFrame) -> list[np.ndarray]:
     above = pts[:, 2] > low + SUPPORT_BAND_M
     if high - low > 3 * SUPPORT_BAND_M and above.mean() > 0.3:
         vs, us, pts = vs[above], us[above], pts[above]
-    vox = np.floor((pts - pts.min(0)) / SPACE_VOXEL_M).astype(np.int64)
-    if (vox.max(0) > 400).any():  # spread over meters: not one object's surface; leave it to other filters
+    lab = voxel_components(pts, SPACE_VOXEL_M)
+    if lab is None or lab.max() <= 1:  # spread over meters (other filters handle it), or all one piece
         return [mask]
-    grid = np.zeros(tuple(vox.max(0) + 1), bool)
-    grid[tuple(vox.T)] = True
-    labels, n = ndimage.label(grid, structure=np.ones((3, 3, 3)))
-    if n <= 1:
-        return [mask]
-    lab = labels[tuple(vox.T)]
+    n = int(lab.max())
     out = []
     for k in range(1, n + 1):
         sel = lab == k
