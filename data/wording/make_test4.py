@@ -1,9 +1,10 @@
-"""Builds the fourth test half, test.yaml, from source_test4.txt (run once; the half is then frozen).
+"""Builds the fourth test half, test4.yaml, from source_test4.txt (run once; the half is then frozen).
 
 The third test half (ids `.tN`) was retired into dev.yaml (README, "Fourth test half") and replaced by this one,
 written blind: from the scenes' contents and seed-0 positions, without reading the parser, the grounding code or any
-other half of the corpus. Lines are `alias | style | instruction` with the aliases of make_split.py; ids are
-`<alias>.<style>.vN`, so they never collide with the ids already in dev.yaml.
+other half of the corpus. This half was itself retired into dev.yaml (README, "Fifth test half"), so the script now
+writes test4.yaml, never the current test.yaml. Lines are `alias | style | instruction` with the aliases of
+make_split.py; ids are `<alias>.<style>.vN`, so they never collide with the ids already in dev.yaml.
 """
 
 from __future__ import annotations
@@ -18,8 +19,8 @@ HERE = Path(__file__).parent
 
 def main() -> None:
     half = entries(HERE / "source_test4.txt", "v")
-    (HERE / "test.yaml").write_text(yaml.safe_dump(half, sort_keys=False, width=200))
-    print("test", len(half))
+    (HERE / "test4.yaml").write_text(yaml.safe_dump(half, sort_keys=False, width=200))
+    print("test4", len(half))
 
 
 if __name__ == "__main__":
