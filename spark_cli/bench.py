@@ -243,8 +243,11 @@ def _wording(args: argparse.Namespace, command: str) -> str:
 
 
 def _wording_line(r: dict) -> str:
+    """One entry's progress: id, style and outcome only. No instruction text or planner message (which quotes the
+    words), so a progress log leaks no wording that someone keeps aside as an unseen sample."""
     mark = {True: "ok  ", False: "FAIL", None: "n/a "}[r["correct"]]
-    return f"{mark} {r['half']:<4} {r['id']:<32} {r['instruction']!r}: {r['error'] or r['understood']}"
+    outcome = "planned" if r["planned"] else "refused"
+    return f"{mark} {r['half']:<4} {r['id']:<32} {r['style']:<12} {r['expect']:<20} {outcome}"
 
 
 def _cmd_bench(args: argparse.Namespace) -> int:

@@ -135,3 +135,23 @@ def test_plan_only_skips_the_execution_sample(monkeypatch, tmp_path):
     assert "execution success" not in text
     cli._wording(argparse.Namespace(**{**vars(args), "plan_only": False}), "spark bench wording --half dev")
     assert ran == ["plan", "plan", "execute"]
+
+
+def test_progress_lines_name_the_entry_but_never_its_wording_or_the_planner_message():
+    from spark_cli import bench as cli
+
+    row = {
+        "id": "builtin.x.v7",
+        "style": "negation",
+        "expect": "goal",
+        "half": "dev",
+        "instruction": "zebra pick",
+        "planned": False,
+        "correct": False,
+        "error": "could not place 'zebra'",
+        "understood": ["zebra pick"],
+    }
+    line = cli._wording_line(row)
+    assert "builtin.x.v7" in line and "negation" in line and "refused" in line and "FAIL" in line
+    assert "zebra" not in line
+    assert "planned" in cli._wording_line(dict(row, planned=True, correct=True))
