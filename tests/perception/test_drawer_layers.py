@@ -73,3 +73,28 @@ def test_the_learned_segmenter_answers_the_middle_drawer_with_its_layer(monkeypa
     rows = np.nonzero(det.mask.any(1))[0]
     assert abs(rows.min() - _row(0.14)) <= 1 and abs(rows.max() - _row(0.07)) <= 1
     assert det.detail["layer"] == "middle"
+
+
+def test_three_stacked_fronts_seen_as_one_region_are_three_drawer_instances():
+    """The network paints the fronts as one drawer region; with a handle on each, `instances` gives three drawers,
+    each the band round its own handle (the perception bench counted the one region as a miss of all three)."""
+    from spark_core.perception.learned.categories import CATEGORY_INDEX
+    from spark_core.perception.learned.segmenter import Instance, _drawers_apart
+
+    frame = _front_frame()
+    fronts = np.zeros((H, W), bool)
+    fronts[_row(0.21) : _row(0.0), 100:220] = True
+    handles = []
+    for z in (0.035, 0.105, 0.175):
+        m = np.zeros((H, W), bool)
+        m[_row(z) - 3 : _row(z) + 3, 150:170] = True
+        handles.append(Instance(CATEGORY_INDEX["drawer handle"], m, 0.98, "grey"))
+    apart = _drawers_apart([Instance(CATEGORY_INDEX["drawer"], fronts, 0.97, "brown"), *handles], frame)
+    drawers = [i.mask for i in apart if i.category == CATEGORY_INDEX["drawer"]]
+    assert len(drawers) == 3 and len(apart) == 6
+    spans = sorted((int(np.nonzero(d.any(1))[0].min()), int(np.nonzero(d.any(1))[0].max())) for d in drawers)
+    for (top, bottom), z_hi, z_lo in zip(spans, (0.21, 0.14, 0.07), (0.14, 0.07, 0.0)):
+        assert abs(top - _row(z_hi)) <= 1 and abs(bottom - (_row(z_lo) - 1)) <= 1
+    assert not (drawers[0] & drawers[1]).any() and int(sum(d.sum() for d in drawers)) == int(fronts.sum())
+    one = _drawers_apart([Instance(CATEGORY_INDEX["drawer"], fronts, 0.97, "brown"), handles[0]], frame)
+    assert len([i for i in one if i.category == CATEGORY_INDEX["drawer"]]) == 1  # one handle: one drawer

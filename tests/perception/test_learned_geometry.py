@@ -212,3 +212,18 @@ def test_a_part_touching_its_parent_only_in_the_image_is_not_on_it():
     away = np.zeros((40, 40), bool)
     away[35:38, 35:38] = True
     assert not _on_parent(away, parent, depth)
+
+
+def test_a_handle_seen_at_an_angle_keeps_its_far_end():
+    """A handle receding along its length (5 cm over 100 px, as a LIBERO handle seen by agentview), 2 cm proud
+    of the face, the mask spilled onto the face below it: the whole length stays, the face goes. (Measured
+    against the whole mask's nearest depth, the far half of the handle was cut.)"""
+    depth = np.empty((H, W))
+    cols = np.arange(W)
+    depth[:] = 0.80 + 0.0005 * (cols - 100)  # the face recedes to the right
+    depth[110:118, 100:200] = (0.78 + 0.0005 * (cols[100:200] - 100))[None]  # the handle, 2 cm in front
+    mask = np.zeros((H, W), bool)
+    mask[106:130, 98:202] = True
+    kept = _proud(mask, _frame(depth), 0.015)
+    assert kept[110:118, 100:200].all()  # near and far end alike
+    assert not kept[121:130].any()  # the face below, along the whole length

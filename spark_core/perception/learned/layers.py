@@ -19,32 +19,69 @@ def is_stacked(qualifier: str | None) -> bool:
     return qualifier is not None and qualifier in QUALIFIERS and QUALIFIERS[qualifier][0] == 2
 
 
-def layer_mask(drawer: np.ndarray, handles: list[np.ndarray], qualifier: str, frame: CameraFrame) -> np.ndarray | None:
-    """The pixels of the `drawer` mask (one or several stacked drawer fronts) that belong to the drawer whose
-    handle `qualifier` picks among `handles` (masks); None when no handle or no drawer pixel is in that band."""
-    heights = [h for h in (median_height_m(m, frame) for m in handles) if h is not None]
-    if not heights:
-        return None
+def layer_heights_m(handles: list[np.ndarray], frame: CameraFrame) -> list[float]:
+    """World heights (m, ascending) of the handle layers: one per drawer whose handle is seen, a handle seen as
+    two pieces counted once."""
     zs: list[float] = []
-    for h in sorted(heights):  # one handle seen as two pieces is one layer
+    for h in sorted(h for h in (median_height_m(m, frame) for m in handles) if h is not None):
         if not zs or h - zs[-1] > SAME_LAYER_M:
             zs.append(h)
-    sign = QUALIFIERS[qualifier][1]
-    k = len(zs) // 2 if sign == 0.0 else (len(zs) - 1 if sign > 0 else 0)
-    half = float(np.median(np.diff(zs))) / 2 if len(zs) > 1 else LONE_HALF_M  # the outermost: as tall as the rest
+    return zs
+
+
+def _band_m(zs: list[float], k: int) -> tuple[float, float]:
+    """The height band (m) of layer k: between the midpoints to the layers below and above; the outermost as tall
+    as the rest."""
+    half = float(np.median(np.diff(zs))) / 2 if len(zs) > 1 else LONE_HALF_M
     lo = (zs[k - 1] + zs[k]) / 2 if k > 0 else zs[k] - half
     hi = (zs[k] + zs[k + 1]) / 2 if k + 1 < len(zs) else zs[k] + half
+    return lo, hi
+
+
+def _heights_m(drawer: np.ndarray, frame: CameraFrame) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Pixel rows, columns and world heights (m) of the mask's pixels with a finite depth."""
     vs, us = np.nonzero(drawer)
     z = frame.depth_m[vs, us]
     ok = np.isfinite(z) & (z > 0)
-    if not ok.any():
+    vs, us = vs[ok], us[ok]
+    return vs, us, frame.backproject(us.astype(float), vs.astype(float), z[ok])[:, 2]
+
+
+def layer_mask(drawer: np.ndarray, handles: list[np.ndarray], qualifier: str, frame: CameraFrame) -> np.ndarray | None:
+    """The pixels of the `drawer` mask (one or several stacked drawer fronts) that belong to the drawer whose
+    handle `qualifier` picks among `handles` (masks); None when no handle or no drawer pixel is in that band."""
+    zs = layer_heights_m(handles, frame)
+    if not zs:
         return None
-    height = frame.backproject(us[ok].astype(float), vs[ok].astype(float), z[ok])[:, 2]
+    sign = QUALIFIERS[qualifier][1]
+    k = len(zs) // 2 if sign == 0.0 else (len(zs) - 1 if sign > 0 else 0)
+    lo, hi = _band_m(zs, k)
+    vs, us, height = _heights_m(drawer, frame)
     inside = (height >= lo) & (height < hi)
     if not inside.any():
         return None
     out = np.zeros_like(drawer)
-    out[vs[ok][inside], us[ok][inside]] = True
+    out[vs[inside], us[inside]] = True
+    return out
+
+
+def split_layers(drawer: np.ndarray, handles: list[np.ndarray], frame: CameraFrame) -> list[np.ndarray]:
+    """The `drawer` mask cut into one mask per handle layer, each pixel to the layer whose band holds its height
+    (the bottom and top bands open-ended: the mask bounds them); the mask itself when fewer than two layers are
+    seen. Instances of drawers, not of one painted region: "the drawer" in a three-drawer cabinet is ambiguous,
+    and each front's keypoint is its own."""
+    zs = layer_heights_m(handles, frame)
+    if len(zs) < 2:
+        return [drawer]
+    vs, us, height = _heights_m(drawer, frame)
+    cuts = [(zs[k] + zs[k + 1]) / 2 for k in range(len(zs) - 1)]
+    layer = np.searchsorted(cuts, height, side="right")
+    out = []
+    for k in range(len(zs)):
+        m = np.zeros_like(drawer)
+        m[vs[layer == k], us[layer == k]] = True
+        if m.any():
+            out.append(m)
     return out
 
 

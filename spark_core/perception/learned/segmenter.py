@@ -28,7 +28,7 @@ from ..sim_segmenter import calibrated_score, pick_by_qualifier
 from ..text_encoder import SHARED_ENCODER, TextEncoder
 from . import patch_classifier
 from .categories import CATEGORIES, CATEGORY_INDEX, COLOURS, ROBOT, TABLE
-from .layers import is_stacked, layer_mask, median_height_m
+from .layers import is_stacked, layer_mask, median_height_m, split_layers
 from .pieces import support_of, voxel_components, without_strays
 from .refine import grow_by_depth
 
@@ -229,6 +229,7 @@ class LearnedSegmenter:
             out = self._second_look(out, frame)
         out = _absorb_pieces(_grown(out, cat, frame), frame)
         out = _above_table(_drop_fragments([_standing_part(i, frame) for i in out]), cat, frame)
+        out = _drawers_apart(out, frame)
         if len(self._cache) > 8:
             self._cache.clear()
         self._cache[key] = out
@@ -476,6 +477,23 @@ def _absorb_pieces(instances: list[Instance], frame: CameraFrame) -> list[Instan
     return [o for o in out if o is not None] + parts
 
 
+def _drawers_apart(instances: list[Instance], frame: CameraFrame) -> list[Instance]:
+    """Each drawer instance cut into one per handle layer on it (layers.split_layers): the network paints a
+    cabinet's stacked fronts as one region (they touch, share a colour and a depth) but sees each handle apart."""
+    drawer, handle = CATEGORY_INDEX["drawer"], CATEGORY_INDEX["drawer handle"]
+    handles = [i.mask for i in instances if i.category == handle]
+    if len(handles) < 2:
+        return instances
+    out = []
+    for inst in instances:
+        if inst.category != drawer:
+            out.append(inst)
+            continue
+        on_it = [h for h in handles if _touches(h, inst.mask, reach_px=2 * PART_REACH_PX)]
+        out.extend(Instance(drawer, m, inst.score, inst.colour) for m in split_layers(inst.mask, on_it, frame))
+    return out
+
+
 def _drop_fragments(instances: list[Instance]) -> list[Instance]:
     """Pieces under FRAGMENT_AREA of the largest instance of their category: stray bits of an object the network
     split off (two real objects of a kind differ far less in image area on a table seen from these cameras)."""
@@ -642,16 +660,30 @@ def _rejoin(
     return out, n
 
 
+PROUD_SLICE_PX = 6  # width (camera pixels) of the slices across a part's length that are compared apart
+
+
 def _proud(mask: np.ndarray, frame: CameraFrame, proud_m: float) -> np.ndarray:
-    """The pixels of a part's mask within proud_m behind its nearest ones (5th percentile depth, not the very
-    nearest: a stray pixel on something in front would move it)."""
-    d = frame.depth_m[mask]
+    """The pixels of a part's mask within proud_m behind the nearest ones (5th percentile depth, not the very
+    nearest: a stray pixel on something in front would move it) of their slice across the part's length (its
+    longer image axis). Sliced because a handle seen at an angle recedes along its length by more than proud_m:
+    against one nearest depth for the whole mask, a LIBERO handle seen by agentview lost its far half."""
+    vs, us = np.nonzero(mask)
+    d = frame.depth_m[vs, us]
     ok = np.isfinite(d) & (d > 0)
     if ok.sum() < 10:
         return mask
-    near = float(np.percentile(d[ok], 5))
+    pts = np.stack([us, vs], 1).astype(float)
+    centred = pts - pts.mean(0)
+    axis = np.linalg.eigh(centred.T @ centred)[1][:, -1]  # the longer image axis
+    slice_of = np.floor(centred @ axis / PROUD_SLICE_PX).astype(int)
+    keep_px = np.zeros(len(vs), bool)
+    for k in np.unique(slice_of[ok]):
+        here = ok & (slice_of == k)
+        near = float(np.percentile(d[here], 5))
+        keep_px |= here & (d <= near + proud_m)
     keep = np.zeros_like(mask)
-    keep[mask] = ok & (d <= near + proud_m)
+    keep[vs[keep_px], us[keep_px]] = True
     return keep if keep.sum() >= 0.2 * mask.sum() else mask
 
 
