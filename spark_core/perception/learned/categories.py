@@ -47,7 +47,7 @@ CATEGORIES: tuple[Category, ...] = (
     Category("brush", "scrubbing brush with a handle and bristles"),
     Category("zone", "flat square target area marked on the table, a region"),
     Category("cabinet", "wooden cabinet, a cupboard with a drawer", max_extent_m=0.40),
-    Category("drawer", "the cabinet's sliding drawer", part_of=("cabinet",)),
+    Category("drawer", "the cabinet's sliding drawer", part_of=("cabinet",), max_extent_m=0.35),
     Category(
         "drawer handle", "metal handle on the cabinet drawer, a pull", part_of=("drawer", "cabinet"), proud_m=0.02
     ),

@@ -116,7 +116,8 @@ class LearnedSegmenter:
         self._doc_vecs = self.encoder.encode(
             [f"{CATEGORIES[i].name}: {CATEGORIES[i].description}" for i in self._things]
         )
-        self._cache: dict[tuple, list[Instance]] = {}
+        # per frame: its RGB array (held, so that its id is not reused while cached) and its instances
+        self._cache: dict[tuple, tuple[np.ndarray, list[Instance]]] = {}
 
     # -- grounding ---------------------------------------------------------------------------------------------
     def ground(self, text: str) -> tuple[dict[int, float], set[str]]:
@@ -182,8 +183,9 @@ class LearnedSegmenter:
         usually arrives in several calls). Instances are found at network resolution; each mask is then scaled
         to the frame by nearest pixel (at most a camera pixel off at the edges)."""
         key = (id(frame.rgb), frame.camera, frame.sim_time_s)
-        if key in self._cache:
-            return self._cache[key]
+        hit = self._cache.get(key)
+        if hit is not None and hit[0] is frame.rgb:  # the same array, not a new one where a freed one lived
+            return hit[1]
         cat, prob, bnd, col, depth, probs = self.predict(frame)
         H, W = frame.shape
         factor_sq = (H / cat.shape[0]) * (W / cat.shape[1])
@@ -232,7 +234,7 @@ class LearnedSegmenter:
         out = _drawers_apart(out, frame)
         if len(self._cache) > 8:
             self._cache.clear()
-        self._cache[key] = out
+        self._cache[key] = (frame.rgb, out)
         return out
 
     def _group_instances(
