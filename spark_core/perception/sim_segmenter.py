@@ -15,7 +15,19 @@ from .detection import Detection
 from .frame import CameraFrame
 from .qualifiers import QUALIFIERS, split_qualifier, split_relation
 from .text_encoder import SHARED_ENCODER, TextEncoder
-from .variants import CONSUMABLES, GENERIC, KIND_OF, MATERIALS, NOT_NOUNS, PACKAGING, PARTS, SHAPES, SIZES, SPELLINGS
+from .variants import (
+    CONSUMABLES,
+    GENERIC,
+    KIND_OF,
+    KINDS,
+    MATERIALS,
+    NOT_NOUNS,
+    PACKAGING,
+    PARTS,
+    SHAPES,
+    SIZES,
+    SPELLINGS,
+)
 
 HEAD_NOUN_BONUS = 0.08
 # An object whose colour, shape or kind contradicts the prompt is no match at any similarity: the score drops by
@@ -262,6 +274,11 @@ def _forms(word: str) -> set[str]:
     return out
 
 
+def _kinds_of(word: str) -> int:
+    """How many kinds `word` names ("dish": plate, bowl, ramekin)."""
+    return sum(bool(_forms(word) & k) for k in KINDS)
+
+
 def _kind(word: str) -> frozenset[str] | None:
     return next((KIND_OF[f] for f in _forms(word) if f in KIND_OF), None)
 
@@ -301,7 +318,8 @@ def mismatch(prompt: str, name: str, description: str, part_is_whole: bool = Tru
         is_head = head_kind & _forms(nw[-1]) if nw and not part_is_whole else head_kind & doc
         # a modifier naming the object stands for it only through a part or its packaging ("stove knob", "ketchup
         # bottle"), or when it is the object's own noun ("burner plate" of a stove): "wine glass" is no wine bottle
-        own_noun = any(k & _forms(nw[-1]) for _, k in owners) if nw else False
+        # (a wide word, of several kinds, says what a thing is for: a "dish towel" is no plate)
+        own_noun = any(k & _forms(nw[-1]) and _kinds_of(w) == 1 for w, k in owners) if nw else False
         via_owner = owners and part_is_whole and (kinds[-1][0] in PARTS | PACKAGING or own_noun)
         foreign = [w for w, k in owners if not k & doc]
         if nw and head_kind & _forms(nw[-1]) and kinds[-1][0] not in PARTS | PACKAGING:
@@ -343,6 +361,11 @@ def _unknown_head(head: str, modifiers: list[str], name_words: list[str], doc: s
         named = modifiers
         if named and not any(_forms(w) & doc or (_kind(w) or frozenset()) & doc for w in named):
             return f"noun: {' '.join(named)} {head}"
+        # a package holds what its modifier names: the object's noun ("ketchup bottle", "cream cheese box"), or
+        # any of its words when the object is itself a package ("cookie tin"); "chocolate bar" is no pudding
+        own = own_head if not own_head & (PARTS | PACKAGING) else doc
+        if named and head not in PARTS and not any(_forms(w) & own or (_kind(w) or frozenset()) & own for w in named):
+            return f"noun: {' '.join(named)} {head} holds no {name_words[-1]}"
         return None
     if _noun_cosine(head, name_words[-1]) < UNKNOWN_NOUN_MIN_COSINE:
         return f"noun: {head} vs {name_words[-1]}"

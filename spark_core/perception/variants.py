@@ -45,7 +45,8 @@ KINDS: tuple[frozenset[str], ...] = tuple(
     frozenset(s.split())
     for s in (
         "block cube brick",
-        "plate dish saucer platter",
+        "plate dish platter",
+        "saucer",  # a small plate under a cup: a scene's dinner plate is no saucer
         "bowl dish basin",
         "ramekin dish",  # a ramekin is a small dish: "dish" may name it too
         # "bin" and "crate" are wider words: a basket or a tray

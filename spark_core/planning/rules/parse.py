@@ -390,6 +390,8 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
         both = re.fullmatch(r"(.+ handle) with (?:both|two) arms", rest)
         if both:  # a handle of something lifted with both arms: its own arm grips it, the other arm the other one
             return Clause(action, obj=object_phrase(both.group(1)), together=True, text=text)
+        # "grab the ketchup for the basket": a thing fetched for a place is carried there
+        rest = re.sub(r"\s+for (the|a|an) (?=\w)", r" to \1 ", rest)
         # "take the block into the basket": a destination makes it a carry; "pick the bowl on the stove": where
         # it is picks out which bowl, and stays in the phrase
         if not re.search(r"(?<!next )(?<!close )\b(into|onto|to)\b", rest):

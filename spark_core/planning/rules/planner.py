@@ -225,6 +225,12 @@ class RulesPlanner:
                     raise CannotPlan(f"{c.text!r}: scrub with what? say e.g. 'with the sponge'")
                 else:
                     tool = need(c.tool, "tool", c)
+                    if tool == t or _same_detection(scene[tool], scene[t]):
+                        # one thing found for both: the tool named is not there (a "dish towel" found as the plate)
+                        raise CannotPlan(
+                            f"{c.text!r}: {tool!r} and {t!r} are the same thing to perception: nothing scrubs itself "
+                            f"(understood: {understood}; found in the scene: {seen})"
+                        )
                     out += [] if held == tool else [_prim("pick", keypoint_label=tool)]  # already in hand
                     out += [
                         _prim("constrained_scrub", target_label=t),
