@@ -294,8 +294,13 @@ def _bench(args: argparse.Namespace) -> int:
     elif args.suite == "perception":
         from spark_core.bench import perception_bench
 
-        result = perception_bench.run(n_seeds=args.scenes_per_task, progress=lambda s: print(s, flush=True))
-        title, body = "perception on held-out scenes (learned segmenter)", perception_bench.section(result, command)
+        result = perception_bench.run(
+            n_seeds=args.scenes_per_task, progress=lambda s: print(s, flush=True), round_=args.seed
+        )
+        title = "perception on held-out scenes (learned segmenter)"
+        if args.seed:  # a later round of scenes nobody looked at keeps a section of its own
+            title = f"perception on held-out scenes, seed round {args.seed} (learned segmenter)"
+        body = perception_bench.section(result, command)
         print(body)
     elif args.suite == "wording":
         title, body = "rules planner on the wording corpus", _wording(args, command)

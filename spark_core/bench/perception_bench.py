@@ -33,16 +33,24 @@ SUITE_CAMERAS = {"builtin": CAMERAS, "random": CAMERAS, "libero": ("agentview", 
 LIBERO_TASK_STRIDE = 5  # every 5th LIBERO-PRO task: 2 of the 10 tasks of each of the 6 cells
 
 
-def _scene_worlds(suite: str, n_seeds: int) -> list[tuple[str, int, Callable]]:
+ROUND_STRIDE = {"builtin": 100, "random": 200, "libero": 600}  # seeds one round of held-out scenes spans
+
+
+def _scene_worlds(suite: str, n_seeds: int, round_: int = 0) -> list[tuple[str, int, Callable]]:
     """(scene name, seed, world factory) of a suite's held-out scenes. LIBERO: LIBERO's placement samplers from
-    seeds LIBERO_BENCH_SEED0 + 10 * task + k (never an init state; training seeds are 1,500,000 and up)."""
+    seeds LIBERO_BENCH_SEED0 + 10 * task + k (never an init state; training seeds are 1,500,000 and up).
+    `round_` > 0 moves every range by that many ROUND_STRIDE blocks: scenes nobody has looked at, once the
+    round-0 scenes have guided a change."""
+    if n_seeds > (10 if suite == "libero" else ROUND_STRIDE[suite] // (7 if suite == "random" else 1)):
+        raise ValueError(f"{n_seeds} scenes per task overrun one round of {suite} held-out seeds")
+    shift = round_ * ROUND_STRIDE[suite]
     if suite == "libero":
         from ..perception.learned.libero_data import LIBERO_BENCH_SEED0, LiberoScenes, libero_tasks
 
         scenes = LiberoScenes()
         tasks = libero_tasks()
         return [
-            (t.name, LIBERO_BENCH_SEED0 + 10 * i + k, lambda s, t=t: scenes.scene(s, t))
+            (t.name, LIBERO_BENCH_SEED0 + shift + 10 * i + k, lambda s, t=t: scenes.scene(s, t))
             for i, t in enumerate(tasks)
             if i % LIBERO_TASK_STRIDE == 0
             for k in range(n_seeds)
@@ -51,12 +59,12 @@ def _scene_worlds(suite: str, n_seeds: int) -> list[tuple[str, int, Callable]]:
         from ..sim.tasks import BUILTIN
 
         return [
-            (name, BENCH_SEED0 + k, lambda s, t=task: t.make_world(s))
+            (name, BENCH_SEED0 + shift + k, lambda s, t=task: t.make_world(s))
             for name, task in BUILTIN.items()
             for k in range(n_seeds)
         ]
     if suite == "random":
-        return [("random", BENCH_SEED0 + 5000 + k, lambda s: random_world(s)[0]) for k in range(n_seeds * 7)]
+        return [("random", BENCH_SEED0 + 5000 + shift + k, lambda s: random_world(s)[0]) for k in range(n_seeds * 7)]
     raise ValueError(f"no perception bench scenes for suite {suite!r}; have: builtin, random, libero")
 
 
@@ -157,9 +165,10 @@ def run(
     n_seeds: int = 3,
     progress=print,
     weights: str | None = None,
+    round_: int = 0,
 ) -> dict:
     """Per suite: instance precision/recall, per-category IoU, keypoint errors (learned and the sim oracle) and
-    inference time; `weights` None = the shipped ones."""
+    inference time; `weights` None = the shipped ones; `round_` picks the held-out seed round (_scene_worlds)."""
     seg = LearnedSegmenter(weights)
     out = {}
     for suite in suites:
@@ -180,7 +189,7 @@ def run(
             "kp_learned_missing": [],
             "kp_sim_missing": [],
         }
-        scenes = _scene_worlds(suite, n_seeds)
+        scenes = _scene_worlds(suite, n_seeds, round_)
         for i, (name, seed, make) in enumerate(scenes):
             world = make(seed)
             try:

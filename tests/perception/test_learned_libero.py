@@ -189,3 +189,23 @@ def test_libero_bench_scenes_are_held_out():
     for name, seed, _ in scenes:
         assert 1000 <= seed < LIBERO_TRAIN_SEED0
         assert task_of_seed(seed).name == name
+
+
+def test_a_later_seed_round_of_bench_scenes_is_new_and_still_held_out():
+    """`spark bench perception --seed 1`: every suite's scenes move to seeds round 0 never used, still outside the
+    training ranges and, for LIBERO, still scenes of the task they are listed under; more scenes per task than a
+    round holds are refused instead of running into the next round."""
+    pytest.importorskip("libero")
+    from spark_core.bench.perception_bench import _scene_worlds
+    from spark_core.perception.learned.dataset import TRAIN_SEED0
+    from spark_core.perception.learned.libero_data import LIBERO_TRAIN_SEED0, task_of_seed
+
+    for suite, top in (("builtin", TRAIN_SEED0), ("random", TRAIN_SEED0), ("libero", LIBERO_TRAIN_SEED0)):
+        first = {seed for _, seed, _ in _scene_worlds(suite, 3)}
+        later = _scene_worlds(suite, 3, round_=1)
+        assert later and not first & {seed for _, seed, _ in later}
+        assert all(seed < top for _, seed, _ in later)
+    for name, seed, _ in _scene_worlds("libero", 3, round_=1):
+        assert task_of_seed(seed).name == name
+    with pytest.raises(ValueError, match="overrun"):
+        _scene_worlds("libero", 11)
