@@ -19,22 +19,25 @@ def register(sub) -> None:
     d.add_argument("--shard-scenes", type=int, default=200, help="scenes per shard file")
     d.add_argument(
         "--source",
-        choices=["builtin", "libero"],
+        choices=["builtin", "libero", "capbench"],
         default="builtin",
         help="builtin: our scene builder; libero: the LIBERO-PRO tasks' scenes from LIBERO's placement samplers "
-        "(never an evaluation init state; needs `make bench-deps`)",
+        "(never an evaluation init state); capbench: the seven CaP-Bench robosuite tasks reset by their own "
+        "samplers from seeds far from the benchmark's 0..999 (libero and capbench need `make bench-deps`)",
     )
     d.add_argument(
         "--seed",
         type=int,
         default=None,
-        help="first scene seed (default: the source's training range: builtin 1,000,000, libero 1,500,000)",
+        help="first scene seed (default: the source's training range: builtin 1,000,000, libero 1,500,000, "
+        "capbench 1,700,020)",
     )
     d.add_argument(
         "--cameras",
         nargs="+",
         default=None,
-        help="views per scene (default: builtin agentview side wrist; libero agentview frontview wrist)",
+        help="views per scene (default: builtin agentview side wrist; libero agentview frontview wrist; capbench "
+        "agentview sideview wrist)",
     )
     d.add_argument(
         "--rearrange",
@@ -91,6 +94,7 @@ def _positive(name: str, value: float) -> None:
 
 
 def _cmd_dataset(args: argparse.Namespace) -> int:
+    from spark_core.perception.learned.capbench_data import CAPBENCH_TRAIN_SEED0
     from spark_core.perception.learned.dataset import TRAIN_SEED0, generate
     from spark_core.perception.learned.libero_data import LIBERO_TRAIN_SEED0
 
@@ -100,7 +104,7 @@ def _cmd_dataset(args: argparse.Namespace) -> int:
     except ValueError as e:
         print(e, file=sys.stderr)
         return 2
-    default_seed = LIBERO_TRAIN_SEED0 if args.source == "libero" else TRAIN_SEED0
+    default_seed = {"libero": LIBERO_TRAIN_SEED0, "capbench": CAPBENCH_TRAIN_SEED0}.get(args.source, TRAIN_SEED0)
     seed0 = default_seed if args.seed is None else args.seed
     out = Path(args.out)
     cameras = tuple(args.cameras) if args.cameras else None

@@ -3,8 +3,9 @@ per pixel (category, instance, colour) from the renderer's ids.
 
 TRAINING ONLY: the labels are simulator ground truth (privileged). Nothing here is imported by the segmenter.
 
-Sources: "builtin" (random_world below) and "libero" (libero_data.py: LIBERO-PRO tasks' scenes from LIBERO's
-own placement samplers, never an evaluation init state).
+Sources: "builtin" (random_world below), "libero" (libero_data.py: LIBERO-PRO tasks' scenes from LIBERO's
+own placement samplers, never an evaluation init state) and "capbench" (capbench_data.py: the CaP-Bench robosuite
+envs reset from seeds far from the benchmark's 0..999).
 
 Seeds: scene `i` of a dataset with first seed `s` is built from seed `s + i`. Training data uses seeds from
 TRAIN_SEED0; the perception benchmark's held-out scenes use BENCH_SEED0; both are far above every evaluation
@@ -204,8 +205,12 @@ def random_world(seed: int):
     return world, rng
 
 
-SOURCES = ("builtin", "libero")
-DEFAULT_CAMERAS = {"builtin": ("agentview", "side", "wrist"), "libero": ("agentview", "frontview", "wrist")}
+SOURCES = ("builtin", "libero", "capbench")
+DEFAULT_CAMERAS = {
+    "builtin": ("agentview", "side", "wrist"),
+    "libero": ("agentview", "frontview", "wrist"),
+    "capbench": ("agentview", "sideview", "wrist"),
+}
 
 
 def _scenes(
@@ -229,6 +234,17 @@ def _scenes(
                 yield seed, world, libero_geom_tables(world), np.random.default_rng([seed, 1])
         finally:
             scenes.close()
+    elif source == "capbench":
+        from .capbench_data import CapbenchScenes, capbench_geom_tables
+        from .capbench_data import task_index as capbench_task
+
+        cap = CapbenchScenes()
+        try:  # a task's scenes one after another (its env is built once per block of seeds)
+            for seed in sorted(seeds, key=lambda s: (capbench_task(s), s)):
+                world = cap.scene(seed)
+                yield seed, world, capbench_geom_tables(world), np.random.default_rng([seed, 1])
+        finally:
+            cap.close()
     else:
         raise ValueError(f"unknown dataset source {source!r}; have: {', '.join(SOURCES)}")
 
