@@ -6,10 +6,10 @@ seeds 0..999 and nothing here draws from that range.
 
 TRAINING / SCORING ONLY: labels come from the renderer's ids (privileged). The segmenter never imports this.
 
-Seeds: scene seed `s` is a scene of task TASKS[(s // 10) % 7]; its env is built from the block's first seed
-(`s - s % 10`: robosuite draws some sizes, e.g. Lift's cube, when it builds the model), so the same seed gives
+Seeds: scene seed `s` is a scene of task TASKS[(s // 5) % 7]; its env is built from the block's first seed
+(`s - s % 5`: robosuite draws some sizes, e.g. Lift's cube, when it builds the model), so the same seed gives
 the same scene whatever was rendered before. Training uses CAPBENCH_TRAIN_SEED0 + k, the perception benchmark
-CAPBENCH_BENCH_SEED0 + k, tests and diagnostics CAPBENCH_DEV_SEED0 + k; all three are = 0 mod 70 (their first
+CAPBENCH_BENCH_SEED0 + k, tests and diagnostics CAPBENCH_DEV_SEED0 + k; all three are = 0 mod 35 (their first
 scene is Lift's) and disjoint from every other source's ranges.
 """
 
@@ -30,7 +30,8 @@ CAPBENCH_TRAIN_SEED0 = 1_700_020
 CAPBENCH_BENCH_SEED0 = 960_050
 CAPBENCH_DEV_SEED0 = 955_010
 TASKS: tuple[str, ...] = tuple(ENVS)  # Lift, Stack, CubeRestack, Wipe, NutAssemblySquare, TwoArmLift, TwoArmHandover
-SCENES_PER_TASK = 10
+# 5: a dataset's validation crops (its highest-seed 5 %: 30 of 600 scenes) then span six of the seven tasks
+SCENES_PER_TASK = 5
 PERCEPTION_CAMERAS = ("agentview", "sideview")  # what tasks/capbench.py's worlds look through (RobosuiteWorld's)
 SETTLE_STEPS = 250  # 0.5 s of physics after the reset: CubeRestack's green cube settles on the red one
 
