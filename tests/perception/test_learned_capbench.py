@@ -91,8 +91,11 @@ def test_a_stack_scene_renders_a_red_and_a_green_block(monkeypatch):
 
 def test_nut_assembly_labels_the_nut_and_both_pegs():
     """Per-geom labels of a NutAssemblySquare world: the square nut (ring and handle) is one nut instance, each
-    peg a peg instance, the table TABLE, the arm ROBOT (no render: the tables alone)."""
+    peg a peg instance, numbered as the scene's objects; the table TABLE, the arm ROBOT (no render: the tables
+    alone)."""
     pytest.importorskip("robosuite")
+    from spark_core.sim.cameras import label_table
+
     scenes = cb.CapbenchScenes(perturb=False)
     try:
         seed = cb.CAPBENCH_DEV_SEED0 + cb.SCENES_PER_TASK * cb.TASKS.index("NutAssemblySquare")
@@ -108,11 +111,14 @@ def test_nut_assembly_labels_the_nut_and_both_pegs():
         arm_bodies = [m.body(b).id for n in world.scene.robots.values() for b in n.bodies]
         robot = {CATEGORIES[c].name for c in cat[np.isin(m.geom_bodyid, arm_bodies)]}
         table = {CATEGORIES[c].name for c in cat[m.geom_bodyid == m.body("table").id]}
+        object_id = {label: i for i, label in label_table(world)[0].items()}
     finally:
         scenes.close()
     assert nut[0] == {"nut"} and len(nut[1]) == 1 and 0 not in nut[1]
     assert [p[0] for p in pegs] == [{"peg"}, {"peg"}]
     assert len({*pegs[0][1], *pegs[1][1], *nut[1]}) == 3  # three instances
+    # numbered as the scene's objects (the perception bench finds each label's true mask by it)
+    assert nut[1] == {object_id["square nut"]} and pegs[0][1] == {object_id["square peg"]}
     assert robot == {"robot"} and table == {"table"}
 
 

@@ -157,15 +157,26 @@ def _object_root(m, body: int) -> tuple[int, str] | None:
 
 def capbench_geom_tables(world) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Per geom id: category index, instance id (0 = none) and colour index for a CaP-Bench world: each object
-    one instance (Wipe's markers together one), robot geoms ROBOT, the table's TABLE, the rest background."""
+    one instance, parts included (the nut's handle, the pot's handles: a boundary inside one object would teach
+    the network to cut it), Wipe's markers together one; robot geoms ROBOT, the table's TABLE, the rest
+    background. Instance ids are the scene's object ids (sim.cameras.label_table) where the object has one, as
+    the perception bench's true-mask keypoints expect."""
+    from ...sim.cameras import label_table
+
     m = world.model
+    labels, _ = label_table(world)
+    ids: dict[str, int] = {}
+    for i, label in sorted(labels.items()):  # a body's whole object, else its first part (the nut is its ring)
+        if label in world.scene.objects:
+            ids[world.scene.objects[label].body] = i
+        else:  # Wipe's dirt is a part of the table body
+            ids.setdefault("dirt" if label == "dirt" else world.scene.parts[label][0].split("#")[0], i)
     robot_bodies = {m.body(b).id for n in world.scene.robots.values() for b in n.bodies}
     table = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, "table")
     thing = np.array([c.thing for c in CATEGORIES])
     cat = np.full(m.ngeom, BACKGROUND, np.uint8)
     inst = np.zeros(m.ngeom, np.int32)
     colour = np.zeros(m.ngeom, np.uint8)
-    ids: dict[str, int] = {}
     for g in range(m.ngeom):
         body = int(m.geom_bodyid[g])
         root = _object_root(m, body)
@@ -174,7 +185,7 @@ def capbench_geom_tables(world) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
             category, colour_name = ("dirt", "none") if name == "dirt" else OBJECT_BODIES[name]
             cat[g] = category_index(category)
             if thing[cat[g]]:
-                inst[g] = ids.setdefault(name, len(ids) + 1)
+                inst[g] = ids.setdefault(name, max([0, *labels, *ids.values()]) + 1)  # e.g. the hidden round nut
                 colour[g] = COLOUR_INDEX[colour_name]
         elif body == table and table >= 0:
             cat[g] = TABLE
