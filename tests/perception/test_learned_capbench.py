@@ -155,3 +155,20 @@ def test_the_dataset_command_writes_a_capbench_shard(tmp_path, capsys):
     assert d["rgb"].shape[1:] == (240, 320, 3) and len(d["rgb"]) == 4  # 2 scenes x 1 view x 2 crops
     assert sorted(set(d["seeds"].tolist())) == [seed, seed + 1]
     assert CATEGORY_INDEX["block"] in set(np.unique(d["category"]).tolist())
+
+
+def test_capbench_bench_scenes_are_held_out():
+    """The perception bench's capbench scenes: every task, each seed a scene of the task it is listed under,
+    outside the training range and 0..999; a later round is new; more scenes per task than a round holds are
+    refused (nothing is built here)."""
+    from spark_core.bench.perception_bench import _scene_worlds
+
+    first = _scene_worlds("capbench", 3)
+    assert sorted({name for name, _, _ in first}) == sorted(cb.TASKS) and len(first) == 21
+    later = _scene_worlds("capbench", 3, round_=1)
+    for name, seed, _ in first + later:
+        assert cb.task_of_seed(seed) == name
+        assert 1000 <= seed < cb.CAPBENCH_TRAIN_SEED0 and seed >= cb.CAPBENCH_BENCH_SEED0
+    assert not {s for _, s, _ in first} & {s for _, s, _ in later}
+    with pytest.raises(ValueError, match="overrun"):
+        _scene_worlds("capbench", cb.SCENES_PER_TASK + 1)
