@@ -15,6 +15,7 @@ scene is Lift's) and disjoint from every other source's ranges.
 
 from __future__ import annotations
 
+import gc
 import re
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -111,6 +112,7 @@ class CapbenchScenes:
         key = (task, seed - seed % SCENES_PER_TASK)
         if key != self._key:
             self.close()
+            gc.collect()  # the old env's reference cycles: a 2-scene-per-block loop plateaued at 2.0 GB, 1.5 with this
             self._env, self._key, self.task = make_env(task, key[1]), key, task
         env = self._env
         with _seeded_numpy(seed):
