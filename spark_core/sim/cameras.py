@@ -72,7 +72,7 @@ def _draw_later(world, camera: str, width: int, height: int) -> Callable[[], np.
         now = m.geom_rgba.copy()
         m.geom_rgba[:] = rgba
         try:
-            r.update_scene(data, camera=camera)
+            r.update_scene(data, camera=camera, scene_option=without_sites())
             return r.render().copy()
         finally:
             m.geom_rgba[:] = now
@@ -151,6 +151,16 @@ def _depth_of_last_pass(r: mujoco.Renderer) -> np.ndarray:
     return np.flipud(depth).copy() if r._gl_context else depth
 
 
+def without_sites() -> mujoco.MjvOption:
+    """Scene options that draw no site: robosuite and LIBERO give the gripper and every placement region a site
+    with alpha 0, invisible in RGB but written into the depth buffer (a 30 cm cylinder below robosuite's gripper;
+    1,579 depth pixels of one LIBERO agentview frame, up to 2 m nearer than the surface behind). A camera sees
+    surfaces, so no pass draws them."""
+    opt = mujoco.MjvOption()
+    opt.sitegroup[:] = 0
+    return opt
+
+
 def render_frame(world, camera: str, width: int, height: int) -> CameraFrame:
     """One frame of `camera` (width x height px) as the world is now; on the world's render thread. A world with
     `defer_rgb` gets a DeferredFrame (its RGB drawn when first read, identical to drawing it now)."""
@@ -161,10 +171,10 @@ def render_frame(world, camera: str, width: int, height: int) -> CameraFrame:
     if deferred:
         rgb = _draw_later(world, camera, width, height)
     else:
-        r.update_scene(d, camera=camera)
+        r.update_scene(d, camera=camera, scene_option=without_sites())
         rgb = r.render().copy()
     r.enable_segmentation_rendering()
-    r.update_scene(d, camera=camera)
+    r.update_scene(d, camera=camera, scene_option=without_sites())
     seg = r.render()
     r.disable_segmentation_rendering()
     depth = _depth_of_last_pass(r)

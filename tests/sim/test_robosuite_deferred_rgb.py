@@ -8,7 +8,7 @@ import pytest
 
 pytest.importorskip("libero", reason="benchmark extras: make bench-deps")
 
-from spark_core.sim.cameras import DeferredFrame
+from spark_core.sim.cameras import DeferredFrame, without_sites
 from spark_core.sim.tasks import SUITES
 
 
@@ -60,15 +60,20 @@ def test_depth_read_from_the_id_pass_is_the_depth_pass(world, camera):
 
     frame = world.render(camera, 320, 240)
 
-    def own_depth():
+    def own_depth(sites: bool):
         r = mujoco.Renderer(world.model, 240, 320)
         try:
             r.enable_depth_rendering()
-            r.update_scene(world.data, camera=camera)
+            r.update_scene(world.data, camera=camera, scene_option=None if sites else without_sites())
             return r.render().copy()
         finally:
             r.close()
 
-    depth = world.on_render_thread(own_depth)
+    depth = world.on_render_thread(lambda: own_depth(False))
     assert np.isfinite(depth).all() and depth.min() > 0
     np.testing.assert_array_equal(frame.depth_m, depth)
+    # LIBERO's transparent sites (placement regions, robosuite's gripper cylinder) are in MuJoCo's default depth
+    # pass but not in the frame's: the camera sees surfaces only
+    with_sites = world.on_render_thread(lambda: own_depth(True))
+    assert (np.abs(with_sites - depth) > 0.005).sum() > 50
+    assert not (with_sites > depth + 0.005).any()  # a site only ever hides what is behind it

@@ -94,19 +94,19 @@ def render_labelled(world, camera: str, tables) -> LabelledFrame:
 
 
 def _render_labelled(world, camera: str, tables) -> LabelledFrame:
-    from ...sim.cameras import _renderer, intrinsics
+    from ...sim.cameras import _renderer, intrinsics, without_sites
 
     m, d = world.model, world.data
     W, H = RENDER_SIZE
     r = _renderer(world, W, H)
-    r.update_scene(d, camera=camera)
+    r.update_scene(d, camera=camera, scene_option=without_sites())
     rgb = r.render().copy()
     r.enable_depth_rendering()
-    r.update_scene(d, camera=camera)
+    r.update_scene(d, camera=camera, scene_option=without_sites())
     depth = r.render().astype(np.float32).copy()
     r.disable_depth_rendering()
     r.enable_segmentation_rendering()
-    r.update_scene(d, camera=camera)
+    r.update_scene(d, camera=camera, scene_option=without_sites())
     seg = r.render()
     r.disable_segmentation_rendering()
     cat_t, inst_t, col_t = tables
