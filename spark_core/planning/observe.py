@@ -32,6 +32,10 @@ def phrases_for(instruction: str) -> list[str]:
                 out.setdefault(p, None)
         if c.to_arm and c.obj:  # handed from arm to arm: gripped by its handle, if it has one
             out.setdefault(f"{c.obj} handle", None)
+        if c.action == "put" and c.relation == "in" and c.target and "drawer" in c.target.split():
+            # into a drawer: the planner opens it first when no step does, by its handle
+            out.setdefault(f"{c.target} handle", None)
+            out.setdefault("drawer handle", None)
         part = PART_OF_ACTION.get(c.action)
         if part and c.obj:
             out.setdefault(f"{c.obj} {part}", None)

@@ -39,3 +39,9 @@ def test_an_unfound_non_thing_does_not_refuse_and_an_unfound_thing_does():
     assert ok.ok, ok.error
     refused = _plan("put the mug on the tray, without hitting the colander", found, {"colander": "none found"})
     assert not refused.ok and "colander" in refused.error
+
+
+def test_a_pronoun_in_a_remark_is_no_thing_to_find():
+    text = "move the mug onto the tray, that's the end state i'm after"
+    assert read_past(text, parse_instruction(text)) == []
+    assert not is_thing("i") and not is_thing("you")

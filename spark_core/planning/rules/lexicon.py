@@ -123,6 +123,8 @@ PRONOUNS = ("it", "them", "there", "that one", "this one")
 # Words and phrases that carry no action. ("then" is not one: it separates clauses.)
 FILLERS = (
     "please",
+    "pls",
+    "plz",
     "kindly",
     "carefully",
     "gently",
@@ -211,6 +213,8 @@ PARTICIPLES: dict[str, str] = {
     "moved": "put",
     "dropped": "put",
     "stored": "put",
+    "tucked": "put",
+    "packed": "put",
     "lifted": "pick",
     "held": "pick",
     "raised": "pick",

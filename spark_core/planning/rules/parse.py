@@ -81,6 +81,8 @@ def _match_verb(clause: str) -> tuple[str, str] | None:
     if m:
         return "open", m.group(1)
     m = re.fullmatch(r"(?:push|slide) (.+) (?:closed|shut)|(?:push|slide) in (.*drawer.*)", clause)
+    # "slide it back in" said of a drawer named before: closing it
+    m = m or re.fullmatch(r"(?:push|slide) ()(it|that one|this one) back in", clause)
     m = m or re.fullmatch(r"(?:push|slide) ()(.*drawer.*?)(?: back)? in", clause)
     if m:  # "push the drawer in": a drawer pushed in is a drawer closed
         return "close", m.group(1) or m.group(2)
@@ -104,6 +106,8 @@ def split_clauses(text: str) -> list[str]:
         text,
     )
     out: list[str] = []
+    # a conjunction left at a part's end by a split after it ("slide the drawer out and afterwards ...")
+    parts = [re.sub(r"\s+(?:and|then|and then)$", "", p.strip()) if p else p for p in parts]
     for part in (p.strip() for p in parts if p and p.strip()):
         if part in ("after that", "afterwards", "then", "and"):
             continue
@@ -148,10 +152,21 @@ def parse_instruction(instruction: str) -> list[Clause]:
             re.match(r"(?:the|a|an) \w.* (?:into|onto|on top of|inside|in|on) (?:the|a|an) \w", part)
             # without an article only with a preposition that can only say where it goes ("red block onto the plate")
             or re.match(r"[a-z][\w ]* (?:into|onto|on to) (?:the|a|an) \w", part)
+            # "red block to the green tray": a noun phrase (not a verb: "fly to the moon") and a destination last
+            or re.fullmatch(r"(?:the |a |an )?[a-z][\w ]*(?<!next)(?<!close) to (?:the|a|an) \w+(?: \w+)?", part)
+            and not is_verb(part.split()[0])
             # after a thing named on its own: "blue block, then red block on it"
             or previous == "mention"
             and re.fullmatch(r"[a-z][\w ]* (?:on top of|onto|into|on|in|inside) (?:it|them)", part)
         )
+        if (  # "the bowl sitting on the box, put it on the plate": where it sits names it; the goal comes after
+            previous in (None, "mention")
+            and _topic(part, parts[i + 1 :])
+            and re.search(
+                rf"\b(?:{_WHERE_PARTICIPLES})(?: up| down)? (?:on|in|at|by|near|next to|beside|between)\b", part
+            )
+        ):
+            verb = ("mention", part)
         if verb is None and previous in (None, "mention") and _topic(part, parts[i + 1 :]):
             verb = ("mention", part)  # "the bowl on the stove, move it to the plate": named first, then acted on
         if verb is None and previous in (None, "mention") and verbless_carry:
@@ -248,7 +263,9 @@ def _topic(part: str, later: list[str]) -> bool:
         return False
     if re.search(r"\b(?:onto|into|on to)\b", part):  # "the red block onto the plate, then ...": a carry
         return False
-    return re.search(r"\b(?:it|them|that one|this one)\b", later[0]) is not None
+    # "..., put that on the plate": a bare demonstrative before a preposition points back as "it" does
+    back = r"\b(?:it|them|that one|this one|(?:that|this)(?= (?:on|onto|in|into|to|over|inside)\b))\b"
+    return re.search(back, later[0]) is not None
 
 
 def _shares_destination(first: Clause, second: Clause) -> bool:
@@ -295,6 +312,7 @@ def _resolve(c: Clause, before: list[Clause]) -> Clause:
     return replace(c, **updates) if updates else c
 
 
+_WHERE_PARTICIPLES = "sitting|resting|standing|lying|perched|located|parked|kept"
 # A preposition after one of these says where a thing is, not where it goes ("the plate that sits on the box").
 _LOCATIVE_BEFORE = re.compile(
     r"\b(?:(?:that|which) (?:is|are)|(?:that|which) (?:sits?|rests?|stands?|lies|lie)|is|are|sitting|resting|"
@@ -334,6 +352,10 @@ def _destination(rest: str) -> tuple[str, str, str] | None:
     free = [m for m in matches if not _LOCATIVE_BEFORE.search(rest[: m.start()])] or matches
     strong = [m for m in free if m.group(1) in _STRONG]
     m = (strong or free)[-1]
+    # "put it on the plate on top of the box": a pronoun is located by nothing, so its first preposition says
+    # where it goes and what follows locates the destination
+    if re.fullmatch(r"(?:it|them)", rest[: free[0].start()].strip()) and not strong:
+        m = free[0]
     prep, obj, target = m.group(1), re.sub(r"\s+and$", "", rest[: m.start()].strip()), rest[m.end() :].strip()
     if not target:
         return obj, ("in" if prep in IN else "on"), ""
@@ -354,13 +376,15 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
         rest = rest[3:]
     rest = re.sub(r"\s+down(?=\s+(?:on|onto|in|into|from|with|to)\b|$)|^down\s+", " ", rest).strip()
     # "over to", "across onto", "back into": the particle adds nothing to where it goes
-    rest = re.sub(r"\b(?:over|across|back|away|off) (?=(?:to|onto|into|on to|in|on|inside)\b)", "", rest)
+    rest = re.sub(r"\b(?:over|across|back|away|off|up) (?=(?:to|onto|into|on to|in|on|inside|on top of)\b)", "", rest)
     rest = re.sub(r"\s+in front of (?:it|them)$", "", rest)
     distance, rest = _distance(rest)
     direction = None
     if action == "push":  # elsewhere "left" and "closer" pick out an object, not a way to move it
         direction, rest = _direction(rest)
     if action == "mention":
+        # "there's a drawer sticking out": how it stands is no part of its name
+        rest = re.sub(r" (?:sticking|poking|hanging|standing|sitting|lying) (?:out|open|up|there|here)$", "", rest)
         return Clause(action, obj=object_phrase(rest) or None, text=text)
     if action == "scrub":
         split = _split_on(rest, WITH)
@@ -425,7 +449,9 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
             kind = last_target
         target = _elided_noun(target, kind)
         # "the plate that sits on the cookie box": a destination located by what it rests on reads as an object does
-        located = _PLACED.search(target)
+        located = _PLACED.search(target) or (
+            is_pronoun(said) and re.search(r"\s(?:on top of|on|in|inside|next to|beside|near|by)\s", target)
+        )
         return Clause(
             action,
             obj=object_phrase(obj) or None,

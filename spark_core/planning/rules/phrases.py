@@ -164,7 +164,16 @@ def _predicative(text: str) -> str:
 
 def noun_phrase(words: str) -> str:
     """Strip determiners and tidy "drawer of the cabinet" -> "cabinet drawer", "cabinet's drawer" -> the same,
-    "the plate's centre" -> "plate"."""
+    "the plate's centre" -> "plate"; a count goes first ("cabinet second top drawer" -> "second top cabinet
+    drawer": perception reads the rank as the phrase's first word)."""
+    return re.sub(
+        r"^(.+?) ((?:second|third|fourth|fifth) (?:leftmost|rightmost|nearest|farthest|top|bottom))\b",
+        r"\2 \1",
+        _noun_phrase(words),
+    )
+
+
+def _noun_phrase(words: str) -> str:
     text = possessive(strip_determiners(words).strip())
     text = _predicative(re.sub(r"^(?:other|one) |(?<=\w) ones?$", "", text).strip())
     m = re.fullmatch(r"(?:contents?|beads) of (.+)", text)

@@ -120,6 +120,8 @@ class RulesPlanner:
         last_object: str | None = None
         last_container: str | None = None
         held: str | None = None  # what the previous step left in the hand (a bare "pick X")
+        put_last: str | None = None  # what the previous step set down somewhere
+        opened: set[str] = set()  # drawers a step opened
         together: list[str] = []  # handles of a two-armed lift, gripped at once
         for _i, c in enumerate(clauses):
             obj = last_object if is_pronoun(c.obj) else c.obj
@@ -128,6 +130,8 @@ class RulesPlanner:
                 target = last_container  # "open the drawer and put the bowl inside"
             if c.action == "mention":  # "there's a cup on the table; put it ...": only names the cup
                 pass
+            elif c.action == "put" and target is None and put_last == obj:
+                pass  # "carry it to the basket and drop it in": the step before already put it there
             elif c.action == "put" and c.relation in ("in", "on") and _is_region(target):
                 c = Clause("push", obj=obj, target=target, relation="in", text=c.text)  # into a flat area
                 o = need(obj, "object", c)
@@ -145,8 +149,14 @@ class RulesPlanner:
                 o = need(obj, "object", c)
                 inside = re.search(r"\b(in|inside)\b", o) is not None  # out of a drawer or a box: clear its walls
                 out.append(_prim("pick", keypoint_label=o, **({"lift_height": 0.2} if inside else {})))
+            elif c.action == "put" and c.relation == "in" and _opened_later(target, clauses[_i + 1 :], last_object):
+                pass  # "the cheese goes in the top drawer, so open it and put it inside": the goal, then its steps
             elif c.action in ("put", "sort", "stack"):
                 o, t = need(obj, "object", c), need(target, "destination", c)
+                if c.relation == "in" and "drawer" in t.split() and t not in opened:
+                    # into a drawer that no step opened: drawers stand closed, so open it first
+                    out.append(_drawer_step("open", t, scene, seen))
+                    opened.add(t)
                 if o == t or _same_detection(scene[o], scene[t]):
                     raise CannotPlan(
                         f"{c.text!r}: {o!r} and {t!r} are the same thing to perception: a thing cannot be put in or on "
@@ -173,31 +183,10 @@ class RulesPlanner:
                 out.append(_prim("push_object", keypoint_label=o, direction=direction, distance=distance))
             elif c.action in ("open", "close"):
                 o = need(obj, f"thing to {c.action}", c)  # the object itself must be seen, not only a handle-like part
-                handle = next(
-                    (h for h in (f"{o} handle", "drawer handle" if "drawer" in o else "") if h in scene), None
-                )
-                gap_m = np.linalg.norm(scene[handle].position_m - scene[o].position_m) if handle else 0.0
-                if handle and _same_detection(scene[handle], scene[o]):
-                    raise CannotPlan(
-                        f"cannot {c.action} {o!r}: perception found no handle on it, only {o!r} itself "
-                        f"(looked for {handle!r}; found: {seen})"
-                    )
-                if gap_m > HANDLE_REACH_M:
-                    raise CannotPlan(
-                        f"cannot {c.action} {o!r}: the handle perception found ({handle!r}) is not on it "
-                        f"({gap_m:.2f} m away)"
-                    )
-                if handle is None:
-                    raise CannotPlan(
-                        f"cannot {c.action} {o!r}: perception found no handle on it (looked for {o + ' handle'!r}; "
-                        f"found: {seen})"
-                    )
+                out.append(_drawer_step(c.action, o, scene, seen))
                 if c.action == "open":
-                    # fully: into the end stop if it comes first (LIBERO's drawers count as open past 14 of 16 cm)
-                    out.append(_prim("open_drawer", keypoint_label=handle, distance=0.18))
                     last_container = o
-                else:
-                    out.append(_prim("close_drawer", keypoint_label=handle))
+                    opened.add(o)
             elif c.action in ("turn_on", "turn_off"):
                 obj = need(obj, "appliance", c)
                 knob = obj if obj.endswith("knob") else f"{obj} knob"
@@ -237,6 +226,7 @@ class RulesPlanner:
                         _prim("move_relative", dz=0.10),
                         _prim("release"),
                     ]
+            put_last = obj if c.action in ("put", "stack") and target else None
             held = obj if c.action == "pick" else held if c.action == "mention" else None
             last_object = obj or last_object
         if together:
@@ -260,6 +250,36 @@ class RulesPlanner:
         if not c.direction:
             raise CannotPlan(f"{c.text!r}: push which way? (forward, backward, left, right, or into something)")
         return c.direction, round(min(c.distance_m or 0.10, 0.5), 3)
+
+
+def _drawer_step(action: str, o: str, scene, seen: str) -> dict:
+    """open_drawer / close_drawer by the handle perception found on `o` (refused when there is none on it)."""
+    handle = next((h for h in (f"{o} handle", "drawer handle" if "drawer" in o else "") if h in scene), None)
+    gap_m = np.linalg.norm(scene[handle].position_m - scene[o].position_m) if handle else 0.0
+    if handle and _same_detection(scene[handle], scene[o]):
+        raise CannotPlan(
+            f"cannot {action} {o!r}: perception found no handle on it, only {o!r} itself "
+            f"(looked for {handle!r}; found: {seen})"
+        )
+    if gap_m > HANDLE_REACH_M:
+        raise CannotPlan(
+            f"cannot {action} {o!r}: the handle perception found ({handle!r}) is not on it ({gap_m:.2f} m away)"
+        )
+    if handle is None:
+        raise CannotPlan(
+            f"cannot {action} {o!r}: perception found no handle on it (looked for {o + ' handle'!r}; found: {seen})"
+        )
+    if action == "open":
+        # fully: into the end stop if it comes first (LIBERO's drawers count as open past 14 of 16 cm)
+        return _prim("open_drawer", keypoint_label=handle, distance=0.18)
+    return _prim("close_drawer", keypoint_label=handle)
+
+
+def _opened_later(target: str | None, later: list[Clause], last_object: str | None) -> bool:
+    """A drawer that a later clause of the instruction opens (by name or as "it")."""
+    if not target or "drawer" not in target.split():
+        return False
+    return any(c.action == "open" and (c.obj == target or is_pronoun(c.obj)) for c in later)
 
 
 TWO_ARM_LIFT_M = 0.15

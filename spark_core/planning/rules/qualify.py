@@ -13,17 +13,21 @@ from __future__ import annotations
 
 import re
 
+from ...perception.colors import BASE_COLOURS
+
 # A noun phrase of one to three words after its determiner (no preposition, relative pronoun or negation in it).
 _STOP = (
-    r"(?:on|in|at|to|from|that|which|who|not|of|and|or|but|the|a|an|is|are|it|them|one|ones|then|near|by|sitting|"
-    r"standing|lying|resting|placed)"
+    r"(?:on|in|at|to|from|onto|into|inside|beside|with|for|that|which|who|not|of|and|or|but|the|a|an|is|are|it|them|"
+    r"one|ones|then|near|by|alone|where|sitting|"
+    r"standing|lying|resting|placed|goes|go|belongs|belong|needs|should|must|will|gets|sits|ends)"
 )
 _WORD = rf"(?!{_STOP}\b)[\w-]+"
 NP = rf"(?:{_WORD} ){{0,2}}{_WORD}"
 DET = r"(?:the|a|an|any|every|each|whichever)"
 # A side, as the qualifier perception knows for it.
 SIDES = {"left": "leftmost", "right": "rightmost", "front": "nearest", "back": "farthest", "rear": "farthest"}
-_OPPOSITE = {"left": "right", "right": "left", "front": "back", "back": "front", "rear": "front"}
+_OPPOSITE = {"left": "right", "right": "left", "front": "back", "back": "front", "rear": "front", "top": "bottom"}
+_OPPOSITE["bottom"] = "top"
 RANKS = {"first": 1, "1st": 1, "second": 2, "2nd": 2, "third": 3, "3rd": 3, "fourth": 4, "4th": 4, "fifth": 5}
 RANK_WORDS = {1: "", 2: "second ", 3: "third ", 4: "fourth ", 5: "fifth "}
 # Comparatives and superlatives of position, as perception's qualifier words.
@@ -55,6 +59,9 @@ EXTREMES = {
 }
 _EXTREME = "|".join(EXTREMES)
 _SIDE = r"(left|right|front|back|rear)"
+# counting may also run from the top or the bottom of a stack ("the second drawer from the top")
+_COUNT_SIDE = r"(left|right|front|back|rear|top|bottom)"
+_COUNT_SIDES = {**SIDES, "top": "top", "bottom": "bottom"}
 _SIDE_TAIL = r"(?: side| hand side| end| edge)?"
 # a side says where something is on the table, not where it is beside another ("the left side of the plate")
 _SIDE_END = r"\b(?!(?: side| hand side| end| edge)? of\b)"
@@ -76,22 +83,29 @@ def ordinals(text: str) -> str:
     def counted(rank_word: str, noun: str, prep: str, side: str) -> str:
         if rank_word == "last":
             side = _OPPOSITE[side] if prep == "from" else side
-            return f"{SIDES[side]} {noun}"
-        return f"{RANK_WORDS[RANKS[rank_word]]}{SIDES[side]} {noun}"
+            return f"{_COUNT_SIDES[side]} {noun}"
+        return f"{RANK_WORDS[RANKS[rank_word]]}{_COUNT_SIDES[side]} {noun}"
 
     ranks = "|".join([*RANKS, "last"])
+    # counted down from the top or up from the bottom ("the second drawer down", "the third shelf up")
+    text = re.sub(
+        rf"\b({ranks}) ({NP}) (down|up)\b(?! (?:on|onto|in|into|to)\b(?! the (?:cabinet|shelf|rack)))",
+        lambda m: counted(m.group(1), m.group(2), "from", "top" if m.group(3) == "down" else "bottom"),
+        text,
+    )
     text = re.sub(  # "the second-from-left bowl"
-        rf"\b({ranks})[- ](from|on)[- ](?:the[- ])?{_SIDE} ({NP})",
+        rf"\b({ranks})[- ](from|on)[- ](?:the[- ])?{_COUNT_SIDE} ({NP})",
         lambda m: counted(m.group(1), m.group(4), m.group(2), m.group(3)),
         text,
     )
     text = re.sub(
-        rf"\b({ranks}) ({NP}) (from|on|at|in|to) the {_SIDE}{_SIDE_TAIL}{_SIDE_END}{_NP_END}",
+        rf"\b({ranks}) ({NP}) (from|on|at|in|to) the {_COUNT_SIDE}{_SIDE_TAIL}{_SIDE_END}{_NP_END}",
         lambda m: counted(m.group(1), m.group(2), m.group(3), m.group(4)),
         text,
     )
     return re.sub(
-        rf"\b({NP}) (?:(?:that|which) is )?({ranks}) (from|on|at|in) the {_SIDE}{_SIDE_TAIL}{_SIDE_END}{_NP_END}",
+        rf"\b({NP}) (?:(?:that|which) is )?({ranks}) (from|on|at|in) the {_COUNT_SIDE}{_SIDE_TAIL}{_SIDE_END}"
+        rf"{_NP_END}",
         lambda m: counted(m.group(2), m.group(1), m.group(3), m.group(4)),
         text,
     )
@@ -109,6 +123,10 @@ def extremes(text: str, push: bool = False) -> str:
         text,
     )
     text = re.sub(rf"\b({DET}) (?:more|most) (?:distant|remote) ", r"\1 farthest ", text)
+    # "whichever bowl is closest to you": the same as "the bowl that is closest to you"
+    text = re.sub(rf"\bwhichever ({NP}) (?:is|are) (?=(?:the )?(?:{_EXTREME}|far|near)\b)", r"the \1 that is ", text)
+    # an extreme said first, without a determiner ("topmost black bowl: onto the plate", "lowest bowl, plate")
+    text = re.sub(rf"(^|[,:;.] )({_EXTREME}) (?={_WORD}\b)", r"\1the \2 ", text)
     text = re.sub(r"\b(left|right)-hand side\b", r"\1 side", text)
     text = re.sub(rf"\b({DET}) (left|right)-hand(?:ed)? ", r"\1 \2most ", text)
     if push:  # "push the cup closer to you", "further away": the way to move it
@@ -161,6 +179,8 @@ def extremes(text: str, push: bool = False) -> str:
 def _sides(text: str) -> str:
     """ "the bowl on the left" / "at the back" -> "the leftmost bowl" / "the farthest bowl"; an extreme before the
     noun as perception's word ("the farther block", "the lower bowl", "the nearer one")."""
+    # the robot's own left is the left perception counts in ("on the robot's left", "on your right", "on its left")
+    text = re.sub(r"\b(on|at|to) (?:the robot's|the robot|your|its|my) (left|right)\b", r"\1 the \2", text)
     text = re.sub(
         rf"\b({DET}) ({NP}) (?:(?:that|which) (?:is|are) |(?:sitting|standing|lying) )?(?:on|at|in) the (?:far |very )?"
         rf"{_SIDE}{_SIDE_TAIL}{_SIDE_END}{_NP_END}",
@@ -178,6 +198,19 @@ def negations(text: str) -> str:
     "the non-blue block" / "the block that is not the blue one" / "leave the bowl on the cabinet alone and put the
     other bowl on the plate"; then a side or an extreme after "not" as its qualifier ("not on the left" -> "not
     leftmost")."""
+    text = _corrections(text)
+    # "..., but not the one in the middle": a correction of the clause's object, as "..., not the one ..."
+    text = re.sub(r",\s*but not (?=(?:the|that|this) ones? [^,;:.]*$)", ", not ", text)
+    # "leave the centre bowl alone; the other bowl goes ...", "ignore the bowl on the stove and put the other one
+    # ...": the one left alone is ruled out, by where it is or by its own words
+    text = re.sub(
+        rf"^(?:leave|ignore|skip|do not touch|do not move|forget|never mind) the ({NP})"
+        rf"(?: (?!alone\b|be\b|where it|in place\b|as it is\b)([^,;.]+?))?"
+        rf"(?: alone| be| where it is| in place| as it is| where it stands)?[,;.]? (?:and |but |then )?"
+        rf"((?:\w+(?: up)? )?)the other (one|{NP})\b",
+        _left_alone,
+        text,
+    )
     # "leave the bowl on the cabinet alone and put the other bowl ...": the one left alone is ruled out
     text = re.sub(
         rf"^(?:leave|ignore|skip|do not touch|do not move|forget|never mind) the ({NP}) ([^,;]+?)"
@@ -206,6 +239,12 @@ def negations(text: str) -> str:
     text = re.sub(rf"\b{DET} ({NP}) (?:(?:that|which) )?{_NEG} the ({_WORD}) ones?\b", r"the \1 not \2", text)
     text = re.sub(rf"\b{DET} ({NP}) (?:(?:that|which) )?{_NEG} the (?:ones?|{NP}) ", r"the \1 not ", text)
     text = re.sub(rf"\bwhichever ({NP}) {_NEG} ", r"the \1 not ", text)
+    # "the peg that is not round", "the block which is not red": ruled out by an attribute
+    text = re.sub(
+        rf"\b{DET} ({NP}) (?:that|which) {_NEG} (\w+)\b(?! (?:the|a|an|of|to)\b)",
+        lambda m: f"the {m.group(1)} not {m.group(2)}" if is_adjective(m.group(2)) else m.group(0),
+        text,
+    )
     # an apposition says which: "the bowl, the one not on the stove, ..." / "the block, i mean the one on the left,"
     text = re.sub(
         rf"\bthe ({NP}),? (?:i mean |that is |namely |it is |the one that is )?the ones? ([^,;:]+),?",
@@ -223,6 +262,62 @@ def negations(text: str) -> str:
         lambda m: f"not {_ruled_out(m.group(1))}",
         text,
     )
+
+
+def _corrections(text: str) -> str:
+    """A correction said first: "not the tomato sauce, the bbq one" / "not the one on the cabinet - the bowl on the
+    stove, ..." names the thing meant after the one ruled out; the positive phrase stands (its "one" is of the kind
+    ruled out). Ruled out by another kind ("not the plate, the bowl"), the other thing is still named (a "there
+    is" sentence first), so that it must be in the scene. "the other one" after it is `negations`' own form."""
+    m = re.match(
+        rf"not (?:the|a|an) ((?:{_WORD} ){{0,2}}(?:{_WORD}|one))((?: [^,:;.]+?)?)\s*[,:;.]\s*(?:but |rather |i mean "
+        rf"|instead )?(the|a|an) (?!other\b)((?:{_WORD} ){{0,2}}(?:{_WORD}|one))\b",
+        text,
+    )
+    if not m:
+        return _contrasts(text)
+    ruled, said = m.group(1).split(), m.group(4).split()
+    rest = text[m.end() :]
+    if said[-1] == "one" and ruled[-1] != "one":
+        return f"{m.group(3)} {' '.join([*said[:-1], _singular_phrase(ruled[-1])])}{rest}"
+    if ruled[-1] == "one" or said[-1] == "one" or _singular_phrase(ruled[-1]) == _singular_phrase(said[-1]):
+        return f"{m.group(3)} {m.group(4)}{rest}"
+    return f"there is the {m.group(1)} . {m.group(3)} {m.group(4)}{rest}"
+
+
+def _contrasts(text: str) -> str:
+    """ "push the cheese, not the plate, to the stove": another kind ruled out in passing is still named (it must be
+    in the scene), and the clause reads without it; "put the bowl on the plate: not the one on the cabinet, the
+    other one" is the clause's object ruled out by where it is ("..., not the one on the cabinet")."""
+    m = re.search(rf"\b(the|a|an) ({NP}),? not (?:the|a|an) ({NP}),\s*", text)
+    if m and _singular_phrase(m.group(2)).split()[-1] != _singular_phrase(m.group(3)).split()[-1]:
+        return f"there is the {m.group(3)} . {text[: m.start()]}{m.group(1)} {m.group(2)} {text[m.end() :]}"
+    return re.sub(
+        rf"^(.+?)\s*[:,;]\s*not (the|that) (ones?|{NP}) ([^,;:.]+?),? (?:but )?the other (?:ones?|{NP})\s*$",
+        r"\1, not \2 \3 \4",
+        text,
+    )
+
+
+def _left_alone(m: re.Match) -> str:
+    """ "leave the <kind> <where> alone; the other <kind> goes ...": the other is the kind, not where the one left
+    alone is (or not its own words: "the centre bowl" -> "bowl not centre")."""
+    left, where, verb, other = m.group(1).split(), (m.group(2) or "").strip(), m.group(3), m.group(4)
+    kind = " ".join(left[-1:]) if other == "one" else other
+    # a side or the centre as perception's qualifier word ("left" -> "leftmost", "centre" -> "middle")
+    words = {**SIDES, "centre": "middle", "center": "middle", "central": "middle"}
+    ruled = _ruled_out(where) if where else " ".join(words.get(w, w) for w in left[:-1] if w not in kind.split())
+    if not ruled:
+        return m.group(0)
+    return f"{verb}the {kind} not {ruled}"
+
+
+def is_adjective(word: str) -> bool:
+    """A word the lexicon knows as an adjective ("round", "empty", "blue")."""
+    from lemminflect import getAllLemmas
+
+    pos = getAllLemmas(word)
+    return "ADJ" in pos or word in BASE_COLOURS
 
 
 def _not_own_kind(m: re.Match) -> str:

@@ -68,7 +68,8 @@ _TRAILING = re.compile(
     r"leave (?:it|them)\b(?!.*\b(?:on|in|into|onto|inside) (?:the|a|an)\b)|"
     # how to do it or a check on the result, said after the action ("..., making sure it ends up inside",
     # "..., taking care not to tip it", "... without knocking anything over", "... rather than on the rim")
-    r"(?:while |by )?(?:making sure|ensuring|checking|being careful|taking care|careful|trying|without|rather than|"
+    r"(?:while |by )?(?:making sure|ensuring|checking|being careful|taking care|careful|trying|try to|try and|without|"
+    r"rather than|"
     r"instead of|as (?:gently|carefully|slowly) as)|"
     # a remark to the listener, not a step ("..., then you are done", "..., that is all", "that is the goal")
     r"(?:you|we|i) (?:are|am|will be|should be) (?:done|finished|all set|good)|"
@@ -79,7 +80,16 @@ _TRAILING = re.compile(
     # started", "... and move your arm out of the way", "... and do not squash it")
     r"(?:go|come|head|return|get) (?:back|home)\b|move (?:your|the) (?:arm|gripper|hand)\b|(?:do not|never) |"
     # the goal's own name after it ("..., that is the end state i am after", "not the other way round")
-    r"that is the (?:end state|final state|result|outcome|state|arrangement)\b|(?:and )?not the other way\b|"
+    r"that is the (?:end state|final state|result|outcome|state|arrangement|one)\b|(?:and )?not the other way\b|"
+    # a courtesy or a remark about how things came to be ("..., if you would", "..., ta", "..., someone left it
+    # open"), which side faces up ("..., flat side down"), or moving the arm away ("..., then move back")
+    r"if you (?:would|could|can|do not mind|please)\b|ta$|cheers$|"
+    # how a lifted thing ends up, after the goal ("red cube up in the air, held (in the gripper)")
+    r"(?<=, )held(?: (?:in|by) (?:the|your) (?:gripper|hand|fingers))?$|"
+    # an adjustment of where it already is ("..., and get it centred", "... nice and level")
+    r"(?:get|have) (?:it|them) (?:centred|centered|straight|level|aligned|lined up|square)\b|"
+    r"(?:someone|somebody|i|we|they|you) (?:left|put|moved|knocked|dropped) (?:it|them)\b|"
+    r"(?:\w+ )?side (?:up|down)$|move (?:back|away)$|"
     # which way up it stands: no object, no place ("..., right side up", "... upside down")
     r"(?:(?:the )?(?:right|correct) (?:side|way) up|upside down|upright)(?=\s*$)|that (?:is|will be|should be) "
     r"(?:all|it|everything|the (?:goal|plan|idea|task|job|aim))|that is all|thanks?(?: you)?)\b.*$"
@@ -119,7 +129,65 @@ def sentences(instruction: str) -> list[str]:
     text = instruction.lower().replace("’", "'").strip()
     for short, long in CONTRACTIONS.items():
         text = re.sub(rf"\b{re.escape(short)}", long, text)
+    # common slips of the keyboard: "teh", "ontop", "id like" (the apostrophe left out)
+    text = re.sub(r"\bteh\b", "the", text)
+    text = re.sub(r"\bontop\b", "on top", text)
+    text = re.sub(r"^id (like|love|want)\b", r"i would \1", text)
     text = re.sub(r"\bi would (like|love)\b(?! you to)", r"i want", text)
+    # "so the table's clear": "'s" before a state word is "is", not a possessive
+    text = re.sub(
+        r"(\w)'s (clear|empty|tidy|clean|free|full|done|ready|open|closed|shut|gone|level|straight)\b",
+        r"\1 is \2",
+        text,
+    )
+    # "build a stack for me - blue at the bottom, ...": the arrangement named, then its order
+    text = re.sub(
+        r"^(?:(?:would|could|can|will) you )?(?:build|make|form|put together) (?:a|the) (?:stack|tower|pile)"
+        r"(?: for me)?\s*(?:[,:]|[-\u2013\u2014]+)\s*",
+        "a tower: ",
+        text,
+    )
+    # an arrow between a thing and a place: "green block -> basket" carries it there
+    text = re.sub(
+        r"\s*(?:->|=>|\u2192|-->)\s*(?:the |a |an )?([\w ]+)",
+        lambda m: f" {'into' if m.group(1).split()[-1:] in ([c] for c in CONTAINERS) else 'onto'} the {m.group(1)}",
+        text,
+    )
+    # a remark that opens a turn in a conversation ("ok next one:", "alright,", "right then:")
+    text = re.sub(r"^(?:ok|okay|alright|all right|right|so|now)(?: then)?(?:,? next(?: one)?)?\s*[:,]\s*", "", text)
+    # the goal said by what is wanted at the end ("what i want at the end: ...")
+    text = re.sub(r"^(?:what|all) (?:i|we) (?:want|need)(?: at the end| in the end| to see)?\s*[:,]\s*", "", text)
+    # "the cabinet top is where the plate goes", "the bowl closer to you is the one for the plate": a place named
+    # first, then what goes there
+    text = re.sub(
+        r"^(.+?) is where (the .+?) (?:goes|go|belongs|should go|should be|needs to go|has to go)$",
+        r"put \2 to \1",
+        text,
+    )
+    text = re.sub(
+        r"^((?:the|a|an) .+?) is the one (?:for|to go (?:on|in|into|onto|to)) (the .+)$", r"put \1 to \2", text
+    )
+    # "could the green block go into the basket?": a question whose subject is the thing moved
+    text = re.sub(
+        r"^(?:could|can|would|will) ((?:the|a|an) .+?) (?:go|be put|be placed|be moved|end up|get put) "
+        r"(?=(?:in|into|on|onto|inside|on top of|to) )",
+        r"put \1 ",
+        text,
+    )
+    # a phrasal verb split around its object ("fire the burner up", "power the stove on"), or a state brought
+    # about ("get the hob going"): switching it on
+    text = re.sub(r"^(fire|heat|power|switch|turn) ((?:the|a|an) [\w ]+?) (up|on)\b", r"\1 \3 \2", text)
+    text = re.sub(
+        r"^get ((?:the|a|an) [\w ]+?) (?:going|started|running|lit|fired up|heated up)\b", r"turn on \1", text
+    )
+    # "the bowl on the burner goes to the plate": a goal verb after a thing named without its article
+    text = re.sub(
+        r"^(?!the |a |an )([a-z][\w ]+?) (?:goes|belongs|should go) (?=(?:to|onto|into|on|in|inside|on top of) )",
+        lambda m: m.group(0) if starts_with_verb(m.group(1)) else f"put {m.group(1)} ",
+        text,
+    )
+    # "(would you) mind opening the drawer": the gerund after "mind" is the request
+    text = re.sub(r"^(?:would you |do you )?mind (\w+ing)\b", lambda m: _lemma_verb(m.group(1)), text)
     # "(would it be possible to) have the cup resting on the saucer": a causative states the wish ("get the bowl
     # sitting on the stove" is a pick of the bowl there: not "get"; and the participle is of the same clause)
     text = re.sub(
@@ -134,7 +202,11 @@ def sentences(instruction: str) -> list[str]:
         r"\b(i|we) (want|need|like|love) to (?:see|have|find|get)\b(?= (?:the|a|an|both|all) )", r"\1 \2", text
     )
     # "give the plate a scrub": the action is the noun after the object
-    text = re.sub(r"\bgive ((?:the|this|that|my) [\w ]+?) an? (\w+)\b", _give_a, text)
+    text = re.sub(
+        r"\bgive ((?:the|this|that|my) [\w ]+?) an? (?:(?:good|quick|proper|thorough|little|light) )?(\w+)\b",
+        _give_a,
+        text,
+    )
     # which one of several: "the second bowl from the left", "the farther of the two", "not the blue one" (before
     # the fillers: "first" is otherwise one)
     text = re.sub(r"\s+[-\u2013\u2014]+\s+", ", ", text)  # a dash between two parts is a comma
@@ -163,6 +235,14 @@ def sentences(instruction: str) -> list[str]:
     return [s.strip(" ,") for s in text.split(" . ") if s.strip(" ,.")]
 
 
+def _lemma_verb(word: str) -> str:
+    """ "opening" -> "open" (the lexicon's verb lemma), else the word as it is."""
+    from lemminflect import getLemma
+
+    lemmas = getLemma(word, upos="VERB")
+    return lemmas[0] if lemmas else word
+
+
 def _give_a(m: re.Match) -> str:
     return f"{m.group(2)} {m.group(1)}" if m.group(2) in _VERB_FORMS else m.group(0)
 
@@ -189,6 +269,12 @@ def _head(phrase: str) -> str:
 
 def _purpose(text: str) -> str:
     """Drop a trailing purpose, unless it names where the object should end up and the clause does not."""
+    # "put the plate on the stove to warm it": an infinitive of purpose after the destination
+    text = re.sub(
+        r"\s+(?:in order )?to (\w+) (?:it|them)(?: up)?$",
+        lambda m: "" if is_verb(m.group(1)) and _DESTINATION.search(text[: m.start()]) else m.group(0),
+        text,
+    )
     m = _PURPOSE.search(text)
     if not m:
         return text
@@ -201,6 +287,10 @@ def _purpose(text: str) -> str:
         # a verb the list lacks, with the state it brings about: "twist the knob so it comes on" turns it on
         return f"{ACTION_WORDS[dict(STATE_ACTIONS)[state.group(1)]]} {what}"
     place = _PURPOSE_PLACE.search(purpose)
+    subject = re.match(r"((?:the|a|an) [\w ]+?) (?:sits?|is|ends? up|rests?|lands?|stays?|goes)\b", purpose)
+    if place and subject and not starts_with_verb(main) and is_verb(verb):
+        # "swap them round so the red cube ends up on the green one": a verb the list lacks, and the goal it serves
+        return f"put {subject.group(1)} {'in' if place.group(1) in ('in', 'into', 'inside') else 'on'} {place.group(2)}"
     if place and starts_with_verb(main) and not _DESTINATION.search(main.split(" ", 1)[-1]):
         prep = {"in front of": "to the front of", "next to": "next to", "beside": "next to"}.get(place.group(1), "into")
         if place.group(1) in ("on", "onto", "on top of"):
@@ -253,7 +343,7 @@ def _holds(text: str) -> str | None:
     modals = "|".join(re.escape(m) for m in sorted(MODALS, key=len, reverse=True))
     holds = "|".join(re.escape(h) for h in HOLDS)
     m = re.fullmatch(
-        rf"((?:the|a|an|this|that|my|your) [\w' ]+?)\s+(?:(?:{modals})\s+)?(?:{holds})\s+"
+        rf"((?:(?:the|a|an|this|that|my|your) )?[\w' ]+?)\s+(?:(?:{modals})\s+)?(?:{holds})\s+"
         r"((?:the|a|an|both|all|some) [\w' ]+?)(?:\s+(?:sitting|resting|standing|lying|placed|stacked|set|put))?"
         r"(?:\s+(in|on|inside|on top of|into|onto) (?:it|them))?",
         text,
@@ -261,6 +351,8 @@ def _holds(text: str) -> str | None:
     if not m:
         return None
     holder, thing, prep = m.group(1), m.group(2), m.group(3)
+    if not _is_noun_phrase(holder):
+        return None
     if prep is None:
         prep = "in" if _head(holder) in CONTAINERS else "on"
     return f"put {thing} {'in' if prep in ('in', 'inside', 'into') else 'on'} {holder}"
@@ -329,6 +421,11 @@ def goal_to_action(text: str) -> str | None:
         # "i want red in the green tray and blue in the yellow tray": one carry per goal
         steps = [goal_to_action(f"i want {b}") for b in both]
         return ", ".join(x for x in steps if x) if all(steps) else None
+    if not wish and len(both) > 1:
+        # "the green tray holds the red block and the yellow tray holds the blue one": one carry per goal
+        steps = [goal_to_action(b) for b in both]
+        if all(steps):
+            return ", ".join(x for x in steps if x)
     held = _holds(body)
     if held:
         return held
@@ -370,7 +467,7 @@ def _predicate(subject: str, predicate: str) -> str | None:
         if predicate == participle or predicate.startswith(participle + " "):
             action, predicate = PARTICIPLES[participle], predicate[len(participle) :].strip()
             break
-    predicate = re.sub(r"^(?:down|up|back)\s+", "", predicate)
+    predicate = re.sub(r"^(?:down|up|back|away|over|safely|neatly)\s+", "", predicate)
     if action == "pick":
         return f"pick up {subject}"
     if predicate.startswith("in front of"):
@@ -426,7 +523,9 @@ def imperatives(instruction: str) -> list[str]:
             out += _colon(left, right)
             continue
         # "the soup tin, into the basket": a thing named, then only where it goes
-        where = re.fullmatch(r"([^,]+),\s*((?:into|onto|on to|inside|in|on top of|on) [^,]+)", s)
+        where = re.fullmatch(
+            r"([^,]+),\s*(?:(?:up|down|over|back|upright) )?((?:into|onto|on to|inside|in|on top of|on) [^,]+)", s
+        )
         if where and _is_noun_phrase(where.group(1)) and not starts_with_verb(where.group(1)):
             out.append(f"put {where.group(1)} {where.group(2)}")
             continue
@@ -434,7 +533,12 @@ def imperatives(instruction: str) -> list[str]:
         if pair and not any(starts_with_verb(x) or _DESTINATION.search(x) for x in pair.groups()):
             out += _colon(pair.group(2), pair.group(1))  # "green block, basket"
             continue
-        if not starts_with_verb(s):
+        # "the bowl sitting on the box, put it on the plate": a thing named first, then acted on through a pronoun
+        topic = re.fullmatch(r"([^,]+),\s*(.+)", s)
+        named_first = bool(
+            topic and starts_with_verb(topic.group(2)) and re.search(r"\b(?:it|them|that|this)\b", topic.group(2))
+        )
+        if not starts_with_verb(s) and not named_first:
             opened = re.search(r"\b(?:in|into|inside) the open (\w+(?: \w+)?)$", s)
             goal = goal_to_action(re.sub(r"\bthe open\b", "the", s))
             if goal:

@@ -20,6 +20,8 @@ NOT_THINGS = frozenset(
     + ["way", "direction", "distance", "state", "goal", "result", "outcome", "moment", "sec", "second", "minute"]
     + ["time", "bit", "while", "order", "rest", "arm", "gripper", "hand", "robot", "yourself", "care", "mess"]
     + ["round", "around", "idea", "job", "task", "plan", "aim", "thing", "things", "one", "ones", "row", "line"]
+    # pronouns name who speaks or listens, not an object ("the end state i am after")
+    + ["i", "me", "you", "we", "us", "they", "them", "he", "she", "him", "her", "it"]
 )
 
 
