@@ -136,6 +136,10 @@ def test_a_drawer_is_opened_before_something_goes_in_unless_a_step_opens_it():
     opened = [("open_drawer", "drawer handle"), ("pick", "cup"), ("place_in", "drawer")]
     assert _leaves("put the cup in the drawer", **scene) == opened
     assert _leaves("open the drawer and put the cup inside it", **scene) == opened
+    # the same drawer by another name: opened once
+    same = dict(scene, cabinet_drawer=scene["drawer"], cabinet_drawer_handle=scene["drawer_handle"])
+    twice = _leaves("open the cabinet drawer and put the cup in the drawer", **same)
+    assert [t for t, _ in twice] == ["open_drawer", "pick", "place_in"]
     assert _leaves("the cup goes in the drawer; open the drawer and then put the cup inside", **scene) == opened
 
 

@@ -153,7 +153,7 @@ class RulesPlanner:
                 pass  # "the cheese goes in the top drawer, so open it and put it inside": the goal, then its steps
             elif c.action in ("put", "sort", "stack"):
                 o, t = need(obj, "object", c), need(target, "destination", c)
-                if c.relation == "in" and "drawer" in t.split() and t not in opened:
+                if c.relation == "in" and "drawer" in t.split() and not _among(t, opened, scene):
                     # into a drawer that no step opened: drawers stand closed, so open it first
                     out.append(_drawer_step("open", t, scene, seen))
                     opened.add(t)
@@ -273,6 +273,11 @@ def _drawer_step(action: str, o: str, scene, seen: str) -> dict:
         # fully: into the end stop if it comes first (LIBERO's drawers count as open past 14 of 16 cm)
         return _prim("open_drawer", keypoint_label=handle, distance=0.18)
     return _prim("close_drawer", keypoint_label=handle)
+
+
+def _among(label: str, labels: set[str], scene) -> bool:
+    """`label` is one of `labels`, by name or as the same detection ("cabinet drawer" opened, "the drawer" filled)."""
+    return label in labels or any(x in scene and _same_detection(scene[x], scene[label]) for x in labels)
 
 
 def _opened_later(target: str | None, later: list[Clause], last_object: str | None) -> bool:
