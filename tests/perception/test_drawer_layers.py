@@ -24,15 +24,21 @@ def _row(z_m: float) -> int:
     return int(round(120 - (z_m - 0.1) / 0.002))
 
 
-def test_the_middle_drawer_is_the_band_around_the_middle_handle():
-    frame = _front_frame()
+def _three_fronts_and_handles() -> tuple[np.ndarray, list[np.ndarray]]:
+    """Three 7 cm drawer fronts from 0 to 21 cm as one mask, and a handle mask at the middle of each."""
     fronts = np.zeros((H, W), bool)
-    fronts[_row(0.21) : _row(0.0), 100:220] = True  # three fronts, 7 cm each, from 0 to 21 cm
+    fronts[_row(0.21) : _row(0.0), 100:220] = True
     handles = []
     for z in (0.035, 0.105, 0.175):
         m = np.zeros((H, W), bool)
         m[_row(z) - 3 : _row(z) + 3, 150:170] = True
         handles.append(m)
+    return fronts, handles
+
+
+def test_the_middle_drawer_is_the_band_around_the_middle_handle():
+    frame = _front_frame()
+    fronts, handles = _three_fronts_and_handles()
     middle = layer_mask(fronts, handles, "middle", frame)
     rows = np.nonzero(middle.any(1))[0]
     assert abs(rows.min() - _row(0.14)) <= 1 and abs(rows.max() - _row(0.07)) <= 1
@@ -59,13 +65,8 @@ def test_the_learned_segmenter_answers_the_middle_drawer_with_its_layer(monkeypa
     from spark_core.perception.learned.segmenter import Instance, LearnedSegmenter
 
     frame = _front_frame()
-    fronts = np.zeros((H, W), bool)
-    fronts[_row(0.21) : _row(0.0), 100:220] = True
-    handles = []
-    for z in (0.035, 0.105, 0.175):
-        m = np.zeros((H, W), bool)
-        m[_row(z) - 3 : _row(z) + 3, 150:170] = True
-        handles.append(Instance(CATEGORY_INDEX["drawer handle"], m, 0.98, "grey"))
+    fronts, masks = _three_fronts_and_handles()
+    handles = [Instance(CATEGORY_INDEX["drawer handle"], m, 0.98, "grey") for m in masks]
     seen = [Instance(CATEGORY_INDEX["drawer"], fronts, 0.97, "brown"), *handles]
     seg = LearnedSegmenter()
     monkeypatch.setattr(seg, "instances", lambda f: seen)
@@ -82,13 +83,8 @@ def test_three_stacked_fronts_seen_as_one_region_are_three_drawer_instances():
     from spark_core.perception.learned.segmenter import Instance, _drawers_apart
 
     frame = _front_frame()
-    fronts = np.zeros((H, W), bool)
-    fronts[_row(0.21) : _row(0.0), 100:220] = True
-    handles = []
-    for z in (0.035, 0.105, 0.175):
-        m = np.zeros((H, W), bool)
-        m[_row(z) - 3 : _row(z) + 3, 150:170] = True
-        handles.append(Instance(CATEGORY_INDEX["drawer handle"], m, 0.98, "grey"))
+    fronts, masks = _three_fronts_and_handles()
+    handles = [Instance(CATEGORY_INDEX["drawer handle"], m, 0.98, "grey") for m in masks]
     apart = _drawers_apart([Instance(CATEGORY_INDEX["drawer"], fronts, 0.97, "brown"), *handles], frame)
     drawers = [i.mask for i in apart if i.category == CATEGORY_INDEX["drawer"]]
     assert len(drawers) == 3 and len(apart) == 6

@@ -17,8 +17,6 @@ from __future__ import annotations
 
 import gc
 import re
-from collections.abc import Iterator
-from contextlib import contextmanager
 from typing import Any
 
 import mujoco
@@ -26,6 +24,7 @@ import numpy as np
 
 from ...sim.capbench_envs import ENVS
 from .categories import BACKGROUND, CATEGORIES, CATEGORY_INDEX, COLOUR_INDEX, ROBOT, TABLE
+from .scene_jitter import jitter, seeded_numpy
 
 CAPBENCH_TRAIN_SEED0 = 1_700_020
 CAPBENCH_BENCH_SEED0 = 960_050
@@ -78,17 +77,6 @@ def task_of_seed(seed: int) -> str:
     return TASKS[task_index(seed)]
 
 
-@contextmanager
-def _seeded_numpy(seed: int) -> Iterator[None]:
-    """robosuite's samplers draw from numpy's global RNG: seed it for the reset, then put the caller's state back."""
-    state = np.random.get_state()
-    np.random.seed(seed % 2**32)
-    try:
-        yield
-    finally:
-        np.random.set_state(state)
-
-
 class CapbenchScenes:
     """Randomised CaP-Bench scenes, one env kept while consecutive scenes use it (a task's block of
     SCENES_PER_TASK seeds). `scene(seed)` resets the env from `seed` with the env's own samplers, settles it, then
@@ -115,7 +103,7 @@ class CapbenchScenes:
             gc.collect()  # the old env's reference cycles: a 2-scene-per-block loop plateaued at 2.0 GB, 1.5 with this
             self._env, self._key, self.task = make_env(task, key[1]), key, task
         env = self._env
-        with _seeded_numpy(seed):
+        with seeded_numpy(seed):
             env.reset()
         if self._world is None:
             env._spark_release = lambda: None  # close() hands the env back instead of freeing it
@@ -127,15 +115,7 @@ class CapbenchScenes:
         world._tick(SETTLE_STEPS)
         m, d = world.model, world.data
         assert self._light0 is not None
-        m.light_diffuse[:], m.light_pos[:] = self._light0
-        if self.perturb:
-            rng = np.random.default_rng(seed)
-            m.light_diffuse[:] = m.light_diffuse * rng.uniform(0.7, 1.3)
-            m.light_pos[:, :2] += rng.normal(0, 0.25, (m.nlight, 2))
-            if rng.random() < 0.7:
-                for arm in world.arms:
-                    adr = world._qadr[arm]
-                    d.qpos[adr] = d.qpos[adr] + rng.normal(0, 0.3, len(adr))
+        jitter(world, self._light0, seed, self.perturb)
         mujoco.mj_forward(m, d)
         world._label_cache = None
         return world

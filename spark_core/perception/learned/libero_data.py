@@ -12,14 +12,13 @@ the benchmarks' init-state indices (0..49).
 
 from __future__ import annotations
 
-from collections.abc import Iterator
-from contextlib import contextmanager
 from typing import Any
 
 import mujoco
 import numpy as np
 
 from .categories import BACKGROUND, CATEGORIES, CATEGORY_INDEX, COLOUR_INDEX, ROBOT, TABLE, category_of_libero
+from .scene_jitter import jitter, seeded_numpy
 
 LIBERO_TRAIN_SEED0 = 1_500_000
 # = 0 mod 600: seed LIBERO_BENCH_SEED0 + 10 * i + k is a scene of task i. Moved from 912,000 on 2026-11-26: some
@@ -65,17 +64,6 @@ def make_world(env, seed: int):
     return RobosuiteWorld(env.env, objects(env), seed=seed, perception_cameras=("agentview", "frontview"))
 
 
-@contextmanager
-def _seeded_numpy(seed: int) -> Iterator[None]:
-    """LIBERO's samplers draw from numpy's global RNG: seed it for the reset, then put the caller's state back."""
-    state = np.random.get_state()
-    np.random.seed(seed % 2**32)
-    try:
-        yield
-    finally:
-        np.random.set_state(state)
-
-
 class LiberoScenes:
     """Randomised LIBERO scenes, one env per task kept while consecutive scenes use it. `scene(seed)` resets the
     env with LIBERO's samplers from `seed`, settles it, then (from the same seed) jitters lighting and, in 70 %
@@ -100,7 +88,7 @@ class LiberoScenes:
             self.close()
             self._env, self._task = build_env(task), task
         env = self._env
-        with _seeded_numpy(seed):
+        with seeded_numpy(seed):
             env.reset()
         if self._world is None:
             self._world = make_world(env, seed)
@@ -124,15 +112,7 @@ class LiberoScenes:
         world._tick(SETTLE_STEPS)
         m, d = world.model, world.data
         assert self._light0 is not None
-        m.light_diffuse[:], m.light_pos[:] = self._light0
-        if self.perturb:
-            rng = np.random.default_rng(seed)
-            m.light_diffuse[:] = m.light_diffuse * rng.uniform(0.7, 1.3)
-            m.light_pos[:, :2] += rng.normal(0, 0.25, (m.nlight, 2))
-            if rng.random() < 0.7:
-                for arm in world.arms:
-                    adr = world._qadr[arm]
-                    d.qpos[adr] = d.qpos[adr] + rng.normal(0, 0.3, len(adr))
+        jitter(world, self._light0, seed, self.perturb)
         if self.mid_task:
             from .mid_task import pose_arm
 
