@@ -5,6 +5,8 @@ BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 export MUJOCO_GL ?= egl
 export HF_HUB_OFFLINE := 1
+# No pip wheel cache: a fresh CI disk once had a few hundred MB free, and the LIBERO asset wheels alone are ~360 MB.
+export PIP_NO_CACHE_DIR := 1
 
 .PHONY: install bench-deps run serve demo test test-all lint grammar-docs clean
 
