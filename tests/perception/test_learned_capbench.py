@@ -9,7 +9,7 @@ import pytest
 
 from spark_cli import main
 from spark_core.perception.learned import capbench_data as cb
-from spark_core.perception.learned.categories import BACKGROUND, CATEGORIES, CATEGORY_INDEX, COLOUR_INDEX
+from spark_core.perception.learned.categories import CATEGORIES, CATEGORY_INDEX, COLOUR_INDEX
 
 
 def _range(seed0: int, n: int = 10_000) -> set[int]:
@@ -44,17 +44,14 @@ def test_seeds_take_the_seven_tasks_in_turn():
         assert all(tasks.count(t) == cb.SCENES_PER_TASK for t in cb.TASKS)
 
 
-def test_capbench_objects_map_to_honest_categories_or_the_fallback(monkeypatch):
+def test_capbench_objects_map_to_honest_categories():
     assert {cb.OBJECT_BODIES[b] for b in ("cube_main", "cubeA_main")} == {("block", "red")}
     assert cb.OBJECT_BODIES["cubeB_main"] == ("block", "green")
     assert CATEGORIES[cb.category_index("nut")].name == "nut"
     assert CATEGORIES[cb.category_index("peg")].name == "peg"
-    for name in cb.PLANNED_CATEGORIES:  # not categories yet: the shipped patch classifier's class list would change
-        assert name not in CATEGORY_INDEX
-        assert cb.category_index(name) == CATEGORY_INDEX[cb.FALLBACK_CATEGORY] == BACKGROUND
-    # once appended to CATEGORIES, a planned category labels its objects itself
-    monkeypatch.setattr(cb, "CATEGORY_INDEX", {**CATEGORY_INDEX, "pot": len(CATEGORIES)})
-    assert cb.category_index("pot") == len(CATEGORIES)
+    for body, name in (("pot_root", "pot"), ("hammer_root", "hammer")):  # their own kinds, not "background"
+        assert CATEGORIES[cb.category_index(cb.OBJECT_BODIES[body][0])].name == name
+    assert CATEGORIES[cb.category_index("dirt")].name == "dirt"
 
 
 def _stack_seed(k: int) -> int:

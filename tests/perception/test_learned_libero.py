@@ -74,6 +74,36 @@ def test_older_weights_get_a_head_for_the_new_categories():
     assert (out["head.bias"][n_old:n_new] < b[:n_old].max()).all()
 
 
+def test_older_weights_never_predict_a_category_appended_after_them(tmp_path):
+    """Loaded for inference, weights saved with fewer categories predict none of the appended ones (their new head
+    rows are untrained); loaded to fine-tune (--init), every row trains."""
+    from spark_core.perception.frame import CameraFrame
+    from spark_core.perception.learned.model import SegNet
+    from spark_core.perception.learned.train import load_net, save
+
+    n_old = CATEGORIES.index(next(c for c in CATEGORIES if c.name == "pot"))
+    net = SegNet(widths=(8, 8, 8, 8), n_categories=n_old)
+    path = tmp_path / "old.pt"
+    save(net, path, {})
+    loaded = load_net(path)
+    assert loaded.n_trained == n_old and loaded.n_categories == len(CATEGORIES)
+    with torch.no_grad():  # an appended category's row made to win everywhere, were it not masked
+        loaded.head.bias[n_old : len(CATEGORIES)] = 50.0
+    seg = LearnedSegmenter(path)
+    from spark_core.perception.learned import segmenter as segmenter_module
+
+    segmenter_module._NETS[str(path)] = loaded
+    rng = np.random.default_rng(0)
+    frame = CameraFrame("agentview", rng.integers(0, 255, (96, 128, 3), np.uint8), np.ones((96, 128), np.float32),
+                        np.eye(3), np.eye(4))  # fmt: skip
+    cat = seg.predict(frame)[0]
+    assert cat.max() < n_old
+    loaded.n_trained = loaded.n_categories  # as after fine-tuning (train.train with --init)
+    assert seg.predict(frame)[0].max() >= n_old
+    save(loaded, tmp_path / "grown.pt", {})  # the file saved after fine-tuning predicts every category it saved
+    assert load_net(tmp_path / "grown.pt").n_trained == len(CATEGORIES)
+
+
 @pytest.fixture
 def no_init_states(monkeypatch):
     """Any read of an evaluation init state (LIBERO-PRO's files or the env's set_init_state) fails the test."""

@@ -94,6 +94,25 @@ def test_weights_for_another_class_list_are_refused(tmp_path):
         pc.load(tmp_path / "missing.pt")
 
 
+def test_weights_from_before_categories_were_appended_name_only_what_they_know(tmp_path):
+    """Categories are only ever appended: weights trained on fewer classes load, map their outputs onto this
+    version's classes by name and give an appended class probability 0."""
+    old = tuple(c for c in pc.CLASSES if c not in ("pot", "hammer"))
+    net = pc.PatchNet(classes=old)
+    path = tmp_path / "old.pt"
+    pc.save(net, path, {})
+    loaded = pc.load(path)
+    assert loaded.classes == old
+    patches = [np.random.default_rng(0).random((5, pc.PATCH_PX, pc.PATCH_PX), dtype=np.float32)] * 2
+    probs = pc.classify(loaded, patches)
+    assert probs.shape == (2, len(pc.CLASSES))
+    assert probs[:, [pc.CLASSES.index("pot"), pc.CLASSES.index("hammer")]].max() == 0.0
+    assert np.allclose(probs.sum(1), 1.0, atol=1e-4)
+    with torch.no_grad():  # the known classes keep their own probabilities, by name
+        own = torch.softmax(loaded(torch.from_numpy(np.stack(patches))), 1).numpy()
+    assert np.allclose(probs[:, pc.CLASSES.index("milk")], own[:, old.index("milk")], atol=1e-6)
+
+
 def test_shipped_patch_weights_are_small():
     assert pc.default_weights().is_file()
     assert pc.default_weights().stat().st_size < 2_000_000

@@ -35,18 +35,6 @@ SCENES_PER_TASK = 5
 PERCEPTION_CAMERAS = ("agentview", "sideview")  # what tasks/capbench.py's worlds look through (RobosuiteWorld's)
 SETTLE_STEPS = 250  # 0.5 s of physics after the reset: CubeRestack's green cube settles on the red one
 
-# Categories the CaP-Bench objects have no honest existing one for (name -> description, to append to CATEGORIES
-# once the patch classifier is retrained: its class list is every whole-object category, and the shipped
-# weights/patch_classifier.pt refuses to load under a longer list). Until then they are labelled FALLBACK_CATEGORY.
-PLANNED_CATEGORIES: dict[str, str] = {
-    "pot": "metal cooking pot with a handle on each side",
-    "hammer": "hammer, a wooden handle with a metal head",
-    "dirt": "dirt, brown stains or marks on the table to wipe off",
-}
-# Background claims nothing false about an existing category (a pot painted "bowl" would teach the bowl class a
-# pot); the cost is that the network learns to overlook these objects until their categories exist.
-FALLBACK_CATEGORY = "background"
-
 # The robosuite body that roots each CaP-Bench object -> (category, colour). Colours only where the task names
 # one (robosuite's textures say nothing: the cubes are "redwood" and "greenwood").
 OBJECT_BODIES: dict[str, tuple[str, str]] = {
@@ -64,8 +52,8 @@ DIRT_BODY = re.compile(r"contact\d+_main$")  # Wipe's 100 marker discs: together
 
 
 def category_index(name: str) -> int:
-    """Index of a CaP-Bench object's category: its own where CATEGORIES has it, else FALLBACK_CATEGORY's."""
-    return CATEGORY_INDEX.get(name, CATEGORY_INDEX[FALLBACK_CATEGORY])
+    """Index of a CaP-Bench object's category (the pot, hammer and dirt have their own since 2026-11-27)."""
+    return CATEGORY_INDEX[name]
 
 
 def task_index(seed: int) -> int:

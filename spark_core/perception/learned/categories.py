@@ -71,6 +71,10 @@ CATEGORIES: tuple[Category, ...] = (
     Category("orange juice", "carton of orange juice"),
     Category("salad dressing", "bottle of salad dressing"),
     Category("tomato sauce", "can of tomato sauce"),
+    # CaP-Bench objects without an earlier category (appended for the same reason)
+    Category("pot", "metal cooking pot with a handle on each side", max_extent_m=0.45),
+    Category("hammer", "hammer, a wooden handle with a metal head"),
+    Category("dirt", "dirt, brown stains or marks on the table to wipe off"),
 )
 CATEGORY_INDEX: dict[str, int] = {c.name: i for i, c in enumerate(CATEGORIES)}
 BACKGROUND, TABLE, ROBOT = (CATEGORY_INDEX[n] for n in ("background", "table", "robot"))

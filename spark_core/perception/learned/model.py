@@ -41,6 +41,9 @@ class SegNet(nn.Module):
         self.full_res = full_res
         self.downsample = downsample  # camera frames are shrunk by this factor before the network (see shrink)
         self.n_categories, self.n_colours = n_categories or len(CATEGORIES), len(COLOURS)
+        # categories the weights were trained on (the first n_trained): fewer when categories were appended since
+        # (train.load_net); the rest are never predicted
+        self.n_trained = self.n_categories
         # The encoder starts at half resolution (a strided stem: full-resolution stages dominate CPU time); one
         # light full-resolution layer over the raw input sharpens the upsampled decoder output at mask edges.
         self.stem = nn.Sequential(

@@ -101,18 +101,21 @@ def _conv(c_in: int, c_out: int) -> nn.Sequential:
 
 
 class PatchNet(nn.Module):
-    """(B, 5, PATCH_PX, PATCH_PX) -> (B, len(CLASSES)) logits."""
+    """(B, 5, PATCH_PX, PATCH_PX) -> (B, len(classes)) logits. `classes` is CLASSES unless the weights were
+    trained before categories were appended; `to_current` maps its outputs onto CLASSES by name."""
 
-    def __init__(self, widths: tuple[int, int, int] = (24, 48, 96)):
+    def __init__(self, widths: tuple[int, int, int] = (24, 48, 96), classes: tuple[str, ...] = CLASSES):
         super().__init__()
         self.widths = tuple(widths)
+        self.classes = tuple(classes)
+        self.to_current = np.array([CLASSES.index(c) for c in self.classes])
         layers: list[nn.Module] = [_conv(5, widths[0]), nn.MaxPool2d(2)]  # one conv at full size: most of the cost
         c = widths[0]
         for w in widths[1:]:
             layers += [_conv(c, w), _conv(w, w), nn.MaxPool2d(2)]
             c = w
         self.features = nn.Sequential(*layers)
-        self.head = nn.Sequential(nn.Dropout(0.2), nn.Linear(c, len(CLASSES)))
+        self.head = nn.Sequential(nn.Dropout(0.2), nn.Linear(c, len(self.classes)))
 
     def forward(self, x: torch.Tensor) -> torch.Tensor:
         return self.head(self.features(x).mean((2, 3)))
@@ -126,12 +129,13 @@ def save(net: PatchNet, path: Path, meta: dict) -> None:
     """float16 weights with the architecture, the class list and training metadata."""
     path.parent.mkdir(parents=True, exist_ok=True)
     state = {k: (v.half() if v.is_floating_point() else v) for k, v in net.state_dict().items()}
-    torch.save({"widths": net.widths, "classes": list(CLASSES), "state": state, "meta": meta}, path)
+    torch.save({"widths": net.widths, "classes": list(net.classes), "state": state, "meta": meta}, path)
 
 
 def load(path: Path) -> PatchNet:
     """Weights file -> network in eval mode (cached per path); a clear error for a missing file or one trained
-    for another class list."""
+    for a class list that is not a subset of this version's (categories are only ever appended: older weights
+    keep naming what they know and never name an appended category)."""
     key = str(path)
     with _LOCK:
         if key not in _NETS:
@@ -140,22 +144,27 @@ def load(path: Path) -> PatchNet:
                     f"patch classifier weights not found at {path}: train them with `spark perception train-patches`"
                 )
             ckpt = torch.load(path, map_location="cpu", weights_only=True)
-            if tuple(ckpt["classes"]) != CLASSES:
-                raise ValueError(f"{path} classifies {ckpt['classes']}, not this version's {list(CLASSES)}")
-            net = PatchNet(tuple(ckpt["widths"]))
+            classes = tuple(ckpt["classes"])
+            unknown = [c for c in classes if c not in CLASSES]
+            if unknown or classes[-1] != CLASSES[OTHER]:
+                raise ValueError(f"{path} classifies {list(classes)}; not in this version's classes: {unknown}")
+            net = PatchNet(tuple(ckpt["widths"]), classes)
             net.load_state_dict({k: v.float() if v.is_floating_point() else v for k, v in ckpt["state"].items()})
             _NETS[key] = net.eval()
         return _NETS[key]
 
 
 def classify(net: PatchNet, patches: list[np.ndarray]) -> np.ndarray:
-    """(N, len(CLASSES)) class probabilities of N patches (one thread: see LearnedSegmenter.predict)."""
+    """(N, len(CLASSES)) class probabilities of N patches (one thread: see LearnedSegmenter.predict); a class
+    the weights do not know gets 0."""
+    out = np.zeros((len(patches), len(CLASSES)), np.float32)
     if not patches:
-        return np.zeros((0, len(CLASSES)), np.float32)
+        return out
     threads = torch.get_num_threads()
     torch.set_num_threads(1)
     try:
         with torch.no_grad():
-            return torch.softmax(net(torch.from_numpy(np.stack(patches))), 1).numpy()
+            out[:, net.to_current] = torch.softmax(net(torch.from_numpy(np.stack(patches))), 1).numpy()
+            return out
     finally:
         torch.set_num_threads(threads)

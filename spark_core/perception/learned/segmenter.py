@@ -170,6 +170,7 @@ class LearnedSegmenter:
             with torch.no_grad():
                 x = network_input(torch.from_numpy(rgb[None]), torch.from_numpy(depth[None]))
                 cat_logits, bnd_logit, col_logits = net.split(net(x))
+                cat_logits[:, net.n_trained :] = -torch.inf  # categories appended after these weights were trained
                 probs = torch.softmax(cat_logits[0], 0)
                 prob, cat = probs.max(0)
                 bnd = torch.sigmoid(bnd_logit[0])
@@ -289,12 +290,18 @@ class LearnedSegmenter:
         patch classifier's name when it is confident of another one (a plate standing on a stove that the
         per-pixel network called stove, LIBERO's white ramekin called a bowl)."""
         group = set(patch_classifier.GROUP_INDEX.tolist())
-        idx = [k for k, i in enumerate(instances) if i.category not in group and not CATEGORIES[i.category].part_of]
+        net = patch_classifier.load(self.patch_weights)  # type: ignore[arg-type]  # set when called
+        # a kind the classifier's weights predate (appended since) is never overruled: it cannot be recognised
+        known = {CATEGORY_INDEX[c] for c in net.classes[:-1]}
+        idx = [
+            k
+            for k, i in enumerate(instances)
+            if i.category not in group and not CATEGORIES[i.category].part_of and i.category in known
+        ]
         if not idx:
             return instances
         patches = [patch_classifier.patch(frame.rgb, frame.depth_m, instances[k].mask) for k in idx]
         keep = [(k, p) for k, p in zip(idx, patches) if p is not None]
-        net = patch_classifier.load(self.patch_weights)  # type: ignore[arg-type]  # set when called
         probs = patch_classifier.classify(net, [p for _, p in keep])
         out = list(instances)
         renamed = set()

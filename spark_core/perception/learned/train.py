@@ -175,6 +175,7 @@ def train(cfg: TrainConfig, log: Callable[[str], None] = print) -> dict:
     log(f"{len(train_idx)} training crops, {len(val_idx)} validation crops")
     if cfg.init:
         net = load_net(Path(cfg.init)).train()
+        net.n_trained = net.n_categories  # the appended categories' rows are trained from here on
         if net.downsample != cfg.downsample:
             raise ValueError(f"--init weights see frames shrunk {net.downsample}x, not {cfg.downsample}x")
     else:
@@ -239,6 +240,7 @@ def load_net(path: Path) -> SegNet:
         raise ValueError(f"{path} predicts {n_saved} categories, more than the {len(CATEGORIES)} of categories.py")
     net = SegNet(tuple(ckpt["widths"]), int(ckpt["full_res"]), int(ckpt["downsample"]))
     net.load_state_dict(expand_categories(state, n_saved, len(CATEGORIES)))
+    net.n_trained = n_saved
     return net.eval()
 
 
