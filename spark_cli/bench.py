@@ -116,6 +116,18 @@ def register(sub) -> None:
         help="suites the throughput bench measures",
     )
     b.add_argument(
+        "--scene-sources",
+        nargs="+",
+        default=["builtin", "random", "libero"],
+        choices=["builtin", "random", "libero", "capbench"],
+        help="perception suite: the held-out scene sources it measures (capbench: the seven CaP-Bench tasks' scenes)",
+    )
+    b.add_argument(
+        "--perception-weights",
+        metavar="FILE.pt",
+        help="perception suite: measure these per-pixel network weights instead of the shipped ones",
+    )
+    b.add_argument(
         "--scenes-per-task",
         type=int,
         default=3,
@@ -295,12 +307,16 @@ def _bench(args: argparse.Namespace) -> int:
         from spark_core.bench import perception_bench
 
         result = perception_bench.run(
-            n_seeds=args.scenes_per_task, progress=lambda s: print(s, flush=True), round_=args.seed
+            suites=tuple(args.scene_sources),
+            n_seeds=args.scenes_per_task,
+            progress=lambda s: print(s, flush=True),
+            weights=args.perception_weights,
+            round_=args.seed,
         )
         title = "perception on held-out scenes (learned segmenter)"
         if args.seed:  # a later round of scenes nobody looked at keeps a section of its own
             title = f"perception on held-out scenes, seed round {args.seed} (learned segmenter)"
-        body = perception_bench.section(result, command)
+        body = perception_bench.section(result, command, args.perception_weights)
         print(body)
     elif args.suite == "wording":
         title, body = "rules planner on the wording corpus", _wording(args, command)

@@ -45,7 +45,7 @@ ROUND_STRIDE = {"builtin": 100, "random": 200, "libero": 600, "capbench": 35}
 CAPBENCH_NOTE = (
     "; capbench = each of the seven CaP-Bench tasks reset by the env's own samplers from the seed (1,700,020 and "
     "up train), lighting and arm pose jittered, cameras agentview and sideview; the pot, hammer and Wipe's dirt "
-    "have no category yet and are labelled background, so they count in no recall, only among the labels resolved"
+    "have categories of their own since 2026-11-27 (weights trained before that never predict them)"
 )
 
 

@@ -28,6 +28,7 @@ from ..sim_segmenter import calibrated_score, pick_by_qualifier
 from ..text_encoder import SHARED_ENCODER, TextEncoder
 from . import patch_classifier
 from .categories import CATEGORIES, CATEGORY_INDEX, COLOURS, ROBOT, TABLE
+from .drawers import below_cabinet_top, centred_on_handle
 from .layers import is_stacked, layer_mask, median_height_m, split_layers
 from .pieces import support_of, voxel_components, without_strays
 from .refine import grow_by_depth
@@ -232,7 +233,7 @@ class LearnedSegmenter:
             out = self._second_look(out, frame)
         out = _absorb_pieces(_grown(out, cat, frame), frame)
         out = _above_table(_drop_fragments([_standing_part(i, frame) for i in out]), cat, frame)
-        out = _drawers_apart(out, frame)
+        out = _drawers_in_place(_drawers_apart(out, frame), frame)
         if len(self._cache) > 8:
             self._cache.clear()
         self._cache[key] = (frame.rgb, out)
@@ -500,6 +501,27 @@ def _drawers_apart(instances: list[Instance], frame: CameraFrame) -> list[Instan
             continue
         on_it = [h for h in handles if _touches(h, inst.mask, reach_px=2 * PART_REACH_PX)]
         out.extend(Instance(drawer, m, inst.score, inst.colour) for m in split_layers(inst.mask, on_it, frame))
+    return out
+
+
+def _drawers_in_place(instances: list[Instance], frame: CameraFrame) -> list[Instance]:
+    """Each drawer's mask kept below the top of the cabinet it touches and centred on its handle (drawers.py):
+    the network's drawer region spills onto the cabinet's face and top around it."""
+    drawer, handle, cabinet = (CATEGORY_INDEX[n] for n in ("drawer", "drawer handle", "cabinet"))
+    cabinets = [i.mask for i in instances if i.category == cabinet]
+    handles = [i.mask for i in instances if i.category == handle]
+    out = []
+    for inst in instances:
+        if inst.category != drawer:
+            out.append(inst)
+            continue
+        mask = below_cabinet_top(inst.mask, [c for c in cabinets if _touches(c, inst.mask)], frame)
+        on_it = [h for h in handles if _touches(h, mask, reach_px=2 * PART_REACH_PX)]
+        z = median_height_m(mask, frame)
+        if on_it and z is not None:  # the handle at this drawer's height (stacked fronts: one each, after layers)
+            own = min(on_it, key=lambda h: abs((median_height_m(h, frame) or np.inf) - z))
+            mask = centred_on_handle(mask, own, frame)
+        out.append(Instance(drawer, mask, inst.score, inst.colour))
     return out
 
 

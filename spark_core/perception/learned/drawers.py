@@ -1,0 +1,93 @@
+"""A drawer's mask kept to where a drawer can be: below its cabinet's top and centred on its handle.
+
+The per-pixel network paints the cabinet face around a drawer as drawer where the wood looks the same: an open
+drawer's mask seen from above takes part of the cabinet's top, and a drawer front seen edge-on takes the strip of
+face above or beside it. The keypoint comes from the mask's highest points (lifting.keypoint_from_points), so those
+spills moved a builtin drawer's keypoint 4-7 cm (the perception bench's keypoint tail). Two facts about drawers,
+from the frame's depth and camera pose only: a drawer slides inside its cabinet, so none of it reaches the
+cabinet's top face; and a drawer's handle sits at the middle of its front, so the drawer reaches equally far to
+both sides of it across the front's width. The second is used only where the mask's own ends say little: a front
+seen edge-on, where one pixel of mask error spans centimetres of the front (seen more squarely, a LIBERO drawer's
+mask is better than the handle's centre, which sits a centimetre or two off the seen front's middle)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..frame import CameraFrame
+
+BELOW_TOP_M = 0.01  # drawer points within this of the cabinet's top height (m) are the cabinet's top face
+MIN_POINTS = 20  # fewer finite-depth pixels than this: too little to judge, the mask is kept
+EDGE_ON_COS = 0.5  # a front is seen edge-on when the horizontal view ray is within 60 deg of lying in its plane
+
+
+def _points(mask: np.ndarray, frame: CameraFrame) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Rows, columns and world points (m) of the mask's pixels with a finite depth."""
+    vs, us = np.nonzero(mask)
+    z = frame.depth_m[vs, us]
+    ok = np.isfinite(z) & (z > 0)
+    vs, us = vs[ok], us[ok]
+    return vs, us, frame.backproject(us.astype(float), vs.astype(float), z[ok])
+
+
+def _mask_of(shape: tuple[int, ...], vs: np.ndarray, us: np.ndarray) -> np.ndarray:
+    out = np.zeros(shape, bool)
+    out[vs, us] = True
+    return out
+
+
+def below_cabinet_top(drawer: np.ndarray, cabinets: list[np.ndarray], frame: CameraFrame) -> np.ndarray:
+    """The drawer mask without the pixels at or above the top of the cabinet it is in (the highest of the touching
+    cabinets' seen tops, m): those are the cabinet's top face. The mask itself when nothing would be left."""
+    tops = []
+    for c in cabinets:
+        _, _, pts = _points(c, frame)
+        if len(pts) >= MIN_POINTS:
+            tops.append(float(np.percentile(pts[:, 2], 98)))
+    vs, us, pts = _points(drawer, frame)
+    if not tops or len(pts) < MIN_POINTS:
+        return drawer
+    keep = pts[:, 2] < max(tops) - BELOW_TOP_M
+    if keep.sum() < MIN_POINTS:
+        return drawer
+    return _mask_of(drawer.shape, vs[keep], us[keep])
+
+
+def front_width_axis(handle_points_m: np.ndarray) -> np.ndarray | None:
+    """Unit world xy direction across a drawer front, from its handle's points (m): a handle is a bar along the
+    front, lying (its xy spread is the front's width) or standing (its xy spread is how far it stands off the
+    front, so the width is across that). None when the handle shows no clear long axis in xy."""
+    xy = handle_points_m[:, :2] - handle_points_m[:, :2].mean(0)
+    evals, evecs = np.linalg.eigh(xy.T @ xy / len(xy))
+    if evals[1] < 4 * max(evals[0], 1e-12):
+        return None
+    lo, hi = np.percentile(handle_points_m, 2, axis=0), np.percentile(handle_points_m, 98, axis=0)
+    spread = np.percentile(xy @ evecs[:, 1], 98) - np.percentile(xy @ evecs[:, 1], 2)
+    standing = hi[2] - lo[2] > spread
+    return evecs[:, 0] if standing else evecs[:, 1]
+
+
+def centred_on_handle(drawer: np.ndarray, handle: np.ndarray, frame: CameraFrame) -> np.ndarray:
+    """A drawer front seen edge-on: its mask cut to the same reach on both sides of its handle across the front's
+    width (front_width_axis): the side that reaches further took the cabinet face beside the drawer. The mask
+    itself when the front is seen more squarely or its width direction is not observable."""
+    _, _, h = _points(handle, frame)
+    vs, us, pts = _points(drawer, frame)
+    if len(h) < MIN_POINTS or len(pts) < MIN_POINTS:
+        return drawer
+    axis = front_width_axis(h)
+    if axis is None:
+        return drawer
+    ray = np.median(h[:, :2], axis=0) - frame.T_world_camera[:2, 3]
+    normal = np.array([-axis[1], axis[0]])
+    if abs(float(ray @ normal)) >= EDGE_ON_COS * float(np.linalg.norm(ray)):
+        return drawer
+    centre = float(np.median(h[:, :2] @ axis))
+    s = pts[:, :2] @ axis - centre
+    reach = min(float(np.percentile(s, 98)), float(-np.percentile(s, 2)))
+    if reach <= 0:  # the handle is past the drawer's seen end: nothing to centre on
+        return drawer
+    keep = np.abs(s) <= reach
+    if keep.sum() < MIN_POINTS:
+        return drawer
+    return _mask_of(drawer.shape, vs[keep], us[keep])
