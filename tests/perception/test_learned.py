@@ -111,7 +111,7 @@ def test_dataset_and_train_commands_run_one_step(tmp_path, capsys):
     """The data and training commands end to end on one scene and one step (a code-path check)."""
     data, weights = tmp_path / "data", tmp_path / "w.pt"
     assert main(["perception", "dataset", "--out", str(data), "--scenes", "1", "--cameras", "agentview"]) == 0
-    assert list(data.glob("shard_*.npz"))
+    assert list(data.glob("shard_*.npz")) and not list(data.glob("partial_*"))  # written whole, then renamed
     args = ["perception", "train", "--data", str(data), "--out", str(weights), "--steps", "1", "--batch", "2"]
     assert main([*args, "--crop", "128", "128"]) == 0
     assert weights.is_file()

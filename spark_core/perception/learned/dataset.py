@@ -295,7 +295,11 @@ def generate(
             log(f"scene {i + 1}/{n_scenes} ({time.perf_counter() - t0:.0f} s)")
     path = out_dir / f"shard_{seed0}.npz"
     arrays: dict[str, np.ndarray] = {k: np.stack(v) for k, v in rows.items()}
-    np.savez_compressed(path, **arrays)  # type: ignore[arg-type]  # numpy's stub types **kwds as allow_pickle
+    # written under another name, then renamed: a render stopped mid-write leaves no truncated shard_*.npz for
+    # training to trip over (one did: an empty shard, "No data left in file")
+    partial = out_dir / f"partial_{seed0}.npz"
+    np.savez_compressed(partial, **arrays)  # type: ignore[arg-type]  # numpy's stub types **kwds as allow_pickle
+    partial.replace(path)
     return {
         "path": str(path),
         "source": source,
