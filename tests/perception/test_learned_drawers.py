@@ -98,3 +98,20 @@ def test_a_handle_without_a_long_axis_leaves_the_mask_alone():
             handle[40 + v, 90 + u] = True
     assert front_width_axis(f.points[handle]) is None
     assert (centred_on_handle(drawer, handle, f) == drawer).all()  # type: ignore[arg-type]
+
+
+def test_an_open_drawer_reaching_back_from_its_front_is_not_cut():
+    """Seen edge-on, an open drawer's side wall reaches back from the front and hides the front's far end: the
+    mask's ends are then not spills, and the mask is kept."""
+    f = _frame(60, 120)
+    drawer = _front(f, 0.06, 0.36)
+    for u, x in enumerate(np.arange(0.40, 0.50, 0.005)):  # the near side wall, 10 cm deep, at y = 0.06
+        for v, z in enumerate(np.linspace(0.03, 0.11, 20)):
+            f.points[30 + v, 80 + u] = [x, 0.06, z]
+            drawer[30 + v, 80 + u] = True
+    handle = np.zeros_like(drawer)
+    for u, y in enumerate(np.arange(0.13, 0.23, 0.005)):
+        for v, x in enumerate((0.47, 0.475)):
+            f.points[55 + v, 90 + u] = [x, y, 0.08]
+            handle[55 + v, 90 + u] = True
+    assert (centred_on_handle(drawer, handle, f) == drawer).all()  # type: ignore[arg-type]

@@ -19,6 +19,7 @@ from ..frame import CameraFrame
 BELOW_TOP_M = 0.01  # drawer points within this of the cabinet's top height (m) are the cabinet's top face
 MIN_POINTS = 20  # fewer finite-depth pixels than this: too little to judge, the mask is kept
 EDGE_ON_COS = 0.5  # a front is seen edge-on when the horizontal view ray is within 60 deg of lying in its plane
+FRONT_DEPTH_M = 0.03  # a mask this thin across the front's plane (m) is the front alone: the drawer is shut
 
 
 def _points(mask: np.ndarray, frame: CameraFrame) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -68,9 +69,11 @@ def front_width_axis(handle_points_m: np.ndarray) -> np.ndarray | None:
 
 
 def centred_on_handle(drawer: np.ndarray, handle: np.ndarray, frame: CameraFrame) -> np.ndarray:
-    """A drawer front seen edge-on: its mask cut to the same reach on both sides of its handle across the front's
-    width (front_width_axis): the side that reaches further took the cabinet face beside the drawer. The mask
-    itself when the front is seen more squarely or its width direction is not observable."""
+    """A shut drawer's front seen edge-on: its mask cut to the same reach on both sides of its handle across the
+    front's width (front_width_axis): the side that reaches further took the cabinet face beside the drawer. The
+    mask itself when the front is seen more squarely, when the width direction is not observable, or when the
+    mask reaches back from the front (an open drawer's side wall: there the front's far end is hidden behind the
+    wall, not spilled, and cutting to it would drop the wall)."""
     _, _, h = _points(handle, frame)
     vs, us, pts = _points(drawer, frame)
     if len(h) < MIN_POINTS or len(pts) < MIN_POINTS:
@@ -81,6 +84,9 @@ def centred_on_handle(drawer: np.ndarray, handle: np.ndarray, frame: CameraFrame
     ray = np.median(h[:, :2], axis=0) - frame.T_world_camera[:2, 3]
     normal = np.array([-axis[1], axis[0]])
     if abs(float(ray @ normal)) >= EDGE_ON_COS * float(np.linalg.norm(ray)):
+        return drawer
+    across = pts[:, :2] @ normal
+    if float(np.percentile(across, 98) - np.percentile(across, 2)) > FRONT_DEPTH_M:
         return drawer
     centre = float(np.median(h[:, :2] @ axis))
     s = pts[:, :2] @ axis - centre
