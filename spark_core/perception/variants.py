@@ -101,7 +101,8 @@ KINDS: tuple[frozenset[str], ...] = tuple(
         "sauce",
         "cookie biscuit",
         "cereal",
-        "bread",
+        "bread loaf",
+        "bag sack",  # a bag holds groceries: no basket, box or bottle is one
         "apple",
         "banana",
         "lemon",
@@ -143,6 +144,8 @@ KIND_OF: dict[str, frozenset[str]] = {w: frozenset().union(*(k for k in KINDS if
 # Attribute words: a mention may add them without naming another kind; colours are in colors.py.
 SHAPES = frozenset(
     ["square", "round", "circular", "rectangular", "hexagonal", "triangular", "cylindrical", "oval", "spherical"]
+    # shape words said as nouns before a noun ("hex nut", "triangle peg"): a shape claim all the same
+    + ["hex", "hexagon", "triangle", "octagonal", "octagon", "pentagonal", "pentagon", "star", "oblong"]
 )
 MATERIALS = frozenset(
     ["wooden", "wood", "metal", "metallic", "plastic", "ceramic", "glass", "brass", "steel", "wicker", "woven"]

@@ -13,7 +13,7 @@ from ..perception import Keypoint, LabelNotFound
 from ..perception.resolver_protocol import Resolver
 from ..perception.summary import summarise
 from .protocol import SceneView
-from .rules.mentions import clause_mentions, read_past
+from .rules.mentions import clause_mentions, read_past, stray_nouns
 from .rules.parse import ParseError, is_pronoun, parse_instruction
 
 PART_OF_ACTION = {"open": "handle", "close": "handle", "turn_on": "knob", "turn_off": "knob"}
@@ -41,8 +41,9 @@ def phrases_for(instruction: str) -> list[str]:
             out.setdefault(f"{c.obj} {part}", None)
             if "drawer" in c.obj:
                 out.setdefault(f"drawer {part}", None)
-    # what the phrases are located by, and what the parser read past: each must be in the scene (rules/mentions.py)
-    for p in [*clause_mentions(clauses), *read_past(instruction, clauses)]:
+    # what the phrases are located by, what the parser read past, and any noun no phrase holds: each must be in the
+    # scene (rules/mentions.py)
+    for p in [*clause_mentions(clauses), *read_past(instruction, clauses), *stray_nouns(instruction, clauses)]:
         out.setdefault(p, None)
     return list(out)
 

@@ -16,7 +16,7 @@ from .lexicon import CONTENTS, DETERMINERS, PRONOUNS, REGIONS, TABLE
 from .parse import Clause, is_pronoun
 from .phrases import singular
 from .rewrite import sentences
-from .things import names_a_thing
+from .things import adverb_only, is_thing, names_a_thing
 
 # Words that locate or qualify without naming a thing in the scene ("the table's centre", "the left side").
 PLACE_WORDS = frozenset(
@@ -47,12 +47,27 @@ _DET = re.compile(r"\b(?:the|a|an|some|my|your|this|these|those) ")
 def anchors(phrase: str) -> list[str]:
     """The things `phrase` locates its object by ("black bowl next to plate" -> ["plate"]; "bowl between plate
     and ramekin" -> both), without places that are no object ("table center")."""
-    _, relation, found = split_relation(phrase)
-    if relation is None:
-        return []
+    head, relation, found = split_relation(phrase)
+    # a thing after a preposition perception does not measure ("the plate under the lamp", "the bowl with a ladle in
+    # it", "the peg behind the toolbox"): it locates or describes the object, so it must be there too
+    m = _OTHER_PREP.search(head if relation else phrase)
+    if m:
+        found = [*found, _OTHER_PREP.split(m.group(2))[0].strip()]
+    # things joined to the phrase's own by "and" ("the plate and mind the vase"): each is a thing of its own
+    found += re.split(r"\s+(?:and|or|plus|as well as|along with|together with)\s+", head)[1:]
     return [
-        a for a in found if not set(a.split()) - {"of", "the"} <= PLACE_WORDS and a not in PRONOUNS and names_a_thing(a)
+        a
+        for a in dict.fromkeys(found)
+        if a and not set(a.split()) - {"of", "the"} <= PLACE_WORDS and a not in PRONOUNS and names_a_thing(a)
     ]
+
+
+_OTHER_PREP = re.compile(
+    r"\b(with|under|underneath|below|beneath|behind|above|against|opposite|alongside|using|holding|containing|"
+    # a clause the phrase swallowed ("the plate after you move the kettle"): what it names is named all the same
+    r"after|before|once|while|until|unless|when)\s+"
+    r"(?:the |a |an |some |its |their )?([a-z][a-z ]*)$"
+)
 
 
 def clause_mentions(clauses: list[Clause]) -> list[str]:
@@ -99,3 +114,73 @@ def read_past(instruction: str, clauses: list[Clause]) -> list[str]:
                 continue
             out.setdefault(" ".join(words), None)
     return list(out)
+
+
+# Closed-class and instruction words that are no thing in the scene, whatever the lexicon says ("pick" is a noun
+# too): the planner's own verbs, fillers, directions and goal words, and the words that only qualify or count.
+def _closed_words() -> frozenset[str]:
+    from .lexicon import COPULAS, DIRECTIONS, FILLERS, HELD, MODALS, PARTICIPLES, STATE_ACTIONS, VERBS
+    from .qualify import EXTREMES, RANKS, SIDES
+
+    phrases = [f for forms in VERBS.values() for f in forms] + list(FILLERS) + list(COPULAS) + list(MODALS)
+    phrases += [f for forms in DIRECTIONS.values() for f in forms] + list(HELD) + list(PARTICIPLES)
+    phrases += [s for s, _ in STATE_ACTIONS] + list(EXTREMES) + list(RANKS) + list(SIDES) + list(TABLE)
+    return frozenset(w for p in phrases for w in re.findall(r"[a-z]+", p)) | PLACE_WORDS | _NP_STOP
+
+
+# Nouns that name no object perception could look for: what is said about the task, the robot or the speaker,
+# amounts and ways ("any chance you could", "from the robot's point of view", "in one go", "the rest").
+ABSTRACT = frozenset(
+    ["chance", "point", "view", "favour", "favor", "go", "turn", "step", "steps", "please", "thanks", "ok", "okay"]
+    + ["hey", "hi", "hello", "sorry", "bit", "lot", "kind", "sort", "type", "sense", "need", "want", "wish", "request"]
+    + ["instruction", "instructions", "command", "everything", "anything", "something", "nothing", "all", "rest"]
+    + ["same", "other", "another", "each", "either", "neither", "nor", "both", "ones", "none", "end", "start"]
+    + ["beginning", "finish", "later", "today", "now", "moment", "sec", "second", "seconds", "minute", "minutes"]
+    + ["quick", "mind", "care", "attention", "way", "fashion", "manner", "pose", "angle", "level", "height"]
+    + ["inch", "inches", "cm", "mm", "centimetre", "centimetres", "centimeter", "centimeters", "metre", "meter"]
+    + ["order", "sequence", "first", "last", "next", "number", "count", "one", "two", "three", "four", "five"]
+    + ["please", "cheers", "ta", "thank", "lad", "mate", "buddy", "pal", "friend", "bot", "robot", "machine"]
+    + ["setup", "set", "scene", "layout", "workspace", "workbench", "bench", "desk", "surface", "stuff", "thing"]
+    + ["someone", "somebody", "anyone", "anybody", "everyone", "everybody", "nobody", "your", "yours", "mine"]
+    # keyboard slips and interjections the lexicon does not know ("dont", "hmm", "atop")
+    + ["dont", "cant", "wont", "didnt", "isnt", "hmm", "hmmm", "umm", "um", "uh", "pls", "plz", "thx", "atop"]
+)
+
+
+def stray_nouns(instruction: str, clauses: list[Clause]) -> list[str]:
+    """Single nouns of the instruction that no phrase the planner looks for holds: a thing said where the parser
+    does not read things ("pour it with a ladle", "the plate under the lamp", "... and the kettle too"). Each must
+    be in the scene like any other thing the instruction names. A word the lexicon also knows as a verb counts
+    only after a determiner or a describing word ("with the wrench", not "fish it out")."""
+    looked = [*clause_mentions(clauses), *(c.obj for c in clauses if c.obj), *read_past(instruction, clauses)]
+    said = _words(looked)
+    closed = _closed_words()
+    out: dict[str, None] = {}
+    for sentence in sentences(instruction):
+        words = re.findall(r"[a-z]+(?:'s)?", sentence)
+        for i, raw in enumerate(words):
+            w = raw.removesuffix("'s")
+            if len(w) < 3 or {w, singular(w)} & (said | closed | ABSTRACT | ATTRIBUTES) or w in CONTENTS:
+                continue
+            if w in DETERMINERS or w in PRONOUNS or not is_thing(w) or adverb_only(w):
+                continue
+            before = words[i - 1].removesuffix("'s") if i else ""
+            if _not_only_noun(w) and not (
+                before in _NOUN_BEFORE or before in ATTRIBUTES or words[i - 1].endswith("'s")
+            ):
+                continue  # "fish it out", "once it is in": a verb or an adverb here, a noun only after "the"
+            out.setdefault(w, None)
+    return list(out)
+
+
+_NOUN_BEFORE = frozenset(
+    ["the", "a", "an", "my", "your", "his", "her", "its", "their", "our", "this", "that", "these", "those", "some"]
+    + ["any", "each", "every", "no", "another", "other"]
+)
+
+
+def _not_only_noun(word: str) -> bool:
+    """The lexicon knows `word` as something besides a noun (a verb, an adverb, an adjective)."""
+    from lemminflect import getAllLemmas
+
+    return bool(set(getAllLemmas(word)) - {"NOUN"})

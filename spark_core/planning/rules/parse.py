@@ -120,7 +120,7 @@ def split_clauses(text: str) -> list[str]:
     # "... and balance it on the blue one": a verb the lexicon knows, outside the planner's list, starts a clause
     split: list[str] = []
     for part in out:
-        pieces = re.split(r"\s+and\s+(?=\w+ (?:it|them)\b)", part)
+        pieces = re.split(r"\s+and\s+(?=\w+ (?:it|them|the|a|an)\b)", part)
         head = pieces[0]
         for piece in pieces[1:]:
             if is_verb(piece.split(" ", 1)[0]):
@@ -140,6 +140,11 @@ def parse_instruction(instruction: str) -> list[Clause]:
     previous: str | None = None
     parts = [p for t in texts for p in split_clauses(t)]
     for i, part in enumerate(parts):
+        said = re.fullmatch(r"(?:the |a |an )?(\w+) one", part)
+        if said and previous == "mention" and said.group(1) in _ATTRIBUTE_WORDS and clauses[-1].obj:
+            # "there is a bowl in the drawer, black one": what the thing just named looks like
+            clauses[-1] = replace(clauses[-1], obj=f"{said.group(1)} {clauses[-1].obj}")
+            continue
         part = re.sub(r"^use (.+?) to (\w+) (.+)$", r"\2 \3 with \1", part)  # "use the sponge to scrub the plate"
         part = re.sub(
             r"^slide (.+) (?:over(?! to\b)|onto|on to|on top of) ", r"put \1 on ", part
@@ -193,6 +198,7 @@ def parse_instruction(instruction: str) -> list[Clause]:
         else:
             gapped = False
         action, rest = verb
+        rest = _demonstrative(rest, clauses)
         clause = _clause(
             action, rest, part, clauses[-1].obj if clauses else None, clauses[-1].target if clauses else None
         )
@@ -204,9 +210,55 @@ def parse_instruction(instruction: str) -> list[Clause]:
         previous = clause.action
         clauses.append(clause)
     clauses = [_remaining(c, clauses[:i]) for i, c in enumerate(clauses)]
+    clauses = _open_before_filling(_grip_then_act(clauses))
     if all(c.action == "mention" for c in clauses):
         raise ParseError(f"{instruction.strip()!r} names {', '.join(c.obj or '?' for c in clauses)} but no action")
     return clauses
+
+
+_GRIPPED_PARTS = ("handle", "knob", "dial", "grip", "pull")
+
+
+def _grip_then_act(clauses: list[Clause]) -> list[Clause]:
+    """ "grab the drawer handle and pull the drawer open": taking hold of a part is how the action after it is
+    done (the open grips the handle itself), not a step of its own."""
+    return [
+        c
+        for i, c in enumerate(clauses)
+        if not (
+            c.action == "pick"
+            and c.obj
+            and c.obj.split()[-1] in _GRIPPED_PARTS
+            and i + 1 < len(clauses)
+            and clauses[i + 1].action in ("open", "close", "turn_on", "turn_off")
+        )
+    ]
+
+
+def _open_before_filling(clauses: list[Clause]) -> list[Clause]:
+    """ "stow the block in the drawer, you will need to open the drawer first": an open said after the carry into
+    the same drawer, with no carry after it, comes first."""
+    out = list(clauses)
+    for i, c in enumerate(clauses):
+        if c.action != "put" or c.relation != "in" or not c.target:
+            continue
+        for j in range(i + 1, len(clauses)):
+            later = clauses[j]
+            if later.action == "open" and later.obj == c.target and not any(x.action == "put" for x in clauses[j:]):
+                out.remove(later)
+                out.insert(out.index(c), later)
+                return out
+    return out
+
+
+def _demonstrative(rest: str, before: list[Clause]) -> str:
+    """ "there is a black bowl in the top drawer; that bowl goes on the plate": "that"/"this"/"the same" before the
+    kind just named points back to that very thing, as "it" does."""
+    prev = next((b.obj for b in reversed(before) if b.obj and not is_pronoun(b.obj)), None)
+    if not prev:
+        return rest
+    kind = split_relation(prev)[0].split()[-1]
+    return re.sub(rf"^(?:that|this|the same) {re.escape(kind)}s?\b", "it", rest)
 
 
 def _elided_object(c: Clause, before: list[Clause]) -> Clause:
@@ -293,14 +345,19 @@ def _resolve(c: Clause, before: list[Clause]) -> Clause:
     prev = before[-1]
     updates: dict = {}
     obj = c.obj
+    # "take it out of the drawer": where "it" is only restates where the thing named before is
+    if obj and re.fullmatch(r"(?:it|them) (?:in|on|from|inside|at|on top of) .+", obj):
+        obj = obj.split(" ", 1)[0]
     if is_pronoun(obj):
         obj = prev.obj
+        if c.action in ("open", "close"):  # "put the block in the drawer, you will have to open it": the drawer
+            obj = next((p for p in (prev.obj, prev.target) if p and _OPENS.search(p)), obj)
         updates["obj"] = obj
         if c.action == "push" and prev.action == "pick":
             updates["action"] = "put"
             if c.relation is None and c.target:
                 updates["relation"] = "on"
-    if is_pronoun(c.target):
+    if is_pronoun(c.target) or c.target in ("that", "this"):  # "... then the red block on top of that"
         for cand in (prev.obj, prev.target, _anchor(prev.obj)):
             if cand and cand != obj and not is_pronoun(cand):
                 updates["target"] = cand
@@ -312,7 +369,9 @@ def _resolve(c: Clause, before: list[Clause]) -> Clause:
     return replace(c, **updates) if updates else c
 
 
-_WHERE_PARTICIPLES = "sitting|resting|standing|lying|perched|located|parked|kept"
+_WHERE_PARTICIPLES = "sitting|resting|standing|lying|perched|located|parked|kept|stacked|seated|sat|placed"
+# Things a robot opens and closes: "open it" after a carry into one of these is opening it.
+_OPENS = re.compile(r"\b(?:drawer|cabinet|door|lid|box|microwave|oven|fridge|cupboard)\b")
 # A preposition after one of these says where a thing is, not where it goes ("the plate that sits on the box").
 _LOCATIVE_BEFORE = re.compile(
     r"\b(?:(?:that|which) (?:is|are)|(?:that|which) (?:sits?|rests?|stands?|lies|lie)|is|are|sitting|resting|"
@@ -374,7 +433,9 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
         rest = rest[: -len(particle) - 1]
     if action == "pick" and rest.startswith("up "):
         rest = rest[3:]
-    rest = re.sub(r"\s+down(?=\s+(?:on|onto|in|into|from|with|to)\b|$)|^down\s+", " ", rest).strip()
+    rest = re.sub(r"\s+down(?=\s+(?:on|onto|in|into|from|with|to|there|here)\b|$)|^down\s+", " ", rest).strip()
+    if action == "put":  # "carry it to the rack and set it down there": the place said before, no new one
+        rest = re.sub(r"^(it|them)\s+(?:there|here)$", r"\1", rest)
     # "over to", "across onto", "back into": the particle adds nothing to where it goes
     rest = re.sub(r"\b(?:over|across|back|away|off|up) (?=(?:to|onto|into|on to|in|on|inside|on top of)\b)", "", rest)
     rest = re.sub(r"\s+in front of (?:it|them)$", "", rest)
@@ -401,7 +462,7 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
         return Clause(
             action,
             obj=noun_phrase(obj) if obj else None,
-            target=noun_phrase(target) if target else None,
+            target=object_phrase(target) if target else None,  # "the bowl on the tray": located, not a "tray bowl"
             source=source,
             text=text,
         )
@@ -422,6 +483,7 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
             return Clause(action, obj=object_phrase(rest) or None, direction=direction, distance_m=distance, text=text)
         action = "put"
     if action in ("open", "close", "turn_on", "turn_off"):
+        rest = re.sub(r"^(it|them|that one|this one) (?:up|back up|right up)$", r"\1", rest)  # "open it up"
         return Clause(action, obj=noun_phrase(rest) or None, text=text)
     if action == "push" and not re.search(r"\b(into|onto|in|on)\b", rest):
         split = _split_on(rest, ("to the front of", "next to", "to", "toward", "towards", "beside"))
@@ -447,7 +509,7 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
         # destination said by its colour or size, "one" is of that destination's kind
         if last_target and not is_pronoun(last_target) and set(last_target.split()[:-1]) & _ATTRIBUTE_WORDS:
             kind = last_target
-        target = _elided_noun(target, kind)
+        target = "it" if target in ("that", "this") else _elided_noun(target, kind)  # "on top of that": a pronoun
         # "the plate that sits on the cookie box": a destination located by what it rests on reads as an object does
         located = _PLACED.search(target) or (
             is_pronoun(said) and re.search(r"\s(?:on top of|on|in|inside|next to|beside|near|by)\s", target)

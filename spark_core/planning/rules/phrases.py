@@ -45,7 +45,7 @@ _NOT_PARTICIPLE = re.compile(
 _TABLE_TAIL = re.compile(
     r"\s+(?:on|off|off of|from|at|across|along)\s+(?:the\s+)?(?:"
     + "|".join(TABLE)
-    + r")\b(?!\s+(?:center|centre|middle))"
+    + r")\b(?!\s+(?:center|centre|middle))(?!\s+(?!and\b|then\b)[a-z])"  # "from the counter shelf": a shelf
 )
 _CONTAINER_OF = re.compile(r"\b(carton|jar|bottle|box|can|tin|stick|pack|packet|tub|bag|cup|piece)s? of (.+)$")
 

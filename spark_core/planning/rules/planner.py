@@ -11,7 +11,7 @@ from ...grammar import PlanError, check_plan, to_yaml
 from ...perception.qualifiers import split_relation
 from ..protocol import PlanRequest, PlanResult
 from .lexicon import REGIONS
-from .mentions import clause_mentions, read_past
+from .mentions import clause_mentions, read_past, stray_nouns
 from .parse import Clause, ParseError, is_pronoun, parse_instruction
 
 POUR_ANGLE_RAD = 2.2
@@ -108,9 +108,10 @@ class RulesPlanner:
             return phrase
 
         # safety: every thing the instruction names must be there, whatever its role: an object, a destination,
-        # what another is located by, or a noun the parser read past (rules/mentions.py); perception looked for
-        # each (observe) and found nothing
-        for phrase in [*clause_mentions(clauses), *read_past(request.instruction, clauses)]:
+        # what another is located by, a noun the parser read past, or a noun no phrase holds (rules/mentions.py);
+        # perception looked for each (observe) and found nothing
+        said = [*clause_mentions(clauses), *read_past(request.instruction, clauses)]
+        for phrase in [*said, *stray_nouns(request.instruction, clauses)]:
             if phrase not in scene and request.scene.unresolved.get(phrase, "").startswith("none"):
                 raise CannotPlan(
                     f"could not find {phrase!r} in the scene: perception found nothing that matches it "
@@ -145,6 +146,8 @@ class RulesPlanner:
                 if len(together) == 2:
                     out += _lift_together(together, request)
                     together = []
+            elif c.action == "pick" and held is not None and held == obj:
+                pass  # "grab the cube and raise it": already in hand
             elif c.action == "pick":
                 o = need(obj, "object", c)
                 inside = re.search(r"\b(in|inside)\b", o) is not None  # out of a drawer or a box: clear its walls
@@ -189,7 +192,7 @@ class RulesPlanner:
                     opened.add(o)
             elif c.action in ("turn_on", "turn_off"):
                 obj = need(obj, "appliance", c)
-                knob = obj if obj.endswith("knob") else f"{obj} knob"
+                knob = obj if obj.split()[-1] in ("knob", "dial") else f"{obj} knob"  # "the stove's dial" is its knob
                 if knob not in scene:
                     raise CannotPlan(
                         f"cannot turn {obj!r} {c.action[5:]}: perception did not find it with a knob "

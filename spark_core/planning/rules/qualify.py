@@ -58,6 +58,7 @@ EXTREMES = {
     "rightmost": "rightmost",
 }
 _EXTREME = "|".join(EXTREMES)
+_QUALIFIER_WORDS = frozenset([*EXTREMES.values(), *EXTREMES, "middle", "centre", "center", "top", "bottom"])
 _SIDE = r"(left|right|front|back|rear)"
 # counting may also run from the top or the bottom of a stack ("the second drawer from the top")
 _COUNT_SIDE = r"(left|right|front|back|rear|top|bottom)"
@@ -123,6 +124,12 @@ def extremes(text: str, push: bool = False) -> str:
         text,
     )
     text = re.sub(rf"\b({DET}) (?:more|most) (?:distant|remote) ", r"\1 farthest ", text)
+    # "whichever of the two blocks is farther": the same as "whichever block is farther"
+    text = re.sub(
+        rf"\bwhichever (?:one )?of (?:the |these |those )?(?:(?:two|three|four|both|all) )?({NP}) (?=(?:is|are) )",
+        lambda m: f"whichever {_singular_phrase(m.group(1))} ",
+        text,
+    )
     # "whichever bowl is closest to you": the same as "the bowl that is closest to you"
     text = re.sub(rf"\bwhichever ({NP}) (?:is|are) (?=(?:the )?(?:{_EXTREME}|far|near)\b)", r"the \1 that is ", text)
     # an extreme said first, without a determiner ("topmost black bowl: onto the plate", "lowest bowl, plate")
@@ -207,7 +214,7 @@ def negations(text: str) -> str:
         rf"^(?:leave|ignore|skip|do not touch|do not move|forget|never mind) the ({NP})"
         rf"(?: (?!alone\b|be\b|where it|in place\b|as it is\b)([^,;.]+?))?"
         rf"(?: alone| be| where it is| in place| as it is| where it stands)?[,;.]? (?:and |but |then )?"
-        rf"((?:\w+(?: up)? )?)the other (one|{NP})\b",
+        rf"((?:(?:i|we) (?:want|need|would like) |\w+(?: up)? )?)the other (one|{NP})\b",
         _left_alone,
         text,
     )
@@ -217,6 +224,12 @@ def negations(text: str) -> str:
         rf"(?: alone| be| where it is| in place| as it is)?[,;]? (?:and |but |then )?(\w+(?: up)?) "
         rf"the other (?:one|{NP})\b",
         r"\3 the \1 not \2",
+        text,
+    )
+    # "not the blue one, lift the other block": ruled out by an attribute, then the request for the other of the kind
+    text = re.sub(
+        rf"^not the ({_WORD}) ones?\s*[,:;]?\s*(?:but |rather )?((?:\w+(?: up)? )?)the other ({NP})\b",
+        r"\2the \3 not \1",
         text,
     )
     # "not the bowl on the burner, the other one goes ..." / "not the blue block but the other one"
@@ -341,6 +354,8 @@ def _trailing_not(text: str) -> str:
     if obj is None:
         return text
     head = _singular_phrase(obj.group(2)).split()[-1]
+    if set(obj.group(2).split()) & set(_QUALIFIER_WORDS) and _ruled_out(rest or "") in _QUALIFIER_WORDS:
+        return main  # "the bottom drawer, not the middle one": the qualifier said already picks it out
     if named is not None:
         said = _singular_phrase(named).split()
         if said[-1] != head:

@@ -60,12 +60,22 @@ ACTION_WORDS = {
 _VERB_FORMS = sorted({f for forms in VERBS.values() for f in forms} | {"turn", "switch", "use", "there is"}, key=len)
 _FIRST_WORDS = {f.split()[0] for f in _VERB_FORMS}
 _TRAILING = re.compile(
-    r"(?:\s*,\s*|\s+)(?:and\s+)?(?:then\s+)?(?:keep|hold(?= (?:it|them|still|steady|on|up|there)\b)|make sure|"
+    r"(?:\s*,\s*|\s+)(?:and\s+)?(?:then\s+)?(?:just\s+|simply\s+)?"
+    r"(?:keep|hold(?= (?:it|them|still|steady|on|up|there)\b)|make sure|"
     r"let go|release|stop|ensure|check|wait|let (?:it|them)\b|"
     # how to hold it, said after the action ("..., holding it by its two handles")
     r"(?:while )?(?:holding|gripping|grasping|grabbing) (?:it|them)\b|"
     r"(?:put|set|place) (?:it|them) back|leaving\b|"
     r"leave (?:it|them)\b(?!.*\b(?:on|in|into|onto|inside) (?:the|a|an)\b)|"
+    # the things not moved stay as they are ("... and leave the rest where they are", "..., leave the bowl as it is")
+    r"leave (?:the rest|everything else|the others?|all else|the [\w ]+? (?=where|as|alone|be\b))(?: of them)?"
+    r"\s*(?:(?:where (?:it is|they are)|as (?:it is|they are)|alone|be))?\s*$|"
+    # when or how fast, not what or where ("... when you get a chance", "... in one go", "..., nice and slow")
+    r"(?:(?:when|whenever) you (?:get|have|find) (?:a |the )?(?:chance|moment|minute|sec|second|time)|"
+    r"(?:when|whenever) you (?:can|are ready)|if (?:you can|possible)|asap|"
+    r"in (?:one|a single) (?:go|motion|move|movement|piece)|nice and (?:slow|easy|gentle|steady|gently|slowly))\s*$|"
+    # what the speaker will do after ("..., i'll heat it later")
+    r"(?:i|we) (?:will|shall|am going to|are going to|can) \w+ (?:it|them)(?: \w+)?$|"
     # how to do it or a check on the result, said after the action ("..., making sure it ends up inside",
     # "..., taking care not to tip it", "... without knocking anything over", "... rather than on the rim")
     r"(?:while |by )?(?:making sure|ensuring|checking|being careful|taking care|careful|trying|try to|try and|without|"
@@ -87,7 +97,11 @@ _TRAILING = re.compile(
     # how a lifted thing ends up, after the goal ("red cube up in the air, held (in the gripper)")
     r"(?<=, )held(?: (?:in|by) (?:the|your) (?:gripper|hand|fingers))?$|"
     # an adjustment of where it already is ("..., and get it centred", "... nice and level")
-    r"(?:get|have) (?:it|them) (?:centred|centered|straight|level|aligned|lined up|square)\b|"
+    r"(?:get|have) (?:it|them) (?:(?:properly|really|nice and|nicely|good and) )?(?:centred|centered|straight|level|"
+    r"aligned|lined up|square|clean|spotless|shiny|tidy|sparkling)\b|"
+    # a finer point of where, after the destination was said ("..., get it near the middle of the plate")
+    r"(?:get|have|keep|put|set) (?:it|them) (?:near|in|at|towards?|to|by|in the direction of) the "
+    r"(?:middle|centre|center|edge|side|front|back)\b|"
     r"(?:someone|somebody|i|we|they|you) (?:left|put|moved|knocked|dropped) (?:it|them)\b|"
     r"(?:\w+ )?side (?:up|down)$|move (?:back|away)$|"
     # which way up it stands: no object, no place ("..., right side up", "... upside down")
@@ -134,6 +148,26 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(r"\bontop\b", "on top", text)
     text = re.sub(r"^id (like|love|want)\b", r"i would \1", text)
     text = re.sub(r"\bi would (like|love)\b(?! you to)", r"i want", text)
+    # apostrophes left out ("dont touch", "isnt", "youll need to")
+    text = re.sub(r"\b(do|does|is|are|was|should|must)nt\b", r"\1 not", text)
+    text = re.sub(r"\b(can)t\b|\bwont\b", lambda m: "cannot" if m.group(1) else "will not", text)
+    text = re.sub(r"\byoull\b", "you will", text)
+    # a wish without its subject ("want the cup on the saucer"), a request for the speaker ("can i get the cup in
+    # the box"), a chance asked for ("any chance you could ..."), an obligation put on the listener ("you will need
+    # to open it first"): the request itself
+    text = re.sub(r"^(want|need)\b(?= (?:the|a|an|both|all) )", r"i \1", text)
+    text = re.sub(
+        r"^(?:can|could|may) (?:i|we) (?:get|have) "
+        r"(?=(?:the|a|an) .+ (?:in|into|on|onto|inside|on top of) (?:the|a|an) )",
+        "put ",
+        text,
+    )
+    text = re.sub(r"^(?:is there )?any chance (?:you could |you can |you would |of you |that you could )?", "", text)
+    text = re.sub(r"\byou (?:will |would |are going to )?(?:need|have|got|must) to\b", "", text)
+    # "only the cheese goes in the basket": the one thing the goal names
+    text = re.sub(r"^only (?=(?:the|a|an) )", "", text)
+    # "at the front of the stove" is "in front of" it
+    text = re.sub(r"\bat the front of\b(?= (?:the|a|an) )", "in front of", text)
     # "so the table's clear": "'s" before a state word is "is", not a possessive
     text = re.sub(
         r"(\w)'s (clear|empty|tidy|clean|free|full|done|ready|open|closed|shut|gone|level|straight)\b",
@@ -147,14 +181,33 @@ def sentences(instruction: str) -> list[str]:
         "a tower: ",
         text,
     )
-    # an arrow between a thing and a place: "green block -> basket" carries it there
+    # an arrow pointing back: "plate <- black bowl" is "black bowl -> plate"
+    text = re.sub(r"^([^<]+?)\s*(?:<-|<=|\u2190|<--)\s*(.+)$", r"\2 -> \1", text)
+    # an arrow between a thing and a place: "green block -> basket" carries it there (a preposition after the
+    # arrow says which way itself: "-> onto the plate")
     text = re.sub(
-        r"\s*(?:->|=>|\u2192|-->)\s*(?:the |a |an )?([\w ]+)",
-        lambda m: f" {'into' if m.group(1).split()[-1:] in ([c] for c in CONTAINERS) else 'onto'} the {m.group(1)}",
+        r"\s*(?:->|=>|\u2192|-->)\s*(?:(into|onto|in|on|inside|on top of|to) )?(?:the |a |an )?([\w ]+)",
+        lambda m: f" {_arrow_prep(m.group(1), m.group(2))} the {m.group(2)}",
+        text,
+    )
+    # "pick-and-place the cube onto ...": one carry
+    text = re.sub(r"^pick[- ](?:and|&|n)[- ](?:place|drop|put)\b", "put", text)
+    # "from the robot's point of view, ...": whose left and right, said first
+    text = re.sub(
+        r"^(?:(?:as )?(?:seen )?from|looking from) (?:the robot's|your|my|the robot|where you (?:stand|are))"
+        r"(?: (?:point of view|perspective|side|view|position))?\s*,?\s*",
+        "",
+        text,
+    )
+    # "twist the stove's dial to the on position": a knob set to on or off
+    text = re.sub(
+        r"^(?:twist|turn|rotate|set|switch|put|flip) (.+?) (?:to|into) (?:the )?(on|off)(?: position| setting)?$",
+        r"turn \2 \1",
         text,
     )
     # a remark that opens a turn in a conversation ("ok next one:", "alright,", "right then:")
     text = re.sub(r"^(?:ok|okay|alright|all right|right|so|now)(?: then)?(?:,? next(?: one)?)?\s*[:,]\s*", "", text)
+    text = re.sub(r"^(?:ok|okay|alright|right)(?:,)? so\b,?\s*", "", text)  # "ok so there's a bowl ..."
     # the goal said by what is wanted at the end ("what i want at the end: ...")
     text = re.sub(r"^(?:what|all) (?:i|we) (?:want|need)(?: at the end| in the end| to see)?\s*[:,]\s*", "", text)
     # "the cabinet top is where the plate goes", "the bowl closer to you is the one for the plate": a place named
@@ -210,9 +263,22 @@ def sentences(instruction: str) -> list[str]:
     # which one of several: "the second bowl from the left", "the farther of the two", "not the blue one" (before
     # the fillers: "first" is otherwise one)
     text = re.sub(r"\s+[-\u2013\u2014]+\s+", ", ", text)  # a dash between two parts is a comma
+    # "basket it": a container said as the verb puts the thing in it
+    text = re.sub(rf"(^|[,;:] )({'|'.join(CONTAINERS)}) (it|them)\b", r"\1put \3 in the \2", text)
+    # "sort the blocks, red into the green tray and ...": the items of the sort, as after a colon
+    text = re.sub(
+        r"^((?:(?:could|can|would|will) you (?:please )?)?(?:sort|arrange|organi[sz]e|split|separate|distribute) "
+        r"(?:the|these|those|both) \w+(?: up| out)?),\s+"
+        r"(?=\w+(?: \w+)? (?:into|in|onto|on|to) )",
+        r"\1: ",
+        text,
+    )
     # a label for the goal said first ("end state: ...", "goal - ..."): what follows is the goal
     text = re.sub(
-        r"^(?:the )?(?:end state|final state|end result|desired state|goal|target|objective)\s*[:,]\s*", "", text
+        r"^(?:the )?(?:end state|final state|end result|desired state|end goal|final goal|goal state|target state|"
+        r"goal|target|objective|aim|result|outcome)\s*[:,]\s*",
+        "",
+        text,
     )
     # a sentence adverb said first ("ideally the cup ...", "hopefully ..."): a comment on the goal, not a word of it
     text = re.sub(r"^(\w+ly)\b,?\s*", lambda m: "" if adverb_only(m.group(1)) else m.group(0), text)
@@ -232,7 +298,26 @@ def sentences(instruction: str) -> list[str]:
         text = re.sub(rf"(^|\s|,|\.){re.escape(f)}(?=\s|,|\.|$)", r"\1 ", text)
     text = text.replace("next_to", "next to")
     text = re.sub(r"\s+", " ", text)
-    return [s.strip(" ,") for s in text.split(" . ") if s.strip(" ,.")]
+    out = [s.strip(" ,") for s in text.split(" . ") if s.strip(" ,.")]
+    # a sentence that only links to the one before ("...; after that the red block goes on ..."), and one that
+    # only closes the request ("that is it", "done", "nothing else")
+    out = [
+        re.sub(r"^(?:and )?(?:then|after that|afterwards|after which|once that is done|next)\s*,?\s+", "", s)
+        for s in out
+    ]
+    return [s for s in out if not _CLOSING.fullmatch(s)]
+
+
+_CLOSING = re.compile(
+    r"(?:that is|that will be|that should be|and that is) (?:it|all|everything)(?: for now| thanks?(?: you)?)?|"
+    r"(?:nothing|that is all|all) else|done|cheers|thanks?(?: you)?|ta"
+)
+
+
+def _arrow_prep(said: str | None, place: str) -> str:
+    if said:
+        return {"in": "into", "on": "onto", "inside": "into", "to": "onto"}.get(said, said)
+    return "into" if place.split()[-1:] in ([c] for c in CONTAINERS) else "onto"
 
 
 def _lemma_verb(word: str) -> str:
@@ -303,6 +388,13 @@ def _colon(left: str, right: str) -> list[str]:
     """ "plate: the red block", "red block: up in the gripper", "sort the blocks: red into the green tray and
     blue into the yellow tray", "a tower: blue at the bottom, green in the middle, red on top"."""
     items = [i for i in re.split(r"\s*,\s*(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+", right) if i]
+    # "the basket's contents should be: X", "the basket should hold: X": the holder named on the left
+    left = re.sub(r"'s? (?:contents?|load)(?: (?:should|must|will|has to|needs to) be| (?:is|are))?$", "", left)
+    left = re.sub(r" (?:should|must|will|has to|needs to) (?:hold|contain|have|get)$", "", left)
+    if re.search(r"\b(?:tower|stack|pile)\b", left) and re.search(r"\b(?:bottom|top)\b", left):
+        # "tower from the bottom up: blue, green, red": the items in the order the left says
+        order = items[::-1] if re.search(r"\bfrom the top\b|\btop (?:to|down)\b", left) else items
+        return [f"stack {a} on {b}" for b, a in zip(order, order[1:])]
     if re.search(r"\btower\b", left):
         placed: dict[str, list[str]] = {"bottom": [], "middle": [], "top": []}
         for item in items:
@@ -524,10 +616,14 @@ def imperatives(instruction: str) -> list[str]:
             continue
         # "the soup tin, into the basket": a thing named, then only where it goes
         where = re.fullmatch(
-            r"([^,]+),\s*(?:(?:up|down|over|back|upright) )?((?:into|onto|on to|inside|in|on top of|on) [^,]+)", s
+            r"([^,]+),\s*(?:(?:up|down|over|back|upright) )?((?:into|onto|on to|inside|in|on top of|on|in front of) "
+            r"[^,]+)",
+            s,
         )
         if where and _is_noun_phrase(where.group(1)) and not starts_with_verb(where.group(1)):
-            out.append(f"put {where.group(1)} {where.group(2)}")
+            front = where.group(2).startswith("in front of")  # "the plate, in front of the stove": pushed there
+            place = f"to the front of{where.group(2)[len('in front of') :]}" if front else where.group(2)
+            out.append(f"{'push' if front else 'put'} {where.group(1)} {place}")
             continue
         pair = re.fullmatch(r"([^,]+),\s*([^,]+)", s)
         if pair and not any(starts_with_verb(x) or _DESTINATION.search(x) for x in pair.groups()):

@@ -20,6 +20,8 @@ NOT_THINGS = frozenset(
     + ["way", "direction", "distance", "state", "goal", "result", "outcome", "moment", "sec", "second", "minute"]
     + ["time", "bit", "while", "order", "rest", "arm", "gripper", "hand", "robot", "yourself", "care", "mess"]
     + ["round", "around", "idea", "job", "task", "plan", "aim", "thing", "things", "one", "ones", "row", "line"]
+    # a chance, a favour, a point of view: said about the request, never a thing in it
+    + ["chance", "opportunity", "favour", "favor", "point", "view", "perspective", "viewpoint"]
     # pronouns name who speaks or listens, not an object ("the end state i am after")
     + ["i", "me", "you", "we", "us", "they", "them", "he", "she", "him", "her", "it"]
 )
