@@ -22,7 +22,7 @@ EDGE_ON_COS = 0.5  # a front is seen edge-on when the horizontal view ray is wit
 FRONT_DEPTH_M = 0.03  # a mask this thin across the front's plane (m) is the front alone: the drawer is shut
 
 
-def _points(mask: np.ndarray, frame: CameraFrame, n: int = 0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def mask_points(mask: np.ndarray, frame: CameraFrame, n: int = 0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Rows, columns and world points (m) of the mask's pixels with a finite depth (n > 0: about n of them,
     evenly spaced)."""
     vs, us = np.nonzero(mask)
@@ -45,10 +45,10 @@ def below_cabinet_top(drawer: np.ndarray, cabinets: list[np.ndarray], frame: Cam
     cabinets' seen tops, m): those are the cabinet's top face. The mask itself when nothing would be left."""
     tops = []
     for c in cabinets:
-        _, _, pts = _points(c, frame, n=2000)  # a percentile of its heights: a sample does
+        _, _, pts = mask_points(c, frame, n=2000)  # a percentile of its heights: a sample does
         if len(pts) >= MIN_POINTS:
             tops.append(float(np.percentile(pts[:, 2], 98)))
-    vs, us, pts = _points(drawer, frame)
+    vs, us, pts = mask_points(drawer, frame)
     if not tops or len(pts) < MIN_POINTS:
         return drawer
     keep = pts[:, 2] < max(tops) - BELOW_TOP_M
@@ -77,8 +77,8 @@ def centred_on_handle(drawer: np.ndarray, handle: np.ndarray, frame: CameraFrame
     mask itself when the front is seen more squarely, when the width direction is not observable, or when the
     mask reaches back from the front (an open drawer's side wall: there the front's far end is hidden behind the
     wall, not spilled, and cutting to it would drop the wall)."""
-    _, _, h = _points(handle, frame)
-    vs, us, pts = _points(drawer, frame)
+    _, _, h = mask_points(handle, frame)
+    vs, us, pts = mask_points(drawer, frame)
     if len(h) < MIN_POINTS or len(pts) < MIN_POINTS:
         return drawer
     axis = front_width_axis(h)

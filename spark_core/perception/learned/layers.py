@@ -9,6 +9,7 @@ import numpy as np
 
 from ..frame import CameraFrame
 from ..qualifiers import QUALIFIERS
+from .drawers import mask_points
 
 LONE_HALF_M = 0.04  # half a drawer front's height (m) when only one handle is seen
 SAME_LAYER_M = 0.02  # handle pieces whose heights differ by less are one handle
@@ -40,11 +41,8 @@ def _band_m(zs: list[float], k: int) -> tuple[float, float]:
 
 def _heights_m(drawer: np.ndarray, frame: CameraFrame) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Pixel rows, columns and world heights (m) of the mask's pixels with a finite depth."""
-    vs, us = np.nonzero(drawer)
-    z = frame.depth_m[vs, us]
-    ok = np.isfinite(z) & (z > 0)
-    vs, us = vs[ok], us[ok]
-    return vs, us, frame.backproject(us.astype(float), vs.astype(float), z[ok])[:, 2]
+    vs, us, pts = mask_points(drawer, frame)
+    return vs, us, pts[:, 2]
 
 
 def layer_mask(drawer: np.ndarray, handles: list[np.ndarray], qualifier: str, frame: CameraFrame) -> np.ndarray | None:
