@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
@@ -33,6 +34,20 @@ class CameraFrame:
         K = self.K
         pts = np.stack([(us - K[0, 2]) * z / K[0, 0], (vs - K[1, 2]) * z / K[1, 1], z], axis=1)
         return pts @ self.T_world_camera[:3, :3].T + self.T_world_camera[:3, 3]
+
+    @cached_property
+    def height_map_m(self) -> np.ndarray:
+        """(H, W) world height z (m) of every pixel, NaN where the depth is missing; computed once per frame.
+
+        z_world = depth * (R[2] . ray(u, v)) + t_z, and the ray's z-row term is a sum of a per-column and a per-row
+        part, so the map costs two broadcasts instead of backprojecting every pixel."""
+        K, R, t = self.K, self.T_world_camera[:3, :3], self.T_world_camera[:3, 3]
+        H, W = self.shape
+        col = R[2, 0] * (np.arange(W) - K[0, 2]) / K[0, 0]
+        row = R[2, 1] * (np.arange(H) - K[1, 2]) / K[1, 1] + R[2, 2]
+        depth = self.depth_m.astype(np.float64)
+        ok = np.isfinite(depth) & (depth > 0)
+        return np.where(ok, depth * (row[:, None] + col[None, :]) + t[2], np.nan)
 
     def project(self, points_world: np.ndarray) -> np.ndarray:
         """(N, 3) world points -> (N, 2) pixel coordinates (u, v)."""

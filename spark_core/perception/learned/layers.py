@@ -90,8 +90,8 @@ def median_height_m(mask: np.ndarray, frame: CameraFrame, n: int = 400) -> float
         return None
     step = max(1, len(vs) // n)
     vs, us = vs[::step], us[::step]
-    z = frame.depth_m[vs, us]
-    ok = np.isfinite(z) & (z > 0)
+    z = frame.height_map_m[vs, us]
+    ok = np.isfinite(z)
     if not ok.any():
         return None
-    return float(np.median(frame.backproject(us[ok].astype(float), vs[ok].astype(float), z[ok])[:, 2]))
+    return float(np.median(z[ok]))

@@ -730,8 +730,7 @@ def _standing_part(inst: Instance, frame: CameraFrame) -> Instance:
     ok = np.isfinite(z) & (z > 0)
     if ok.sum() < 10:
         return inst
-    height = np.full(len(vs), np.inf)
-    height[ok] = frame.backproject(us[ok].astype(float), vs[ok].astype(float), z[ok])[:, 2]
+    height = frame.height_map_m[vs, us]
     low = ok & (height < float(np.percentile(height[ok], 98)) - limit)
     if not low.any() or (~low).sum() < 0.2 * len(vs):
         return inst
@@ -776,11 +775,7 @@ def _grown(instances: list[Instance], cat: np.ndarray, frame: CameraFrame) -> li
         (W, H),
         interpolation=cv2.INTER_NEAREST,
     ).astype(bool)
-    vs, us = np.mgrid[:H, :W]
-    depth = frame.depth_m
-    ok = np.isfinite(depth) & (depth > 0)
-    height = np.full((H, W), -np.inf)
-    height[ok] = frame.backproject(us[ok].astype(float), vs[ok].astype(float), depth[ok])[:, 2]
+    depth, height = frame.depth_m, frame.height_map_m  # height NaN where depth is missing: never grown into
     out = []
     for i in instances:
         kind = CATEGORIES[i.category]
