@@ -90,7 +90,10 @@ KINDS: tuple[frozenset[str], ...] = tuple(
         "book",
         "lamp",
         "door",
-        "butter margarine",
+        # a row names one product (its spellings, regional names, abbreviations), never a substitute for it:
+        # margarine stands in for butter and marmalade for jam, and neither is the other
+        "butter",
+        "margarine",
         "milk",
         "ketchup catsup",
         "cheese",
@@ -116,12 +119,14 @@ KINDS: tuple[frozenset[str], ...] = tuple(
         "soda cola",
         "beer",
         "teapot",
-        "pen pencil",
+        "pen",
+        "pencil",
         "cylinder",
         "pyramid",
         "dirt mess stain spill grime smudge dust",
         "yogurt yoghurt",
-        "jam jelly marmalade",
+        "jam jelly",
+        "marmalade",
         "honey",
         "pasta noodles",
         "rice",
@@ -135,7 +140,7 @@ KINDS: tuple[frozenset[str], ...] = tuple(
 CONSUMABLES = frozenset(
     ["butter", "milk", "ketchup", "cheese", "soup", "pudding", "juice", "dressing", "sauce", "cookie", "biscuit"]
     + ["cereal", "bread", "apple", "banana", "lemon", "wine", "egg", "mustard", "mayonnaise", "mayo", "soda", "cola"]
-    + ["beer", "yogurt", "yoghurt", "jam", "jelly", "marmalade", "honey", "pasta", "noodles", "rice"]
+    + ["beer", "yogurt", "yoghurt", "jam", "jelly", "marmalade", "honey", "pasta", "noodles", "rice", "margarine"]
 )
 # Other spellings and abbreviations of a word in an object's name: read as that word.
 SPELLINGS: dict[str, str] = {"barbecue": "bbq", "barbeque": "bbq", "yoghurt": "yogurt"}

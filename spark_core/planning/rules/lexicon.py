@@ -87,6 +87,9 @@ VERBS: dict[str, tuple[str, ...]] = {
         "plant",
         "perch",
         "situate",
+        # lowering a thing held onto a place sets it there
+        "lower",
+        "lower down",
     ),
     "stack": ("stack", "pile"),
     "push": ("push", "shove", "nudge", "slide", "scoot", "bump", "budge", "poke"),
@@ -95,7 +98,7 @@ VERBS: dict[str, tuple[str, ...]] = {
     "turn_on": ("turn on", "switch on", "ignite", "start", "light", "fire up", "power on", "activate", "heat up"),
     "turn_off": ("turn off", "switch off", "power off", "shut off", "deactivate", "extinguish", "shut down", "kill"),
     "pour": ("pour", "empty", "tip", "dump"),
-    "scrub": ("scrub", "wipe", "clean", "scour", "wash"),
+    "scrub": ("scrub", "wipe", "clean", "scour", "wash", "rub", "polish", "buff", "mop"),
     "sort": ("sort",),
 }
 # Verb forms whose object comes after a particle ("pick the block up", "turn the stove on").
@@ -141,6 +144,10 @@ FILLERS = (
     "would you be so kind as to",
     "would you be kind enough to",
     "be so kind as to",
+    "would you be able to",
+    "could you be able to",
+    "are you able to",
+    "will you be able to",
     "would you",
     "will you",
     "i want you to",
@@ -268,7 +275,7 @@ COPULAS: tuple[str, ...] = (
 )
 # A modal and a verb of ending up: any pair states a goal ("ought to sit", "has to end up", "should land").
 MODALS: tuple[str, ...] = ("should", "must", "ought to", "needs to", "need to", "has to", "have to", "is to", "are to")
-MODALS += ("will", "is supposed to", "are supposed to", "is meant to", "are meant to")
+MODALS += ("will", "is supposed to", "are supposed to", "is meant to", "are meant to", "wants to")
 END_UP = ("be", "go", "sit", "rest", "stay", "end up", "stand", "lie", "land", "get", "wind up", "finish")
 COPULAS += tuple(f"{m} {v}" for m in MODALS for v in END_UP)
 # Verbs that say a container or a surface holds something ("the basket should contain the block").

@@ -12,7 +12,7 @@ from ...perception.colors import BASE_COLOURS
 from ...perception.colors import SYNONYMS as COLOUR_SYNONYMS
 from ...perception.qualifiers import QUALIFIERS, split_relation
 from ...perception.variants import MATERIALS, SHAPES, SIZES
-from .lexicon import CONTENTS, DETERMINERS, PRONOUNS, REGIONS, TABLE
+from .lexicon import CONTAINERS, CONTENTS, DETERMINERS, PRONOUNS, REGIONS, TABLE
 from .parse import Clause, is_pronoun
 from .phrases import singular
 from .rewrite import sentences
@@ -184,3 +184,54 @@ def _not_only_noun(word: str) -> bool:
     from lemminflect import getAllLemmas
 
     return bool(set(getAllLemmas(word)) - {"NOUN"})
+
+
+def foreign_modifiers(phrases: list[str], inventory: tuple[str, ...]) -> list[str]:
+    """Words before a phrase's head noun that name a thing of their own, which nothing the scene holds is called by:
+    a kind of thing other than the head's ("the toaster plate" where there is no toaster) or a name the lexicon does
+    not know ("the lego block", a brand). Perception grounds such a phrase by its head noun, so the thing the
+    modifier names would go unchecked; like any thing the instruction names it must be there. A word that says
+    what a thing is for or made of and names no kind ("dinner plate", "porcelain pot") is no such claim, and nor is
+    what a container holds ("the cup of beads": it may be out of sight inside). Checked
+    against what perception can list of the scene (`inventory`: the names, their words and the kinds table's
+    other words for them); with no list, nothing is checked here."""
+    from lemminflect import getAllLemmas
+
+    from ...perception.variants import KIND_OF, SPELLINGS
+
+    if not inventory:
+        return []
+
+    def forms(word: str) -> set[str]:  # "cookies": cookie (not only "cooky"); "barbecue": bbq
+        out = {word, singular(word), word[:-1] if word.endswith("s") and len(word) > 3 else word}
+        return out | {SPELLINGS[f] for f in out if f in SPELLINGS}
+
+    def kind(word: str) -> frozenset[str]:
+        return frozenset().union(*(KIND_OF.get(f, frozenset()) for f in forms(word)))
+
+    held: set[str] = set()
+    for name in inventory:
+        for w in re.sub(r"\s*\(\d+\)$", "", name).lower().split():
+            held |= forms(w) | kind(w)
+    skip = ATTRIBUTES | frozenset(QUALIFIERS) | PLACE_WORDS | _closed_words() | ABSTRACT
+    out: dict[str, None] = {}
+    for phrase in phrases:
+        if not phrase or is_pronoun(phrase):
+            continue
+        head = re.split(r"\s+not\s+", split_relation(phrase)[0])[0]
+        words = re.findall(r"[a-z]+", head.lower())
+        if len(words) < 2:
+            continue
+        if forms(words[-1]) & set(CONTAINERS):
+            continue  # "the cup of little balls": what a container holds may be out of sight inside it
+        own = kind(words[-1]) | forms(words[-1])
+        for w in words[:-1]:
+            if w in skip or singular(w) in skip or w in DETERMINERS or len(w) < 3:
+                continue
+            named = kind(w)
+            if not named and getAllLemmas(w):
+                continue  # a word the lexicon knows that is no kind: what it is for or made of ("dinner plate")
+            if forms(w) & held or named & own:
+                continue
+            out.setdefault(w, None)
+    return list(out)

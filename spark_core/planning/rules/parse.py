@@ -11,7 +11,7 @@ from dataclasses import dataclass, field, replace
 from ...perception.colors import BASE_COLOURS
 from ...perception.qualifiers import split_relation
 from ...perception.variants import SIZES
-from .lexicon import CONTAINERS, DIRECTIONS, FROM, IN, ON, PARTICLE_VERBS, PRONOUNS, VERBS, WITH
+from .lexicon import CONTAINERS, CONTENTS, DIRECTIONS, FROM, IN, ON, PARTICLE_VERBS, PRONOUNS, VERBS, WITH
 from .phrases import noun_phrase, object_phrase
 from .rewrite import bare_goal, goal_to_action, imperatives
 from .things import is_verb, names_a_thing
@@ -204,6 +204,9 @@ def parse_instruction(instruction: str) -> list[Clause]:
         )
         clause = _resolve(clause, clauses)
         clause = _elided_object(clause, clauses)
+        # "grasp the red block, lower onto the blue block": a carry with no object carries what was just taken
+        if clause.action in ("put", "stack") and clause.obj is None and clause.target and _took(clauses):
+            clause = replace(clause, obj=clauses[-1].obj)
         if gapped and clause.target and clauses and _shares_destination(clauses[-1], clause):
             # "put the fork and the knife in the tray": coordinated objects share the one destination named last
             clauses[-1] = replace(clauses[-1], target=clause.target, relation=clause.relation)
@@ -214,6 +217,11 @@ def parse_instruction(instruction: str) -> list[Clause]:
     if all(c.action == "mention" for c in clauses):
         raise ParseError(f"{instruction.strip()!r} names {', '.join(c.obj or '?' for c in clauses)} but no action")
     return clauses
+
+
+def _took(before: list[Clause]) -> bool:
+    """The clause before took hold of a thing it names."""
+    return bool(before) and before[-1].action == "pick" and before[-1].obj is not None
 
 
 _GRIPPED_PARTS = ("handle", "knob", "dial", "grip", "pull")
@@ -289,9 +297,16 @@ def _remaining(c: Clause, before: list[Clause]) -> Clause:
     for name in ("obj", "target"):
         phrase = getattr(c, name)
         m = re.fullmatch(r"(?:remaining|leftover|last remaining|spare) (\w+)", phrase or "")
+        # "the leftmost block goes in the green tray, the other block in the yellow one": "other" went with the
+        # determiners; the kind alone is the one not picked out before
+        m = m or (
+            re.fullmatch(r"()(\w+)", phrase or "")
+            and re.search(rf"\bthe other {re.escape(phrase or '')}s?\b", c.text)
+            and re.fullmatch(r"()(\w+)", phrase or "")
+        )
         if not m:
             continue
-        noun = m.group(1)
+        noun = m.groups()[-1]
         said = [
             w
             for b in before
@@ -311,6 +326,12 @@ def _topic(part: str, later: list[str]) -> bool:
     if not later:
         return False
     bare = re.fullmatch(r"[a-z]+(?: [a-z]+){0,2}", part)  # without an article: a short bare noun phrase only
+    # ... or one located by a relative clause ("black bowl that is on the cooktop, plate it")
+    bare = bare or re.fullmatch(
+        r"[a-z]+(?: [a-z]+){0,2} (?:that|which) (?:is|are) (?:on|in|inside|at|by|near|next to|beside|under|between) "
+        r"(?:the|a|an) [a-z ]+",
+        part,
+    )
     if not re.match(r"(?:the|a|an|this|that|these|those) \w", part) and not bare:
         return False
     if re.search(r"\b(?:onto|into|on to)\b", part):  # "the red block onto the plate, then ...": a carry
@@ -366,6 +387,9 @@ def _resolve(c: Clause, before: list[Clause]) -> Clause:
         updates["tool"] = prev.obj
     if is_pronoun(c.source):  # "pick up the mug and pour its beads into the bowl": poured from the mug
         updates["source"] = prev.obj
+    if c.action == "pour" and is_pronoun(c.obj) and prev.obj and (c.source is None or is_pronoun(c.source)):
+        # "the beads in the red mug: pour them into the bowl": poured from what holds them
+        updates["source"] = _holder(prev.obj) or updates.get("source", c.source)
     return replace(c, **updates) if updates else c
 
 
@@ -450,6 +474,13 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
     if action == "scrub":
         split = _split_on(rest, WITH)
         obj, tool = split if split else (rest, None)
+        rubbed = (
+            None
+            if split
+            else re.fullmatch(r"(it|them|(?:the |a |an )?\w+(?: \w+)?) (?:all )?(?:over|across) (.+)", rest)
+        )
+        if rubbed:  # "rub it all over the plate": what is rubbed is the tool, where it goes is scrubbed
+            return Clause(action, target=noun_phrase(rubbed.group(2)), tool=noun_phrase(rubbed.group(1)), text=text)
         off = _split_on(obj, ("off of", "off", "from"))
         obj = re.sub(r"\s+(?:clean|down)$", "", off[0] if off else obj)  # "wipe the dirt off the table": the dirt
         return Clause(action, target=noun_phrase(obj), tool=noun_phrase(tool) if tool else None, text=text)
@@ -458,7 +489,7 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
         what, target = into if into else (rest, None)
         src = _split_on(what, FROM)
         obj, source = src if src else (what, None)
-        source = noun_phrase(source) if source else noun_phrase(obj)
+        source = noun_phrase(source) if source else _holder(obj) or noun_phrase(obj)
         return Clause(
             action,
             obj=noun_phrase(obj) if obj else None,
@@ -479,7 +510,9 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
         rest = re.sub(r"\s+for (the|a|an) (?=\w)", r" to \1 ", rest)
         # "take the block into the basket": a destination makes it a carry; "pick the bowl on the stove": where
         # it is picks out which bowl, and stays in the phrase
-        if not re.search(r"(?<!next )(?<!close )\b(into|onto|to)\b", rest):
+        # "get it on top of the green cube": a pronoun is located by nothing, so a place after it is where it goes
+        placed = re.match(r"(?:it|them) (?:on top of|on|in|inside)\s", rest)
+        if not placed and not re.search(r"(?<!next )(?<!close )\b(into|onto|to)\b", rest):
             return Clause(action, obj=object_phrase(rest) or None, direction=direction, distance_m=distance, text=text)
         action = "put"
     if action in ("open", "close", "turn_on", "turn_off"):
@@ -524,6 +557,16 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
             text=text,
         )
     return Clause(action, obj=object_phrase(rest) or None, direction=direction, distance_m=distance, text=text)
+
+
+def _holder(phrase: str) -> str | None:
+    """ "the beads (that are sitting) in the red mug": what holds what is poured is where it is poured from."""
+    m = re.fullmatch(
+        rf"(?:(?:the|a|an|all the|all) )?(?:{'|'.join(CONTENTS)})\s+(?:(?:that|which) )?(?:are |is )?"
+        r"(?:sitting |resting |lying |kept )?(?:in|inside|from|out of) (.+)",
+        phrase.strip(),
+    )
+    return noun_phrase(m.group(1)) if m else None
 
 
 def _elided_noun(target: str, obj: str) -> str:

@@ -11,7 +11,7 @@ from ...grammar import PlanError, check_plan, to_yaml
 from ...perception.qualifiers import split_relation
 from ..protocol import PlanRequest, PlanResult
 from .lexicon import REGIONS
-from .mentions import clause_mentions, read_past, stray_nouns
+from .mentions import clause_mentions, foreign_modifiers, read_past, stray_nouns
 from .parse import Clause, ParseError, is_pronoun, parse_instruction
 
 POUR_ANGLE_RAD = 2.2
@@ -117,6 +117,13 @@ class RulesPlanner:
                     f"could not find {phrase!r} in the scene: perception found nothing that matches it "
                     f"(understood: {understood}; found in the scene: {seen})"
                 )
+        # a thing named before a phrase's head noun ("the toaster plate", "the lego block") must be there too:
+        # perception grounds the phrase by its head
+        for word in foreign_modifiers([*said, *(c.obj for c in clauses if c.obj)], request.scene.inventory):
+            raise CannotPlan(
+                f"could not find {word!r} in the scene: nothing there is called that (understood: {understood}; "
+                f"found in the scene: {seen})"
+            )
         out: list[dict] = []
         last_object: str | None = None
         last_container: str | None = None

@@ -70,7 +70,8 @@ _SIDE_END = r"\b(?!(?: side| hand side| end| edge)? of\b)"
 # left goes ..."; not "the left tray", where "left" is an adjective of the next noun)
 _NP_END = (
     r"(?=$|[,.;:!?]|\s+(?:on|onto|in|into|to|and|then|with|from|at|over|inside|next|near|beside|by|goes|go|should|"
-    r"must|has|have|needs|belongs|is|are|please|for|so|until|forwards?|backwards?|towards?|away|ahead)\b)"
+    r"must|has|have|needs|belongs|is|are|please|for|so|until|forwards?|backwards?|towards?|away|ahead|sitting|resting|"
+    r"standing|lying|placed)\b)"
 )
 _ME = r"(?:the robot|you|me|us|the arm|the gripper)"
 _NEG = r"(?:is not|are not|was not|isn't|aren't|is n't)"
@@ -124,6 +125,9 @@ def extremes(text: str, push: bool = False) -> str:
         text,
     )
     text = re.sub(rf"\b({DET}) (?:more|most) (?:distant|remote) ", r"\1 farthest ", text)
+    # "the further-back bowl", "the closer-in one": the comparison said before the noun as one word
+    text = re.sub(rf"\b({DET}) (?:farther|further)-(?:back|away|out) ", r"\1 farthest ", text)
+    text = re.sub(rf"\b({DET}) (?:nearer|closer)-(?:in|up|forward|front) ", r"\1 nearest ", text)
     # "whichever of the two blocks is farther": the same as "whichever block is farther"
     text = re.sub(
         rf"\bwhichever (?:one )?of (?:the |these |those )?(?:(?:two|three|four|both|all) )?({NP}) (?=(?:is|are) )",
@@ -141,7 +145,8 @@ def extremes(text: str, push: bool = False) -> str:
     where = r"(?:(?:that|which) (?:is|are) |(?:sitting|standing|lying|resting|placed) )?"
     # "the bowl furthest to the left", "the bowl farthest left": the leftmost
     text = re.sub(
-        rf"\b({DET}) ({NP}) {where}(?:the )?(?:farthest|furthest|most|far) (?:to |on |toward |towards )?(?:the )?"
+        rf"\b({DET}) ({NP}) {where}(?:the )?(?:farthest|furthest|farther|further|most|far) "
+        rf"(?:to |on |toward |towards )?(?:the robot's |the robot |your |its |the )?"
         rf"(left|right)\b(?! of)",
         lambda m: f"{m.group(1)} {SIDES[m.group(3)]} {m.group(2)}",
         text,

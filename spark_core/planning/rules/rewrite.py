@@ -76,6 +76,10 @@ _TRAILING = re.compile(
     r"in (?:one|a single) (?:go|motion|move|movement|piece)|nice and (?:slow|easy|gentle|steady|gently|slowly))\s*$|"
     # what the speaker will do after ("..., i'll heat it later")
     r"(?:i|we) (?:will|shall|am going to|are going to|can) \w+ (?:it|them)(?: \w+)?$|"
+    # when the speaker comes back, after the goal ("... when i get back", "... before we arrive")
+    r"(?:when|before|by the time|until|once) (?:i|we) (?:get|come|am|are|return|arrive|walk)\b|"
+    # how gently, before why ("..., nice and gently so it stays in")
+    r"nice and(?: (?:slow|easy|gentle|steady|gently|slowly))?(?= so\b|\s*$)|"
     # how to do it or a check on the result, said after the action ("..., making sure it ends up inside",
     # "..., taking care not to tip it", "... without knocking anything over", "... rather than on the rim")
     r"(?:while |by )?(?:making sure|ensuring|checking|being careful|taking care|careful|trying|try to|try and|without|"
@@ -90,7 +94,9 @@ _TRAILING = re.compile(
     # started", "... and move your arm out of the way", "... and do not squash it")
     r"(?:go|come|head|return|get) (?:back|home)\b|move (?:your|the) (?:arm|gripper|hand)\b|(?:do not|never) |"
     # the goal's own name after it ("..., that is the end state i am after", "not the other way round")
-    r"that is the (?:end state|final state|result|outcome|state|arrangement|one)\b|(?:and )?not the other way\b|"
+    r"that is the (?:end state|final state|result|outcome|state|arrangement|one|target|aim|idea|goal)\b|"
+    r"(?:and )?not the other way\b|that is what (?:i|we) (?:am|are) after\b|"
+    r"that is what (?:i|we) (?:want|need|mean|would like|am asking for|are asking for)\b|"
     # a courtesy or a remark about how things came to be ("..., if you would", "..., ta", "..., someone left it
     # open"), which side faces up ("..., flat side down"), or moving the arm away ("..., then move back")
     r"if you (?:would|could|can|do not mind|please)\b|ta$|cheers$|"
@@ -100,7 +106,8 @@ _TRAILING = re.compile(
     r"(?:get|have) (?:it|them) (?:(?:properly|really|nice and|nicely|good and) )?(?:centred|centered|straight|level|"
     r"aligned|lined up|square|clean|spotless|shiny|tidy|sparkling)\b|"
     # a finer point of where, after the destination was said ("..., get it near the middle of the plate")
-    r"(?:get|have|keep|put|set) (?:it|them) (?:near|in|at|towards?|to|by|in the direction of) the "
+    r"(?:get|have|keep|put|set|leave) (?:it|them) (?:(?:roughly|about|approximately|around|somewhere|more or less|"
+    r"right|just|nicely) )?(?:near|in|at|towards?|to|by|in the direction of) the "
     r"(?:middle|centre|center|edge|side|front|back)\b|"
     r"(?:someone|somebody|i|we|they|you) (?:left|put|moved|knocked|dropped) (?:it|them)\b|"
     r"(?:\w+ )?side (?:up|down)$|move (?:back|away)$|"
@@ -108,6 +115,8 @@ _TRAILING = re.compile(
     r"(?:(?:the )?(?:right|correct) (?:side|way) up|upside down|upright)(?=\s*$)|that (?:is|will be|should be) "
     r"(?:all|it|everything|the (?:goal|plan|idea|task|job|aim))|that is all|thanks?(?: you)?)\b.*$"
 )
+# Surfaces said as a verb ("plate the bowl": put it on the plate).
+_SURFACES = ("plate", "saucer", "shelf", "rack")
 # "lift the pot with both arms, holding it by its two handles": one handle to each arm, lifted together.
 _TWO_HANDED = re.compile(
     r"(?:pick up|lift up|lift|raise|hoist|hold up) (?:the |a )?(.+?) with (?:both|two|the two) (?:arms|hands)\b.*"
@@ -143,6 +152,36 @@ def sentences(instruction: str) -> list[str]:
     text = instruction.lower().replace("’", "'").strip()
     for short, long in CONTRACTIONS.items():
         text = re.sub(rf"\b{re.escape(short)}", long, text)
+    # an interjection or a turn-taking word said first ("hey, ...", "um ...", "next: ..."): no part of the request
+    text = re.sub(
+        r"^(?:(?:hey|hi|hello|oi|yo|um+|uh+|hmm+|erm?)(?: there| robot| buddy| mate)?\b[,!.]?\s*|"
+        r"(?:next(?: up| one)?|and next)\s*:\s*)+",
+        "",
+        text,
+    )
+    # a thing held up "off the table" / "clear of the table": where it was lifted from, not another place; "grasped
+    # and lifted" is lifted
+    text = re.sub(
+        r"\b(up|lifted|raised|held|grasped|picked up|hoisted)\s+(?:up )?(?:off|clear of|above|from|away from) "
+        r"(?:the )?(?:table|tabletop|table top|counter|surface)\b",
+        r"\1",
+        text,
+    )
+    text = re.sub(r"\b(?:grasped|gripped|grabbed|held|taken) and (lifted|raised|held up|picked up)\b", r"\1", text)
+    # a switch worked by a verb of its own and the state after the thing ("flick the hob on", "shut the gas off")
+    text = re.sub(
+        r"(^|, |\band |\bthen )(?:flick|flip|click|shut|knock|whack|put|set) ((?:the|a|an) [\w ]+?) (on|off)"
+        r"(?=\s*(?:$|[,.;!?]|\band\b|\bthen\b))",
+        r"\1turn \3 \2",
+        text,
+    )
+    # a state brought about ("get the drawer open and ...", "have the stove switched on"): the action that makes it
+    text = re.sub(
+        r"(^|, |\band |\bthen )(?:get|have|make) ((?:the|a|an) [\w ]+?) "
+        r"(open|opened|closed|shut|switched on|switched off|turned on|turned off)(?=\s*(?:$|[,.;!?]|\band\b|\bthen\b))",
+        lambda m: f"{m.group(1)}{ACTION_WORDS[dict(STATE_ACTIONS)[m.group(3)]]} {m.group(2)}",
+        text,
+    )
     # common slips of the keyboard: "teh", "ontop", "id like" (the apostrophe left out)
     text = re.sub(r"\bteh\b", "the", text)
     text = re.sub(r"\bontop\b", "on top", text)
@@ -168,6 +207,17 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(r"^only (?=(?:the|a|an) )", "", text)
     # "at the front of the stove" is "in front of" it
     text = re.sub(r"\bat the front of\b(?= (?:the|a|an) )", "in front of", text)
+    # "the plate's sitting on the stove": "'s" before a participle of where a thing is, is "is"
+    text = re.sub(r"(\w)'s (sitting|resting|standing|lying|located|kept|parked|perched|waiting)\b", r"\1 is \2", text)
+    # "..., open the gripper", "then release your grip": letting go, which a carry does anyway
+    text = re.sub(
+        r"(?:\s*,\s*|\s+)(?:and\s+)?(?:then\s+)?(?:open|release|relax|loosen|let go of) (?:the |your )?"
+        r"(?:gripper|grip|hand|fingers|claw|jaws)\b(?=\s*(?:$|[,.;!?]))",
+        "",
+        text,
+    )
+    # "fish it out", "scoop the bead out": taking it out of where it is
+    text = re.sub(r"\b(?:fish|scoop|dig|lift) (it|them|(?:the|a|an) [\w ]+?) out\b", r"pick up \1", text)
     # "so the table's clear": "'s" before a state word is "is", not a possessive
     text = re.sub(
         r"(\w)'s (clear|empty|tidy|clean|free|full|done|ready|open|closed|shut|gone|level|straight)\b",
@@ -254,6 +304,36 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(
         r"\b(i|we) (want|need|like|love) to (?:see|have|find|get)\b(?= (?:the|a|an|both|all) )", r"\1 \2", text
     )
+    # "the plate needs a scrub", "the plate could do with a wipe": the action is the noun the thing needs
+    text = re.sub(
+        r"^((?:the|a|an|this|that|my) [\w ]+?) (?:needs|could use|could do with|wants|requires|is due) (?:a |an )?"
+        r"(?:(?:good|quick|proper|thorough|little|light) )?(scrub|wipe|clean|wash|polish|rub|going-over|going over|"
+        r"once-over|once over)\b",
+        r"scrub \1",
+        text,
+    )
+    text = re.sub(
+        r"\bgive ((?:the|this|that|my) [\w ]+?) an? (?:(?:good|quick|proper|thorough|little|light) )?"
+        r"(?:going-over|going over|once-over|once over|rub|polish)\b",
+        r"scrub \1",
+        text,
+    )
+    # "the drawer number two (counting) from the top": the ordinal
+    text = re.sub(
+        r"\b(\w+) (?:number|no\.?) (one|two|three|four|1|2|3|4),? (?:counting |counted |going )?"
+        r"(from the (?:top|bottom|left|right))",
+        lambda m: f"{_ORDINAL_OF[m.group(2)]} {m.group(1)} {m.group(3)}",
+        text,
+    )
+    # "that is not sitting directly on the table", "squarely on the plate": the adverb adds nothing to where
+    text = re.sub(r"\b(?:directly|squarely) (?=(?:on|in|inside|on top of|onto|into) )", "", text)
+    # "the box that is neither cream cheese nor pudding": ruled out by both
+    text = re.sub(
+        r"\b(the|a|an|any) ([\w ]+?) (?:(?:that|which) )?(?:is|are) neither (?:the |a |an )?([\w ]+?)(?: ones?)? nor "
+        r"(?:the |a |an )?([\w ]+?)(?: ones?)?(?=\s+(?:in|into|on|onto|to|inside|goes|go|should|please)\b|\s*$|,)",
+        r"\1 \2 not \3 \4",
+        text,
+    )
     # "give the plate a scrub": the action is the noun after the object
     text = re.sub(
         r"\bgive ((?:the|this|that|my) [\w ]+?) an? (?:(?:good|quick|proper|thorough|little|light) )?(\w+)\b",
@@ -263,8 +343,14 @@ def sentences(instruction: str) -> list[str]:
     # which one of several: "the second bowl from the left", "the farther of the two", "not the blue one" (before
     # the fillers: "first" is otherwise one)
     text = re.sub(r"\s+[-\u2013\u2014]+\s+", ", ", text)  # a dash between two parts is a comma
-    # "basket it": a container said as the verb puts the thing in it
-    text = re.sub(rf"(^|[,;:] )({'|'.join(CONTAINERS)}) (it|them)\b", r"\1put \3 in the \2", text)
+    # "basket it", "plate the bowl": a container or a surface said as the verb puts the thing in or on it
+    text = re.sub(rf"(^|[,;:] |\band |\bthen )({'|'.join(CONTAINERS)}) (it|them)\b", r"\1put \3 in the \2", text)
+    text = re.sub(
+        rf"(^|[,;:] |\band |\bthen )({'|'.join(_SURFACES)}) (it|them|(?:the|a|an|that|this) [^,;:.]+?)"
+        r"(?=\s*(?:$|[,;:.!?]|\band\b|\bthen\b))",
+        r"\1put \3 on the \2",
+        text,
+    )
     # "sort the blocks, red into the green tray and ...": the items of the sort, as after a colon
     text = re.sub(
         r"^((?:(?:could|can|would|will) you (?:please )?)?(?:sort|arrange|organi[sz]e|split|separate|distribute) "
@@ -308,6 +394,8 @@ def sentences(instruction: str) -> list[str]:
     return [s for s in out if not _CLOSING.fullmatch(s)]
 
 
+_ORDINAL_OF = {"one": "first", "1": "first", "two": "second", "2": "second", "three": "third", "3": "third"}
+_ORDINAL_OF |= {"four": "fourth", "4": "fourth"}
 _CLOSING = re.compile(
     r"(?:that is|that will be|that should be|and that is) (?:it|all|everything)(?: for now| thanks?(?: you)?)?|"
     r"(?:nothing|that is all|all) else|done|cheers|thanks?(?: you)?|ta"
@@ -388,6 +476,9 @@ def _colon(left: str, right: str) -> list[str]:
     """ "plate: the red block", "red block: up in the gripper", "sort the blocks: red into the green tray and
     blue into the yellow tray", "a tower: blue at the bottom, green in the middle, red on top"."""
     items = [i for i in re.split(r"\s*,\s*(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+", right) if i]
+    tower = _tower(items)
+    if tower:  # "want it the other way round: red cube on top, green cube underneath"
+        return tower
     # "the basket's contents should be: X", "the basket should hold: X": the holder named on the left
     left = re.sub(r"'s? (?:contents?|load)(?: (?:should|must|will|has to|needs to) be| (?:is|are))?$", "", left)
     left = re.sub(r" (?:should|must|will|has to|needs to) (?:hold|contain|have|get)$", "", left)
@@ -421,13 +512,45 @@ def _colon(left: str, right: str) -> list[str]:
         return [f"put {left} in {right}"]
     verb, _, rest = left.partition(" ")
     # a verb the list lacks, then a particle or what it acts on ("tidy up for me: ...", "arrange them: ...")
-    other_verb = is_verb(verb) and re.match(r"(?:up|out|away|them|these|those|it|everything|things|for)\b", rest)
+    other_verb = is_verb(verb) and re.match(
+        r"(?:up|out|away|them|these|those|it|everything|things|for|(?:the|this|that) (?:order|stack|tower|pile))\b",
+        rest,
+    )
     if starts_with_verb(left) or other_verb:  # "sort the blocks: red into the green tray ...": each item one carry
         return [goal_to_action(i) or f"put {i}" for i in items]  # an item may state its goal ("X goes to Y")
     if right in HELD or right.startswith(("up ", "in the gripper", "in the air")):
         return [f"pick up {left}"]
     prep = "in" if _head(left) in CONTAINERS else "on"
     return [f"put {i} {prep} {left}" for i in items]
+
+
+_TOWER_PLACES = (
+    ("top", r"on top|at the top|on the top|uppermost|up top"),
+    ("middle", r"in the middle|in between"),
+    ("bottom", r"underneath|beneath|below|under(?: it| them)?|at the bottom|on the bottom|at the base|lowest"),
+)
+
+
+# A word that makes a clause of a noun phrase ("the red block should end up in the air"): a goal said in words.
+_SAYS_GOAL = r"\b(?:should|must|will|would|could|can|needs?|has|have|is|are|be|ends?|gets?|goes|go|wants?|ought)\b"
+
+
+def _tower(items: list[str]) -> list[str] | None:
+    """Items that each say where a thing sits in a stack ("red cube on top", "green cube underneath"): the stack
+    from the bottom up, or None when an item says no place in a stack or none is at the top or the bottom."""
+    placed: dict[str, list[str]] = {"top": [], "middle": [], "bottom": []}
+    for item in (i.strip() for i in items if i.strip()):
+        for where, words in _TOWER_PLACES:
+            m = re.fullmatch(rf"((?:the |a |an )?[\w ]+?) (?:(?:is|sits|goes|should be|should go) )?(?:{words})", item)
+            if m and _is_noun_phrase(m.group(1)):
+                placed[where].append(m.group(1))
+                break
+        else:
+            return None
+    order = [x for k in ("bottom", "middle", "top") for x in placed[k]]
+    if len(order) < 2 or len(placed["top"]) > 1 or len(placed["bottom"]) > 1 or not (placed["top"] or placed["bottom"]):
+        return None
+    return [f"stack {a} on {b}" for b, a in zip(order, order[1:])]
 
 
 def _holds(text: str) -> str | None:
@@ -578,8 +701,27 @@ def _predicate(subject: str, predicate: str) -> str | None:
 def imperatives(instruction: str) -> list[str]:
     """The instruction as a list of imperative strings (each may still hold several clauses)."""
     out: list[str] = []
-    for sentence in sentences(instruction):
+    said = sentences(instruction)
+    for i, sentence in enumerate(said):
         s = _gerund(re.sub(r"^(?:make sure|ensure|see to it|check) (?:that )?(?=the |a |an )", "", sentence))
+        # "the plate's sitting on the stove at the moment; put the bowl on it": where a thing is now, said before the
+        # request, describes it (a goal would come last)
+        if i < len(said) - 1:
+            s = re.sub(
+                r"^((?:the|a|an) [\w ]+?) (?:is|are) (?:sitting|resting|standing|lying|located|kept|parked|perched|"
+                r"waiting) ((?:on|in|inside|on top of|at|by|near|next to|beside|between|under) [\w ]+?)"
+                r"(?: (?:at the moment|right now|right|currently|for now|now))?$",
+                r"there is \1 \2",
+                s,
+            )
+        # "the mug has beads in it, pour them ...": a container named with what it holds, then acted on
+        s = re.sub(
+            r"^((?:the|a|an) [\w ]+?) (?:has|holds|contains|is full of) (?:some |the )?(?:"
+            + "|".join(CONTENTS)
+            + r")(?: in (?:it|there))?\s*,\s*(?=\w)",
+            r"there is \1, ",
+            s,
+        )
         # "see the red block? put it on the plate": pointing a thing out names it for what follows
         s = re.sub(
             r"^(?:do you |can you )?(?:see|notice|spot|you see|you can see|you will see|you will find) "
@@ -608,7 +750,31 @@ def imperatives(instruction: str) -> list[str]:
             continue
         s = re.sub(r"^the other (.+?),? not the one (.+?),\s*", r"the \1 not \2 ", s)
         s = re.sub(r",?\s*the one (?:on|sitting on|lying on|that is on) the table,?", " ", s).strip()
+        # a remark about the thing after a comma ("..., it dents", "..., they are fragile"): no step, no place
+        s = re.sub(
+            r",\s*(?:because |since |as )?(?:it|they) (?!(?:goes|go|belongs?|should|must|needs?|has|have|wants?|will|"
+            r"is to|are to|ought)\b)(?:is|are|\w+s)\b(?![^,]*\b(?:on|in|into|onto|inside|on top of) (?:the|a|an)\b)"
+            r"[^,]*$",
+            "",
+            s,
+        )
+        # "open the drawer, all the way out": how far, after the action
+        if starts_with_verb(s):
+            s = re.sub(r",\s*(?:all the way )?(?:out|open|shut|closed)\b(?:\s+if (?:you can|possible))?\s*$", "", s)
         s = _TRAILING.sub("", _GRIP.sub("", _NOT_THERE.sub("", s)))
+        # "red block up, in the gripper", "red cube up and still held": a thing lifted and held
+        lifted = re.fullmatch(
+            r"((?:the |a |an )?[\w ]+?) up,?\s*(?:and )?(?:(?:still|now|held|kept|safely) )*"
+            r"(?:in (?:the|your) (?:gripper|hand|fingers)|in the air|held(?: up)?)",
+            s,
+        )
+        if lifted and _is_noun_phrase(lifted.group(1)) and not re.search(_SAYS_GOAL, lifted.group(1)):
+            out.append(f"pick up {lifted.group(1)}")
+            continue
+        tower = _tower(re.split(r"\s*,\s*|\s+and\s+", s))
+        if tower:  # "red cube on top, green cube underneath": a stack said by where each one is
+            out += tower
+            continue
         s = _purpose(s)
         if ":" in s:
             left, right = (x.strip() for x in s.split(":", 1))
@@ -616,7 +782,7 @@ def imperatives(instruction: str) -> list[str]:
             continue
         # "the soup tin, into the basket": a thing named, then only where it goes
         where = re.fullmatch(
-            r"([^,]+),\s*(?:(?:up|down|over|back|upright) )?((?:into|onto|on to|inside|in|on top of|on|in front of) "
+            r"([^,]+),\s*(?:(?:up|down|over|back|upright) )?((?:into|onto|on to|inside|in|on top of|on|in front of|to) "
             r"[^,]+)",
             s,
         )
@@ -626,6 +792,9 @@ def imperatives(instruction: str) -> list[str]:
             out.append(f"{'push' if front else 'put'} {where.group(1)} {place}")
             continue
         pair = re.fullmatch(r"([^,]+),\s*([^,]+)", s)
+        if pair and (pair.group(2) in dict(STATE_ACTIONS) or pair.group(2) in HELD):
+            out += _colon(pair.group(1), pair.group(2))  # "cabinet drawer, opened": the thing, then its state
+            continue
         if pair and not any(starts_with_verb(x) or _DESTINATION.search(x) for x in pair.groups()):
             out += _colon(pair.group(2), pair.group(1))  # "green block, basket"
             continue
