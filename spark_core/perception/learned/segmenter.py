@@ -645,12 +645,21 @@ def _rejoin(
     the stove top around it, which made its own two halves look wider than a bowl and kept them apart. Network-
     resolution components and depth; pixel (v, u) is camera pixel (v * factor, u * factor)."""
     xy: dict[int, np.ndarray] = {}
+    boxes: dict[int, tuple[int, int, int, int]] = {}
+    # every component's pixels in one pass (a stable sort keeps each one's row-major order): a frame of many small
+    # components made `comp == k` per component the slowest step of a LIBERO frame
+    vs_all, us_all = np.nonzero(comp > 0)
+    labels = comp[vs_all, us_all]
+    order = np.argsort(labels, kind="stable")
+    starts = np.searchsorted(labels[order], np.arange(1, n + 1))
     for k in range(1, n):
-        vs, us = np.nonzero(comp == k)
+        idx = order[starts[k - 1] : starts[k]]
+        vs, us = vs_all[idx], us_all[idx]
         z = depth_m[vs, us]
         ok = np.isfinite(z) & (z > 0)
         if ok.sum() >= 3:
             xy[k] = frame.backproject(us[ok] * float(factor), vs[ok] * float(factor), z[ok])
+            boxes[k] = (int(vs.min()), int(vs.max()), int(us.min()), int(us.max()))
     if len(xy) < 2:
         return comp, n
     kernel = np.ones((5, 5), np.uint8)
@@ -669,15 +678,22 @@ def _rejoin(
         return float((np.percentile(xy_m, 98, axis=0) - np.percentile(xy_m, 2, axis=0)).max())
 
     touching = set()
+    H, W = comp.shape
     for k in xy:
-        near = np.unique(comp[cv2.dilate((comp == k).astype(np.uint8), kernel).astype(bool)])
+        r0, r1, c0, c1 = boxes[k]
+        r0, c0, r1, c1 = max(0, r0 - 2), max(0, c0 - 2), min(H, r1 + 3), min(W, c1 + 3)  # the 5x5 dilation's reach
+        crop = comp[r0:r1, c0:c1]
+        near = np.unique(crop[cv2.dilate((crop == k).astype(np.uint8), kernel).astype(bool)])
         touching |= {(min(k, j), max(k, j)) for j in near.tolist() if j in xy and j != k}
+    widths: dict[tuple[int, int], float] = {}  # joined width per pair of current roots (dropped when one grows)
     while True:  # the narrowest join first: a bowl's own pieces before a neighbour's
         best: tuple[float, int, int] | None = None
         for k, j in touching:
             a, b = root(k), root(j)
             if a != b:
-                w = width(np.concatenate([xy[a], xy[b]]))
+                if (a, b) not in widths:
+                    widths[(a, b)] = width(np.concatenate([xy[a], xy[b]]))
+                w = widths[(a, b)]
                 if w <= max_extent_m and (best is None or w < best[0]):
                     best = (w, a, b)
         if best is None:
@@ -685,10 +701,11 @@ def _rejoin(
         _, a, b = best
         owner[b] = a
         xy[a] = np.concatenate([xy[a], xy[b]])
-    out = comp.copy()
+        widths = {pair: w for pair, w in widths.items() if a not in pair and b not in pair}
+    lut = np.arange(n, dtype=comp.dtype)
     for k in owner:
-        out[comp == k] = root(k)
-    return out, n
+        lut[k] = root(k)
+    return lut[comp], n
 
 
 PROUD_SLICE_PX = 6  # width (camera pixels) of the slices across a part's length that are compared apart
