@@ -13,6 +13,7 @@ from ..perception import Keypoint, LabelNotFound
 from ..perception.resolver_protocol import Resolver
 from ..perception.summary import summarise
 from .protocol import SceneView
+from .rules.lexicon import CONTAINERS, CONTENTS
 from .rules.mentions import clause_mentions, read_past, stray_nouns
 from .rules.parse import ParseError, is_pronoun, parse_instruction
 
@@ -36,6 +37,10 @@ def phrases_for(instruction: str) -> list[str]:
             # into a drawer: the planner opens it first when no step does, by its handle
             out.setdefault(f"{c.target} handle", None)
             out.setdefault("drawer handle", None)
+        if c.action == "pour" and c.source and c.source.split()[-1] in CONTENTS:
+            # "the beads should end up in the bowl": poured from a container perception finds (planner.py)
+            for holder in CONTAINERS:
+                out.setdefault(holder, None)
         part = PART_OF_ACTION.get(c.action)
         if part and c.obj:
             out.setdefault(f"{c.obj} {part}", None)

@@ -148,3 +148,19 @@ def test_a_pour_comes_from_what_holds_the_contents(text, source):
 def test_a_scrub_said_with_a_noun_or_rub(text, tool, target):
     scrub = [c for c in parse_instruction(text) if c.action == "scrub"]
     assert len(scrub) == 1 and scrub[0].target == target and scrub[0].tool in (tool, "it")
+
+
+def _pour_view(**where):
+    view = _view((), **where)
+    view.unresolved["beads"] = "none found"
+    return view
+
+
+def test_contents_without_their_container_pour_from_the_one_container_found():
+    one = _pour_view(bowl=(0.5, 0.2, 0.03), mug=(0.5, -0.1, 0.04))
+    planned = RulesPlanner().plan(PlanRequest("the beads should end up in the bowl", one))
+    assert planned.ok and "mug" in planned.text
+    none = _pour_view(bowl=(0.5, 0.2, 0.03))
+    assert not RulesPlanner().plan(PlanRequest("the beads should end up in the bowl", none)).ok
+    two = _pour_view(bowl=(0.5, 0.2, 0.03), mug=(0.5, -0.1, 0.04), cup=(0.4, -0.2, 0.04))
+    assert not RulesPlanner().plan(PlanRequest("the beads should end up in the bowl", two)).ok

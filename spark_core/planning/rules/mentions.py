@@ -79,6 +79,8 @@ def clause_mentions(clauses: list[Clause]) -> list[str]:
                 continue
             if p == c.obj and c.action == "pour" and c.source and c.source != c.obj:
                 continue  # what is poured out of the source (its beads, its water) is the source's to hold
+            if c.action == "pour" and p == c.source and p.split()[-1] in CONTENTS:
+                continue  # contents named without their container: poured from the container found (planner.py)
             out.setdefault(p, None)
             for a in anchors(p):
                 out.setdefault(a, None)

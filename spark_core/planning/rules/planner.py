@@ -10,7 +10,7 @@ import numpy as np
 from ...grammar import PlanError, check_plan, to_yaml
 from ...perception.qualifiers import split_relation
 from ..protocol import PlanRequest, PlanResult
-from .lexicon import REGIONS
+from .lexicon import CONTAINERS, CONTENTS, REGIONS
 from .mentions import clause_mentions, foreign_modifiers, read_past, stray_nouns
 from .parse import Clause, ParseError, is_pronoun, parse_instruction
 
@@ -207,8 +207,8 @@ class RulesPlanner:
                     )
                 out.append(_prim("turn_knob", keypoint_label=knob, angle=90.0 if c.action == "turn_on" else -90.0))
             elif c.action == "pour":
-                src = need(c.source or obj, "container to pour from", c)
                 dst = need(target, "container to pour into", c)
+                src = need(_holder_of(c.source or obj, dst, scene), "container to pour from", c)
                 if held == src and out and out[-1]["primitive"] == "pick":
                     out.pop()  # "pick up the mug and pour it": pouring grasps it from the side itself
                 out += [
@@ -260,6 +260,17 @@ class RulesPlanner:
         if not c.direction:
             raise CannotPlan(f"{c.text!r}: push which way? (forward, backward, left, right, or into something)")
         return c.direction, round(min(c.distance_m or 0.10, 0.5), 3)
+
+
+def _holder_of(source: str | None, dst: str, scene) -> str | None:
+    """What contents named without their container ("the beads should end up in the bowl") are poured from: the
+    one container perception found besides the destination; the phrase itself when it names no contents, or when
+    perception found no such container or several."""
+    if not source or source in scene or source.split()[-1] not in CONTENTS:
+        return source
+    holders = [h for h in CONTAINERS if h in scene and not _same_detection(scene[h], scene[dst])]
+    distinct = [h for i, h in enumerate(holders) if not any(_same_detection(scene[h], scene[g]) for g in holders[:i])]
+    return distinct[0] if len(distinct) == 1 else source
 
 
 def _drawer_step(action: str, o: str, scene, seen: str) -> dict:
