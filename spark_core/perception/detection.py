@@ -7,6 +7,8 @@ from typing import Any
 
 import numpy as np
 
+from .pixels import mask_pixels
+
 
 @dataclass(frozen=True)
 class Detection:
@@ -30,13 +32,13 @@ class Detection:
 
     @property
     def centroid_px(self) -> tuple[float, float]:
-        vs, us = np.nonzero(self.mask)
+        vs, us = mask_pixels(self.mask)
         return (float(us.mean()), float(vs.mean())) if len(us) else (float("nan"), float("nan"))
 
     @property
     def bbox_px(self) -> tuple[int, int, int, int]:
         """(u_min, v_min, u_max, v_max), inclusive."""
-        vs, us = np.nonzero(self.mask)
+        vs, us = mask_pixels(self.mask)
         return (int(us.min()), int(vs.min()), int(us.max()), int(vs.max())) if len(us) else (0, 0, -1, -1)
 
     def with_label(self, label: str) -> Detection:

@@ -10,6 +10,7 @@ import numpy as np
 from .detection import Detection
 from .frame import CameraFrame
 from .keypoint import Keypoint
+from .pixels import mask_pixels
 
 MAX_DEPTH_M = 5.0
 MIN_POINTS = 12
@@ -28,7 +29,7 @@ class PointEvidence:
 
 def masked_points(det: Detection, frame: CameraFrame, exclude: np.ndarray | None = None) -> PointEvidence | None:
     mask = det.mask if exclude is None else det.mask & ~exclude
-    vs, us = np.nonzero(mask)
+    vs, us = mask_pixels(mask)
     z = frame.depth_m[vs, us]
     ok = (z > 0.01) & (z < MAX_DEPTH_M)
     if ok.sum() < MIN_POINTS:

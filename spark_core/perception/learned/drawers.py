@@ -15,6 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..frame import CameraFrame
+from ..pixels import mask_pixels
 
 BELOW_TOP_M = 0.01  # drawer points within this of the cabinet's top height (m) are the cabinet's top face
 MIN_POINTS = 20  # fewer finite-depth pixels than this: too little to judge, the mask is kept
@@ -25,7 +26,7 @@ FRONT_DEPTH_M = 0.03  # a mask this thin across the front's plane (m) is the fro
 def mask_points(mask: np.ndarray, frame: CameraFrame, n: int = 0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Rows, columns and world points (m) of the mask's pixels with a finite depth (n > 0: about n of them,
     evenly spaced)."""
-    vs, us = np.nonzero(mask)
+    vs, us = mask_pixels(mask)
     if n and len(vs) > n:
         vs, us = vs[:: len(vs) // n], us[:: len(vs) // n]
     z = frame.depth_m[vs, us]

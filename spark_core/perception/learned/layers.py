@@ -8,6 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..frame import CameraFrame
+from ..pixels import mask_pixels
 from ..qualifiers import QUALIFIERS
 from .drawers import mask_points
 
@@ -85,7 +86,7 @@ def split_layers(drawer: np.ndarray, handles: list[np.ndarray], frame: CameraFra
 
 def median_height_m(mask: np.ndarray, frame: CameraFrame, n: int = 400) -> float | None:
     """Median world height (m) of up to n evenly spaced pixels of the mask with a finite depth."""
-    vs, us = np.nonzero(mask)
+    vs, us = mask_pixels(mask)
     if not len(vs):
         return None
     step = max(1, len(vs) // n)

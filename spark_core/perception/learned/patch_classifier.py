@@ -23,6 +23,7 @@ import numpy as np
 import torch
 from torch import nn
 
+from ..pixels import mask_pixels
 from .categories import CATEGORIES, CATEGORY_INDEX
 
 PATCH_PX = 48  # side of the square network input
@@ -54,7 +55,7 @@ _LOCK = threading.Lock()
 def square_box(mask: np.ndarray, margin: float = MARGIN) -> tuple[int, int, int, int] | None:
     """(row0, col0, side) of a square window around the mask's bounding box with `margin` context, and the
     box's longer side (px); None for an empty mask. The window may reach past the image (padded when cut)."""
-    vs, us = np.nonzero(mask)
+    vs, us = mask_pixels(mask)
     if not len(vs):
         return None
     r0, r1, c0, c1 = vs.min(), vs.max() + 1, us.min(), us.max() + 1

@@ -9,6 +9,7 @@ import cv2
 import numpy as np
 
 from ..frame import CameraFrame
+from ..pixels import mask_pixels
 
 SPREAD_PCT = (5.0, 95.0)  # robust size: percentiles of the points along each world axis
 STANDS_ON_M = 0.02  # a piece stands on an object when its lowest points are within this of the object's top
@@ -18,7 +19,7 @@ EDGE_M = 0.03  # ...and its middle is over the object's footprint, or this close
 
 def world_points(mask: np.ndarray, frame: CameraFrame, n: int = 600) -> np.ndarray:
     """Up to n evenly spaced world points (m) of the mask's pixels with a finite depth; (0, 3) when none."""
-    vs, us = np.nonzero(mask)
+    vs, us = mask_pixels(mask)
     step = max(1, len(vs) // n)
     vs, us = vs[::step], us[::step]
     z = frame.depth_m[vs, us]
@@ -67,7 +68,7 @@ def without_strays(mask: np.ndarray, frame: CameraFrame) -> np.ndarray:
     drag the keypoint towards them and, for a bowl, raise its seen top, which then cuts the bowl's own lower half
     away as "support". Pieces touching in space stay (the table
     under the object is cut elsewhere); so does every piece of a mask that falls apart into large ones."""
-    vs, us = np.nonzero(mask)
+    vs, us = mask_pixels(mask)
     z = frame.depth_m[vs, us]
     ok = np.isfinite(z) & (z > 0)
     if ok.sum() < 20:

@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..pixels import mask_pixels
+
 GROW_STEPS = 24  # camera pixels a mask may grow (a 4 cm neck at 1 m is about 24 px)
 GROW_DEPTH_M = 0.01  # a neighbour continues the surface when its depth differs by less than this
 ABOVE_TABLE_M = 0.01  # grown pixels stand at least this far above the table top
@@ -21,7 +23,7 @@ def grow_by_depth(
     """`mask` grown by up to GROW_STEPS pixels (4-connected) into `free` pixels whose depth (m) is within
     GROW_DEPTH_M of the mask neighbour they touch and whose world height (`height_m`, m) is ABOVE_TABLE_M over
     `table_z_m`, and higher than that neighbour. Works on the mask's bounding box widened by GROW_STEPS."""
-    vs, us = np.nonzero(mask)
+    vs, us = mask_pixels(mask)
     if not len(vs):
         return mask
     H, W = mask.shape

@@ -23,6 +23,7 @@ import numpy as np
 from ..colors import BASE_COLOURS, normalise_colours
 from ..detection import Detection
 from ..frame import CameraFrame
+from ..pixels import mask_pixels
 from ..qualifiers import relation_holds, split_qualifier, split_relation
 from ..sim_segmenter import calibrated_score, pick_by_qualifier
 from ..text_encoder import SHARED_ENCODER, TextEncoder
@@ -543,7 +544,7 @@ def _apart_in_space(mask: np.ndarray, frame: CameraFrame) -> list[np.ndarray]:
     standing in front of a carton overlaps it in the image with no depth edge the network marks, but the two never
     touch in space. Pieces under 10 % of the mask are dropped (stray pixels)."""
 
-    vs, us = np.nonzero(mask)
+    vs, us = mask_pixels(mask)
     z = frame.depth_m[vs, us]
     ok = np.isfinite(z) & (z > 0)
     if ok.sum() < 20:
@@ -603,7 +604,7 @@ def _join_renamed(instances: list[Instance], categories: set[int], frame: Camera
 
 def _xy_width(mask: np.ndarray, frame: CameraFrame, n: int = 800) -> float:
     """Widest extent (m) of the mask's 3D points along world x or y (2nd to 98th percentile)."""
-    vs, us = np.nonzero(mask)
+    vs, us = mask_pixels(mask)
     step = max(1, len(vs) // n)
     vs, us = vs[::step], us[::step]
     z = frame.depth_m[vs, us]
@@ -648,7 +649,7 @@ def _rejoin(
     boxes: dict[int, tuple[int, int, int, int]] = {}
     # every component's pixels in one pass (a stable sort keeps each one's row-major order): a frame of many small
     # components made `comp == k` per component the slowest step of a LIBERO frame
-    vs_all, us_all = np.nonzero(comp > 0)
+    vs_all, us_all = mask_pixels(comp > 0)
     labels = comp[vs_all, us_all]
     order = np.argsort(labels, kind="stable")
     starts = np.searchsorted(labels[order], np.arange(1, n + 1))
@@ -716,7 +717,7 @@ def _proud(mask: np.ndarray, frame: CameraFrame, proud_m: float) -> np.ndarray:
     nearest: a stray pixel on something in front would move it) of their slice across the part's length (its
     longer image axis). Sliced because a handle seen at an angle recedes along its length by more than proud_m:
     against one nearest depth for the whole mask, a LIBERO handle seen by agentview lost its far half."""
-    vs, us = np.nonzero(mask)
+    vs, us = mask_pixels(mask)
     d = frame.depth_m[vs, us]
     ok = np.isfinite(d) & (d > 0)
     if ok.sum() < 10:
@@ -742,7 +743,7 @@ def _standing_part(inst: Instance, frame: CameraFrame) -> Instance:
     limit = CATEGORIES[inst.category].max_height_m
     if not limit:
         return inst
-    vs, us = np.nonzero(inst.mask)
+    vs, us = mask_pixels(inst.mask)
     z = frame.depth_m[vs, us]
     ok = np.isfinite(z) & (z > 0)
     if ok.sum() < 10:
@@ -885,7 +886,7 @@ def _grow_into(comp: np.ndarray, region: np.ndarray, iterations: int = 4) -> np.
 def _footprint_xy(mask: np.ndarray, frame: CameraFrame) -> tuple[np.ndarray, float]:
     """Median xy of a mask's world points and the radius of its seen footprint (half its wider xy extent between
     the 5th and 95th percentiles), in m."""
-    vs, us = np.nonzero(mask)
+    vs, us = mask_pixels(mask)
     pts = frame.backproject(us.astype(float), vs.astype(float), frame.depth_m[vs, us])[:, :2]
     pts = pts[np.isfinite(pts).all(1)]
     if not len(pts):
@@ -895,6 +896,6 @@ def _footprint_xy(mask: np.ndarray, frame: CameraFrame) -> tuple[np.ndarray, flo
 
 
 def _centroid_xy(mask: np.ndarray, frame: CameraFrame) -> np.ndarray:
-    vs, us = np.nonzero(mask)
+    vs, us = mask_pixels(mask)
     pts = frame.backproject(us.astype(float), vs.astype(float), frame.depth_m[vs, us])
     return np.median(pts[:, :2], axis=0)
