@@ -63,6 +63,9 @@ def test_the_planner_refuses_a_phrase_whose_modifier_names_an_absent_thing():
         ("green cube up, in the gripper", [("pick", "green cube", None, None)]),
         ("blue block up off the counter and held in the hand", [("pick", "blue block", None, None)]),
         ("goal: green cube gripped and raised clear of the table", [("pick", "green cube", None, None)]),
+        # a goal said as a clause is no noun phrase lifted: "should end" is not part of the thing's name
+        ("the red block should end up in the air", [("pick", "red block", None, None)]),
+        ("the blue cube must end up in the gripper", [("pick", "blue cube", None, None)]),
         # a switch worked by a verb of its own, a state brought about
         ("flip the cooker on", [("turn_on", "cooker", None, None)]),
         ("knock the burner off", [("turn_off", "burner", None, None)]),
