@@ -744,11 +744,10 @@ def _standing_part(inst: Instance, frame: CameraFrame) -> Instance:
     if not limit:
         return inst
     vs, us = mask_pixels(inst.mask)
-    z = frame.depth_m[vs, us]
-    ok = np.isfinite(z) & (z > 0)
+    height = frame.height_map_m[vs, us]
+    ok = np.isfinite(height)  # NaN where the depth is missing
     if ok.sum() < 10:
         return inst
-    height = frame.height_map_m[vs, us]
     low = ok & (height < float(np.percentile(height[ok], 98)) - limit)
     if not low.any() or (~low).sum() < 0.2 * len(vs):
         return inst
