@@ -11,6 +11,7 @@ from .detection import Detection
 from .frame import CameraFrame
 from .keypoint import Keypoint
 from .pixels import mask_pixels
+from .quantiles import percentiles
 
 MAX_DEPTH_M = 5.0
 MIN_POINTS = 12
@@ -49,11 +50,11 @@ def keypoint_from_points(label: str, evidence: list[PointEvidence], source: str)
     ("unstable") when the box is nearly square or the object is too thin to tell.
     """
     pts = np.concatenate([e.points_world for e in evidence])
-    lo, hi = np.percentile(pts, 2, axis=0), np.percentile(pts, 98, axis=0)
+    lo, hi = percentiles(pts, (2, 98))
     extent = hi - lo
     top = pts[pts[:, 2] > hi[2] - max(0.3 * extent[2], 0.004)]
     if len(top) >= TRIM_MIN_POINTS:  # one stray pixel (a thin handle's edge seeing past it) must not move the box
-        t_lo, t_hi = np.percentile(top[:, :2], 2, axis=0), np.percentile(top[:, :2], 98, axis=0)
+        t_lo, t_hi = percentiles(top[:, :2], (2, 98))
         top = top[np.all((top[:, :2] >= t_lo) & (top[:, :2] <= t_hi), axis=1)]
     (cx, cy), (w, h), angle = cv2.minAreaRect(top[:, :2].astype(np.float32)) if len(top) >= 5 else ((0, 0), (0, 0), 0)
     if len(top) >= 5:

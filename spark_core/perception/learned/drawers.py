@@ -16,6 +16,7 @@ import numpy as np
 
 from ..frame import CameraFrame
 from ..pixels import mask_pixels
+from ..quantiles import percentile, percentiles
 
 BELOW_TOP_M = 0.01  # drawer points within this of the cabinet's top height (m) are the cabinet's top face
 MIN_POINTS = 20  # fewer finite-depth pixels than this: too little to judge, the mask is kept
@@ -48,7 +49,7 @@ def below_cabinet_top(drawer: np.ndarray, cabinets: list[np.ndarray], frame: Cam
     for c in cabinets:
         _, _, pts = mask_points(c, frame, n=2000)  # a percentile of its heights: a sample does
         if len(pts) >= MIN_POINTS:
-            tops.append(float(np.percentile(pts[:, 2], 98)))
+            tops.append(float(percentile(pts[:, 2], 98)))
     vs, us, pts = mask_points(drawer, frame)
     if not tops or len(pts) < MIN_POINTS:
         return drawer
@@ -66,8 +67,9 @@ def front_width_axis(handle_points_m: np.ndarray) -> np.ndarray | None:
     evals, evecs = np.linalg.eigh(xy.T @ xy / len(xy))
     if evals[1] < 4 * max(evals[0], 1e-12):
         return None
-    lo, hi = np.percentile(handle_points_m, 2, axis=0), np.percentile(handle_points_m, 98, axis=0)
-    spread = np.percentile(xy @ evecs[:, 1], 98) - np.percentile(xy @ evecs[:, 1], 2)
+    lo, hi = percentiles(handle_points_m, (2, 98))
+    across_lo, across_hi = percentiles(xy @ evecs[:, 1], (2, 98))
+    spread = across_hi - across_lo
     standing = hi[2] - lo[2] > spread
     return evecs[:, 0] if standing else evecs[:, 1]
 
@@ -90,11 +92,13 @@ def centred_on_handle(drawer: np.ndarray, handle: np.ndarray, frame: CameraFrame
     if abs(float(ray @ normal)) >= EDGE_ON_COS * float(np.linalg.norm(ray)):
         return drawer
     across = pts[:, :2] @ normal
-    if float(np.percentile(across, 98) - np.percentile(across, 2)) > FRONT_DEPTH_M:
+    across_lo, across_hi = percentiles(across, (2, 98))
+    if float(across_hi - across_lo) > FRONT_DEPTH_M:
         return drawer
     centre = float(np.median(h[:, :2] @ axis))
     s = pts[:, :2] @ axis - centre
-    reach = min(float(np.percentile(s, 98)), float(-np.percentile(s, 2)))
+    s_lo, s_hi = percentiles(s, (2, 98))
+    reach = min(float(s_hi), float(-s_lo))
     if reach <= 0:  # the handle is past the drawer's seen end: nothing to centre on
         return drawer
     keep = np.abs(s) <= reach

@@ -10,6 +10,7 @@ import numpy as np
 
 from ..frame import CameraFrame
 from ..pixels import mask_pixels
+from ..quantiles import percentiles
 
 SPREAD_PCT = (5.0, 95.0)  # robust size: percentiles of the points along each world axis
 STANDS_ON_M = 0.02  # a piece stands on an object when its lowest points are within this of the object's top
@@ -36,7 +37,7 @@ def support_of(piece: np.ndarray, others: list[np.ndarray], frame: CameraFrame, 
     pts = world_points(piece, frame)
     if len(pts) < 5:
         return None
-    lo, hi = np.percentile(pts, SPREAD_PCT, axis=0)
+    lo, hi = percentiles(pts, SPREAD_PCT)
     if float((hi - lo).max()) >= min_extent_m:
         return None
     bottom, centre = float(lo[2]), np.median(pts[:, :2], axis=0)
@@ -49,7 +50,7 @@ def support_of(piece: np.ndarray, others: list[np.ndarray], frame: CameraFrame, 
         q = world_points(other, frame)
         if len(q) < 5:
             continue
-        olo, ohi = np.percentile(q, (2.0, 98.0), axis=0)
+        olo, ohi = percentiles(q, (2.0, 98.0))
         gap = abs(bottom - float(ohi[2]))
         inside = bool(np.all(centre >= olo[:2] - EDGE_M) and np.all(centre <= ohi[:2] + EDGE_M))
         if gap <= STANDS_ON_M and inside and (best is None or gap < best[0]):

@@ -25,6 +25,7 @@ from ..detection import Detection
 from ..frame import CameraFrame
 from ..pixels import mask_pixels
 from ..qualifiers import relation_holds, split_qualifier, split_relation
+from ..quantiles import percentile, percentiles
 from ..sim_segmenter import calibrated_score, pick_by_qualifier
 from ..text_encoder import SHARED_ENCODER, TextEncoder
 from . import patch_classifier
@@ -553,7 +554,7 @@ def _apart_in_space(mask: np.ndarray, frame: CameraFrame) -> list[np.ndarray]:
     pts = frame.backproject(us.astype(float), vs.astype(float), z[ok])
     # pixels spilled onto the floor or table join everything standing on it: leave out the points at the blob's
     # lowest level when the blob rises well above it (a flat item alone is all "lowest level")
-    low, high = np.percentile(pts[:, 2], 2), np.percentile(pts[:, 2], 98)
+    low, high = percentiles(pts[:, 2], (2, 98))
     above = pts[:, 2] > low + SUPPORT_BAND_M
     if high - low > 3 * SUPPORT_BAND_M and above.mean() > 0.3:
         vs, us, pts = vs[above], us[above], pts[above]
@@ -612,7 +613,8 @@ def _xy_width(mask: np.ndarray, frame: CameraFrame, n: int = 800) -> float:
     if ok.sum() < 3:
         return 0.0
     xy = frame.backproject(us[ok].astype(float), vs[ok].astype(float), z[ok])[:, :2]
-    return float((np.percentile(xy, 98, axis=0) - np.percentile(xy, 2, axis=0)).max())
+    lo, hi = percentiles(xy, (2, 98))
+    return float((hi - lo).max())
 
 
 def _parent_named(cats: dict[int, float], prompt: str) -> dict[int, float]:
@@ -673,10 +675,11 @@ def _rejoin(
 
     def width(pts: np.ndarray) -> float:
         if max_height_m:
-            upper = pts[pts[:, 2] > np.percentile(pts[:, 2], 98) - 0.5 * max_height_m]
+            upper = pts[pts[:, 2] > percentile(pts[:, 2], 98) - 0.5 * max_height_m]
             pts = upper if len(upper) >= 3 else pts
         xy_m = pts[:, :2]
-        return float((np.percentile(xy_m, 98, axis=0) - np.percentile(xy_m, 2, axis=0)).max())
+        lo, hi = percentiles(xy_m, (2, 98))
+        return float((hi - lo).max())
 
     touching = set()
     H, W = comp.shape
@@ -729,7 +732,7 @@ def _proud(mask: np.ndarray, frame: CameraFrame, proud_m: float) -> np.ndarray:
     keep_px = np.zeros(len(vs), bool)
     for k in np.unique(slice_of[ok]):
         here = ok & (slice_of == k)
-        near = float(np.percentile(d[here], 5))
+        near = float(percentile(d[here], 5))
         keep_px |= here & (d <= near + proud_m)
     keep = np.zeros_like(mask)
     keep[vs[keep_px], us[keep_px]] = True
@@ -748,7 +751,7 @@ def _standing_part(inst: Instance, frame: CameraFrame) -> Instance:
     ok = np.isfinite(height)  # NaN where the depth is missing
     if ok.sum() < 10:
         return inst
-    low = ok & (height < float(np.percentile(height[ok], 98)) - limit)
+    low = ok & (height < float(percentile(height[ok], 98)) - limit)
     if not low.any() or (~low).sum() < 0.2 * len(vs):
         return inst
     mask = inst.mask.copy()
@@ -890,7 +893,7 @@ def _footprint_xy(mask: np.ndarray, frame: CameraFrame) -> tuple[np.ndarray, flo
     pts = pts[np.isfinite(pts).all(1)]
     if not len(pts):
         return np.full(2, np.nan), 0.0
-    lo, hi = np.percentile(pts, 5, axis=0), np.percentile(pts, 95, axis=0)
+    lo, hi = percentiles(pts, (5, 95))
     return np.median(pts, axis=0), float(0.5 * (hi - lo).max())
 
 
