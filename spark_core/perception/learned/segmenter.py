@@ -20,6 +20,7 @@ from typing import Any
 import cv2
 import numpy as np
 
+from ..channel_max import channel_max
 from ..colors import BASE_COLOURS, normalise_colours
 from ..detection import Detection
 from ..frame import CameraFrame
@@ -174,13 +175,13 @@ class LearnedSegmenter:
                 x = network_input(torch.from_numpy(rgb[None]), torch.from_numpy(depth[None]))
                 cat_logits, bnd_logit, col_logits = net.split(net(x))
                 cat_logits[:, net.n_trained :] = -torch.inf  # categories appended after these weights were trained
-                probs = torch.softmax(cat_logits[0], 0)
-                prob, cat = probs.max(0)
+                probs = torch.softmax(cat_logits[0], 0).numpy()
                 bnd = torch.sigmoid(bnd_logit[0])
                 col = torch.softmax(col_logits[0], 0)
         finally:
             torch.set_num_threads(threads)
-        return cat.numpy().astype(np.int32), prob.numpy(), bnd.numpy(), col.numpy(), depth, probs.numpy()
+        prob, cat = channel_max(probs)
+        return cat.astype(np.int32), prob, bnd.numpy(), col.numpy(), depth, probs
 
     def instances(self, frame: CameraFrame) -> list[Instance]:
         """Every object instance the network sees in this frame (cached per frame: one prompt set per frame
