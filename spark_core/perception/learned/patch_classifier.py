@@ -25,6 +25,7 @@ from torch import nn
 
 from ..pixels import mask_pixels
 from .categories import CATEGORIES, CATEGORY_INDEX
+from .frozen import frozen_forward
 
 PATCH_PX = 48  # side of the square network input
 MARGIN = 0.25  # context around the mask's bounding box, as a fraction of its longer side
@@ -165,7 +166,8 @@ def classify(net: PatchNet, patches: list[np.ndarray]) -> np.ndarray:
     torch.set_num_threads(1)
     try:
         with torch.no_grad():
-            out[:, net.to_current] = torch.softmax(net(torch.from_numpy(np.stack(patches))), 1).numpy()
+            logits = frozen_forward(net, torch.from_numpy(np.stack(patches)), batch_free=True)
+            out[:, net.to_current] = torch.softmax(logits, 1).numpy()
             return out
     finally:
         torch.set_num_threads(threads)

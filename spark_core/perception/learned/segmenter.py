@@ -32,6 +32,7 @@ from ..text_encoder import SHARED_ENCODER, TextEncoder
 from . import patch_classifier
 from .categories import CATEGORIES, CATEGORY_INDEX, COLOURS, ROBOT, TABLE
 from .drawers import below_cabinet_top, centred_on_handle
+from .frozen import frozen_forward
 from .layers import is_stacked, layer_mask, median_height_m, split_layers
 from .pieces import support_of, voxel_components, without_strays
 from .refine import grow_by_depth
@@ -173,7 +174,7 @@ class LearnedSegmenter:
         try:
             with torch.no_grad():
                 x = network_input(torch.from_numpy(rgb[None]), torch.from_numpy(depth[None]))
-                cat_logits, bnd_logit, col_logits = net.split(net(x))
+                cat_logits, bnd_logit, col_logits = net.split(frozen_forward(net, x))
                 cat_logits[:, net.n_trained :] = -torch.inf  # categories appended after these weights were trained
                 probs = torch.softmax(cat_logits[0], 0).numpy()
                 bnd = torch.sigmoid(bnd_logit[0])

@@ -1,0 +1,49 @@
+"""frozen_forward: the traced, frozen graph gives the eager network's outputs (to float rounding), keeps one graph
+per input shape (the per-pixel network's upsampling depends on it), and never freezes a network in training."""
+
+import torch
+
+from spark_core.perception.learned import frozen
+from spark_core.perception.learned.model import SegNet
+from spark_core.perception.learned.patch_classifier import PatchNet
+
+
+def _randomised(net: torch.nn.Module) -> torch.nn.Module:
+    torch.manual_seed(0)
+    for m in net.modules():  # batch-norm statistics away from the identity, so folding them is exercised
+        if isinstance(m, torch.nn.BatchNorm2d):
+            m.running_mean.uniform_(-0.5, 0.5)
+            m.running_var.uniform_(0.5, 2.0)
+            m.weight.data.uniform_(0.5, 1.5)
+            m.bias.data.uniform_(-0.2, 0.2)
+    return net.eval()
+
+
+def test_segnet_graph_matches_eager_and_is_kept_per_shape():
+    net = _randomised(SegNet(widths=(8, 8, 8, 8, 8), full_res=8))
+    with torch.no_grad():
+        for shape in ((1, 4, 64, 96), (1, 4, 96, 64), (1, 4, 64, 96)):
+            x = torch.randn(shape)
+            got, want = frozen.frozen_forward(net, x), net(x)
+            assert got.shape == want.shape
+            assert torch.allclose(got, want, atol=1e-4, rtol=1e-4), (got - want).abs().max()
+    assert set(frozen._GRAPHS[net]) == {(1, 4, 64, 96), (1, 4, 96, 64)}
+
+
+def test_patch_classifier_graph_serves_every_batch_size():
+    net = _randomised(PatchNet(widths=(8, 8, 8)))
+    with torch.no_grad():
+        for batch in (1, 5, 12):
+            x = torch.randn(batch, 5, 48, 48)
+            got, want = frozen.frozen_forward(net, x, batch_free=True), net(x)
+            assert got.shape == (batch, len(net.classes))
+            assert torch.allclose(got, want, atol=1e-4, rtol=1e-4)
+    assert list(frozen._GRAPHS[net]) == [(5, 48, 48)]
+
+
+def test_a_network_in_training_runs_eagerly_and_is_not_frozen():
+    net = SegNet(widths=(8, 8, 8, 8, 8), full_res=8).train()
+    x = torch.randn(2, 4, 64, 64)
+    out = frozen.frozen_forward(net, x)
+    assert out.shape[0] == 2 and out.requires_grad  # eager, with autograd: a frozen graph would hold stale weights
+    assert net not in frozen._GRAPHS
