@@ -19,6 +19,7 @@ from typing import Any
 
 import cv2
 import numpy as np
+from scipy import ndimage
 
 from ..channel_max import channel_max
 from ..colors import BASE_COLOURS, normalise_colours
@@ -213,19 +214,21 @@ class LearnedSegmenter:
                     comp, n, CATEGORIES[c].max_extent_m, depth, frame, H // cat.shape[0], CATEGORIES[c].max_height_m
                 )
             parents = _anchored(cat, CATEGORIES[c].part_of)
-            for k in range(1, n):
-                m = comp == k
-                if m.sum() * factor_sq < self.min_area_px:
+            # each component's box, in one pass: the per-component work below reads only that box (the same
+            # pixels in the same order as the whole-frame mask would give)
+            for k, box in enumerate(ndimage.find_objects(comp, max_label=n - 1), start=1):
+                if box is None:  # a label _rejoin joined into another
                     continue
-                if CATEGORIES[c].part_of and not _on_parent(m, parents, depth):
+                m_box = comp[box] == k
+                if m_box.sum() * factor_sq < self.min_area_px:
+                    continue
+                if CATEGORIES[c].part_of and not _on_parent(comp == k, parents, depth):
                     continue  # a handle or knob on nothing: the network's mistake (a label, a bottle's rim)
-                score = float(np.median(prob[m]))
+                score = float(np.median(prob[box][m_box]))
                 if score < MIN_INSTANCE_SCORE:
                     continue
-                colour_p = col[1:, m].mean(1)
-                full = _one_surface(
-                    cv2.resize(m.astype(np.uint8), (W, H), interpolation=cv2.INTER_NEAREST).astype(bool), frame
-                )
+                colour_p = col[(slice(1, None), *box)][:, m_box].mean(1)
+                full = _one_surface_upscaled(m_box, box, frame, (H, W), cat.shape)
                 if CATEGORIES[c].proud_m:
                     full = _proud(full, frame, CATEGORIES[c].proud_m)
                 if not CATEGORIES[c].part_of:  # a stray in front shifts the keypoint (a short kind's seen top)
@@ -262,13 +265,14 @@ class LearnedSegmenter:
         comp = _grow_into(comp, region)
         mass = probs[patch_classifier.GROUP_INDEX].sum(0)
         blobs, patches = [], []
-        for k in range(1, n):
-            m = comp == k
-            if m.sum() * factor_sq < self.min_area_px:
+        for k, box in enumerate(ndimage.find_objects(comp, max_label=n - 1), start=1):
+            if box is None:
                 continue
-            full = _one_surface(
-                cv2.resize(m.astype(np.uint8), (W, H), interpolation=cv2.INTER_NEAREST).astype(bool), frame
-            )
+            m_box = comp[box] == k
+            if m_box.sum() * factor_sq < self.min_area_px:
+                continue
+            m = comp == k
+            full = _one_surface_upscaled(m_box, box, frame, (H, W), cat.shape)
             for piece in _apart_in_space(full, frame):
                 if piece.sum() < self.min_area_px:
                     continue
@@ -849,6 +853,37 @@ def _touches(mask: np.ndarray, other: np.ndarray, reach_px: int = PART_REACH_PX)
     """Whether `mask` comes within `reach_px` pixels of any pixel of `other`."""
     k = np.ones((2 * reach_px + 1, 2 * reach_px + 1), np.uint8)
     return bool((cv2.dilate(mask.astype(np.uint8), k).astype(bool) & other).any())
+
+
+def _one_surface_upscaled(
+    m_box: np.ndarray, box: tuple[slice, slice], frame: CameraFrame, full_shape: tuple[int, int], net_shape: tuple
+) -> np.ndarray:
+    """`_one_surface` of the network-resolution mask `m_box` (the part of it inside `box`, a component's bounding
+    slices) scaled up to the frame by nearest pixel: exactly what scaling the whole-frame mask with cv2's
+    INTER_NEAREST and applying `_one_surface` gives, computed inside the box only. Where the frame is not an
+    exact multiple of the network's size, the whole-frame way."""
+    H, W = full_shape
+    fy, fx = H // net_shape[0], W // net_shape[1]
+    if fy != fx or fy * net_shape[0] != H or fx * net_shape[1] != W:
+        small = np.zeros(net_shape, bool)
+        small[box] = m_box
+        return _one_surface(
+            cv2.resize(small.astype(np.uint8), (W, H), interpolation=cv2.INTER_NEAREST).astype(bool), frame
+        )
+    f = fy
+    rows, cols = slice(box[0].start * f, box[0].stop * f), slice(box[1].start * f, box[1].stop * f)
+    big = np.repeat(np.repeat(m_box, f, axis=0), f, axis=1)  # INTER_NEAREST at an exact factor: pixel (v // f, u // f)
+    d = frame.depth_m[rows, cols][big]
+    full = np.zeros((H, W), bool)
+    ok = np.isfinite(d)
+    if not ok.any():
+        full[rows, cols] = big
+        return full
+    med = float(np.median(d[ok]))
+    keep = np.zeros_like(big)
+    keep[big] = ok & (np.abs(d - med) <= DEPTH_SPREAD_M)
+    full[rows, cols] = keep
+    return full
 
 
 def _one_surface(mask: np.ndarray, frame: CameraFrame) -> np.ndarray:
