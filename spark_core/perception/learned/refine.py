@@ -41,12 +41,15 @@ def grow_by_depth(
         (slice(1, -1), slice(0, -2)),
         (slice(1, -1), slice(2, None)),
     )
+    # per neighbour (above, below, left, right of each pixel): whether a pixel may grow from it; fixed while the
+    # mask grows, so computed once
+    may = [ok & (np.abs(d - dp[rows, cols]) < GROW_DEPTH_M) & (h > hp[rows, cols]) for rows, cols in shifts]
     for _ in range(GROW_STEPS):
         mp = np.pad(m, 1)
         added = np.zeros_like(m)
-        for rows, cols in shifts:  # the neighbour above, below, left, right of each pixel
-            added |= mp[rows, cols] & (np.abs(d - dp[rows, cols]) < GROW_DEPTH_M) & (h > hp[rows, cols])
-        added &= ok & ~m
+        for (rows, cols), may_k in zip(shifts, may):
+            added |= mp[rows, cols] & may_k
+        added &= ~m
         if not added.any():
             break
         m |= added
