@@ -457,17 +457,20 @@ def _merge_confused(cat: np.ndarray, probs: np.ndarray, split: np.ndarray) -> np
         return cat
     comp = _grow_into(comp, thing)
     out = cat.copy()
-    for k in range(1, n):
-        m = comp == k
-        votes = np.bincount(cat[m], minlength=probs.shape[0])
+    # each blob read inside its bounding box (the same pixels in the same order as the whole-frame mask gives)
+    for k, box in enumerate(ndimage.find_objects(comp, max_label=n - 1), start=1):
+        if box is None:
+            continue
+        m, cat_box = comp[box] == k, cat[box]
+        votes = np.bincount(cat_box[m], minlength=probs.shape[0])
         present = [int(c) for c in np.argsort(votes)[::-1] if votes[c] > 0]
         if len(present) < 2:
             continue
-        top = m & (cat == present[0])
+        top = m & (cat_box == present[0])
         for c in present[1:]:
-            other = m & (cat == c)
-            if probs[c][top].mean() > CONFUSED_P and probs[present[0]][other].mean() > CONFUSED_P:
-                out[other] = present[0]
+            other = m & (cat_box == c)
+            if probs[(c, *box)][top].mean() > CONFUSED_P and probs[(present[0], *box)][other].mean() > CONFUSED_P:
+                out[box][other] = present[0]
     return out
 
 
@@ -537,9 +540,10 @@ def _drop_fragments(instances: list[Instance]) -> list[Instance]:
     """Pieces under FRAGMENT_AREA of the largest instance of their category: stray bits of an object the network
     split off (two real objects of a kind differ far less in image area on a table seen from these cameras)."""
     largest: dict[int, int] = {}
-    for inst in instances:
-        largest[inst.category] = max(largest.get(inst.category, 0), int(inst.mask.sum()))
-    return [i for i in instances if i.mask.sum() >= FRAGMENT_AREA * largest[i.category]]
+    areas = [np.count_nonzero(inst.mask) for inst in instances]
+    for inst, area in zip(instances, areas):
+        largest[inst.category] = max(largest.get(inst.category, 0), area)
+    return [i for i, area in zip(instances, areas) if area >= FRAGMENT_AREA * largest[i.category]]
 
 
 SUPPORT_BAND_M = 0.006  # points this close above a blob's lowest level are on its support (the floor), not it
