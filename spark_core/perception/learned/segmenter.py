@@ -540,7 +540,7 @@ def _drop_fragments(instances: list[Instance]) -> list[Instance]:
     """Pieces under FRAGMENT_AREA of the largest instance of their category: stray bits of an object the network
     split off (two real objects of a kind differ far less in image area on a table seen from these cameras)."""
     largest: dict[int, int] = {}
-    areas = [np.count_nonzero(inst.mask) for inst in instances]
+    areas = [int(np.count_nonzero(inst.mask)) for inst in instances]
     for inst, area in zip(instances, areas):
         largest[inst.category] = max(largest.get(inst.category, 0), area)
     return [i for i, area in zip(instances, areas) if area >= FRAGMENT_AREA * largest[i.category]]
