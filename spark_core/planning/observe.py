@@ -16,16 +16,19 @@ from .protocol import SceneView
 from .rules.lexicon import CONTAINERS, CONTENTS
 from .rules.mentions import clause_mentions, read_past, stray_nouns
 from .rules.parse import ParseError, is_pronoun, parse_instruction
+from .rules.reader import phrases as order_free_phrases
 
 PART_OF_ACTION = {"open": "handle", "close": "handle", "turn_on": "knob", "turn_off": "knob"}
 
 
 def phrases_for(instruction: str) -> list[str]:
     """Noun phrases to look for: objects, targets, tools, sources, plus the part an action grips."""
+    # what an order-free reading needs (rules/reader.py): the planner's fallback when the rule parse refuses
+    after = order_free_phrases(instruction)
     try:
         clauses = parse_instruction(instruction)
     except ParseError:
-        return []
+        return after
     out: dict[str, None] = {}
     for c in clauses:
         for p in (c.obj, c.target, c.tool, c.source):
@@ -49,6 +52,8 @@ def phrases_for(instruction: str) -> list[str]:
     # what the phrases are located by, what the parser read past, and any noun no phrase holds: each must be in the
     # scene (rules/mentions.py)
     for p in [*clause_mentions(clauses), *read_past(instruction, clauses), *stray_nouns(instruction, clauses)]:
+        out.setdefault(p, None)
+    for p in after:
         out.setdefault(p, None)
     return list(out)
 

@@ -13,6 +13,7 @@ from ..protocol import PlanRequest, PlanResult
 from .lexicon import CONTAINERS, CONTENTS, REGIONS
 from .mentions import clause_mentions, foreign_modifiers, read_past, stray_nouns
 from .parse import Clause, ParseError, is_pronoun, parse_instruction
+from .reader import describe, readings, unused_mentions
 
 POUR_ANGLE_RAD = 2.2
 HANDLE_REACH_M = 0.25  # a handle further than this from the thing it opens belongs to something else
@@ -41,28 +42,23 @@ class RulesPlanner:
 
     def plan(self, request: PlanRequest) -> PlanResult:
         t0 = time.perf_counter()
+        understood: list[str] = []
         try:
             clauses = parse_instruction(request.instruction)
             understood = [_describe(c) for c in clauses]
             children = self._compose(clauses, request)
             children = _two_arm_branches(children, request) or children
-            data = {"task": request.instruction.strip(), "tree": {"type": "sequence", "children": children}}
-            plan = check_plan(data)
-            return PlanResult(
-                self.name, to_yaml(plan), plan, latency_s=time.perf_counter() - t0, detail={"understood": understood}
-            )
-        except ParseError as e:
-            return PlanResult(
-                self.name,
-                "",
-                None,
-                error=f"did not understand the instruction: {e}",
-                latency_s=time.perf_counter() - t0,
-            )
-        except CannotPlan as e:
-            return PlanResult(
-                self.name, "", None, error=str(e), latency_s=time.perf_counter() - t0, detail={"understood": understood}
-            )
+            if unused_mentions(request.instruction, clauses):
+                # a thing the sentence names that no step uses ("the bowl needs to be up on top of the cabinet"
+                # read as a lift): the order-free reading, when exactly one grounds
+                read = self._read_without_order(request)
+                if read is not None:
+                    children, understood = read
+        except (ParseError, CannotPlan) as e:
+            read = self._read_without_order(request)
+            if read is None:
+                return self._refusal(e, understood, t0)
+            children, understood = read
         except PlanError as e:  # a composition bug: report it rather than crash
             return PlanResult(
                 self.name,
@@ -72,6 +68,51 @@ class RulesPlanner:
                 error="the composed plan did not type-check",
                 latency_s=time.perf_counter() - t0,
             )
+        data = {"task": request.instruction.strip(), "tree": {"type": "sequence", "children": children}}
+        try:
+            plan = check_plan(data)
+        except PlanError as e:
+            return PlanResult(
+                self.name,
+                "",
+                None,
+                issues=e.issues,
+                error="the composed plan did not type-check",
+                latency_s=time.perf_counter() - t0,
+            )
+        return PlanResult(
+            self.name, to_yaml(plan), plan, latency_s=time.perf_counter() - t0, detail={"understood": understood}
+        )
+
+    def _refusal(self, e: Exception, understood: list[str], t0: float) -> PlanResult:
+        if isinstance(e, ParseError):
+            return PlanResult(
+                self.name,
+                "",
+                None,
+                error=f"did not understand the instruction: {e}",
+                latency_s=time.perf_counter() - t0,
+            )
+        return PlanResult(
+            self.name, "", None, error=str(e), latency_s=time.perf_counter() - t0, detail={"understood": understood}
+        )
+
+    def _read_without_order(self, request: PlanRequest) -> tuple[list[dict], list[str]] | None:
+        """The order-free readings (reader.py) that ground: every phrase found, and the steps composed with the
+        same checks as the rule parse's (every thing named in the scene, nothing put on itself). Accepted only
+        when exactly one distinct plan comes of them; several that differ are an ambiguity, none a refusal."""
+        scene = request.scene.keypoints
+        plans: dict[tuple, tuple[list[dict], list[str]]] = {}
+        for reading in readings(request.instruction):
+            if not all(p in scene for c in reading for p in _grounded(c)):
+                continue
+            try:
+                children = self._compose(reading, request)
+            except CannotPlan:
+                continue
+            children = _two_arm_branches(children, request) or children
+            plans.setdefault(_effect(children, scene), (children, [f"read without word order: {describe(reading)}"]))
+        return next(iter(plans.values())) if len(plans) == 1 else None
 
     # -- composition -------------------------------------------------------------------------------------------
     def _compose(self, clauses: list[Clause], request: PlanRequest) -> list[dict]:
@@ -399,6 +440,30 @@ def _two_arm_branches(steps: list[dict], request: PlanRequest) -> list[dict] | N
             *({"type": "sequence", "arm": a, "children": [branches[a][1], _prim("go_home")]} for a in arms),
         ]
     return [{"type": "parallel", "children": [{"type": "sequence", "arm": a, "children": branches[a]} for a in arms]}]
+
+
+def _grounded(c: Clause) -> list[str]:
+    """The phrases of a clause perception must have found: all of them, but for contents poured out of a
+    container named with them ("the beads out of the mug": out of sight inside it)."""
+    poured = c.action == "pour" and c.obj and c.source and c.obj.split()[-1] in CONTENTS
+    return [p for p in (c.obj, c.target, c.source) if p and not (poured and p == c.obj)]
+
+
+def _effect(steps: list[dict], scene) -> tuple:
+    """What steps do, by where their labels are (cm): two readings that name one thing two ways are one plan."""
+    out = []
+    for step in steps:
+        params = step.get("params", {})
+        out.append(
+            (
+                step.get("primitive"),
+                tuple(
+                    (k, tuple(np.round(scene[v].position_m * 100).astype(int)) if v in scene else v)
+                    for k, v in sorted(params.items())
+                ),
+            )
+        )
+    return tuple(out)
 
 
 def _same_detection(a, b) -> bool:

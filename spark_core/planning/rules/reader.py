@@ -1,0 +1,327 @@
+"""An order-free reading of a one-step instruction: the intent found anywhere in the sentence, every noun mention
+with its modifiers, and each mention's role from the words attached to it, not from where it stands.
+
+The rule parser (parse.py) reads clauses left to right; when it refuses, or leaves a thing the sentence names
+unused, the planner tries these readings instead (planner.py). A mention's role comes from its own preposition
+("in/into/on/onto/to/atop" a destination, "from/out of/off" where the thing is now, "with/using" a tool, "next to/
+beside/near/between" a thing it is located by); a mention with none is the thing acted on. When a destination
+preposition might also say where the thing stands ("the bowl on the stove onto the plate"), each way of reading it
+is a reading of its own, and the scene decides (planner.py accepts exactly one that grounds).
+
+A reading is offered only when every word of the sentence is accounted for: part of a mention, or a word that
+names no thing (a verb, a preposition, a filler, a qualifier). A noun left over, known or not ("the rice", a
+typo), gives no reading, so a thing the scene may not hold is never read past here."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from lemminflect import getAllLemmas
+
+from ...perception.colors import BASE_COLOURS
+from .lexicon import CONTAINERS, CONTENTS, DETERMINERS, FILLERS, STATE_ACTIONS, TABLE, VERBS
+from .mentions import ABSTRACT, ATTRIBUTES, PLACE_WORDS, _closed_words
+from .parse import Clause
+from .phrases import object_phrase, singular
+from .rewrite import CONTRACTIONS
+from .things import adverb_only, is_thing, is_verb
+
+# A mention's own preposition -> its role. Longest first when matched.
+_ROLE_OF: dict[str, tuple[str, str | None]] = {
+    "on top of": ("dest", "on"),
+    "onto": ("dest", "on"),
+    "on to": ("dest", "on"),
+    "atop": ("dest", "on"),
+    "over": ("dest", "on"),
+    "on": ("dest", "on"),
+    "into": ("dest", "in"),
+    "inside of": ("dest", "in"),
+    "inside": ("dest", "in"),
+    "within": ("dest", "in"),
+    "in": ("dest", "in"),
+    "to": ("dest", None),  # into a container, onto anything else
+    "out of": ("source", "in"),
+    "off of": ("source", "on"),
+    "off": ("source", "on"),
+    "from": ("source", "on"),
+    "with": ("tool", None),
+    "using": ("tool", None),
+    "next to": ("near", "next to"),
+    "beside": ("near", "beside"),
+    "near": ("near", "near"),
+    "between": ("near", "between"),
+}
+_PREPS = sorted(_ROLE_OF, key=len, reverse=True)
+# Words that end a mention without a role of their own.
+_BREAK = frozenset(
+    ["and", "or", "but", "then", "so", "that", "which", "who", "is", "are", "be", "was", "were", "it", "them"]
+    + ["should", "must", "will", "would", "can", "could", "goes", "go", "belongs", "belong", "needs", "need", "not"]
+    + ["up", "down", "out", "away", "back", "please", "too", "there", "here", "where", "whichever", "want", "like"]
+    + ["have", "has", "get", "gets", "ends", "end", "sits", "sit", "stays", "stay", "meant", "supposed", "to", "of"]
+    + ["at", "for", "across", "along", "around", "until", "if", "when", "while", "as", "than"]
+    # prepositions whose thing locates another in a way perception does not measure: a mention of its own
+    + ["under", "underneath", "beneath", "below", "behind", "above", "against", "opposite", "via", "through"]
+)
+# Words that pick a thing out by what it is not, or say what to leave be: the rule parser's to read, never dropped.
+_NEGATION = frozenset(
+    ["not", "no", "never", "neither", "nor", "except", "other", "another", "alone", "leave", "instead", "rather"]
+    + ["without", "but", "besides", "apart", "else", "n't", "isn't", "aren't", "don't", "doesn't"]
+)
+# Words that join a mention to the robot, not to a thing in the scene: "further from the robot" qualifies.
+_ROBOT = frozenset(["robot", "you", "me", "us", "base", "arm", "gripper"])
+_COMPARED = {"further": "farthest", "farther": "farthest", "closer": "nearest", "nearer": "nearest"}
+# A stated goal: a wish or a state, with no verb of the planner's own.
+_GOAL_WORDS = frozenset(
+    ["belongs", "belong", "goes", "go", "should", "must", "want", "wants", "needs", "need", "meant", "supposed"]
+    + ["end", "ends", "wind", "winds", "sit", "sits", "rest", "rests", "stay", "stays", "like", "ought", "lives"]
+)
+# A question about the scene, not a request (a request put as a question asks with "could you", "can the ...").
+_QUESTION = frozenset(["how", "what", "why", "who", "whose", "when", "does", "did", "do", "whether"])
+
+
+@dataclass(frozen=True)
+class Mention:
+    phrase: str  # as perception reads it (object_phrase): determiners gone, qualifiers in its words
+    role: str  # "thing" | "dest" | "source" | "tool" | "near" | "pronoun"
+    relation: str | None  # on | in | None (dest, source); the relation word (near)
+    start: int  # token index: which mention a locator follows
+    end: int = 0  # token index after its last word
+
+
+def _tokens(instruction: str) -> list[str]:
+    text = instruction.lower().replace("\u2019", "'")
+    for short, long in CONTRACTIONS.items():
+        text = re.sub(rf"\b{re.escape(short)}\b", long, text)
+    text = re.sub(r"(\w)'s\b(?= (?:meant|supposed|going|got|to|in|on|at)\b)", r"\1 is", text)  # "block's meant"
+    text = re.sub(r"\s*(?:-+>|=>|\u2192)\s*", " , to ", text)  # "ketchup -> basket": where it goes
+    text = re.sub(r"[,;:!?.()\"\u2013\u2014]|\s-\s", " , ", text)
+    return text.split()
+
+
+def _verbs() -> list[tuple[list[str], str]]:
+    forms = [(f.split(), a) for a, fs in VERBS.items() for f in fs]
+    forms += [(s.split(), a) for s, a in STATE_ACTIONS if a in ("open", "close") and " " not in s]
+    return sorted(forms, key=lambda x: -len(x[0]))
+
+
+def intent(tokens: list[str]) -> tuple[set[str], bool]:
+    """The actions the sentence's verbs name (anywhere), and whether it states a goal without one."""
+    actions: set[str] = set()
+    for i in range(len(tokens)):
+        for form, action in _verbs():
+            if tokens[i : i + len(form)] == form:
+                actions.add(action)
+                break
+    goal = bool(set(tokens) & _GOAL_WORDS) or any(t in ("into", "onto", "atop", "inside") for t in tokens)
+    return actions, goal
+
+
+def _closed(word: str) -> bool:
+    """A word that names no thing in the scene."""
+    w = word.removesuffix("'s")
+    return (
+        w in _closed_words()
+        or w in ABSTRACT
+        or w in DETERMINERS
+        or w in _BREAK
+        or w in _COMPARED
+        or w in _ROBOT
+        or singular(w) in PLACE_WORDS
+        or not w.isalpha()
+        or not is_thing(w)
+        or adverb_only(w)
+    )
+
+
+def _participle(word: str) -> bool:
+    """A verb's -ing or -ed form ("sitting", "placed"): said after the noun with a place after it, it ends the
+    noun phrase ("the red block sitting in the bowl"); before a noun it names ("the baking tray") it does not."""
+    return word.endswith(("ing", "ed")) and "VERB" in getAllLemmas(word)
+
+
+def _ends_phrase(tokens: list[str], k: int) -> bool:
+    """Nothing of a noun phrase follows: the end, a comma or a preposition ("sitting in the bowl")."""
+    return k >= len(tokens) or tokens[k] in (",", "at", "by") or any(tokens[k] == p.split()[0] for p in _PREPS)
+
+
+def _verb_spans(tokens: list[str]) -> set[int]:
+    out: set[int] = set()
+    for i in range(len(tokens)):
+        for form, _action in _verbs():
+            if tokens[i : i + len(form)] == form:
+                out |= set(range(i, i + len(form)))
+                break
+    return out
+
+
+def mentions(instruction: str) -> list[Mention] | None:
+    """Every noun mention with its role; None when a word that names a thing is left outside every mention."""
+    tokens = _tokens(instruction)
+    if set(tokens) & _NEGATION or any(t.endswith("n't") for t in tokens):
+        return None
+    if set(tokens) & _QUESTION or any(a == b for a, b in zip(tokens, tokens[1:])):
+        return None  # a question about the scene ("how hot does ... get"), or words said twice over: no request
+    verbs = _verb_spans(tokens)
+    fillers = {w for f in FILLERS for w in f.split()}
+    out: list[Mention] = []
+    i = 0
+    while i < len(tokens):
+        role, relation, j = "thing", None, i
+        for p in _PREPS:
+            words = p.split()
+            if tokens[i : i + len(words)] == words:
+                role, relation = _ROLE_OF[p]
+                j = i + len(words)
+                break
+        k = j
+        while k < len(tokens) and tokens[k] in DETERMINERS:
+            k += 1
+        span: list[str] = []
+        while k < len(tokens) and k not in verbs and tokens[k] != "," and tokens[k] not in _BREAK:
+            if any(tokens[k : k + len(p.split())] == p.split() for p in _PREPS if p != "of"):
+                break
+            if span and tokens[k] in DETERMINERS:
+                break  # "love the pear": a word before a determiner is no part of the phrase after it
+            if span and _participle(tokens[k]) and _ends_phrase(tokens, k + 1):
+                break  # "the red block sitting in the bowl": where it sits, not its name
+            span.append(tokens[k])
+            k += 1
+        while span and (span[-1] in fillers or span[-1] in ABSTRACT or adverb_only(span[-1])):
+            span.pop()  # "the plate please"
+        # a describing word names the thing when it ends the phrase ("the lemon", "the orange": fruit, not colours)
+        heads = [w for n, w in enumerate(span) if not _closed(w) and (w not in ATTRIBUTES or n == len(span) - 1)]
+        if span and span[-1] in ("one", "ones") and len(span) > 1:
+            head = next((m.phrase.split()[-1] for m in reversed(out) if m.role != "pronoun"), None)
+            if head is None:
+                return None  # "the red one" with no noun said before it
+            span = [*span[:-1], head]
+            heads = [head]
+        if tokens[j:k] and tokens[j] in ("it", "them") and role != "thing":
+            out.append(Mention("it", "pronoun", relation, i, j + 1))
+            i = j + 1
+            continue
+        if heads and (role != "source" or " ".join(span) not in TABLE):
+            if set(span) & _ROBOT:
+                return None  # "between the robot and the plate": a place, not a thing; the rule parser's to read
+            phrase = object_phrase(" ".join(span))
+            out.append(Mention(phrase, role, relation, i, k))
+            i = k
+            continue
+        if span and role == "source" and " ".join(span) in TABLE:
+            i = k
+            continue
+        if k > i and span and not heads:
+            i = k  # words that name nothing ("further", "over there")
+            continue
+        i = max(i + 1, j)
+    return out if _covered(tokens, out) else None
+
+
+def _covered(tokens: list[str], found: list[Mention]) -> bool:
+    """Every word that names a thing is in some mention: outside them only words that name none, and no verb
+    the planner has no action for."""
+    inside = {n for m in found for n in range(m.start, m.end)}
+    verbs = _verb_spans(tokens)
+    return all(
+        n in inside or n in verbs or (_closed(t) and not _unknown_verb(t)) or t in BASE_COLOURS
+        for n, t in enumerate(tokens)
+    )
+
+
+def _unknown_verb(word: str) -> bool:
+    """A verb the planner has no action for ("eat", "love"): what it asks is unknown, so nothing is read."""
+    known = _closed_words() | _BREAK | _GOAL_WORDS | ABSTRACT | _ROBOT | {w for f in FILLERS for w in f.split()}
+    return word not in known and word not in DETERMINERS and is_verb(word) and not adverb_only(word)
+
+
+def _qualified(phrase: str, tokens: list[str]) -> str:
+    """ "whichever block is further from the robot": the comparative said of the robot qualifies the thing."""
+    text = " ".join(tokens)
+    for word, superlative in _COMPARED.items():
+        if re.search(rf"\b{word} (?:from|to) (?:the )?(?:robot|you|me|us)\b", text) and superlative not in phrase:
+            return f"{superlative} {phrase}"
+    return phrase
+
+
+def readings(instruction: str) -> list[list[Clause]]:
+    """Each one-step reading whose roles are complete: one thing, and a destination when the intent needs one."""
+    found = mentions(instruction)
+    if not found:
+        return []
+    tokens = _tokens(instruction)
+    actions, goal = intent(tokens)
+    # an arrow says where it goes; a sentence of a thing and where it is, and nothing else, states the goal
+    goal = goal or bool(re.search(r"-+>|=>|\u2192", instruction))
+    goal = goal or (not actions and sorted(m.role for m in found) == ["dest", "thing"])
+    things = [m for m in found if m.role == "thing"]
+    if len(things) != 1 or any(m.role == "tool" for m in found):
+        return []
+    thing = things[0]
+    obj = _qualified(thing.phrase, tokens)
+    if actions & {"open", "close", "turn_on", "turn_off"}:
+        if len(actions) == 1 and len(found) == 1:
+            return [[Clause(next(iter(actions)), obj=obj, text=instruction)]]
+        return []
+    if not (actions <= {"put", "stack", "pick", "pour", "push"}) or not (actions or goal):
+        return []
+    dests = [m for m in found if m.role == "dest"]
+    sources = [m for m in found if m.role == "source"]
+    near = [m for m in found if m.role == "near"]
+    if thing.phrase.split()[-1] in CONTENTS or "pour" in actions:  # "the beads out of the mug and into the bowl"
+        if len(dests) == 1 and len(sources) <= 1 and not near and actions <= {"pour", "put"}:
+            source = sources[0].phrase if sources else obj
+            return [[Clause("pour", obj=obj, target=dests[0].phrase, source=source, text=instruction)]]
+        return []
+    if "push" in actions:
+        return []
+    out: list[list[Clause]] = []
+    for d in dests:
+        where = [m for m in found if m is not d and m.role in ("dest", "source", "near")]
+        located = obj
+        for m in sorted(where, key=lambda m: m.start):
+            rel = m.relation or "on"
+            located = f"{located} {rel} {m.phrase}"
+        if len(where) > 1:
+            continue  # located by two things: the rule parser's to read
+        relation = d.relation or ("in" if d.phrase.split()[-1] in CONTAINERS else "on")
+        action = "stack" if "stack" in actions else "put"
+        out.append([Clause(action, obj=located, target=d.phrase, relation=relation, text=instruction)])
+    if not dests and not sources and not near and actions == {"pick"}:
+        out.append([Clause("pick", obj=obj, text=instruction)])
+    return out
+
+
+def phrases(instruction: str) -> list[str]:
+    """What perception should look for so that each reading can be grounded (observe.py)."""
+    out: dict[str, None] = {}
+    for reading in readings(instruction):
+        for c in reading:
+            for p in (c.obj, c.target, c.source):
+                if p:
+                    out.setdefault(p, None)
+    return list(out)
+
+
+def describe(reading: list[Clause]) -> str:
+    c = reading[0]
+    parts = [c.action, f"thing={c.obj}"]
+    parts += [f"{c.relation or 'to'}={c.target}"] if c.target else []
+    parts += [f"from={c.source}"] if c.source else []
+    return " ".join(parts)
+
+
+def unused_mentions(instruction: str, clauses: list[Clause]) -> list[str]:
+    """Things the sentence names as the thing acted on or a destination that no clause of the rule parse holds
+    ("the bowl needs to be up on top of the cabinet" read as a lift of the bowl: the cabinet is unused)."""
+    found = mentions(instruction)
+    if not found:
+        return []
+    said = {
+        w for c in clauses for p in (c.obj, c.target, c.tool, c.source) if p for w in re.findall(r"[a-z]+", p.lower())
+    }
+    return [
+        m.phrase
+        for m in found
+        if m.role in ("thing", "dest") and not any(w in said or singular(w) in said for w in m.phrase.split()[-1:])
+    ]

@@ -1,0 +1,119 @@
+"""Round ten of the rules planner (issue 18): an order-free reading (rules/reader.py) the planner falls back on
+when the rule parse refuses or leaves a thing the sentence names unused. Roles come from each mention's own
+preposition, not from where it stands; a reading is offered only when every noun is in a mention; the planner
+accepts it only when exactly one reading grounds. Each test fails without the mechanism it names.
+
+(Examples are written for these tests; none comes from data/wording/.)"""
+
+import numpy as np
+import pytest
+
+from spark_core.grammar import plan_to_dict
+from spark_core.perception import Keypoint
+from spark_core.planning import PlanRequest, SceneView
+from spark_core.planning.observe import phrases_for
+from spark_core.planning.rules import RulesPlanner, parse_instruction
+from spark_core.planning.rules.parse import ParseError
+from spark_core.planning.rules.reader import describe, mentions, readings, unused_mentions
+
+
+def _view(inventory=(), unresolved=None, **where):
+    kps = {k.replace("_", " "): Keypoint(k, np.array(v, float), np.full(3, 0.05)) for k, v in where.items()}
+    return SceneView(kps, unresolved=unresolved or {}, inventory=inventory)
+
+
+def _steps(result):
+    return [step["type"] for step in plan_to_dict(result.plan)["tree"]["children"]]
+
+
+@pytest.mark.parametrize("text", ["yellow cube atop the blue cube", "atop the blue cube, the yellow cube"])
+def test_roles_come_from_each_mention_own_preposition_not_its_place(text):
+    assert [describe(r) for r in readings(text)] == ["put thing=yellow cube on=blue cube"]
+
+
+@pytest.mark.parametrize(
+    "text,expected",
+    [
+        ("the lemon's meant to be in the basket", ["put thing=lemon in=basket"]),  # a stated goal, no verb
+        ("into the basket, the lemon, please", ["put thing=lemon in=basket"]),
+        ("the marbles out of the jug and into the pot", ["put thing=marbles in jug in=pot"]),  # where it is now
+        ("the water out of the jug and into the pot", ["pour thing=water to=pot from=jug"]),  # contents: a pour
+        ("grab whichever mug is closer to the robot", ["pick thing=nearest mug"]),  # compared with the robot
+        ("lime -> basket", ["put thing=lime in=basket"]),  # an arrow says where it goes
+        ("the mug resting on the shelf, please", ["put thing=mug on=shelf"]),  # a thing and a place: the goal
+        ("I'd like the pear sitting in the pot", ["put thing=pear in=pot"]),  # a participle ends the noun phrase
+        ("the baking tray onto the stove", ["put thing=baking tray on=stove"]),  # but not before the noun
+        # a destination preposition that may say where the thing stands: both readings, for the scene to decide
+        (
+            "the bowl on the plate, up onto the tray",
+            ["put thing=bowl on tray on=plate", "put thing=bowl on plate on=tray"],
+        ),
+    ],
+)
+def test_readings(text, expected):
+    assert [describe(r) for r in readings(text)] == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "put the lemon in the basket, gizmo",  # a noun left over (known or not): no reading
+        "put the lemon that is not green in the basket",  # negation is never dropped
+        "leave the lemon and put the lime in the basket",
+        "put the lemon in the basket and the lime in the bowl",  # two things: not one step
+        "open the drawer and put the lemon in it",  # two actions
+        "how warm does the mug get",  # a question about the scene
+        "mug mug blue blue grab grab",  # words said twice over
+        "eat the pear in the pot",  # a verb the planner does not know: a thing of its own, never read past
+    ],
+)
+def test_no_reading_when_a_thing_or_a_qualifier_would_be_dropped(text):
+    assert readings(text) == []
+
+
+def test_a_fruit_named_by_a_colour_word_is_a_thing_not_a_colour():
+    # "lemon" is also a shade of yellow: as the last word of its phrase it is the thing itself
+    assert [m.phrase for m in mentions("lemon atop the blue cube") or []] == ["lemon", "blue cube"]
+
+
+def test_the_planner_falls_back_on_the_order_free_reading_when_the_rule_parse_refuses():
+    text = "yellow cube atop the blue cube"
+    with pytest.raises(ParseError):
+        parse_instruction(text)
+    view = _view(("blue cube", "yellow cube"), yellow_cube=(0.5, 0.1, 0.02), blue_cube=(0.5, -0.1, 0.02))
+    result = RulesPlanner().plan(PlanRequest(text, view))
+    assert result.ok, result.error
+    assert result.detail["understood"] == ["read without word order: put thing=yellow cube on=blue cube"]
+
+
+def test_observe_looks_for_what_the_order_free_reading_needs():
+    assert {"yellow cube", "blue cube"} <= set(phrases_for("yellow cube atop the blue cube"))
+
+
+def test_an_absent_thing_is_refused_by_the_fallback_too():
+    view = _view(("blue cube",), {"lemon": "none found"}, blue_cube=(0.5, -0.1, 0.02))
+    result = RulesPlanner().plan(PlanRequest("lemon atop the blue cube", view))
+    assert not result.ok
+
+
+def test_several_readings_that_ground_differently_are_refused_as_ambiguous():
+    # both "the bowl on the plate" and "the bowl on the tray" are found (two bowls): which goes where is unsaid
+    where = dict(
+        bowl_on_plate=(0.5, 0.1, 0.05), bowl_on_tray=(0.5, -0.1, 0.05), plate=(0.5, 0.1, 0.01), tray=(0.5, -0.1, 0.01)
+    )
+    view = _view(("bowl (2)", "plate", "tray"), **where)
+    planner = RulesPlanner()
+    assert planner._read_without_order(PlanRequest("the bowl on the plate, up onto the tray", view)) is None
+    # with one bowl, on the plate, one reading grounds
+    del where["bowl_on_tray"]
+    one = planner._read_without_order(PlanRequest("the bowl on the plate, up onto the tray", _view(**where)))
+    assert one is not None and one[1] == ["read without word order: put thing=bowl on plate on=tray"]
+
+
+def test_a_thing_the_rule_parse_leaves_unused_is_read_without_word_order():
+    text = "the mug needs to be up on top of the shelf"
+    assert unused_mentions(text, parse_instruction(text)) == ["shelf"]  # read as a lift: the shelf unused
+    view = _view(("mug", "shelf"), mug=(0.5, 0.1, 0.05), shelf=(0.6, -0.2, 0.3))
+    result = RulesPlanner().plan(PlanRequest(text, view))
+    assert result.ok and result.detail["understood"] == ["read without word order: put thing=mug on=shelf"]
+    assert _steps(result) == ["pick", "place"]
