@@ -10,7 +10,7 @@ from typing import Annotated
 
 from fastapi import APIRouter, HTTPException, Path, Query, Request, Response, WebSocket, WebSocketDisconnect
 
-from spark_core import ProtocolError, TrialConfig, TrialConfigError
+from spark_core import CatalogError, ProtocolError, TrialConfig, TrialConfigError
 
 from .auth import websocket_allowed
 from .models import MAX_ID, MAX_OFFSET, Control, TrialCreate, TrialCreated, TrialDeleted, TrialPage, TrialRestored
@@ -36,6 +36,25 @@ def trial_config(body: TrialCreate, batch_id: str | None = None) -> TrialConfig:
     entry = PLANNERS[body.planner]
     if body.model is not None and entry.offline and not entry.needs_model and entry.default_model is None:
         raise HTTPException(422, f"model: the {body.planner} planner takes no model (only the LLM planners do)")
+    # a blank instruction is no instruction: the task's own, as the field's description says (not a planner's
+    # refusal of "   ")
+    instruction = body.instruction.strip() or None if body.instruction is not None else None
+    if instruction is not None and body.plan is None and body.planner == "reference":
+        from spark_core import check_task
+
+        try:
+            own = check_task(body.task).instruction
+        except CatalogError:
+            own = None  # an unknown task: config.check() below names it
+        if own is not None and instruction != own.strip():
+            # the reference planner runs the task's hand-written plan: an instruction would be recorded (and
+            # shown) as what ran while the robot did something else
+            raise HTTPException(
+                422,
+                f"instruction: the reference planner runs {body.task!r}'s own hand-written plan ({own!r}) and "
+                "does not read an instruction; choose the rules planner (offline) or an LLM planner to run "
+                "this instruction, or leave the instruction out",
+            )
     capture = None
     if body.capture:
         from spark_core import CaptureConfig
@@ -43,7 +62,7 @@ def trial_config(body: TrialCreate, batch_id: str | None = None) -> TrialConfig:
         capture = CaptureConfig()
     config = TrialConfig(
         body.task,
-        instruction=body.instruction,
+        instruction=instruction,
         planner=body.planner,
         model=body.model,
         base_url=None,  # never a caller's URL: endpoints are the operator's (named in spark.yaml)
