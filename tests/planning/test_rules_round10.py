@@ -14,6 +14,7 @@ from spark_core.planning import PlanRequest, SceneView
 from spark_core.planning.observe import phrases_for
 from spark_core.planning.rules import RulesPlanner, parse_instruction
 from spark_core.planning.rules.parse import ParseError
+from spark_core.planning.rules.planner import _effect
 from spark_core.planning.rules.reader import describe, mentions, readings, unused_mentions
 
 
@@ -43,6 +44,8 @@ def test_roles_come_from_each_mention_own_preposition_not_its_place(text):
         ("the mug resting on the shelf, please", ["put thing=mug on=shelf"]),  # a thing and a place: the goal
         ("I'd like the pear sitting in the pot", ["put thing=pear in=pot"]),  # a participle ends the noun phrase
         ("the baking tray onto the stove", ["put thing=baking tray on=stove"]),  # but not before the noun
+        ("the yellow cube on top of the blue one", ["put thing=yellow cube on=blue cube"]),  # "one": the noun said
+        ("the pear from the table into the pot", ["put thing=pear in=pot"]),  # the table says nothing of which
         # a destination preposition that may say where the thing stands: both readings, for the scene to decide
         (
             "the bowl on the plate, up onto the tray",
@@ -65,6 +68,8 @@ def test_readings(text, expected):
         "how warm does the mug get",  # a question about the scene
         "mug mug blue blue grab grab",  # words said twice over
         "eat the pear in the pot",  # a verb the planner does not know: a thing of its own, never read past
+        "put the mug between the robot and the plate onto the shelf",  # located by the robot: the rule parse's
+        "put the blue on the plate",  # a colour alone names no thing
     ],
 )
 def test_no_reading_when_a_thing_or_a_qualifier_would_be_dropped(text):
@@ -117,3 +122,24 @@ def test_a_thing_the_rule_parse_leaves_unused_is_read_without_word_order():
     result = RulesPlanner().plan(PlanRequest(text, view))
     assert result.ok and result.detail["understood"] == ["read without word order: put thing=mug on=shelf"]
     assert _steps(result) == ["pick", "place"]
+
+
+def test_contents_poured_from_a_container_named_with_them_need_not_be_seen():
+    # "the water": inside the jug, out of sight; the jug and the pot must be found
+    text = "the water out of the jug and into the pot"
+    view = _view(("jug", "pot"), {"water": "none found"}, jug=(0.5, 0.1, 0.05), pot=(0.5, -0.1, 0.05))
+    result = RulesPlanner().plan(PlanRequest(text, view))
+    assert result.ok and result.detail["understood"] == ["read without word order: pour thing=water to=pot from=jug"]
+    # a thing that is no contents must be found, poured or not
+    view = _view(("jug", "pot"), {"gravel": "none found"}, jug=(0.5, 0.1, 0.05), pot=(0.5, -0.1, 0.05))
+    assert not RulesPlanner().plan(PlanRequest("pour the gravel out of the jug and into the pot", view)).ok
+
+
+def test_readings_that_name_one_plan_two_ways_are_one_plan():
+    # "the bowl on the plate" and "the bowl by the plate" found as one bowl: one plan, not an ambiguity
+    where = dict(bowl_on_plate=(0.5, 0.1, 0.05), bowl_by_plate=(0.5, 0.1, 0.05), tray=(0.5, -0.1, 0.01))
+    scene = _view(**where).keypoints
+    a = [{"primitive": "pick", "params": {"keypoint_label": "bowl on plate"}}]
+    b = [{"primitive": "pick", "params": {"keypoint_label": "bowl by plate"}}]
+    c = [{"primitive": "pick", "params": {"keypoint_label": "tray"}}]
+    assert _effect(a, scene) == _effect(b, scene) != _effect(c, scene)

@@ -187,16 +187,15 @@ def mentions(instruction: str) -> list[Mention] | None:
                 break  # "the red block sitting in the bowl": where it sits, not its name
             span.append(tokens[k])
             k += 1
-        while span and (span[-1] in fillers or span[-1] in ABSTRACT or adverb_only(span[-1])):
-            span.pop()  # "the plate please"
-        # a describing word names the thing when it ends the phrase ("the lemon", "the orange": fruit, not colours)
-        heads = [w for n, w in enumerate(span) if not _closed(w) and (w not in ATTRIBUTES or n == len(span) - 1)]
         if span and span[-1] in ("one", "ones") and len(span) > 1:
             head = next((m.phrase.split()[-1] for m in reversed(out) if m.role != "pronoun"), None)
             if head is None:
                 return None  # "the red one" with no noun said before it
             span = [*span[:-1], head]
-            heads = [head]
+        while span and (span[-1] in fillers or span[-1] in ABSTRACT or adverb_only(span[-1])):
+            span.pop()  # "the plate please"
+        # a describing word names the thing when it ends the phrase ("the lemon", "the orange": fruit, not colours)
+        heads = [w for n, w in enumerate(span) if not _closed(w) and (w not in ATTRIBUTES or _names(w, n, span))]
         if tokens[j:k] and tokens[j] in ("it", "them") and role != "thing":
             out.append(Mention("it", "pronoun", relation, i, j + 1))
             i = j + 1
@@ -216,6 +215,11 @@ def mentions(instruction: str) -> list[Mention] | None:
             continue
         i = max(i + 1, j)
     return out if _covered(tokens, out) else None
+
+
+def _names(word: str, n: int, span: list[str]) -> bool:
+    """A describing word that ends its phrase and is a thing besides a colour names the thing ("the lemon")."""
+    return n == len(span) - 1 and word not in BASE_COLOURS
 
 
 def _covered(tokens: list[str], found: list[Mention]) -> bool:
