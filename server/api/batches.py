@@ -29,7 +29,7 @@ class BatchTrial(BaseModel):
 
     task: Visible = Field(max_length=MAX_NAME)
     instruction: Annotated[str, Field(max_length=2000), VISIBLE] | None = Field(
-        None, description="default: the task's own"
+        None, description="default: the task's own; the reference planner refuses any other"
     )
     seed: int = Field(0, ge=0, le=MAX_SEED, strict=True)
     planner: str | None = Field(None, json_schema_extra={"enum": list(PLANNERS)})

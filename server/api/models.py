@@ -38,7 +38,9 @@ class TrialCreate(BaseModel):
 
     task: Visible = Field(max_length=MAX_NAME, description="task whose scene to run in (GET /api/catalog lists them)")
     instruction: Annotated[str, Field(max_length=2000), VISIBLE] | None = Field(
-        None, description="default: the task's own instruction"
+        None,
+        description="default: the task's own instruction; the reference planner runs the task's own plan and "
+        "refuses any other (choose rules or an LLM planner)",
     )
     planner: str = Field("reference", json_schema_extra=_enum(PLANNERS))
     segmenter: str = Field(

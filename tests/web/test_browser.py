@@ -542,6 +542,62 @@ def test_history_selection_exports_a_lerobot_dataset(server, page):
         page.click("#export-download")
     z = zipfile.ZipFile(io.BytesIO(Path(dl.value.path()).read_bytes()))
     assert json.loads(z.read("meta/info.json"))["total_episodes"] == 1
+    # the result belongs to the selection it was made from: another selection does not show it as its own
+    page.uncheck(f"#rows .pick[value='{tid}']")
+    page.wait_for_selector("#export-download", state="detached")
+    assert page.locator("#export-result").inner_text() == ""
+
+
+def test_the_reference_planner_takes_no_instruction(server, page):
+    """The reference planner runs the task's hand-written plan: an instruction typed for it would be recorded as
+    what ran while the robot did something else. The field is off (and says why) until a planner that reads it,
+    or a plan of one's own, is chosen; the server refuses one anyway, shown inline."""
+    page.goto(server + "/")
+    page.click("button[data-task=lift_block]")
+    field = "#new-trial input[name=instruction]"
+    assert page.input_value("#new-trial select[name=planner]") == "reference"
+    assert page.is_disabled(field) and "reads no instruction" in page.locator("#instruction-note").inner_text()
+    page.select_option("#new-trial select[name=planner]", "rules")
+    assert page.is_enabled(field) and page.locator("#instruction-note").count() == 0
+    page.fill(field, "put the red block on the blue block")
+    page.select_option("#new-trial select[name=planner]", "reference")
+    assert page.is_disabled(field)
+    page.click("#new-trial summary:has-text('Run your own plan')")
+    page.fill("#new-trial textarea[name=plan]", NUDGE)
+    assert page.is_enabled(field)  # with a plan of one's own the instruction is its label
+    page.fill("#new-trial textarea[name=plan]", "")
+    page.evaluate(f"document.querySelector('{field}').disabled = false")  # past the form: the server says no
+    page.click("#new-trial button[type=submit]")
+    page.wait_for_selector("#form-error:has-text('the reference planner runs')")
+    assert "#/trial/" not in page.url  # nothing was queued
+
+
+def test_compare_never_shows_the_pair_it_left(server, page):
+    """Going from one comparison to another while the first one's records are still on their way: the page shows
+    the pair in its address, never the earlier pair's answer arriving late."""
+    a = _post(server, "/api/trials", {"task": "lift_block", "segmenter": "privileged-keypoints", "plan": NUDGE})["id"]
+    b = _post(server, "/api/trials", {"task": "lift_block", "segmenter": "privileged-keypoints", "seed": 5})["id"]
+    _wait_done(server, a), _wait_done(server, b)
+    page.goto(server + "/")
+    page.wait_for_selector("#new-trial")
+    # the first request for trial `a` (the first pair's) answers 1.5 s late
+    page.evaluate(
+        """(slow) => { const f = window.fetch; let first = true;
+        window.fetch = (url, ...rest) => {
+          if (first && String(url).endsWith('/api/trials/' + slow)) {
+            first = false;
+            return new Promise((ok) => setTimeout(ok, 1500)).then(() => f(url, ...rest));
+          }
+          return f(url, ...rest); }; }""",
+        a,
+    )
+    page.evaluate(f"location.hash = '#/compare/{a}/{b}'")
+    page.wait_for_timeout(100)
+    page.evaluate(f"location.hash = '#/compare/{b}/{a}'")
+    page.wait_for_selector(".compare tbody tr")
+    page.wait_for_timeout(2500)  # past the late answer
+    rows = page.eval_on_selector_all(".compare tbody tr td:nth-child(2)", "ts => ts.map(t => t.innerText)")
+    assert rows == [b, a]
 
 
 def test_form_reports_server_errors(server, page):

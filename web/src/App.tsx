@@ -15,7 +15,7 @@ export function App() {
   else if (page === "batch" && a) view = <BatchPage key={a} id={a} />;
   else if (page === "batches") view = <Batches />;
   else if (page === "history") view = <History />;
-  else if (page === "compare" && a && b) view = <Compare a={a} b={b} />;
+  else if (page === "compare" && a && b) view = <Compare key={`${a}/${b}`} a={a} b={b} />; // a new pair: a new page (no answer for the old pair lands on it)
   else view = <Dashboard />;
   return (
     <>

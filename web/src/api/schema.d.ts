@@ -575,7 +575,7 @@ export interface components {
             task: string;
             /**
              * Instruction
-             * @description default: the task's own
+             * @description default: the task's own; the reference planner refuses any other
              */
             instruction?: string | null;
             /**
@@ -720,7 +720,7 @@ export interface components {
             task: string;
             /**
              * Instruction
-             * @description default: the task's own instruction
+             * @description default: the task's own instruction; the reference planner runs the task's own plan and refuses any other (choose rules or an LLM planner)
              */
             instruction?: string | null;
             /**

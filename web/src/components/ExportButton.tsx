@@ -1,5 +1,5 @@
 // Export trials as a LeRobot dataset (POST /api/exports), then offer the zip.
-import { useState } from "react";
+import { useEffect, useRef, useState } from "react";
 import { post } from "../api/client";
 
 interface Result { episodes: number; frames: number; bytes: number; download: string; skipped: { reason: string }[] }
@@ -7,10 +7,18 @@ interface Result { episodes: number; frames: number; bytes: number; download: st
 export function ExportButton({ body, disabled, label }: { body: Record<string, unknown>; disabled: boolean; label: string }) {
   const [failures, setFailures] = useState(false);
   const [state, setState] = useState<{ busy?: boolean; error?: string; result?: Result }>({});
+  // a result (or error) belongs to the selection it was made from: a changed selection clears it, and an answer
+  // for an earlier selection is dropped
+  const key = JSON.stringify(body);
+  const current = useRef(key);
+  useEffect(() => { current.current = key; setState({}); }, [key]);
   const run = async () => {
+    const asked = key;
     setState({ busy: true });
-    try { setState({ result: await post<Result>("/api/exports", { ...body, success_only: !failures }) }); }
-    catch (e) { setState({ error: (e as Error).message }); }
+    try {
+      const result = await post<Result>("/api/exports", { ...body, success_only: !failures });
+      if (current.current === asked) setState({ result });
+    } catch (e) { if (current.current === asked) setState({ error: (e as Error).message }); }
   };
   const r = state.result;
   return (

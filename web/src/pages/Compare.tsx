@@ -13,9 +13,12 @@ export function Compare({ a, b }: { a: string; b: string }) {
   const [error, setError] = useState("");
   const [cursor, setCursor] = useState(0);
   useEffect(() => {
+    let current = true; // an answer for a pair this page no longer shows is dropped
+    setTrials(null); setError("");
     Promise.all([a, b].map((id) => api<Trial>(`/api/trials/${encodeURIComponent(id)}`)))
-      .then(([x, y]) => setTrials([x, y].map((t) => withoutPauses(t, t.events ?? []).trial) as [Trial, Trial]))
-      .catch((e) => setError(e.message));
+      .then(([x, y]) => { if (current) setTrials([x, y].map((t) => withoutPauses(t, t.events ?? []).trial) as [Trial, Trial]); })
+      .catch((e) => { if (current) setError(e.message); });
+    return () => { current = false; };
   }, [a, b]);
   if (error) return <section className="fail">{error}</section>;
   if (!trials) return <section>loading…</section>;

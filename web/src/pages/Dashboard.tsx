@@ -85,6 +85,8 @@ function PlannerFields({ cat, planner, setPlanner }: { cat: Catalog; planner: st
   );
 }
 
+const REFERENCE_NOTE = "the reference planner runs this task's hand-written plan and reads no instruction: choose rules or an LLM planner to give your own";
+
 const segLabel = (s: { name: string; privileged: boolean }) => `${s.name}${s.privileged ? " (privileged)" : ""}`;
 
 function TrialForm({ cat, task }: { cat: Catalog; task: Task }) {
@@ -93,6 +95,7 @@ function TrialForm({ cat, task }: { cat: Catalog; task: Task }) {
   const [planOk, setPlanOk] = useState(true);
   const [error, setError] = useState("");
   const [busy, setBusy] = useState(false);
+  const readsInstruction = planner !== "reference" || !!plan.trim();
   const submit = async (e: React.FormEvent<HTMLFormElement>) => {
     e.preventDefault();
     const f = new FormData(e.currentTarget);
@@ -118,7 +121,11 @@ function TrialForm({ cat, task }: { cat: Catalog; task: Task }) {
     <section><h3>New trial</h3>
       <form id="new-trial" onSubmit={submit}>
         <input type="hidden" name="task" value={task.name} />
-        <label>Instruction <input name="instruction" placeholder={task.instruction} className="wide" /></label><br />
+        {/* the reference planner runs the task's hand-written plan and reads no instruction (the server refuses one
+            it would ignore): the field is off, and says so, unless a planner that reads it or a plan is chosen */}
+        <label>Instruction <input name="instruction" placeholder={task.instruction} className="wide" maxLength={2000}
+          disabled={!readsInstruction} title={readsInstruction ? undefined : REFERENCE_NOTE} /></label>
+        {!readsInstruction && <span className="muted" id="instruction-note"> {REFERENCE_NOTE}</span>}<br />
         <PlannerFields cat={cat} planner={planner} setPlanner={setPlanner} />
         <label>Segmenter <select name="segmenter">{cat.segmenters.map((s) => <option key={s.name} value={s.name} title={s.description}>{segLabel(s)}</option>)}</select></label>
         <label>Robot <select name="embodiment"><option value="">task default</option>
