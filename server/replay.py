@@ -4,6 +4,7 @@ kinematics runs: no physics, so a replay shows exactly what was recorded."""
 
 from __future__ import annotations
 
+import itertools
 import threading
 import time
 
@@ -93,9 +94,22 @@ class ReplayCursors:
         self.store, self.scene, self.keep = store, scene, keep
         self._open: dict[str, dict] = {}  # trial id -> {world, data, states, times, groundings, origin}
         self._lock = threading.Lock()
+        self._ticket_lock = threading.Lock()  # numbers are taken at once, not behind the (slow) replay lock
+        # Focus requests in the order they reached the server: a page that moved on (another trial, or unbound)
+        # has a later one, so an earlier seek still waiting for the lock (behind a camera render or a world
+        # being built) must not draw its trial over the view the page now shows.
+        self._tickets = itertools.count(1)
+        self._latest = 0
 
-    def seek(self, trial_id: str, t_sim_s: float) -> dict:
-        """Raises KeyError for an unknown trial, ReplayUnavailable with the reason."""
+    def ticket(self) -> int:
+        """Number a focus request as it arrives; only the latest one's seek draws."""
+        with self._ticket_lock:
+            self._latest = next(self._tickets)
+            return self._latest
+
+    def seek(self, trial_id: str, t_sim_s: float, ticket: int | None = None) -> dict:
+        """Raises KeyError for an unknown trial, ReplayUnavailable with the reason. With `ticket` (from
+        ticket()), a seek that a later focus request overtook draws nothing (`superseded` in the answer)."""
         import bisect
 
         from spark_core import body_poses, visual_geoms
@@ -107,6 +121,15 @@ class ReplayCursors:
             r = self._open.get(trial_id) or self._load(trial_id)
             i = max(0, bisect.bisect_right(r["times"], t_sim_s) - 1)
             t, qpos = r["states"][i]
+            if ticket is not None and ticket != self._latest:
+                return {
+                    "id": trial_id,
+                    "key": key,
+                    "t_sim_s": round(t, 3),
+                    "index": i,
+                    "states": len(r["states"]),
+                    "superseded": True,
+                }
             if self.scene.current != key:
                 self.scene.show(key, visual_geoms(r["world"].model), title=f"replay of {trial_id}")
             self.scene.pinned = key

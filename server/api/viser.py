@@ -100,6 +100,8 @@ def focus(
     scene = request.app.state.scene
     if scene is None:
         raise HTTPException(409, "the 3D view is off (SPARK_VISER=0)")
+    # numbered as it arrives: an earlier request's seek still waiting to draw is superseded by this one
+    ticket = request.app.state.replays.ticket()
     if trial is None:
         scene.focus(None)
         return {"showing": scene.current, "pinned": None, "live": False}
@@ -107,7 +109,7 @@ def focus(
         scene.focus(trial)  # its feed draws as soon as it has a scene (a queued trial: when it starts)
         return {"showing": scene.current, "pinned": scene.pinned, "live": True}
     try:
-        r = request.app.state.replays.seek(trial, 1e9 if t_sim_s is None else t_sim_s)
+        r = request.app.state.replays.seek(trial, 1e9 if t_sim_s is None else t_sim_s, ticket=ticket)
     except KeyError:
         raise HTTPException(404, f"no trial {trial!r}") from None
     except ReplayUnavailable as e:

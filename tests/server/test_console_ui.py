@@ -165,3 +165,42 @@ def test_a_task_preview_is_a_picture_of_its_scene(tmp_path):
         img = cv2.imdecode(np.frombuffer(r.content, np.uint8), cv2.IMREAD_COLOR)
         assert img.shape == (240, 320, 3) and img.std() > 10  # a drawn scene, not a blank frame
         assert c.get("/api/tasks/juggle/preview.png").status_code == 404
+
+
+def test_a_focus_request_overtaken_by_a_later_one_does_not_draw(tmp_path):
+    """A page left trial A for trial B while A's seek was still waiting to draw (behind a camera render or a world
+    being built): B's view stays B's, not A's arriving late; a later unbind (the page left) is not undone either."""
+    import threading
+    import time
+
+    with TestClient(_app(tmp_path)) as c:
+        a, b = (
+            c.post("/api/trials", json={"task": t, "segmenter": "privileged-keypoints"}).json()["id"]
+            for t in ("lift_block", "push_to_zone")
+        )
+        wait_done(c, a), wait_done(c, b)
+        replays, scene = c.app.state.replays, c.app.state.scene
+        seek = replays.seek
+
+        def slow_for_a(trial_id, t_sim_s, ticket=None):  # A's request is held up before it can draw
+            if trial_id == a:
+                time.sleep(1.0)
+            return seek(trial_id, t_sim_s, ticket=ticket)
+
+        replays.seek = slow_for_a
+        late = {}
+        first = threading.Thread(target=lambda: late.update(c.post("/api/viser/focus", params={"trial": a}).json()))
+        first.start()
+        time.sleep(0.3)
+        shown = c.post("/api/viser/focus", params={"trial": b}).json()
+        assert shown["showing"] == f"replay:{b}"
+        first.join(10)
+        assert late.get("superseded") is True
+        assert scene.current == f"replay:{b}" and scene.pinned == f"replay:{b}"
+        # the page leaves (unbinds) while another request for A is still on its way: nothing pins A again
+        first = threading.Thread(target=lambda: c.post("/api/viser/focus", params={"trial": a}))
+        first.start()
+        time.sleep(0.3)
+        assert c.post("/api/viser/focus").json()["pinned"] is None
+        first.join(10)
+        assert scene.pinned is None and scene.current == f"replay:{b}"
