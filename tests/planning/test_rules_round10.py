@@ -143,3 +143,9 @@ def test_readings_that_name_one_plan_two_ways_are_one_plan():
     b = [{"primitive": "pick", "params": {"keypoint_label": "bowl by plate"}}]
     c = [{"primitive": "pick", "params": {"keypoint_label": "tray"}}]
     assert _effect(a, scene) == _effect(b, scene) != _effect(c, scene)
+
+
+def test_a_word_that_says_where_is_no_unused_thing():
+    # "the mug right by the jug": "right" says how near, it names nothing; the rule parse's plan stands
+    text = "the mug right next to the jug needs to go on the shelf"
+    assert unused_mentions(text, parse_instruction(text)) == []

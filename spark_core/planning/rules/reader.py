@@ -324,8 +324,9 @@ def unused_mentions(instruction: str, clauses: list[Clause]) -> list[str]:
     said = {
         w for c in clauses for p in (c.obj, c.target, c.tool, c.source) if p for w in re.findall(r"[a-z]+", p.lower())
     }
-    return [
-        m.phrase
-        for m in found
-        if m.role in ("thing", "dest") and not any(w in said or singular(w) in said for w in m.phrase.split()[-1:])
-    ]
+    out = []
+    for m in found:
+        heads = [w for w in m.phrase.split() if not _closed(w)][-1:]  # "bowl right": the bowl, "right" says where
+        if m.role in ("thing", "dest") and heads and not (heads[0] in said or singular(heads[0]) in said):
+            out.append(m.phrase)
+    return out
