@@ -226,7 +226,9 @@ function Explanation({ trial, predicate }: { trial: Trial; predicate?: string })
   } else if (trial.verdict === "planner_error") {
     text = `The planner produced no plan. What it said: ${trial.reason || "(nothing)"}`;
   } else if (trial.verdict === "aborted") {
-    text = `Aborted by the operator${trial.reason ? `: ${trial.reason}` : "."}`;
+    // the record's reason often says just that: not "Aborted by the operator: aborted by the operator"
+    const own = trial.reason && !/^aborted by the operator\.?$/i.test(trial.reason.trim());
+    text = `Aborted by the operator${own ? `: ${trial.reason}` : "."}`;
   } else if (trial.failed_node) {
     text = `${trial.failure ?? "failed"} at ${trial.failed_node}: ${trial.reason}`;
   }
