@@ -877,16 +877,8 @@ def _one_surface_upscaled(
     f = fy
     rows, cols = slice(box[0].start * f, box[0].stop * f), slice(box[1].start * f, box[1].stop * f)
     big = np.repeat(np.repeat(m_box, f, axis=0), f, axis=1)  # INTER_NEAREST at an exact factor: pixel (v // f, u // f)
-    d = frame.depth_m[rows, cols][big]
     full = np.zeros((H, W), bool)
-    ok = np.isfinite(d)
-    if not ok.any():
-        full[rows, cols] = big
-        return full
-    med = float(np.median(d[ok]))
-    keep = np.zeros_like(big)
-    keep[big] = ok & (np.abs(d - med) <= DEPTH_SPREAD_M)
-    full[rows, cols] = keep
+    full[rows, cols] = _near_median_depth(big, frame.depth_m[rows, cols])
     return full
 
 
@@ -894,7 +886,13 @@ def _one_surface(mask: np.ndarray, frame: CameraFrame) -> np.ndarray:
     """The mask without pixels far in depth from its median: where a mask found at half resolution and scaled up
     spills past an object's silhouette onto the wall or floor behind (meters away), those pixels would drag the
     object's 3D points with them."""
-    d = frame.depth_m[mask]
+    return _near_median_depth(mask, frame.depth_m)
+
+
+def _near_median_depth(mask: np.ndarray, depth_m: np.ndarray) -> np.ndarray:
+    """The mask's pixels within DEPTH_SPREAD_M of its median finite depth (`depth_m` the same shape as the
+    mask); the mask itself when none has a depth."""
+    d = depth_m[mask]
     ok = np.isfinite(d)
     if not ok.any():
         return mask
