@@ -1,5 +1,6 @@
-"""frozen_forward: the traced, frozen graph gives the eager network's outputs (to float rounding), keeps one graph
-per input shape (the per-pixel network's upsampling depends on it), and never freezes a network in training."""
+"""frozen_forward: the traced, frozen channels-last graph gives the eager network's outputs (to float rounding),
+keeps one graph per input shape (the per-pixel network's upsampling depends on it), leaves the network it was
+given as it was, and never freezes a network in training."""
 
 import torch
 
@@ -27,7 +28,10 @@ def test_segnet_graph_matches_eager_and_is_kept_per_shape():
             got, want = frozen.frozen_forward(net, x), net(x)
             assert got.shape == want.shape
             assert torch.allclose(got, want, atol=1e-4, rtol=1e-4), (got - want).abs().max()
+            assert got.is_contiguous(memory_format=torch.channels_last)  # what the segmenter's softmax relies on
     assert set(frozen._GRAPHS[net]) == {(1, 4, 64, 96), (1, 4, 96, 64)}
+    conv = next(m for m in net.modules() if isinstance(m, torch.nn.Conv2d) and m.kernel_size == (3, 3))
+    assert conv.weight.is_contiguous()  # the graph converted a copy: the cached network keeps its own layout
 
 
 def test_patch_classifier_graph_serves_every_batch_size():

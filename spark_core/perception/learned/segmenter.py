@@ -21,10 +21,10 @@ import cv2
 import numpy as np
 from scipy import ndimage
 
-from ..channel_max import channel_max
 from ..colors import BASE_COLOURS, normalise_colours
 from ..detection import Detection
 from ..frame import CameraFrame
+from ..last_axis_max import last_axis_max
 from ..pixels import mask_pixels
 from ..qualifiers import relation_holds, split_qualifier, split_relation
 from ..quantiles import percentile, percentiles
@@ -158,8 +158,9 @@ class LearnedSegmenter:
         self, frame: CameraFrame
     ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """At network resolution (the frame shrunk by the network's factor): category index, its probability,
-        boundary probability, colour probabilities (C, h, w), depth (m) per pixel, and the category
-        probabilities (n_categories, h, w)."""
+        boundary probability, colour logits (h, w, n_colours; see `_colour_of`), depth (m) per pixel, and the category
+        probabilities (h, w, n_categories): channels last, the network's own layout, so that one pixel's
+        probabilities are contiguous (softmax and argmax over a leading channel axis took several times longer)."""
         import torch
 
         from .model import network_input, shrink
@@ -177,13 +178,15 @@ class LearnedSegmenter:
                 x = network_input(torch.from_numpy(rgb[None]), torch.from_numpy(depth[None]))
                 cat_logits, bnd_logit, col_logits = net.split(frozen_forward(net, x))
                 cat_logits[:, net.n_trained :] = -torch.inf  # categories appended after these weights were trained
-                probs = torch.softmax(cat_logits[0], 0).numpy()
-                bnd = torch.sigmoid(bnd_logit[0])
-                col = torch.softmax(col_logits[0], 0)
+                # softmax over the channels where they are contiguous (the graph's channels-last output): over
+                # the leading axis of a (C, h, w) layout it took several times longer
+                probs_hwc = torch.softmax(cat_logits[0].permute(1, 2, 0), -1).numpy()
+                bnd = np.ascontiguousarray(torch.sigmoid(bnd_logit[0]).numpy())
+                col = col_logits[0].permute(1, 2, 0).numpy()  # logits: only instance pixels need probabilities
         finally:
             torch.set_num_threads(threads)
-        prob, cat = channel_max(probs)
-        return cat.astype(np.int32), prob, bnd.numpy(), col.numpy(), depth, probs
+        prob, cat = last_axis_max(probs_hwc)
+        return cat.astype(np.int32), prob, bnd, col, depth, probs_hwc
 
     def instances(self, frame: CameraFrame) -> list[Instance]:
         """Every object instance the network sees in this frame (cached per frame: one prompt set per frame
@@ -227,7 +230,7 @@ class LearnedSegmenter:
                 score = float(np.median(prob[box][m_box]))
                 if score < MIN_INSTANCE_SCORE:
                     continue
-                colour_p = col[(slice(1, None), *box)][:, m_box].mean(1)
+                colour = _colour_of(col[box][m_box])
                 full = _one_surface_upscaled(m_box, box, frame, (H, W), cat.shape)
                 if CATEGORIES[c].proud_m:
                     full = _proud(full, frame, CATEGORIES[c].proud_m)
@@ -235,7 +238,7 @@ class LearnedSegmenter:
                     full = without_strays(full, frame)
                 if full.sum() < self.min_area_px:
                     continue
-                out.append(Instance(int(c), full, score, COLOURS[1 + int(colour_p.argmax())]))
+                out.append(Instance(int(c), full, score, colour))
         if self.patch_weights is not None:
             out = self._second_look(out, frame)
         out = _absorb_pieces(_grown(out, cat, frame), frame)
@@ -257,13 +260,14 @@ class LearnedSegmenter:
     ) -> list[Instance]:
         """Instances of the patch classifier's GROUP: the per-pixel network's group pixels (whichever member it
         named) cut into blobs at boundaries and depth edges, each named by the classifier from a camera-resolution
-        patch. Score: geometric mean of the blob's median group probability and the classifier's."""
+        patch. Score: geometric mean of the blob's median group probability and the classifier's. `probs` and
+        `col` (colour logits): (h, w, C) as `predict` gives them."""
         net = patch_classifier.load(self.patch_weights)  # type: ignore[arg-type]  # set when called
         H, W = frame.shape
         region = np.isin(cat, patch_classifier.GROUP_INDEX)
         n, comp = cv2.connectedComponents((region & ~split).astype(np.uint8), connectivity=4)
         comp = _grow_into(comp, region)
-        mass = probs[patch_classifier.GROUP_INDEX].sum(0)
+        mass = probs[..., patch_classifier.GROUP_INDEX].sum(-1)
         blobs, patches = [], []
         for k, box in enumerate(ndimage.find_objects(comp, max_label=n - 1), start=1):
             if box is None:
@@ -289,9 +293,9 @@ class LearnedSegmenter:
             score = float(np.sqrt(np.median(mass[m]) * p_cls[best]))
             if score < MIN_INSTANCE_SCORE:
                 continue
-            colour_p = col[1:, m].mean(1)
+            colour = _colour_of(col[m])
             category = int(patch_classifier.CLASS_CATEGORY[best])
-            out.append(Instance(category, full, score, COLOURS[1 + int(colour_p.argmax())]))
+            out.append(Instance(category, full, score, colour))
         return out
 
     def _second_look(self, instances: list[Instance], frame: CameraFrame) -> list[Instance]:
@@ -447,10 +451,20 @@ def _protect_named(text: str) -> str:
 CONFUSED_P = 0.15  # mean probability each of two categories gets on the other's pixels: one object, unsure which
 
 
+def _colour_of(logits: np.ndarray) -> str:
+    """An instance's colour name from its pixels' colour logits (n, n_colours): the largest mean probability
+    after the "none" class (index 0). Softmax only on these pixels: over the whole frame it cost ~8 ms."""
+    import torch
+
+    p = torch.softmax(torch.from_numpy(np.ascontiguousarray(logits)), -1).numpy()
+    return COLOURS[1 + int(p[:, 1:].mean(0).argmax())]
+
+
 def _merge_confused(cat: np.ndarray, probs: np.ndarray, split: np.ndarray) -> np.ndarray:
     """Within one object blob (connected object pixels, cut at boundaries and depth edges), two categories the
     network hesitates between on each other's pixels (e.g. ketchup / tomato sauce bottles) are one object of the
-    category with more pixels; categories it tells apart (a block on a plate) stay separate instances."""
+    category with more pixels; categories it tells apart (a block on a plate) stay separate instances. `probs`:
+    (h, w, n_categories) category probabilities."""
     thing = np.array([c.thing for c in CATEGORIES])[cat]
     n, comp = cv2.connectedComponents((thing & ~split).astype(np.uint8), connectivity=4)
     if n <= 1:
@@ -462,14 +476,14 @@ def _merge_confused(cat: np.ndarray, probs: np.ndarray, split: np.ndarray) -> np
         if box is None:
             continue
         m, cat_box = comp[box] == k, cat[box]
-        votes = np.bincount(cat_box[m], minlength=probs.shape[0])
+        votes = np.bincount(cat_box[m], minlength=probs.shape[-1])
         present = [int(c) for c in np.argsort(votes)[::-1] if votes[c] > 0]
         if len(present) < 2:
             continue
         top = m & (cat_box == present[0])
         for c in present[1:]:
             other = m & (cat_box == c)
-            if probs[(c, *box)][top].mean() > CONFUSED_P and probs[(present[0], *box)][other].mean() > CONFUSED_P:
+            if probs[(*box, c)][top].mean() > CONFUSED_P and probs[(*box, present[0])][other].mean() > CONFUSED_P:
                 out[box][other] = present[0]
     return out
 
