@@ -23,6 +23,24 @@ def percentiles(values: np.ndarray, qs_percent: Sequence[float]) -> list[np.ndar
         raise ValueError("percentiles of an empty array")
     if np.isnan(values).any():
         raise ValueError("percentiles: values contain NaN")
+    spots = _spots(n, qs_percent)
+    part = np.partition(values, sorted({i for lo, hi, _ in spots for i in (lo, hi)}), axis=0)
+    return _interpolated(part, spots)
+
+
+def percentiles_of_sorted(sorted_values: np.ndarray, qs_percent: Sequence[float]) -> list[np.ndarray]:
+    """`percentiles` of values already sorted along axis 0 (each column on its own): the same order statistics
+    read by index, no partition, so the same numbers bit for bit. The caller keeps the columns sorted (e.g. two
+    sorted sets joined by a stable sort, which merges the runs in linear time); not checked here."""
+    n = sorted_values.shape[0]
+    if n == 0:
+        raise ValueError("percentiles of an empty array")
+    return _interpolated(sorted_values, _spots(n, qs_percent))
+
+
+def _spots(n: int, qs_percent: Sequence[float]) -> list[tuple[int, int, float]]:
+    """Per q: the two order statistics (0-based ranks) numpy's linear percentile interpolates between, and the
+    weight of the upper one."""
     spots: list[tuple[int, int, float]] = []
     for q in qs_percent:
         if not 0.0 <= q <= 100.0:
@@ -33,10 +51,14 @@ def percentiles(values: np.ndarray, qs_percent: Sequence[float]) -> list[np.ndar
         else:
             lo = math.floor(at)
             spots.append((lo, lo + 1, at - lo))
-    part = np.partition(values, sorted({i for lo, hi, _ in spots for i in (lo, hi)}), axis=0)
+    return spots
+
+
+def _interpolated(ordered: np.ndarray, spots: list[tuple[int, int, float]]) -> list[np.ndarray]:
+    """numpy's `_lerp` between the order statistics at each spot's ranks (`ordered` holds them at those ranks)."""
     out = []
     for lo, hi, t in spots:
-        a, b = part[lo], part[hi]
+        a, b = ordered[lo], ordered[hi]
         diff = b - a
         out.append(np.asarray(b - diff * (1 - t) if t >= 0.5 else a + diff * t))
     return out

@@ -4,7 +4,7 @@ with thresholds, so a last-digit difference could change a mask."""
 import numpy as np
 import pytest
 
-from spark_core.perception.quantiles import percentile, percentiles
+from spark_core.perception.quantiles import percentile, percentiles, percentiles_of_sorted
 
 QS = (0, 2, 5, 25, 50, 75, 95, 98, 100, 33.3, 99.99, 0.01)
 
@@ -30,6 +30,19 @@ def test_percentiles_equal_numpy_bit_for_bit(dtype, cols):
                 lo, hi = np.percentile(values, (5.0, 95.0), axis=0)
                 got_lo, got_hi = percentiles(values, (5.0, 95.0))
                 assert np.array_equal(got_lo, lo) and np.array_equal(got_hi, hi)
+
+
+@pytest.mark.parametrize("dtype", [np.float64, np.float32])
+def test_percentiles_of_sorted_columns_equal_numpy_bit_for_bit(dtype):
+    """As _rejoin uses it: two point sets, each sorted per column, joined by a stable sort (a merge of two runs)."""
+    rng = np.random.default_rng(3)
+    for na, nb in [(1, 1), (1, 5), (7, 3), (60, 2000), (1500, 1700)]:
+        a = rng.normal(0.2, 0.1, (na, 2)).astype(dtype)
+        b = (rng.integers(0, 5, (nb, 2)) * 0.05).astype(dtype)  # ties within b and with a
+        joined = np.sort(np.concatenate([np.sort(a, axis=0), np.sort(b, axis=0)]), axis=0, kind="stable")
+        for q, got in zip(QS, percentiles_of_sorted(joined, QS)):
+            want = np.percentile(np.concatenate([a, b]), q, axis=0)
+            assert got.dtype == want.dtype and np.array_equal(got, want), (na, nb, q)
 
 
 def test_percentiles_leave_the_input_unchanged():

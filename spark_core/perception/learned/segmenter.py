@@ -27,7 +27,7 @@ from ..frame import CameraFrame
 from ..last_axis_max import last_axis_max
 from ..pixels import mask_pixels
 from ..qualifiers import relation_holds, split_qualifier, split_relation
-from ..quantiles import percentile, percentiles
+from ..quantiles import percentile, percentiles, percentiles_of_sorted
 from ..sim_segmenter import calibrated_score, pick_by_qualifier
 from ..text_encoder import SHARED_ENCODER, TextEncoder
 from . import patch_classifier
@@ -697,12 +697,25 @@ def _rejoin(
             k = owner[k]
         return k
 
-    def width(pts: np.ndarray) -> float:
-        if max_height_m:
+    # per root, for a kind measured on all its points: its x and y, each column sorted. A pair's joined columns
+    # are then one stable sort away (a merge of two sorted runs) and its percentiles are read by index: the same
+    # numbers as partitioning the joined points, at a fraction of the cost (~2,500 pairs per 20 LIBERO frames)
+    sorted_xy: dict[int, np.ndarray] = {}
+
+    def joined_sorted(a: int, b: int) -> np.ndarray:
+        for k in (a, b):
+            if k not in sorted_xy:
+                sorted_xy[k] = np.sort(xy[k][:, :2], axis=0)
+        return np.sort(np.concatenate([sorted_xy[a], sorted_xy[b]]), axis=0, kind="stable")
+
+    def width(a: int, b: int) -> float:
+        if max_height_m:  # measured on the joined points' upper band, which only the joined points define
+            pts = np.concatenate([xy[a], xy[b]])
             upper = pts[pts[:, 2] > percentile(pts[:, 2], 98) - 0.5 * max_height_m]
             pts = upper if len(upper) >= 3 else pts
-        xy_m = pts[:, :2]
-        lo, hi = percentiles(xy_m, (2, 98))
+            lo, hi = percentiles(pts[:, :2], (2, 98))
+        else:
+            lo, hi = percentiles_of_sorted(joined_sorted(a, b), (2, 98))
         return float((hi - lo).max())
 
     touching = set()
@@ -720,7 +733,7 @@ def _rejoin(
             a, b = root(k), root(j)
             if a != b:
                 if (a, b) not in widths:
-                    widths[(a, b)] = width(np.concatenate([xy[a], xy[b]]))
+                    widths[(a, b)] = width(a, b)
                 w = widths[(a, b)]
                 if w <= max_extent_m and (best is None or w < best[0]):
                     best = (w, a, b)
@@ -728,6 +741,8 @@ def _rejoin(
             break
         _, a, b = best
         owner[b] = a
+        if a in sorted_xy or b in sorted_xy:
+            sorted_xy[a] = joined_sorted(a, b)
         xy[a] = np.concatenate([xy[a], xy[b]])
         widths = {pair: w for pair, w in widths.items() if a not in pair and b not in pair}
     lut = np.arange(n, dtype=comp.dtype)
