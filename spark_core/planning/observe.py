@@ -17,6 +17,7 @@ from .rules.lexicon import CONTAINERS, CONTENTS
 from .rules.mentions import clause_mentions, read_past, stray_nouns
 from .rules.parse import ParseError, is_pronoun, parse_instruction
 from .rules.reader import phrases as order_free_phrases
+from .rules.spelling import corrected
 
 PART_OF_ACTION = {"open": "handle", "close": "handle", "turn_on": "knob", "turn_off": "knob"}
 
@@ -61,14 +62,17 @@ def phrases_for(instruction: str) -> list[str]:
 def observe(instruction: str, resolver: Resolver, extra: Sequence[str] = ()) -> SceneView:
     keypoints: dict[str, Keypoint] = {}
     unresolved: dict[str, str] = {}
+    listing = getattr(resolver, "inventory", None)
+    inventory = tuple(listing()) if listing else ()
+    # slips of the keyboard ("the stvoe") read as the words they miss, as the rules planner reads them
+    instruction = corrected(instruction, inventory)
     for phrase in dict.fromkeys([*phrases_for(instruction), *extra]):
         try:
             keypoints[phrase] = resolver.resolve(phrase)
         except LabelNotFound:
             unresolved[phrase] = _why_unresolved(resolver, phrase)
     summary = summarise(keypoints) if keypoints else "perception found none of the objects mentioned"
-    listing = getattr(resolver, "inventory", None)
-    return SceneView(keypoints, summary, unresolved=unresolved, inventory=tuple(listing()) if listing else ())
+    return SceneView(keypoints, summary, unresolved=unresolved, inventory=inventory)
 
 
 def _why_unresolved(resolver: Resolver, phrase: str) -> str:

@@ -4,16 +4,19 @@ from __future__ import annotations
 
 import re
 import time
+from dataclasses import replace
 
 import numpy as np
 
 from ...grammar import PlanError, check_plan, to_yaml
 from ...perception.qualifiers import split_relation
 from ..protocol import PlanRequest, PlanResult
+from .kinds import modifier_for_thing, other_contents, other_variety
 from .lexicon import CONTAINERS, CONTENTS, REGIONS
 from .mentions import clause_mentions, foreign_modifiers, read_past, stray_nouns
 from .parse import Clause, ParseError, is_pronoun, parse_instruction
 from .reader import describe, readings, unused_mentions
+from .spelling import corrected
 
 POUR_ANGLE_RAD = 2.2
 HANDLE_REACH_M = 0.25  # a handle further than this from the thing it opens belongs to something else
@@ -43,6 +46,9 @@ class RulesPlanner:
     def plan(self, request: PlanRequest) -> PlanResult:
         t0 = time.perf_counter()
         understood: list[str] = []
+        task = request.instruction.strip()
+        # slips of the keyboard read as the words they miss (rules/spelling.py), as observe looked for them
+        request = replace(request, instruction=corrected(request.instruction, request.scene.inventory))
         try:
             clauses = parse_instruction(request.instruction)
             understood = [_describe(c) for c in clauses]
@@ -68,7 +74,7 @@ class RulesPlanner:
                 error="the composed plan did not type-check",
                 latency_s=time.perf_counter() - t0,
             )
-        data = {"task": request.instruction.strip(), "tree": {"type": "sequence", "children": children}}
+        data = {"task": task, "tree": {"type": "sequence", "children": children}}
         try:
             plan = check_plan(data)
         except PlanError as e:
@@ -165,6 +171,7 @@ class RulesPlanner:
                 f"could not find {word!r} in the scene: nothing there is called that (understood: {understood}; "
                 f"found in the scene: {seen})"
             )
+        _check_kinds(said, clauses, request.scene.inventory, understood, seen)
         out: list[dict] = []
         last_object: str | None = None
         last_container: str | None = None
@@ -301,6 +308,24 @@ class RulesPlanner:
         if not c.direction:
             raise CannotPlan(f"{c.text!r}: push which way? (forward, backward, left, right, or into something)")
         return c.direction, round(min(c.distance_m or 0.10, 0.5), 3)
+
+
+def _check_kinds(
+    said: list[str], clauses: list[Clause], inventory: tuple[str, ...], understood: str, seen: str
+) -> None:
+    """Every noun names a thing the scene holds, not a neighbour of it (rules/kinds.py): refused otherwise."""
+    tail = f"(understood: {understood}; found in the scene: {seen})"
+    for phrase in said:
+        if is_pronoun(phrase):
+            continue
+        word = other_variety(phrase, inventory) or modifier_for_thing(phrase, inventory)
+        if word:
+            raise CannotPlan(f"could not find {phrase!r} in the scene: nothing there is a {word!r} {tail}")
+    for c in clauses:
+        if c.action == "pour" and c.obj and not is_pronoun(c.obj) and (c.source or c.obj.split()[-1] in CONTENTS):
+            word = other_contents(c.obj, inventory)
+            if word:
+                raise CannotPlan(f"could not find {c.obj!r} in the scene: what is there to pour is not {word!r} {tail}")
 
 
 def _holder_of(source: str | None, dst: str, scene) -> str | None:
@@ -446,7 +471,7 @@ def _grounded(c: Clause) -> list[str]:
     """The phrases of a clause perception must have found: all of them, but for contents poured out of a
     container named with them ("the beads out of the mug": out of sight inside it)."""
     poured = c.action == "pour" and c.obj and c.source and c.obj.split()[-1] in CONTENTS
-    return [p for p in (c.obj, c.target, c.source) if p and not (poured and p == c.obj)]
+    return [p for p in (c.obj, c.target, c.source) if p and not is_pronoun(p) and not (poured and p == c.obj)]
 
 
 def _effect(steps: list[dict], scene) -> tuple:

@@ -14,16 +14,20 @@ typo), gives no reading, so a thing the scene may not hold is never read past he
 
 from __future__ import annotations
 
+import itertools
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from lemminflect import getAllLemmas
 
 from ...perception.colors import BASE_COLOURS
-from .lexicon import CONTAINERS, CONTENTS, DETERMINERS, FILLERS, STATE_ACTIONS, TABLE, VERBS
+from ...perception.variants import KIND_OF
+from .asides import aside_positions
+from .lexicon import CONTAINERS, CONTENTS, DETERMINERS, FILLERS, REGIONS, STATE_ACTIONS, TABLE, VERBS
 from .mentions import ABSTRACT, ATTRIBUTES, PLACE_WORDS, _closed_words
-from .parse import Clause
+from .parse import Clause, is_pronoun
 from .phrases import object_phrase, singular
+from .qualify import negations
 from .rewrite import CONTRACTIONS
 from .things import adverb_only, is_thing, is_verb
 
@@ -59,7 +63,7 @@ _BREAK = frozenset(
     + ["should", "must", "will", "would", "can", "could", "goes", "go", "belongs", "belong", "needs", "need", "not"]
     + ["up", "down", "out", "away", "back", "please", "too", "there", "here", "where", "whichever", "want", "like"]
     + ["have", "has", "get", "gets", "ends", "end", "sits", "sit", "stays", "stay", "meant", "supposed", "to", "of"]
-    + ["at", "for", "across", "along", "around", "until", "if", "when", "while", "as", "than"]
+    + ["at", "for", "across", "along", "around", "until", "till", "if", "when", "while", "as", "than"]
     # prepositions whose thing locates another in a way perception does not measure: a mention of its own
     + ["under", "underneath", "beneath", "below", "behind", "above", "against", "opposite", "via", "through"]
 )
@@ -68,6 +72,8 @@ _NEGATION = frozenset(
     ["not", "no", "never", "neither", "nor", "except", "other", "another", "alone", "leave", "instead", "rather"]
     + ["without", "but", "besides", "apart", "else", "n't", "isn't", "aren't", "don't", "doesn't"]
 )
+# Which way, said after the thing ("shove the cube forward ..."): no part of its name.
+_WAYS = frozenset(["forward", "forwards", "backward", "backwards", "ahead", "sideways"])
 # Words that join a mention to the robot, not to a thing in the scene: "further from the robot" qualifies.
 _ROBOT = frozenset(["robot", "you", "me", "us", "base", "arm", "gripper"])
 _COMPARED = {"further": "farthest", "farther": "farthest", "closer": "nearest", "nearer": "nearest"}
@@ -95,8 +101,19 @@ def _tokens(instruction: str) -> list[str]:
         text = re.sub(rf"\b{re.escape(short)}\b", long, text)
     text = re.sub(r"(\w)'s\b(?= (?:meant|supposed|going|got|to|in|on|at)\b)", r"\1 is", text)  # "block's meant"
     text = re.sub(r"\s*(?:-+>|=>|\u2192)\s*", " , to ", text)  # "ketchup -> basket": where it goes
+    # ruling one out, as "<kind> not <what rules it out>" (the rule parser's forms: "the other bowl, not the one on
+    # the stove" -> "the bowl not on the stove"); "the bowl that is not on ..." alike
+    text = re.sub(r"\b(?:that|which) (?:is|are) not\b", "not", negations(text))
     text = re.sub(r"[,;:!?.()\"\u2013\u2014]|\s-\s", " , ", text)
-    return text.split()
+    tokens = text.split()
+    asides = aside_positions(tokens, _closed)  # "..., no need to be gentle about it": says how, names nothing
+    out: list[str] = []
+    for n, t in enumerate(tokens):
+        if n not in asides:
+            out.append(t)
+        elif not out or out[-1] != ",":
+            out.append(",")  # an aside leaves a break where it was
+    return out
 
 
 def _verbs() -> list[tuple[list[str], str]]:
@@ -157,11 +174,19 @@ def _verb_spans(tokens: list[str]) -> set[int]:
 
 def mentions(instruction: str) -> list[Mention] | None:
     """Every noun mention with its role; None when a word that names a thing is left outside every mention."""
+    return _mentions(instruction)[0]
+
+
+def _mentions(instruction: str, later: bool = False) -> tuple[list[Mention] | None, str]:
+    """The mentions, or None and why there are none (`why_no_reading`). In a `later` step of several, "it" and
+    "them" are mentions too: the thing acted on, or where it goes ("stack the red cube on it"), said before."""
     tokens = _tokens(instruction)
-    if set(tokens) & _NEGATION or any(t.endswith("n't") for t in tokens):
-        return None
-    if set(tokens) & _QUESTION or any(a == b for a, b in zip(tokens, tokens[1:])):
-        return None  # a question about the scene ("how hot does ... get"), or words said twice over: no request
+    if set(tokens) & (_NEGATION - {"not"}) or any(t.endswith("n't") for t in tokens):
+        return None, "negation"
+    if set(tokens) & _QUESTION:
+        return None, "question"  # a question about the scene ("how hot does ... get"): no request
+    if any(a == b for a, b in zip(tokens, tokens[1:])):
+        return None, "repeated word"  # words said twice over
     verbs = _verb_spans(tokens)
     fillers = {w for f in FILLERS for w in f.split()}
     out: list[Mention] = []
@@ -178,8 +203,12 @@ def mentions(instruction: str) -> list[Mention] | None:
         while k < len(tokens) and tokens[k] in DETERMINERS:
             k += 1
         span: list[str] = []
-        while k < len(tokens) and k not in verbs and tokens[k] != "," and tokens[k] not in _BREAK:
-            if any(tokens[k : k + len(p.split())] == p.split() for p in _PREPS if p != "of"):
+        while k < len(tokens) and k not in verbs and tokens[k] != "," and (tokens[k] not in _BREAK or span):
+            if span and tokens[k] == "not":
+                ruled, k = _ruled_out(tokens, k, verbs)
+                span += ruled
+                break
+            if tokens[k] in _BREAK or any(tokens[k : k + len(p.split())] == p.split() for p in _PREPS if p != "of"):
                 break
             if span and tokens[k] in DETERMINERS:
                 break  # "love the pear": a word before a determiner is no part of the phrase after it
@@ -187,22 +216,25 @@ def mentions(instruction: str) -> list[Mention] | None:
                 break  # "the red block sitting in the bowl": where it sits, not its name
             span.append(tokens[k])
             k += 1
+        if relation == "between" and span and tokens[k : k + 1] == ["and"]:
+            k = _second_of_between(tokens, k + 1, verbs, span)  # "between the plate and the ramekin": both
         if span and span[-1] in ("one", "ones") and len(span) > 1:
-            head = next((m.phrase.split()[-1] for m in reversed(out) if m.role != "pronoun"), None)
+            head = next((_head(m.phrase) for m in reversed(out) if m.role != "pronoun"), None)
             if head is None:
-                return None  # "the red one" with no noun said before it
+                return None, "'one' with no noun before it"  # "the red one" with no noun said before it
             span = [*span[:-1], head]
-        while span and (span[-1] in fillers or span[-1] in ABSTRACT or adverb_only(span[-1])):
+        while span and (span[-1] in fillers or span[-1] in ABSTRACT or adverb_only(span[-1]) or span[-1] in _WAYS):
             span.pop()  # "the plate please"
         # a describing word names the thing when it ends the phrase ("the lemon", "the orange": fruit, not colours)
         heads = [w for n, w in enumerate(span) if not _closed(w) and (w not in ATTRIBUTES or _names(w, n, span))]
-        if tokens[j:k] and tokens[j] in ("it", "them") and role != "thing":
-            out.append(Mention("it", "pronoun", relation, i, j + 1))
+        if later and tokens[j : j + 1] in (["it"], ["them"]) and role in ("thing", "dest"):
+            out.append(Mention("it", role, relation, i, j + 1))
             i = j + 1
             continue
         if heads and (role != "source" or " ".join(span) not in TABLE):
             if set(span) & _ROBOT:
-                return None  # "between the robot and the plate": a place, not a thing; the rule parser's to read
+                # "between the robot and the plate": a place, not a thing; the rule parser's to read
+                return None, "robot in a mention"
             phrase = object_phrase(" ".join(span))
             out.append(Mention(phrase, role, relation, i, k))
             i = k
@@ -214,7 +246,61 @@ def mentions(instruction: str) -> list[Mention] | None:
             i = k  # words that name nothing ("further", "over there")
             continue
         i = max(i + 1, j)
-    return out if _covered(tokens, out) else None
+    left = _uncovered(tokens, out)
+    if left is not None:
+        return None, left
+    inside = {n for m in out for n in range(m.start, m.end)}
+    if any(t == "not" and n not in inside for n, t in enumerate(tokens)):
+        return None, "negation"  # a "not" that rules out no thing of a mention ("do not put ...")
+    return out, ""
+
+
+_RULED_BY = ("on top of", "next to", "on", "in", "inside", "beside", "near", "between")
+
+
+def _ruled_out(tokens: list[str], k: int, verbs: set[int]) -> tuple[list[str], int]:
+    """ "not", a relation if any, and the words of what it rules out ("not on the stove", "not yellow"), from
+    token k; with the index after them. Nothing when no word follows (the "not" then stands alone: refused)."""
+    out, n = ["not"], k + 1
+    for p in _RULED_BY:
+        if tokens[n : n + len(p.split())] == p.split():
+            out += p.split()
+            n += len(p.split())
+            break
+    while n < len(tokens) and tokens[n] in DETERMINERS:
+        n += 1
+    start = n
+    while n < len(tokens) and n not in verbs and tokens[n] != "," and tokens[n] not in _BREAK:
+        if any(tokens[n : n + len(p.split())] == p.split() for p in _PREPS if p != "of"):
+            break
+        out.append(tokens[n])
+        n += 1
+    return (out, n) if n > start else ([], k)
+
+
+def _second_of_between(tokens: list[str], k: int, verbs: set[int], span: list[str]) -> int:
+    """The second thing of "between A and B", added to `span` as "A and B"; the index after it."""
+    while k < len(tokens) and tokens[k] in DETERMINERS:
+        k += 1
+    more: list[str] = []
+    while k < len(tokens) and k not in verbs and tokens[k] != "," and tokens[k] not in _BREAK:
+        if any(tokens[k : k + len(p.split())] == p.split() for p in _PREPS if p != "of"):
+            break
+        more.append(tokens[k])
+        k += 1
+    span += ["and", *more] if more else []
+    return k
+
+
+def _region(phrase: str) -> bool:
+    """A flat area things are pushed into ("zone", "patch", "target")."""
+    head = _head(phrase)
+    return head in REGIONS or "area" in KIND_OF.get(singular(head), frozenset())
+
+
+def _head(phrase: str) -> str:
+    """The head noun of a mention's phrase: its last word before what rules one out ("carton not orange juice")."""
+    return re.split(r"\s+not\s+", phrase)[0].split()[-1]
 
 
 def _names(word: str, n: int, span: list[str]) -> bool:
@@ -222,15 +308,19 @@ def _names(word: str, n: int, span: list[str]) -> bool:
     return n == len(span) - 1 and word not in BASE_COLOURS
 
 
-def _covered(tokens: list[str], found: list[Mention]) -> bool:
-    """Every word that names a thing is in some mention: outside them only words that name none, and no verb
-    the planner has no action for."""
+def _uncovered(tokens: list[str], found: list[Mention]) -> str | None:
+    """None when every word that names a thing is in some mention (outside them only words that name none, and no
+    verb the planner has no action for); else what the first word left over is."""
     inside = {n for m in found for n in range(m.start, m.end)}
     verbs = _verb_spans(tokens)
-    return all(
-        n in inside or n in verbs or (_closed(t) and not _unknown_verb(t)) or t in BASE_COLOURS
-        for n, t in enumerate(tokens)
-    )
+    for n, t in enumerate(tokens):
+        if n in inside or n in verbs or t in BASE_COLOURS:
+            continue
+        if not _closed(t):
+            return f"noun left over: {t}"
+        if _unknown_verb(t):
+            return f"unknown verb: {t}"
+    return None
 
 
 def _unknown_verb(word: str) -> bool:
@@ -250,35 +340,79 @@ def _qualified(phrase: str, tokens: list[str]) -> str:
 
 def readings(instruction: str) -> list[list[Clause]]:
     """Each one-step reading whose roles are complete: one thing, and a destination when the intent needs one."""
-    found = mentions(instruction)
+    return _readings(instruction)[0]
+
+
+def why_no_reading(instruction: str) -> str:
+    """Why the order-free reader offers no reading ("" when it offers one): the condition that stopped it."""
+    return _readings(instruction)[1]
+
+
+# Where one step ends and the next begins: a word that orders them.
+_STEPS = re.compile(
+    r"\s*[,;.]?\s*\b(?:and then|then|after that|afterwards|and after that|once done|once that is done|next)\b\s*,?\s*"
+    r"|\s*;\s*"
+)
+_MAX_COMBINATIONS = 8
+
+
+def _readings(instruction: str) -> tuple[list[list[Clause]], str]:
+    """Several steps ("X, then Y"): each read on its own, a later one's "it" the thing said before; the readings
+    of the whole are every combination of the steps' readings (the planner keeps the one plan that grounds)."""
+    steps = [p for p in _STEPS.split(instruction.lower().replace("that's", "that is")) if p.strip()]
+    if len(steps) < 2:
+        return _one_step(instruction)
+    each: list[list[list[Clause]]] = []
+    for n, step in enumerate(steps):
+        found, why = _one_step(step, later=n > 0)
+        if not found:
+            return [], f"step {n + 1}: {why}"
+        each.append(found)
+    combos = list(itertools.product(*each))
+    if len(combos) > _MAX_COMBINATIONS:
+        return [], "too many readings"
+    return [[replace(c, text=instruction) for r in combo for c in r] for combo in combos], ""
+
+
+def _one_step(instruction: str, later: bool = False) -> tuple[list[list[Clause]], str]:
+    found, why = _mentions(instruction, later)
     if not found:
-        return []
+        return [], why or "no mention"
     tokens = _tokens(instruction)
     actions, goal = intent(tokens)
     # an arrow says where it goes; a sentence of a thing and where it is, and nothing else, states the goal
     goal = goal or bool(re.search(r"-+>|=>|\u2192", instruction))
-    goal = goal or (not actions and sorted(m.role for m in found) == ["dest", "thing"])
+    roles = sorted(m.role for m in found)
+    # ... or of a thing and where it is and where it goes, in either order: the scene tells which is which
+    goal = goal or (not actions and roles in (["dest", "thing"], ["dest", "dest", "thing"]))
     things = [m for m in found if m.role == "thing"]
-    if len(things) != 1 or any(m.role == "tool" for m in found):
-        return []
+    if len(things) != 1:
+        return [], f"{len(things)} things acted on"
+    if any(m.role == "tool" for m in found):
+        return [], "a tool"
     thing = things[0]
     obj = _qualified(thing.phrase, tokens)
     if actions & {"open", "close", "turn_on", "turn_off"}:
         if len(actions) == 1 and len(found) == 1:
-            return [[Clause(next(iter(actions)), obj=obj, text=instruction)]]
-        return []
-    if not (actions <= {"put", "stack", "pick", "pour", "push"}) or not (actions or goal):
-        return []
+            return [[Clause(next(iter(actions)), obj=obj, text=instruction)]], ""
+        return [], "a fixture's action with more"
+    if not (actions <= {"put", "stack", "pick", "pour", "push"}):
+        return [], f"actions {sorted(actions)}"
+    if not (actions or goal):
+        return [], "no verb and no goal"
     dests = [m for m in found if m.role == "dest"]
     sources = [m for m in found if m.role == "source"]
     near = [m for m in found if m.role == "near"]
-    if thing.phrase.split()[-1] in CONTENTS or "pour" in actions:  # "the beads out of the mug and into the bowl"
+    if _head(thing.phrase) in CONTENTS or "pour" in actions:  # "the beads out of the mug and into the bowl"
         if len(dests) == 1 and len(sources) <= 1 and not near and actions <= {"pour", "put"}:
             source = sources[0].phrase if sources else obj
-            return [[Clause("pour", obj=obj, target=dests[0].phrase, source=source, text=instruction)]]
-        return []
+            return [[Clause("pour", obj=obj, target=dests[0].phrase, source=source, text=instruction)]], ""
+        return [], "contents without one destination"
     if "push" in actions:
-        return []
+        # pushed into a flat area ("shove the cube into the green patch"): the one place it goes
+        if len(dests) == 1 and not sources and not near and actions <= {"push", "put"} and _region(dests[0].phrase):
+            return [[Clause("push", obj=obj, target=dests[0].phrase, relation="in", text=instruction)]], ""
+        return [], "push"
     out: list[list[Clause]] = []
     for d in dests:
         where = [m for m in found if m is not d and m.role in ("dest", "source", "near")]
@@ -288,12 +422,14 @@ def readings(instruction: str) -> list[list[Clause]]:
             located = f"{located} {rel} {m.phrase}"
         if len(where) > 1:
             continue  # located by two things: the rule parser's to read
-        relation = d.relation or ("in" if d.phrase.split()[-1] in CONTAINERS else "on")
+        relation = d.relation or ("in" if _head(d.phrase) in CONTAINERS else "on")
         action = "stack" if "stack" in actions else "put"
         out.append([Clause(action, obj=located, target=d.phrase, relation=relation, text=instruction)])
     if not dests and not sources and not near and actions == {"pick"}:
         out.append([Clause("pick", obj=obj, text=instruction)])
-    return out
+    if not out:
+        return [], "no destination" if not dests else "located by two things"
+    return out, ""
 
 
 def phrases(instruction: str) -> list[str]:
@@ -302,17 +438,19 @@ def phrases(instruction: str) -> list[str]:
     for reading in readings(instruction):
         for c in reading:
             for p in (c.obj, c.target, c.source):
-                if p:
+                if p and not is_pronoun(p):
                     out.setdefault(p, None)
     return list(out)
 
 
 def describe(reading: list[Clause]) -> str:
-    c = reading[0]
-    parts = [c.action, f"thing={c.obj}"]
-    parts += [f"{c.relation or 'to'}={c.target}"] if c.target else []
-    parts += [f"from={c.source}"] if c.source else []
-    return " ".join(parts)
+    out = []
+    for c in reading:
+        parts = [c.action, f"thing={c.obj}"]
+        parts += [f"{c.relation or 'to'}={c.target}"] if c.target else []
+        parts += [f"from={c.source}"] if c.source else []
+        out.append(" ".join(parts))
+    return "; then ".join(out)
 
 
 def unused_mentions(instruction: str, clauses: list[Clause]) -> list[str]:
@@ -326,7 +464,9 @@ def unused_mentions(instruction: str, clauses: list[Clause]) -> list[str]:
     }
     out = []
     for m in found:
-        heads = [w for w in m.phrase.split() if not _closed(w)][-1:]  # "bowl right": the bowl, "right" says where
+        heads = [w for w in re.split(r"\s+not\s+", m.phrase)[0].split() if not _closed(w)][
+            -1:
+        ]  # "bowl right": the bowl, "right" says where
         if m.role in ("thing", "dest") and heads and not (heads[0] in said or singular(heads[0]) in said):
             out.append(m.phrase)
     return out
