@@ -31,6 +31,43 @@ def test_patch_is_centred_on_the_mask_even_at_the_image_edge():
     assert pc.patch(rgb, depth, np.zeros_like(mask)) is None
 
 
+def _patch_padding_the_whole_frame(rgb, depth_m, mask, window):
+    """The way patch() cut windows past the edge before it padded only the window: pad the whole frame."""
+    import cv2
+
+    r0, c0, win = window
+    H, W = mask.shape
+    pad = max(0, -r0, -c0, r0 + win - H, c0 + win - W)
+    if pad:
+        rgb = cv2.copyMakeBorder(rgb, pad, pad, pad, pad, cv2.BORDER_CONSTANT, value=0)
+        depth_m = cv2.copyMakeBorder(depth_m, pad, pad, pad, pad, cv2.BORDER_CONSTANT, value=0.0)
+        mask = cv2.copyMakeBorder(mask.astype(np.uint8), pad, pad, pad, pad, cv2.BORDER_CONSTANT, value=0)
+        r0, c0 = r0 + pad, c0 + pad
+    sl = (slice(r0, r0 + win), slice(c0, c0 + win))
+    return rgb[sl], depth_m[sl], mask[sl].astype(bool)
+
+
+@pytest.mark.parametrize(
+    "window", [(100, 200, 60), (-30, 610, 64), (450, -20, 50), (-10, -10, 700), (300, 500, 31), (-80, 5, 60)]
+)
+def test_a_window_past_the_edge_is_the_frame_padded_with_zeros(window):
+    rng = np.random.default_rng(sum(window) % 97)
+    rgb = rng.integers(0, 255, (480, 640, 3), dtype=np.uint8)
+    depth = rng.uniform(0.5, 2.0, (480, 640)).astype(np.float32)
+    mask = rng.random((480, 640)) < 0.3
+    want_rgb, want_d, want_m = _patch_padding_the_whole_frame(rgb, depth, mask, window)
+    r0, c0, win = window
+    np.testing.assert_array_equal(pc._window(rgb, r0, c0, win), want_rgb)
+    np.testing.assert_array_equal(pc._window(depth, r0, c0, win), want_d)
+    np.testing.assert_array_equal(pc._window(mask.astype(np.uint8), r0, c0, win).astype(bool), want_m)
+
+
+def test_a_window_wholly_outside_is_all_zeros():
+    img = np.ones((40, 50, 3), np.uint8)
+    assert pc._window(img, -100, 10, 30).shape == (30, 30, 3) and not pc._window(img, -100, 10, 30).any()
+    assert not pc._window(img[..., 0], 10, 80, 20).any()
+
+
 def _synthetic(n_crops: int = 3, with_items: bool = True) -> dict[str, np.ndarray]:
     """Crops with one rectangle per GROUP item and a bowl (when with_items), and a 5-pixel speck."""
     rng = np.random.default_rng(0)

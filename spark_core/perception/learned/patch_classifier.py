@@ -77,25 +77,31 @@ def patch(
             return None
         window = box[:3]
     r0, c0, win = window
-    H, W = mask.shape
-    pad = max(0, -r0, -c0, r0 + win - H, c0 + win - W)
-    if pad:  # a window past the image edge: pad (black, no mask, far depth) so the object stays centred
-        rgb = cv2.copyMakeBorder(rgb, pad, pad, pad, pad, cv2.BORDER_CONSTANT, value=0)
-        depth_m = cv2.copyMakeBorder(depth_m, pad, pad, pad, pad, cv2.BORDER_CONSTANT, value=0.0)
-        mask = cv2.copyMakeBorder(mask.astype(np.uint8), pad, pad, pad, pad, cv2.BORDER_CONSTANT, value=0)
-        r0, c0 = r0 + pad, c0 + pad
-    sl = (slice(r0, r0 + win), slice(c0, c0 + win))
-    m = mask[sl].astype(bool)
+    m = _window(mask.astype(np.uint8), r0, c0, win).astype(bool)
     if not m.any():
         return None
     size = (PATCH_PX, PATCH_PX)
-    img = cv2.resize(np.ascontiguousarray(rgb[sl]), size, interpolation=cv2.INTER_AREA).astype(np.float32) / 255.0
-    d = np.nan_to_num(depth_m[sl].astype(np.float32), nan=0.0, posinf=10.0)
+    img = cv2.resize(_window(rgb, r0, c0, win), size, interpolation=cv2.INTER_AREA).astype(np.float32) / 255.0
+    d = np.nan_to_num(_window(depth_m, r0, c0, win).astype(np.float32), nan=0.0, posinf=10.0)
     ref = float(np.median(d[m]))
     rel = np.clip((d - ref) / DEPTH_RELIEF_M, -2, 2)
     rel = cv2.resize(rel, size, interpolation=cv2.INTER_NEAREST)
     mk = cv2.resize(m.astype(np.float32), size, interpolation=cv2.INTER_AREA)
     return np.concatenate([img.transpose(2, 0, 1), mk[None], rel[None]]).astype(np.float32)
+
+
+def _window(image: np.ndarray, r0: int, c0: int, win: int) -> np.ndarray:
+    """The (win, win) window of `image` at row r0, column c0; where it reaches past the image, zeros (black, no
+    mask, far depth) so the object stays centred. Only the window is copied and padded, not the frame."""
+    H, W = image.shape[:2]
+    rr0, rr1, cc0, cc1 = max(r0, 0), min(r0 + win, H), max(c0, 0), min(c0 + win, W)
+    if rr1 <= rr0 or cc1 <= cc0:  # wholly outside
+        return np.zeros((win, win, *image.shape[2:]), image.dtype)
+    crop = np.ascontiguousarray(image[rr0:rr1, cc0:cc1])
+    top, bottom, left, right = rr0 - r0, r0 + win - rr1, cc0 - c0, c0 + win - cc1
+    if not (top or bottom or left or right):
+        return crop
+    return cv2.copyMakeBorder(crop, top, bottom, left, right, cv2.BORDER_CONSTANT, value=0)
 
 
 def _conv(c_in: int, c_out: int) -> nn.Sequential:
