@@ -23,7 +23,7 @@ from ...perception.colors import BASE_COLOURS
 from ...perception.qualifiers import QUALIFIERS, split_relation
 from ...perception.variants import GENERIC, KIND_OF, PACKAGING, PARTS, SPELLINGS
 from .lexicon import DETERMINERS
-from .mentions import ATTRIBUTES, PLACE_WORDS, _closed_words
+from .mentions import ABSTRACT, ATTRIBUTES, PLACE_WORDS, _closed_words
 from .phrases import singular
 
 # What a container holds, named without saying what it is: no claim about its kind.
@@ -64,6 +64,12 @@ def _noun(word: str) -> bool:
     return not pos or "NOUN" in pos
 
 
+def _known_noun(word: str) -> bool:
+    """A noun the lexicon knows ("grapefruit"), not a shorthand it lacks ("atop"): a name it lacks is
+    mentions.foreign_modifiers' to check."""
+    return "NOUN" in getAllLemmas(word) and word not in ABSTRACT
+
+
 def other_variety(phrase: str, inventory: tuple[str, ...]) -> str | None:
     """The noun of `phrase` that names a variety no thing of its kind in the scene is ("grapefruit"), or None."""
     words = _words(phrase)
@@ -76,7 +82,7 @@ def other_variety(phrase: str, inventory: tuple[str, ...]) -> str | None:
     held = {f for n in names for w in n for f in _forms(w)}
     skip = ATTRIBUTES | _closed_words()
     for w in words[:-1]:
-        if w in skip or len(w) < 3 or not _noun(w) or _forms(w) & held:
+        if w in skip or len(w) < 3 or not _known_noun(w) or _forms(w) & held:
             continue
         return w
     return None

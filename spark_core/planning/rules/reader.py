@@ -350,8 +350,8 @@ def why_no_reading(instruction: str) -> str:
 
 # Where one step ends and the next begins: a word that orders them.
 _STEPS = re.compile(
-    r"\s*[,;.]?\s*\b(?:and then|then|after that|afterwards|and after that|once done|once that is done|next)\b\s*,?\s*"
-    r"|\s*;\s*"
+    r"\s*[,;.]?\s*\b(?:and then|then|after that|afterwards|and after that|once done|once that is done"
+    r"|next(?! to))\b\s*,?\s*|\s*;\s*"
 )
 _MAX_COMBINATIONS = 8
 
@@ -365,8 +365,9 @@ def _readings(instruction: str) -> tuple[list[list[Clause]], str]:
     each: list[list[list[Clause]]] = []
     for n, step in enumerate(steps):
         found, why = _one_step(step, later=n > 0)
-        if not found:
-            return [], f"step {n + 1}: {why}"
+        if not found:  # no step of its own ("..., then leave it be"): the whole as one step, as before
+            whole, why_whole = _one_step(instruction)
+            return whole, why_whole and f"{why_whole} (as steps: step {n + 1}: {why})"
         each.append(found)
     combos = list(itertools.product(*each))
     if len(combos) > _MAX_COMBINATIONS:
