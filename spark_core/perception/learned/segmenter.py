@@ -741,8 +741,9 @@ def _rejoin(
             break
         _, a, b = best
         owner[b] = a
-        if a in sorted_xy or b in sorted_xy:
+        if not max_height_m:  # the joined root's columns, sorted; b is no root any more
             sorted_xy[a] = joined_sorted(a, b)
+            del sorted_xy[b]
         xy[a] = np.concatenate([xy[a], xy[b]])
         widths = {pair: w for pair, w in widths.items() if a not in pair and b not in pair}
     lut = np.arange(n, dtype=comp.dtype)
