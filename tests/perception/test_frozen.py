@@ -2,6 +2,8 @@
 keeps one graph per input shape (the per-pixel network's upsampling depends on it), leaves the network it was
 given as it was, and never freezes a network in training."""
 
+import copy
+
 import torch
 
 from spark_core.perception.learned import frozen
@@ -51,3 +53,27 @@ def test_a_network_in_training_runs_eagerly_and_is_not_frozen():
     out = frozen.frozen_forward(net, x)
     assert out.shape[0] == 2 and out.requires_grad  # eager, with autograd: a frozen graph would hold stale weights
     assert net not in frozen._GRAPHS
+
+
+def test_one_by_one_convolutions_run_as_onednn_pointwise_with_the_same_outputs():
+    # torch sends a 1x1 convolution on one thread and a batch of one to its slow reference kernel; the graph runs
+    # it through oneDNN instead (frozen.Pointwise), which must give what the convolution gives
+    net = _randomised(SegNet(widths=(8, 8, 8, 8, 8), full_res=8))
+    replaced = frozen._with_pointwise(copy.deepcopy(net))
+    if torch.backends.mkldnn.is_available():
+        assert isinstance(replaced.head, frozen.Pointwise) and isinstance(replaced.squeeze, frozen.Pointwise)
+    assert not any(m.kernel_size == (1, 1) for m in replaced.modules() if isinstance(m, torch.nn.Conv2d))
+    assert sum(isinstance(m, torch.nn.Conv2d) for m in replaced.modules()) == sum(
+        isinstance(m, torch.nn.Conv2d) and m.kernel_size != (1, 1) for m in net.modules()
+    )  # 3x3 convolutions untouched
+    threads = torch.get_num_threads()
+    torch.set_num_threads(1)  # the segmenter's setting, where torch picks the reference kernel
+    try:
+        x = torch.randn(1, 8, 24, 32).contiguous(memory_format=torch.channels_last)
+        with torch.no_grad():
+            got = frozen.Pointwise(net.head)(x)
+            want = torch.nn.functional.conv2d(x, net.head.weight, net.head.bias)
+    finally:
+        torch.set_num_threads(threads)
+    assert got.shape == want.shape and torch.allclose(got, want, atol=1e-5, rtol=1e-5)
+    assert isinstance(net.head, torch.nn.Conv2d)  # the network it was given is left as it was

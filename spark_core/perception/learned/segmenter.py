@@ -267,7 +267,6 @@ class LearnedSegmenter:
         region = np.isin(cat, patch_classifier.GROUP_INDEX)
         n, comp = cv2.connectedComponents((region & ~split).astype(np.uint8), connectivity=4)
         comp = _grow_into(comp, region)
-        mass = probs[..., patch_classifier.GROUP_INDEX].sum(-1)
         blobs, patches = [], []
         for k, box in enumerate(ndimage.find_objects(comp, max_label=n - 1), start=1):
             if box is None:
@@ -290,7 +289,9 @@ class LearnedSegmenter:
             if p_cls[patch_classifier.OTHER] > OTHER_DROP_P:
                 continue
             best = int(p_cls[: patch_classifier.OTHER].argmax())
-            score = float(np.sqrt(np.median(mass[m]) * p_cls[best]))
+            # the blob's summed group probability, on its own pixels only (a whole-frame sum cost ~3 ms per frame)
+            mass = probs[m][:, patch_classifier.GROUP_INDEX].sum(-1)
+            score = float(np.sqrt(np.median(mass) * p_cls[best]))
             if score < MIN_INSTANCE_SCORE:
                 continue
             colour = _colour_of(col[m])
