@@ -146,7 +146,7 @@ def test_mask_pixels_on_the_wall_behind_are_dropped():
 def test_an_instance_under_the_table_top_is_dropped():
     """The network's table pixels give the table top's height; an 'object' 30 cm under it is the floor behind."""
     from spark_core.perception.learned.categories import CATEGORY_INDEX, TABLE
-    from spark_core.perception.learned.segmenter import Instance, _above_table
+    from spark_core.perception.learned.segmenter import Instance, _above_table, _table_top_z
 
     depth = np.full((H, W), 0.8)  # table top 20 cm above the floor (camera 1 m above the floor)
     depth[10:40, 10:40] = 1.1  # seen through a gap: 10 cm under the floor level, 30 cm under the table
@@ -155,7 +155,10 @@ def test_an_instance_under_the_table_top_is_dropped():
     on[100:120, 100:120] = True
     under[10:40, 10:40] = True
     bowl = CATEGORY_INDEX["bowl"]
-    out = _above_table([Instance(bowl, on, 0.9, "red"), Instance(bowl, under, 0.9, "red")], cat, _frame(depth))
+    frame = _frame(depth)
+    out = _above_table(
+        [Instance(bowl, on, 0.9, "red"), Instance(bowl, under, 0.9, "red")], _table_top_z(cat, frame), frame
+    )
     assert [i.mask is on for i in out] == [True]
 
 

@@ -7,6 +7,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import torch
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from hypothesis.extra import numpy as hnp
 
 from spark_cli import main
 from spark_core.perception.learned import patch_classifier as pc
@@ -60,6 +63,24 @@ def test_a_window_past_the_edge_is_the_frame_padded_with_zeros(window):
     np.testing.assert_array_equal(pc._window(rgb, r0, c0, win), want_rgb)
     np.testing.assert_array_equal(pc._window(depth, r0, c0, win), want_d)
     np.testing.assert_array_equal(pc._window(mask.astype(np.uint8), r0, c0, win).astype(bool), want_m)
+
+
+@given(
+    hnp.arrays(np.bool_, st.tuples(st.integers(1, 40), st.integers(1, 50)), elements=st.booleans()),
+    st.sampled_from([np.bool_, np.uint8, np.int32, np.float32]),
+)
+@settings(max_examples=200, deadline=None)
+def test_square_box_is_the_box_of_the_nonzero_pixels(mask, dtype):
+    """square_box takes the bounding box from OpenCV: the same box as the min/max of np.nonzero, for any dtype."""
+    got = pc.square_box(mask.astype(dtype))
+    vs, us = np.nonzero(mask)
+    if not len(vs):
+        assert got is None
+        return
+    r0, r1, c0, c1 = vs.min(), vs.max() + 1, us.min(), us.max() + 1
+    side = int(max(r1 - r0, c1 - c0))
+    win = int(np.ceil(side * (1 + 2 * pc.MARGIN))) + 4
+    assert got == ((r0 + r1 - win) // 2, (c0 + c1 - win) // 2, win, side)
 
 
 def test_a_window_wholly_outside_is_all_zeros():

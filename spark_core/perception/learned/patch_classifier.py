@@ -23,7 +23,6 @@ import numpy as np
 import torch
 from torch import nn
 
-from ..pixels import mask_pixels
 from .categories import CATEGORIES, CATEGORY_INDEX
 from .frozen import frozen_forward
 
@@ -56,11 +55,12 @@ _LOCK = threading.Lock()
 def square_box(mask: np.ndarray, margin: float = MARGIN) -> tuple[int, int, int, int] | None:
     """(row0, col0, side) of a square window around the mask's bounding box with `margin` context, and the
     box's longer side (px); None for an empty mask. The window may reach past the image (padded when cut)."""
-    vs, us = mask_pixels(mask)
-    if not len(vs):
+    # OpenCV's bounding box of the nonzero pixels: the same box as their min/max indices, without listing them
+    c0, r0, w, h = cv2.boundingRect(_as_u8(mask))
+    if w == 0 or h == 0:
         return None
-    r0, r1, c0, c1 = vs.min(), vs.max() + 1, us.min(), us.max() + 1
-    side = int(max(r1 - r0, c1 - c0))
+    r1, c1 = r0 + h, c0 + w
+    side = int(max(h, w))
     win = int(np.ceil(side * (1 + 2 * margin))) + 4
     return int((r0 + r1 - win) // 2), int((c0 + c1 - win) // 2), win, side
 
@@ -77,7 +77,7 @@ def patch(
             return None
         window = box[:3]
     r0, c0, win = window
-    m = _window(mask.astype(np.uint8), r0, c0, win).astype(bool)
+    m = _window(_as_u8(mask), r0, c0, win).astype(bool)
     if not m.any():
         return None
     size = (PATCH_PX, PATCH_PX)
@@ -88,6 +88,11 @@ def patch(
     rel = cv2.resize(rel, size, interpolation=cv2.INTER_NEAREST)
     mk = cv2.resize(m.astype(np.float32), size, interpolation=cv2.INTER_AREA)
     return np.concatenate([img.transpose(2, 0, 1), mk[None], rel[None]]).astype(np.float32)
+
+
+def _as_u8(mask: np.ndarray) -> np.ndarray:
+    """A 2-D mask as 0/1 uint8 (a bool mask is viewed, not copied)."""
+    return np.ascontiguousarray(mask if mask.dtype == bool else mask != 0).view(np.uint8)
 
 
 def _window(image: np.ndarray, r0: int, c0: int, win: int) -> np.ndarray:

@@ -241,8 +241,9 @@ class LearnedSegmenter:
                 out.append(Instance(int(c), full, score, colour))
         if self.patch_weights is not None:
             out = self._second_look(out, frame)
-        out = _absorb_pieces(_grown(out, cat, frame), frame)
-        out = _above_table(_drop_fragments([_standing_part(i, frame) for i in out]), cat, frame)
+        top_z = _table_top_z(cat, frame)  # once: both clean-ups below measure the same table
+        out = _absorb_pieces(_grown(out, cat, frame, top_z), frame)
+        out = _above_table(_drop_fragments([_standing_part(i, frame) for i in out]), top_z, frame)
         out = _drawers_in_place(_drawers_apart(out, frame), frame)
         if len(self._cache) > 8:
             self._cache.clear()
@@ -800,11 +801,10 @@ def _standing_part(inst: Instance, frame: CameraFrame) -> Instance:
     return Instance(inst.category, mask, inst.score, inst.colour)
 
 
-def _above_table(instances: list[Instance], cat: np.ndarray, frame: CameraFrame) -> list[Instance]:
+def _above_table(instances: list[Instance], top: float | None, frame: CameraFrame) -> list[Instance]:
     """Objects stand on the table or above it: an instance whose median point lies BELOW_TABLE_M under the table
-    top the network sees in this frame is the wall or floor behind, mislabelled (a frame with no table in view,
-    e.g. a wrist close-up, keeps everything)."""
-    top = _table_top_z(cat, frame)
+    top the network sees in this frame (`top`, world z in m: `_table_top_z`) is the wall or floor behind,
+    mislabelled (a frame with no table in view, top None, e.g. a wrist close-up, keeps everything)."""
     if top is None:
         return instances
     keep = []
@@ -824,10 +824,11 @@ def _table_top_z(cat: np.ndarray, frame: CameraFrame) -> float | None:
     return median_height_m(full.astype(bool), frame)
 
 
-def _grown(instances: list[Instance], cat: np.ndarray, frame: CameraFrame) -> list[Instance]:
+def _grown(instances: list[Instance], cat: np.ndarray, frame: CameraFrame, table_top_z: float | None) -> list[Instance]:
     """Whole objects' masks grown at camera resolution into what the network called background or table where
-    the depth continues their surface above the table top (refine.py: thin necks lost at half resolution)."""
-    top = _table_top_z(cat, frame) if GROW_MASKS else None
+    the depth continues their surface above the table top (`table_top_z`, world m: `_table_top_z`; refine.py:
+    thin necks lost at half resolution)."""
+    top = table_top_z if GROW_MASKS else None
     if top is None:
         return instances
     H, W = frame.shape
