@@ -48,6 +48,9 @@ class PerceptionResolver:
         self._captured_at: float | None = None
         self.refreshes = 0
         self.groundings: list[dict] = []  # every resolution: label, prompt candidates, choice, keypoint
+        # called with each grounding record as it is made, while its frames and detections are still the
+        # resolver's latest (a trace sink stores it and its images while the trial runs)
+        self.grounding_listeners: list[Callable[[dict], None]] = []
         self.detections: dict[str, dict[str, Detection]] = {}  # camera -> label -> latest chosen detection
         self._seen_at: dict[str, np.ndarray] = {}  # label -> where it was last resolved (world, m)
 
@@ -110,13 +113,18 @@ class PerceptionResolver:
         if not evidence:
             tried = ", ".join([label, *variants])
             record["keypoint"] = None
-            self.groundings.append(record)
+            self._add_grounding(record)
             raise LabelNotFound(label, f"no single confident detection in {', '.join(self.cameras)} (prompts: {tried})")
         kp = keypoint_from_points(label, evidence, self.source)
         self._seen_at[label] = kp.position_m
         record["keypoint"] = kp.to_dict()
-        self.groundings.append(record)
+        self._add_grounding(record)
         return kp
+
+    def _add_grounding(self, record: dict) -> None:
+        self.groundings.append(record)
+        for listener in list(self.grounding_listeners):
+            listener(record)
 
 
 def fused_evidence(evidence: list[PointEvidence]) -> list[PointEvidence]:

@@ -1,11 +1,11 @@
 """One small annotated detection image per grounding and camera (first detection, re-detections on recovery,
 each adaptive-prompt resolution), so the console shows what perception saw at the time of each grounding.
 
-The resolver keeps only its latest frames and its latest detection per label, so the sink looks at it after
-every event (`watch`): a grounding made since the last look is kept with the frames and detections it used,
-if the resolver still holds them (the frames' simulated time equals the grounding's). Frames from the
-simulator draw their RGB lazily from a copy of the state they were captured in, so the images are drawn and
-encoded once, when the trial ends (`save`), not while it runs.
+The resolver keeps only its latest frames and its latest detection per label, so the sink looks at it as each
+grounding is made (the resolver's `grounding_listeners`) and after every event (`watch`): a grounding made since
+the last look is kept with the frames and detections it used, if the resolver still holds them (the frames'
+simulated time equals the grounding's). `save` draws and writes the images kept since the last save, so a live
+trial's images are on disk (and in its record) while it runs; each image is written once.
 """
 
 from __future__ import annotations
@@ -27,6 +27,7 @@ class GroundingImages:
     def __init__(self) -> None:
         self._seen = 0
         self._kept: list[tuple[int, dict, dict[str, tuple[Any, Any]]]] = []  # (index, record, camera -> (frame, det))
+        self._saved: list[dict] = []  # the artifact entries written so far, in order
         self._lock = threading.Lock()  # parallel branches publish events from their own threads
 
     def watch(self, resolver: Any) -> None:
@@ -51,17 +52,24 @@ class GroundingImages:
                     self._kept.append((i, g, per_cam))
             self._seen = len(groundings)
 
+    @property
+    def entries(self) -> list[dict]:
+        """Every artifact entry written so far (by all `save` calls), in grounding order."""
+        with self._lock:
+            return list(self._saved)
+
     def save(self, directory: Path) -> list[dict]:
-        """Draw, annotate and write the kept images; their artifact entries (kind `grounding`, with the grounding's
-        index in the trial's groundings, its label, simulated time and camera)."""
+        """Draw, annotate and write the images kept since the last save; their artifact entries (kind
+        `grounding`, with the grounding's index in the trial's groundings, its label, simulated time and
+        camera). Each kept grounding is written once: a second save without new groundings returns []."""
         import cv2
 
         from ..perception import Keypoint
         from ..perception.annotate import annotate
 
-        out = []
+        out: list[dict] = []
         with self._lock:
-            kept = list(self._kept)
+            kept, self._kept = list(self._kept), []
         for i, g, per_cam in kept:
             kp = g.get("keypoint")
             keypoints = (
@@ -94,6 +102,9 @@ class GroundingImages:
                         "camera": cam,
                     }
                 )
+        with self._lock:
+            self._saved += out
+            self._saved.sort(key=lambda a: a["grounding"])
         return out
 
 

@@ -1,12 +1,14 @@
 """StoreSink: a trial's record in the trace store, written as the trial runs.
 
 The row is created (or taken over from the console's queue) when the trial starts, every event is written as
-it arrives (a crash keeps what happened so far), and the outcome, plan, per-node records, groundings,
-trajectory, scene states and artifact files are written when it ends.
+it arrives (a crash keeps what happened so far), so is every grounding as it is made (with its annotated
+images, when kept: a live trial's camera panel shows them), and the outcome, plan, per-node records,
+trajectory, scene states and the other artifact files are written when it ends.
 """
 
 from __future__ import annotations
 
+import threading
 from pathlib import Path
 from typing import Any
 
@@ -34,6 +36,8 @@ class StoreSink(BaseSink):
         self._attempt = 1  # > 1: a retry after an attempt that died mid-trial (its events were dropped)
         self._grounding_images = GroundingImages() if grounding_images else None
         self._resolver: Any = None
+        self._groundings_stored = 0  # the resolver's groundings[:n] are in the store
+        self._grounding_lock = threading.Lock()  # parallel branches resolve labels from their own threads
 
     @staticmethod
     def _config_fields(config: Any) -> dict[str, Any]:
@@ -57,6 +61,9 @@ class StoreSink(BaseSink):
         # The row may exist: queued by the console, or left "running" by an attempt whose worker died (a Ray
         # retry). Either way this attempt takes it over, so the trial is stored once with one attempt's events.
         self._attempt = self.store.begin_attempt(ctx.trial_id, **fields)
+        listeners = getattr(ctx.resolver, "grounding_listeners", None)
+        if isinstance(listeners, list):  # stored as each grounding is made, with the frames it used
+            listeners.append(lambda _record: self._watch_groundings())
 
     def on_plan(self, ctx: TrialContext, plan: Plan | None, planning: dict[str, Any]) -> None:
         self._watch_groundings()
@@ -71,9 +78,21 @@ class StoreSink(BaseSink):
         if self._trial_id is not None:
             self.store.add_events(self._trial_id, [event.to_dict()])
 
-    def _watch_groundings(self) -> None:
-        if self._grounding_images is not None and self._resolver is not None:
-            self._grounding_images.watch(self._resolver)
+    def _watch_groundings(self, resolver: Any = None) -> None:
+        """Store the groundings made since the last look, and (when kept) write their images and the record's
+        list of them: each exactly once, so the end of the trial adds only what is new."""
+        resolver = resolver if resolver is not None else self._resolver
+        if resolver is None or self._trial_id is None:
+            return
+        with self._grounding_lock:
+            groundings = list(getattr(resolver, "groundings", None) or [])
+            new, self._groundings_stored = groundings[self._groundings_stored :], len(groundings)
+            if new:
+                self.store.add_groundings(self._trial_id, new)
+            if self._grounding_images is not None:
+                self._grounding_images.watch(resolver)
+                if self._grounding_images.save(self.artifacts_dir / self._trial_id):
+                    self.store.update_trial(self._trial_id, artifacts=_jsonable(self._grounding_images.entries))
 
     def on_finish(self, ctx: TrialContext | None, outcome: TrialOutcome) -> None:
         result = outcome.result
@@ -124,17 +143,21 @@ class StoreSink(BaseSink):
             )
         else:
             self.store.update_trial(outcome.trial_id, **fields)
-        if ctx is not None:
+        if ctx is not None and self._trial_id is None:  # never started: nothing was stored as it ran
             self.store.add_groundings(outcome.trial_id, getattr(ctx.resolver, "groundings", []))
 
     def _artifacts(self, ctx: TrialContext) -> list[dict]:
         from .artifacts import capture_entries, detection_images, planner_image
 
         directory = self.artifacts_dir / ctx.trial_id
+        if self._trial_id is not None:
+            self._watch_groundings(ctx.resolver)  # the last ones (and their images), stored once
+        elif self._grounding_images is not None:  # never started: its groundings are stored after the row
+            self._grounding_images.watch(ctx.resolver)
+            self._grounding_images.save(directory)
         out = detection_images(ctx.resolver, directory)
         if self._grounding_images is not None:
-            self._grounding_images.watch(ctx.resolver)
-            out += self._grounding_images.save(directory)
+            out += self._grounding_images.entries
         if ctx.extra.get("planner_image") is not None:
             rgb, camera = ctx.extra["planner_image"]
             out.append(planner_image(rgb, camera, directory))

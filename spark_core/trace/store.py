@@ -136,6 +136,7 @@ class TraceStore:
                         setattr(row, k, v)
                     if attempt > 1:  # said in the record: this trial's worker died once and it ran again
                         row.protocol = {**(row.protocol or {}), "attempt": attempt}
+                        row.artifacts = []  # the dead attempt's images (stored as it ran) are not this one's
                     return attempt
             try:
                 with self.Session.begin() as s:

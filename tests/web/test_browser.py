@@ -667,3 +667,29 @@ def test_api_docs_work_offline(server, page):
     page.wait_for_selector(".swagger-ui .info .title", timeout=30_000)
     assert "SPARK console" in page.locator(".swagger-ui .info .title").inner_text()
     assert all(u.startswith(server) for u in requested), [u for u in requested if not u.startswith(server)]
+
+
+def test_a_live_trials_camera_panel_shows_each_grounding_as_it_is_made(server, page):
+    """While the trial runs (paused after its first node), the camera panel already shows that node's grounding:
+    its detection image and prompt candidates, stored as the grounding was made, not only at the end."""
+    page.goto(server + "/")
+    page.click("button[data-task=stack_two]")
+    page.select_option("#new-trial select[name=segmenter]", "sim")
+    page.check("#new-trial input[name=start_paused]")
+    page.click("#new-trial button[type=submit]")
+    page.wait_for_url("**/#/trial/stack_two-*")
+    page.wait_for_selector(".node.paused[data-path='tree.children[0]']", timeout=120_000)
+    page.click("#step")
+    page.wait_for_selector(".node.paused[data-path='tree.children[1]']", timeout=120_000)
+    assert page.locator("#status").inner_text() == "paused"
+    page.wait_for_function(
+        "() => { const is = [...document.querySelectorAll('#grounding-now img.detection-image')];"
+        " return is.length > 0 && is.every(i => i.complete && i.naturalWidth > 0); }",
+        timeout=15_000,
+    )
+    imgs = page.eval_on_selector_all("#grounding-now img.detection-image", "is => is.map(i => i.src)")
+    assert all(s.rsplit("/", 1)[1].startswith("grounding-") for s in imgs)
+    assert page.locator("#grounding-now table.candidates tbody tr").count() >= 1
+    assert page.locator("#status").inner_text() == "paused"  # still live
+    page.click("#abort")
+    page.wait_for_selector("#verdict[data-verdict=aborted]", timeout=120_000)

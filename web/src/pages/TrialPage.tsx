@@ -16,6 +16,7 @@ import { ViserView } from "../components/ViserView";
 import { activeWall, anchors, endOf, leaves, treeStateAt, wallToSim, withoutPauses } from "../lib/trialTime";
 
 const SPEEDS = [0.25, 0.5, 1, 2, 4];
+const LIVE_POLL_MS = 1000;
 
 export function TrialPage({ id }: { id: string }) {
   const cat = useCatalog();
@@ -34,10 +35,21 @@ export function TrialPage({ id }: { id: string }) {
   // than it (a start_paused trial's "paused" event can overtake the fetch its first event started) and must not
   // overwrite it.
   const controlEpoch = useRef(0);
+  // Every read of the record is numbered: an answer overtaken by a later read's (a live poll answered after the
+  // end's refresh) is not shown over it.
+  const reads = useRef({ sent: 0, shown: 0 });
+  const fetchTrial = () => {
+    const n = ++reads.current.sent;
+    return api<Trial>(`/api/trials/${encodeURIComponent(id)}`).then((t) => {
+      const fresh = n > reads.current.shown;
+      if (fresh) { reads.current.shown = n; setTrial(t); }
+      return { t, fresh };
+    });
+  };
   const refresh = () => {
     const epoch = controlEpoch.current;
-    return api<Trial>(`/api/trials/${encodeURIComponent(id)}`).then((t) => {
-    setTrial(t);
+    return fetchTrial().then(({ t, fresh }) => {
+    if (!fresh) return t;
     if (t.control_state && controlEpoch.current === epoch) setControl(t.control_state);
     if (t.breakpoints) setBreakpoints(new Set(t.breakpoints));
     return t;
@@ -74,6 +86,14 @@ export function TrialPage({ id }: { id: string }) {
   );
   const finished = trial?.status === "done" || trial?.status === "interrupted";
   const live = !!trial && !finished && !closed;
+
+  // live: the record is re-read every second for what the worker stores as it happens (each grounding and its
+  // detection images: the camera panel shows them while the trial runs, not only once it has ended)
+  useEffect(() => {
+    if (!live) return;
+    const timer = window.setInterval(() => { fetchTrial().catch(() => {}); }, LIVE_POLL_MS);
+    return () => window.clearInterval(timer);
+  }, [live, id]); // eslint-disable-line react-hooks/exhaustive-deps
   const end = trial ? endOf(trial, events) : 1;
   const t = cursor ?? end;
   const anc = useMemo(() => (trial ? anchors(trial, events, end) : [{ wall: 0, sim: 0 }]), [trial, events, end]);
