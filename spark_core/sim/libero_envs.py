@@ -192,8 +192,19 @@ def make_env(task: LiberoTask, init_index: int, reuse: bool = True):
             _spare[task.name] = env
 
         env.env._spark_release = release
-    env.reset()
-    env.set_init_state(states[init_index])
+    # An init state holds qpos and qvel only. Fixtures (the stove, the cabinet, ...) have no joints: every reset
+    # writes their place into the model (body_pos, body_quat) from LIBERO's samplers, which draw from numpy's
+    # global generator. Unseeded, that generator differed per process (and per trial in a worker), so the same
+    # task and seed put the stove up to ~1.5 cm and ~1 degree elsewhere, the bowl on it settled differently and
+    # the trial's simulated time changed (8.9-9.1 s; once past the 11 s limit). Seeded with the init index (as
+    # LIBERO's own evaluation does, `env.seed` then reset), the caller's generator left as it was.
+    rng_state = np.random.get_state()
+    try:
+        env.seed(init_index)
+        env.reset()
+        env.set_init_state(states[init_index])
+    finally:
+        np.random.set_state(rng_state)
     return env
 
 
