@@ -1,12 +1,14 @@
 """The console in a real browser: Playwright driving Debian's headless chromium against a real server (uvicorn,
 trial workers, the 3D view), through the built front end (web/dist, from `make install`)."""
 
+import contextlib
 import io
 import json
 import shutil
 import socket
 import threading
 import time
+import urllib.error
 import urllib.request
 import zipfile
 from pathlib import Path
@@ -693,3 +695,43 @@ def test_a_live_trials_camera_panel_shows_each_grounding_as_it_is_made(server, p
     assert page.locator("#status").inner_text() == "paused"  # still live
     page.click("#abort")
     page.wait_for_selector("#verdict[data-verdict=aborted]", timeout=120_000)
+
+
+def test_an_instruction_typed_for_one_task_is_never_sent_with_another(server, page):
+    """Choosing another task empties the instruction field (its placeholder: the new task's own instruction), so
+    Run sends the new task with its own instruction; the typed text is offered for the new task, and comes back
+    when its own task is chosen again."""
+    field = "#new-trial input[name=instruction]"
+    catalog = json.loads(urllib.request.urlopen(f"{server}/api/catalog").read())
+    own = {t["name"]: t["instruction"] for t in catalog["tasks"]}
+    page.goto(server + "/")
+    page.click("button[data-task=stack_two]")
+    page.select_option("#new-trial select[name=planner]", "rules")
+    page.fill(field, "put the red block on the blue block, gently")
+    page.click("button[data-task=lift_block]")
+    assert page.input_value(field) == ""
+    assert page.get_attribute(field, "placeholder") == own["lift_block"]
+    left = page.locator("#instruction-left")
+    assert left.get_attribute("data-task") == "stack_two" and "gently" in left.inner_text()
+    page.click("button[data-task=stack_two]")  # its own text comes back
+    assert page.input_value(field) == "put the red block on the blue block, gently"
+    assert page.locator("#instruction-left").count() == 0
+    page.click("button[data-task=lift_block]")
+    page.click("#instruction-dismiss")
+    assert page.locator("#instruction-left").count() == 0 and page.input_value(field) == ""
+    page.click("#new-trial button[type=submit]")  # the new task, with its own instruction
+    page.wait_for_url("**/#/trial/lift_block-*")
+    tid = page.url.split("/trial/")[1]
+    trial = json.loads(urllib.request.urlopen(f"{server}/api/trials/{tid}").read())
+    assert trial["task"] == "lift_block" and trial["instruction"] == own["lift_block"]
+    with contextlib.suppress(urllib.error.HTTPError):  # 409: it has already ended
+        _post(server, f"/api/trials/{tid}/control", {"action": "abort"})
+    # the offer: one click uses the text for the task now chosen
+    page.goto(server + "/")
+    page.click("button[data-task=stack_two]")
+    page.select_option("#new-trial select[name=planner]", "rules")
+    page.fill(field, "lift the red block")
+    page.click("button[data-task=block_on_plate]")
+    assert page.input_value(field) == ""
+    page.click("#instruction-use-mine")
+    assert page.input_value(field) == "lift the red block" and page.locator("#instruction-left").count() == 0

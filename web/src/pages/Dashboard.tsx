@@ -1,6 +1,6 @@
 // Start trials and batches: tasks grouped by suite with search, the chosen task's card, planner fields (model,
 // one of the operator's endpoints), and an optional plan of your own, validated as you type.
-import { useEffect, useState } from "react";
+import { useEffect, useRef, useState } from "react";
 import { api, post, wsUrl } from "../api/client";
 import type { BatchCreate, TrialCreate } from "../api/client";
 import { useCatalog } from "../api/catalog";
@@ -96,6 +96,21 @@ function TrialForm({ cat, task }: { cat: Catalog; task: Task }) {
   const [error, setError] = useState("");
   const [busy, setBusy] = useState(false);
   const readsInstruction = planner !== "reference" || !!plan.trim();
+  // An instruction typed for a task stays with that task: choosing another task empties the field (blank: the
+  // chosen task's own instruction, shown as the placeholder), never sending the old text with the new task; the
+  // text left behind is offered for the new task (one click) and comes back when its task is chosen again.
+  const [drafts, setDrafts] = useState<Record<string, string>>({});
+  const [leftBehind, setLeftBehind] = useState<string | null>(null); // the task whose text the last switch left
+  const shownTask = useRef(task.name);
+  useEffect(() => {
+    if (shownTask.current === task.name) return;
+    const old = shownTask.current;
+    shownTask.current = task.name;
+    setLeftBehind(drafts[old]?.trim() ? old : null);
+  }, [task.name]); // eslint-disable-line react-hooks/exhaustive-deps
+  const instruction = drafts[task.name] ?? "";
+  const setInstruction = (text: string) => setDrafts((d) => ({ ...d, [task.name]: text }));
+  const offer = leftBehind && leftBehind !== task.name && !instruction.trim() ? drafts[leftBehind] ?? "" : "";
   const submit = async (e: React.FormEvent<HTMLFormElement>) => {
     e.preventDefault();
     const f = new FormData(e.currentTarget);
@@ -124,8 +139,15 @@ function TrialForm({ cat, task }: { cat: Catalog; task: Task }) {
         {/* the reference planner runs the task's hand-written plan and reads no instruction (the server refuses one
             it would ignore): the field is off, and says so, unless a planner that reads it or a plan is chosen */}
         <label>Instruction <input name="instruction" placeholder={task.instruction} className="wide" maxLength={2000}
-          disabled={!readsInstruction} title={readsInstruction ? undefined : REFERENCE_NOTE} /></label>
-        {!readsInstruction && <span className="muted" id="instruction-note"> {REFERENCE_NOTE}</span>}<br />
+          value={instruction} onChange={(e) => setInstruction(e.target.value)}
+          disabled={!readsInstruction} title={readsInstruction ? "blank: the task's own instruction" : REFERENCE_NOTE} /></label>
+        {!readsInstruction && <span className="muted" id="instruction-note"> {REFERENCE_NOTE}</span>}
+        {offer && (
+          <span id="instruction-left" data-task={leftBehind ?? ""}> your instruction for {leftBehind} stays with it (“{offer}”); this one runs its own.{" "}
+            <button type="button" id="instruction-use-mine" onClick={() => { setInstruction(offer); setLeftBehind(null); }}>use my text for {task.name}</button>{" "}
+            <button type="button" id="instruction-dismiss" onClick={() => setLeftBehind(null)}>dismiss</button>
+          </span>
+        )}<br />
         <PlannerFields cat={cat} planner={planner} setPlanner={setPlanner} />
         <label>Segmenter <select name="segmenter">{cat.segmenters.map((s) => <option key={s.name} value={s.name} title={s.description}>{segLabel(s)}</option>)}</select></label>
         <label>Robot <select name="embodiment"><option value="">task default</option>
