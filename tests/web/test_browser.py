@@ -735,3 +735,26 @@ def test_an_instruction_typed_for_one_task_is_never_sent_with_another(server, pa
     assert page.input_value(field) == ""
     page.click("#instruction-use-mine")
     assert page.input_value(field) == "lift the red block" and page.locator("#instruction-left").count() == 0
+
+
+def test_the_headers_clock_ticks_while_the_trial_runs_and_stops_when_it_ends(server, page):
+    """The wall clock in the trial's header moves on its own while a node runs (no event in between) and stands
+    still once the trial has ended, at the record's wall time."""
+    plan = "task: wait\ntree:\n  type: sequence\n  children:\n    - type: wait\n      params: {duration: 4.0}\n"
+    body = {"task": "lift_block", "segmenter": "privileged-keypoints", "plan": plan, "pacing": 1.0}
+    tid = _post(server, "/api/trials", body)["id"]
+    page.goto(f"{server}/#/trial/{tid}")
+    page.wait_for_selector(".node.running[data-path='tree.children[0]']", timeout=120_000)
+    rows = page.locator("#event-table tbody tr").count()
+    a = float(page.locator("#wall-active").inner_text())
+    time.sleep(1.0)
+    b = float(page.locator("#wall-active").inner_text())
+    assert page.locator("#event-table tbody tr").count() == rows, "an event arrived: the test needs a quiet node"
+    assert 0.5 < b - a < 1.6, (a, b)
+    page.wait_for_selector("#verdict[data-verdict]", timeout=120_000)
+    record = _wait_done(server, tid)
+    page.wait_for_function("() => document.querySelector('#status').dataset.status === 'done'")
+    c = float(page.locator("#wall-active").inner_text())
+    time.sleep(0.5)
+    assert float(page.locator("#wall-active").inner_text()) == c
+    assert abs(c - record["wall_time_s"]) < 0.02

@@ -17,6 +17,7 @@ import { activeWall, anchors, endOf, leaves, treeStateAt, wallToSim, withoutPaus
 
 const SPEEDS = [0.25, 0.5, 1, 2, 4];
 const LIVE_POLL_MS = 1000;
+const CLOCK_TICK_MS = 100;
 
 export function TrialPage({ id }: { id: string }) {
   const cat = useCatalog();
@@ -38,6 +39,10 @@ export function TrialPage({ id }: { id: string }) {
   // Every read of the record is numbered: an answer overtaken by a later read's (a live poll answered after the
   // end's refresh) is not shown over it.
   const reads = useRef({ sent: 0, shown: 0 });
+  // The header's clock while the trial runs: the newest event's time plus the time since it was published, on
+  // this browser's clock less the smallest delay seen between publication and arrival (any clock offset).
+  const lag = useRef(Infinity);
+  const [now, setNow] = useState(() => Date.now());
   const fetchTrial = () => {
     const n = ++reads.current.sent;
     return api<Trial>(`/api/trials/${encodeURIComponent(id)}`).then((t) => {
@@ -58,6 +63,7 @@ export function TrialPage({ id }: { id: string }) {
 
   useEffect(() => {
     setTrial(null); setEvents([]); setClosed(false); setCursor(null); setPlaying(false); setLoadError("");
+    lag.current = Infinity;
     refresh().catch((e) => setLoadError(e.message));
     const ws = new WebSocket(wsUrl(`/api/trials/${encodeURIComponent(id)}/events`));
     (window as unknown as { sparkSockets?: WebSocket[] }).sparkSockets?.push(ws); // tests count open sockets
@@ -69,6 +75,7 @@ export function TrialPage({ id }: { id: string }) {
         refresh().catch(() => {});
         return;
       }
+      if (ev.wall_s) lag.current = Math.min(lag.current, Date.now() / 1000 - ev.wall_s);
       setEvents((es) => [...es, ev]);
       if (ev.kind === "paused") { controlEpoch.current++; setControl("paused"); }
       else if (ev.kind === "started") { controlEpoch.current++; setControl((c) => (c === "paused" ? "running" : c || "running")); }
@@ -92,7 +99,8 @@ export function TrialPage({ id }: { id: string }) {
   useEffect(() => {
     if (!live) return;
     const timer = window.setInterval(() => { fetchTrial().catch(() => {}); }, LIVE_POLL_MS);
-    return () => window.clearInterval(timer);
+    const tick = window.setInterval(() => setNow(Date.now()), CLOCK_TICK_MS); // stops when the trial ends
+    return () => { window.clearInterval(timer); window.clearInterval(tick); };
   }, [live, id]); // eslint-disable-line react-hooks/exhaustive-deps
   const end = trial ? endOf(trial, events) : 1;
   const t = cursor ?? end;
@@ -165,7 +173,7 @@ export function TrialPage({ id }: { id: string }) {
 
   return (
     <div className="workspace">
-      <Header trial={trial} cat={cat} status={shownStatus} activeS={activeWall(evsRaw, finished ? rawTrial!.wall_time_s : null)} />
+      <Header trial={trial} cat={cat} status={shownStatus} activeS={activeWall(evsRaw, finished ? rawTrial!.wall_time_s : live ? liveNow(evsRaw, now, lag.current) : null)} />
       <div className="controls" id="controls">
         <button id="pause" disabled={!live || paused} onClick={() => act("pause")}>Pause</button>
         <button id="step" disabled={!paused} onClick={() => act("step")}>Step</button>
@@ -212,6 +220,15 @@ export function TrialPage({ id }: { id: string }) {
       </PanelGroup>
     </div>
   );
+}
+
+/** A live trial's time now (its events' clock: s since it started): the newest event's time plus the time since
+ * it was published; the newest event's own time when it carries no publication time. */
+function liveNow(events: TrialEvent[], nowMs: number, lagS: number): number | null {
+  const last = events.length ? events[events.length - 1] : null;
+  if (!last) return null;
+  if (!last.wall_s) return last.t;
+  return last.t + Math.max(0, nowMs / 1000 - last.wall_s - (Number.isFinite(lagS) ? Math.max(0, lagS) : 0));
 }
 
 function Header({ trial, cat, status, activeS }: { trial: Trial; cat: Catalog; status: string; activeS: number }) {
