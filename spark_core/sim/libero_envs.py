@@ -176,30 +176,36 @@ def build_control_env(task: LiberoTask):
     )
 
 
+def _hand_back_on_release(env, name: str) -> None:
+    """A closing world calls the env's `_spark_release`: the env becomes this process's one spare (the last task's)."""
+
+    def release() -> None:
+        _free_spares()
+        _spare[name] = env
+
+    env.env._spark_release = release
+
+
 def make_env(task: LiberoTask, init_index: int, reuse: bool = True):
     """LIBERO's ControlEnv for the task, reset to init state `init_index` (no cameras, no GL context). `reuse`:
     take this process's spare env of the same task if a closed world handed one back (the same start state)."""
     states = init_states(task)
     if not 0 <= init_index < len(states):
         raise ValueError(f"{task.name} has {len(states)} init states; got index {init_index}")
-    env = _spare.pop(task.name, None) if reuse else None
-    if env is None:
-        _free_spares()
-        env = build_control_env(task)
-
-        def release() -> None:
-            _free_spares()  # at most one spare: the last task's
-            _spare[task.name] = env
-
-        env.env._spark_release = release
     # An init state holds qpos and qvel only. Fixtures (the stove, the cabinet, ...) have no joints: every reset
     # writes their place into the model (body_pos, body_quat) from LIBERO's samplers, which draw from numpy's
     # global generator. Unseeded, that generator differed per process (and per trial in a worker), so the same
     # task and seed put the stove up to ~1.5 cm and ~1 degree elsewhere, the bowl on it settled differently and
-    # the trial's simulated time changed (8.9-9.1 s; once past the 11 s limit). Seeded with the init index (as
-    # LIBERO's own evaluation does, `env.seed` then reset), the caller's generator left as it was.
+    # the trial's simulated time changed (8.9-9.1 s; once past the 11 s limit). The reset is seeded with the init
+    # index (LIBERO's own `env.seed`, as its evaluation does before a reset); building an env draws too. The
+    # caller's generator is left as it was.
     rng_state = np.random.get_state()
     try:
+        env = _spare.pop(task.name, None) if reuse else None
+        if env is None:
+            _free_spares()
+            env = build_control_env(task)
+            _hand_back_on_release(env, task.name)
         env.seed(init_index)
         env.reset()
         env.set_init_state(states[init_index])
