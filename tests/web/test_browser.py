@@ -758,3 +758,32 @@ def test_the_headers_clock_ticks_while_the_trial_runs_and_stops_when_it_ends(ser
     time.sleep(0.5)
     assert float(page.locator("#wall-active").inner_text()) == c
     assert abs(c - record["wall_time_s"]) < 0.02
+
+
+def test_privileged_perception_is_marked_live_in_history_and_in_compare(server, page):
+    """Whether a trial's perception was privileged (the catalog's flag for its segmenter) shows on the live trial's
+    page, in History's rows and in Compare's, not only in a finished trial's header."""
+    catalog = json.loads(urllib.request.urlopen(f"{server}/api/catalog").read())
+    flag = {s["name"]: s["privileged"] for s in catalog["segmenters"]}
+    assert flag["sim"] and not flag["learned"]
+    body = {"task": "stack_two", "start_paused": True}
+    a = _post(server, "/api/trials", {**body, "segmenter": "sim"})["id"]
+    b = _post(server, "/api/trials", {**body, "segmenter": "learned"})["id"]
+    page.goto(f"{server}/#/trial/{a}")
+    page.wait_for_selector("#privileged")
+    assert page.locator("#status").get_attribute("data-status") in ("queued", "running", "paused")
+    page.goto(f"{server}/#/trial/{b}")
+    page.wait_for_selector("#status")
+    assert page.locator("#privileged").count() == 0
+    for tid in (a, b):
+        _post(server, f"/api/trials/{tid}/control", {"action": "abort"})
+    for tid in (a, b):
+        _wait_done(server, tid)
+    page.goto(f"{server}/#/history")
+    page.wait_for_selector(f"#rows tr[data-id='{a}']")
+    assert page.locator(f"#rows tr[data-id='{a}'] [data-privileged]").count() == 1
+    assert page.locator(f"#rows tr[data-id='{b}'] [data-privileged]").count() == 0
+    page.goto(f"{server}/#/compare/{a}/{b}")
+    page.wait_for_selector("td[data-segmenter=learned]")
+    assert page.locator("td[data-segmenter=sim] [data-privileged]").count() == 1
+    assert page.locator("td[data-segmenter=learned] [data-privileged]").count() == 0

@@ -51,6 +51,7 @@ export interface TrialSummary {
   planner: string; segmenter: string; outcome: string; success: boolean | null; verdict: string | null;
   failure: string | null; failed_node: string | null; reason: string; wall_time_s: number | null;
   sim_time_s: number | null; cost_usd: number | null; batch_id: string | null;
+  protocol?: Record<string, unknown> & { privileged?: boolean } | null;
 }
 
 export interface Trial extends TrialSummary {

@@ -1,4 +1,5 @@
 // Trial summaries as a table; column headers sort (server-side) when `sort` is given.
+import { isPrivileged, PRIVILEGED_NOTE, useCatalog } from "../api/catalog";
 import type { TrialSummary } from "../api/types";
 import { VerdictBadge } from "./VerdictBadge";
 
@@ -11,7 +12,7 @@ export const COLUMNS: Column[] = [
   { key: "id", label: "trial", cell: (t) => <a href={`#/trial/${t.id}`}>{t.id}</a> },
   { key: "task", label: "task", sortKey: "task", cell: (t) => t.task },
   { key: "planner", label: "planner", sortKey: "planner", cell: (t) => t.planner },
-  { key: "segmenter", label: "segmenter", sortKey: "segmenter", cell: (t) => t.segmenter },
+  { key: "segmenter", label: "segmenter", sortKey: "segmenter", cell: (t) => <Segmenter t={t} /> },
   { key: "seed", label: "seed", sortKey: "seed", cell: (t) => t.seed },
   { key: "batch", label: "batch", sortKey: "batch_id", cell: (t) => (t.batch_id ? <a href={`#/batch/${t.batch_id}`}>{t.batch_id}</a> : "") },
   { key: "status", label: "status", sortKey: "status", cell: (t) => t.status },
@@ -21,6 +22,12 @@ export const COLUMNS: Column[] = [
   { key: "wall", label: "wall s", sortKey: "wall_time_s", cell: (t) => num(t.wall_time_s) },
   { key: "cost", label: "cost $", sortKey: "cost_usd", cell: (t) => num(t.cost_usd ?? 0, 4) },
 ];
+
+/** The segmenter's name, marked when the trial's perception was privileged (as the catalog or the record says). */
+export function Segmenter({ t }: { t: TrialSummary }) {
+  const cat = useCatalog();
+  return <>{t.segmenter}{isPrivileged(cat, t) && <> <span className="privileged" data-privileged="true" title={PRIVILEGED_NOTE}>privileged</span></>}</>;
+}
 
 export function TrialTable({ items, columns = COLUMNS, sort, onSort, picked, onPick }: {
   items: TrialSummary[]; columns?: Column[]; sort?: string; onSort?: (s: string) => void;

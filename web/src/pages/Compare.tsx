@@ -4,6 +4,7 @@ import { useEffect, useState } from "react";
 import { api } from "../api/client";
 import type { Trial } from "../api/types";
 import { type Bar, Timeline } from "../components/Timeline";
+import { Segmenter } from "../components/TrialTable";
 import { VerdictBadge } from "../components/VerdictBadge";
 import { diffLines, firstDivergence } from "../lib/compare";
 import { endOf, leaves, withoutPauses } from "../lib/trialTime";
@@ -32,7 +33,7 @@ export function Compare({ a, b }: { a: string; b: string }) {
       <section><h3>Compare</h3>
         <table><thead><tr><th /><th>trial</th><th>task</th><th>planner</th><th>segmenter</th><th>seed</th><th>verdict</th><th>wall s</th></tr></thead>
           <tbody>{[x, y].map((t, k) => (
-            <tr key={t.id}><td>{"AB"[k]}</td><td><a href={`#/trial/${t.id}`}>{t.id}</a></td><td>{t.task}</td><td>{t.planner}</td><td>{t.segmenter}</td><td>{t.seed}</td>
+            <tr key={t.id}><td>{"AB"[k]}</td><td><a href={`#/trial/${t.id}`}>{t.id}</a></td><td>{t.task}</td><td>{t.planner}</td><td data-segmenter={t.segmenter}><Segmenter t={t} /></td><td>{t.seed}</td>
               <td><VerdictBadge verdict={t.verdict} /></td><td>{t.wall_time_s?.toFixed(2)}</td></tr>))}</tbody></table>
         <p id="divergence"><b>First divergence:</b> {firstDivergence(x, y)}</p>
       </section>

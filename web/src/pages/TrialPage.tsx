@@ -3,7 +3,7 @@
 import { useEffect, useMemo, useRef, useState } from "react";
 import { Panel, PanelGroup, PanelResizeHandle } from "react-resizable-panels";
 import { api, post, wsUrl } from "../api/client";
-import { useCatalog } from "../api/catalog";
+import { isPrivileged, PRIVILEGED_NOTE, useCatalog } from "../api/catalog";
 import type { Catalog, Trial, TrialEvent } from "../api/types";
 import { CameraPanel } from "../components/CameraPanel";
 import { PlannerCalls } from "../components/PlannerCalls";
@@ -238,7 +238,7 @@ function Header({ trial, cat, status, activeS }: { trial: Trial; cat: Catalog; s
       <h3>Trial {trial.id}</h3>
       <div>
         {trial.task} · “{trial.instruction}” · planner {trial.planner} · segmenter {trial.segmenter}
-        {trial.protocol?.privileged ? " (privileged)" : ""} · seed {trial.seed}
+        {isPrivileged(cat, trial) && <> <span className="privileged" id="privileged" title={PRIVILEGED_NOTE}>(privileged)</span></>} · seed {trial.seed}
         {trial.batch_id && <> · batch <a href={`#/batch/${trial.batch_id}`}>{trial.batch_id}</a></>}
       </div>
       <div>
