@@ -102,6 +102,9 @@ def list_trials(
     verdict: str | None = Query(None, max_length=32),
     batch: str | None = Query(None, max_length=64),
     q: str | None = Query(None, max_length=200),
+    training: bool | None = Query(
+        None, description="only trials with (true) or without (false) training data (a capture, for LeRobot export)"
+    ),
     sort: str = Query("-created_at", max_length=32),
     limit: int = Query(50, ge=1, le=500),
     offset: int = Query(0, ge=0, le=MAX_OFFSET),
@@ -122,6 +125,7 @@ def list_trials(
             offset=offset,
             verdict=verdict,
             batch=batch,
+            training=training,
         )
     except ValueError as e:
         raise HTTPException(422, str(e)) from None

@@ -12,7 +12,8 @@ from datetime import UTC, datetime, timedelta
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, cast
 
-from sqlalchemy import case, create_engine, delete, event, func, or_, select
+from sqlalchemy import Text, case, create_engine, delete, event, func, not_, or_, select
+from sqlalchemy import cast as sql_cast
 from sqlalchemy.orm import selectinload, sessionmaker
 
 from .models import BatchRow, EventRow, GroundingRow, PlanLibraryRow, TrialRow
@@ -419,11 +420,14 @@ class TraceStore:
         batch: str | None = None,
         verdict: str | None = None,
         search: str | None = None,
+        training: bool | None = None,
         sort: str = "-created_at",
         limit: int = 50,
         offset: int = 0,
     ) -> tuple[int, list[dict]]:
-        """(total matching, one page of summaries). `sort` is a column name, '-' for descending."""
+        """(total matching, one page of summaries). `sort` is a column name, '-' for descending. Each summary
+        has `training_frames`: the frames of the trial's training-data capture (what a LeRobot export takes),
+        None without one; `training` keeps only the trials with (True) or without (False) one."""
         key = sort.lstrip("-")
         if key not in SORTABLE:
             raise ValueError(f"cannot sort by {key!r}; sortable: {', '.join(sorted(SORTABLE))}")
@@ -446,6 +450,8 @@ class TraceStore:
             where.append(
                 func.ifnull(TrialRow.success, -1) == int(success) if sqlite_task else TrialRow.success == success
             )
+        if training is not None:  # the artifacts' text names the capture file (no JSON decoding per row)
+            where.append(_HAS_CAPTURE if training else or_(TrialRow.artifacts.is_(None), not_(_HAS_CAPTURE)))
         if search:  # literal text: % and _ in it match themselves, not any text
             like = "%" + search.replace("\\", "\\\\").replace("%", "\\%").replace("_", "\\_") + "%"
             where.append(
@@ -469,16 +475,32 @@ class TraceStore:
             total = s.scalar(select(func.count()).select_from(TrialRow).where(*where))
             ids = s.scalars(select(TrialRow.id).where(*where).order_by(*order).limit(limit).offset(offset)).all()
             rows = s.execute(select(*cols).where(TrialRow.id.in_(ids))).mappings().all() if ids else []
+            captured = (
+                s.execute(select(TrialRow.id, TrialRow.artifacts).where(TrialRow.id.in_(ids), _HAS_CAPTURE)).all()
+                if ids
+                else []
+            )
+        frames = {tid: _capture_frames(arts) for tid, arts in captured}
         by_id = {r["id"]: dict(r) for r in rows}
         items = [by_id[i] for i in ids if i in by_id]  # a row deleted between the two reads is left out
         for item in items:
             item["created_at"] = item["created_at"].isoformat() if item["created_at"] else None
+            item["training_frames"] = frames.get(item["id"])
         return int(total or 0), items
 
 
 # not in summaries (deleted_at: always empty on what reads return)
 TRIAL_STATUSES = ("queued", "running", "done", "interrupted")  # a trial's life cycle in the store (TrialRow.status)
 _HEAVY = frozenset({"plan_tree", "nodes", "trajectory", "plan_text", "artifacts", "scene_states", "deleted_at"})
+
+
+CAPTURE_FILE = "episode.npz"  # a training-data capture's frames (sim/capture.py; the LeRobot export reads it)
+_HAS_CAPTURE = sql_cast(TrialRow.artifacts, Text).like(f'%"{CAPTURE_FILE}"%')
+
+
+def _capture_frames(artifacts: list | None) -> int | None:
+    entry = next((a for a in artifacts or [] if a.get("name") == CAPTURE_FILE), None)
+    return None if entry is None else int(entry.get("frames") or 0)
 
 
 def _sqlite_pragmas(dbapi_conn, _record) -> None:

@@ -787,3 +787,23 @@ def test_privileged_perception_is_marked_live_in_history_and_in_compare(server, 
     page.wait_for_selector("td[data-segmenter=learned]")
     assert page.locator("td[data-segmenter=sim] [data-privileged]").count() == 1
     assert page.locator("td[data-segmenter=learned] [data-privileged]").count() == 0
+
+
+def test_history_marks_the_trials_with_training_data_and_filters_on_it(server, page):
+    body = {"task": "lift_block", "segmenter": "privileged-keypoints"}
+    with_data = _post(server, "/api/trials", {**body, "capture": True})["id"]
+    without = _post(server, "/api/trials", body)["id"]
+    frames = next(a["frames"] for a in _wait_done(server, with_data)["artifacts"] if a["name"] == "episode.npz")
+    _wait_done(server, without)
+    page.goto(f"{server}/#/history")
+    page.wait_for_selector(f"#rows tr[data-id='{with_data}']")
+    marked = page.locator(f"#rows tr[data-id='{with_data}'] [data-training]")
+    assert marked.get_attribute("data-training") == str(frames) and f"{frames} frames" in marked.inner_text()
+    assert page.locator(f"#rows tr[data-id='{without}'] [data-training]").count() == 0
+    page.select_option("#filters select[name=training]", "true")
+    page.wait_for_selector(f"#rows tr[data-id='{without}']", state="detached")
+    assert page.locator(f"#rows tr[data-id='{with_data}']").count() == 1
+    assert page.locator("#rows tbody tr").count() == page.locator("#rows tbody tr [data-training]").count()
+    page.select_option("#filters select[name=training]", "false")
+    page.wait_for_selector(f"#rows tr[data-id='{with_data}']", state="detached")
+    assert page.locator(f"#rows tr[data-id='{without}']").count() == 1

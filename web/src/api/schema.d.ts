@@ -1102,6 +1102,8 @@ export interface operations {
                 verdict?: string | null;
                 batch?: string | null;
                 q?: string | null;
+                /** @description only trials with (true) or without (false) training data (a capture, for LeRobot export) */
+                training?: boolean | null;
                 sort?: string;
                 limit?: number;
                 offset?: number;

@@ -52,6 +52,8 @@ export interface TrialSummary {
   failure: string | null; failed_node: string | null; reason: string; wall_time_s: number | null;
   sim_time_s: number | null; cost_usd: number | null; batch_id: string | null;
   protocol?: Record<string, unknown> & { privileged?: boolean } | null;
+  /** frames of its training-data capture (what a LeRobot export takes); null: none (list summaries only) */
+  training_frames?: number | null;
 }
 
 export interface Trial extends TrialSummary {

@@ -21,6 +21,9 @@ export const COLUMNS: Column[] = [
   { key: "sim", label: "sim s", sortKey: "sim_time_s", cell: (t) => num(t.sim_time_s) },
   { key: "wall", label: "wall s", sortKey: "wall_time_s", cell: (t) => num(t.wall_time_s) },
   { key: "cost", label: "cost $", sortKey: "cost_usd", cell: (t) => num(t.cost_usd ?? 0, 4) },
+  { key: "training", label: "training data", cell: (t) => (t.training_frames
+    ? <span className="training" data-training={t.training_frames} title="recorded with capture: a LeRobot export takes it">{t.training_frames} frames</span>
+    : "") },
 ];
 
 /** The segmenter's name, marked when the trial's perception was privileged (as the catalog or the record says). */

@@ -1,5 +1,5 @@
-// Every trial, paged and sorted by the server; filters by status, verdict, task text; pick two to compare, or
-// any to export as a LeRobot dataset.
+// Every trial, paged and sorted by the server; filters by status, verdict, task text and training data; pick two
+// to compare, or any to export as a LeRobot dataset.
 import { useEffect, useState } from "react";
 import { api } from "../api/client";
 import { useCatalog } from "../api/catalog";
@@ -12,7 +12,7 @@ const PAGE = 50;
 
 export function History() {
   const cat = useCatalog();
-  const [filters, setFilters] = useState({ q: "", status: "", verdict: "" });
+  const [filters, setFilters] = useState({ q: "", status: "", verdict: "", training: "" });
   const [sort, setSort] = useState("-created_at");
   const [offset, setOffset] = useState(0);
   const [page, setPage] = useState<Page<TrialSummary> | null>(null);
@@ -32,6 +32,8 @@ export function History() {
         <input type="search" name="q" placeholder="task, instruction or reason contains…" value={filters.q} onChange={(e) => set("q", e.target.value)} />
         <label>Status <select name="status" value={filters.status} onChange={(e) => set("status", e.target.value)}>
           <option value="">any</option>{["queued", "running", "done", "interrupted"].map((s) => <option key={s}>{s}</option>)}</select></label>
+        <label title="recorded with capture on: frames a LeRobot export takes">Training data <select name="training" value={filters.training} onChange={(e) => set("training", e.target.value)}>
+          <option value="">any</option><option value="true">with</option><option value="false">without</option></select></label>
         <span className="verdict-filters" id="verdict-filters">verdict:
           <button className={!filters.verdict ? "chosen" : ""} onClick={() => set("verdict", "")}>any</button>
           {(cat?.verdict ?? []).map((v) => <button key={v} data-verdict={v} className={filters.verdict === v ? "chosen" : ""} onClick={() => set("verdict", v)}>{v}</button>)}
