@@ -16,6 +16,9 @@ class PlannerEntry:
     offline: bool  # runs with no network and no key
     needs_model: bool = False  # the caller must name a model
     default_model: str | None = None
+    # False: it does not read the trial's instruction (the task's hand-written plan runs whatever it says), so the
+    # API refuses one that differs from the task's own and the UI's field is off
+    reads_instruction: bool = True
 
 
 @dataclass(frozen=True)
@@ -40,7 +43,12 @@ class EmbodimentEntry:
 PLANNERS: dict[str, PlannerEntry] = {
     p.name: p
     for p in (
-        PlannerEntry("reference", "the task's hand-written reference plan (no planner call)", offline=True),
+        PlannerEntry(
+            "reference",
+            "the task's hand-written reference plan (no planner call)",
+            offline=True,
+            reads_instruction=False,
+        ),
         PlannerEntry(
             "rules",
             "offline rules planner: parses the instruction, grounds its phrases in what perception found",

@@ -39,7 +39,7 @@ def trial_config(body: TrialCreate, batch_id: str | None = None) -> TrialConfig:
     # a blank instruction is no instruction: the task's own, as the field's description says (not a planner's
     # refusal of "   ")
     instruction = body.instruction.strip() or None if body.instruction is not None else None
-    if instruction is not None and body.plan is None and body.planner == "reference":
+    if instruction is not None and body.plan is None and not entry.reads_instruction:
         from spark_core import check_task
 
         try:
@@ -47,13 +47,16 @@ def trial_config(body: TrialCreate, batch_id: str | None = None) -> TrialConfig:
         except CatalogError:
             own = None  # an unknown task: config.check() below names it
         if own is not None and instruction != own.strip():
-            # the reference planner runs the task's hand-written plan: an instruction would be recorded (and
-            # shown) as what ran while the robot did something else
+            # a planner that reads no instruction runs the task's hand-written plan: an instruction would be
+            # recorded (and shown) as what ran while the robot did something else
+            readers = [p for p in PLANNERS.values() if p.reads_instruction]
+            choices = [f"the {p.name} planner (offline)" for p in readers if p.offline]
+            choices += ["an LLM planner"] if any(not p.offline for p in readers) else []
             raise HTTPException(
                 422,
-                f"instruction: the reference planner runs {body.task!r}'s own hand-written plan ({own!r}) and "
-                "does not read an instruction; choose the rules planner (offline) or an LLM planner to run "
-                "this instruction, or leave the instruction out",
+                f"instruction: the {body.planner} planner runs {body.task!r}'s own hand-written plan ({own!r}) and "
+                f"does not read an instruction; choose {' or '.join(choices)} to run this instruction, or leave "
+                "the instruction out",
             )
     capture = None
     if body.capture:

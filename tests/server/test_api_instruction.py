@@ -52,3 +52,23 @@ def test_a_blank_instruction_is_the_tasks_own(client):
     trial = wait_done(client, r.json()["id"])
     assert trial["instruction"] == "pick up the red block"
     assert trial["verdict"] == "success"
+
+
+def test_which_planners_read_an_instruction_is_the_catalogs_flag(client, monkeypatch):
+    """The catalog says which planners read the instruction (`reads_instruction`); the API's refusal follows that
+    flag, not a planner's name."""
+    from dataclasses import replace
+
+    from spark_core.catalog import PLANNERS
+
+    flags = {p["name"]: p["reads_instruction"] for p in client.get("/api/catalog").json()["planners"]}
+    assert flags == {name: name != "reference" for name in PLANNERS}
+    monkeypatch.setitem(PLANNERS, "rules", replace(PLANNERS["rules"], reads_instruction=False))
+    r = client.post("/api/trials", json={"task": "lift_block", "planner": "rules", "instruction": "wave"})
+    assert r.status_code == 422
+    detail = r.json()["detail"]
+    assert (
+        detail.startswith("instruction: the rules planner runs 'lift_block'")
+        and "rules planner (offline)" not in detail
+    )
+    assert client.get("/api/trials").json()["total"] == 0

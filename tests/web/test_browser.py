@@ -807,3 +807,30 @@ def test_history_marks_the_trials_with_training_data_and_filters_on_it(server, p
     page.select_option("#filters select[name=training]", "false")
     page.wait_for_selector(f"#rows tr[data-id='{with_data}']", state="detached")
     assert page.locator(f"#rows tr[data-id='{without}']").count() == 1
+
+
+def test_the_forms_instruction_follows_the_catalogs_reads_instruction_flag(server, browser):
+    """The trial form turns its instruction field off for a planner the catalog says reads none, whatever its
+    name (here the catalog is altered on its way to the page: rules reads none, reference reads one)."""
+    ctx = browser.new_context(viewport={"width": 1400, "height": 1000})
+
+    def altered(route):
+        cat = json.loads(route.fetch().text())
+        for p in cat["planners"]:
+            p["reads_instruction"] = p["name"] != "rules"
+        route.fulfill(json=cat)
+
+    ctx.route("**/api/catalog", altered)
+    page = ctx.new_page()
+    try:
+        field = "#new-trial input[name=instruction]"
+        page.goto(server + "/")
+        page.click("button[data-task=lift_block]")
+        page.select_option("#new-trial select[name=planner]", "reference")
+        assert page.is_enabled(field) and page.locator("#instruction-note").count() == 0
+        page.select_option("#new-trial select[name=planner]", "rules")
+        assert page.is_disabled(field)
+        note = page.locator("#instruction-note").inner_text()
+        assert "the rules planner" in note and "reads no instruction" in note and "choose reference" in note
+    finally:
+        ctx.close()

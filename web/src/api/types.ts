@@ -2,7 +2,11 @@
 // types these as objects, so they are spelt out here from the store's record (spark_core/trace/store.py).
 
 export interface CatalogEntry { name: string; description: string }
-export interface Planner extends CatalogEntry { offline: boolean; needs_model: boolean; default_model: string | null }
+export interface Planner extends CatalogEntry {
+  offline: boolean; needs_model: boolean; default_model: string | null;
+  /** false: the planner does not read the trial's instruction (the server refuses one that differs from the task's) */
+  reads_instruction: boolean;
+}
 export interface Segmenter extends CatalogEntry { privileged: boolean; cameras: boolean; needs: string }
 export interface Embodiment extends CatalogEntry { arms: string[] }
 /** A named evaluation configuration of the paper (spark_core/bench/protocols.py). */

@@ -85,7 +85,12 @@ function PlannerFields({ cat, planner, setPlanner }: { cat: Catalog; planner: st
   );
 }
 
-const REFERENCE_NOTE = "the reference planner runs this task's hand-written plan and reads no instruction: choose rules or an LLM planner to give your own";
+/** Why the instruction field is off: the chosen planner reads no instruction (the catalog's flag); the planners
+ * that do, by name. */
+const instructionNote = (cat: Catalog, planner: string) => {
+  const readers = cat.planners.filter((p) => p.reads_instruction).map((p) => p.name);
+  return `the ${planner} planner runs this task's hand-written plan and reads no instruction: choose ${readers.join(" or ")} to give your own`;
+};
 
 const segLabel = (s: { name: string; privileged: boolean }) => `${s.name}${s.privileged ? " (privileged)" : ""}`;
 
@@ -95,7 +100,8 @@ function TrialForm({ cat, task }: { cat: Catalog; task: Task }) {
   const [planOk, setPlanOk] = useState(true);
   const [error, setError] = useState("");
   const [busy, setBusy] = useState(false);
-  const readsInstruction = planner !== "reference" || !!plan.trim();
+  const readsInstruction = (cat.planners.find((p) => p.name === planner)?.reads_instruction ?? true) || !!plan.trim();
+  const note = instructionNote(cat, planner);
   // An instruction typed for a task stays with that task: choosing another task empties the field (blank: the
   // chosen task's own instruction, shown as the placeholder), never sending the old text with the new task; the
   // text left behind is offered for the new task (one click) and comes back when its task is chosen again.
@@ -140,8 +146,8 @@ function TrialForm({ cat, task }: { cat: Catalog; task: Task }) {
             it would ignore): the field is off, and says so, unless a planner that reads it or a plan is chosen */}
         <label>Instruction <input name="instruction" placeholder={task.instruction} className="wide" maxLength={2000}
           value={instruction} onChange={(e) => setInstruction(e.target.value)}
-          disabled={!readsInstruction} title={readsInstruction ? "blank: the task's own instruction" : REFERENCE_NOTE} /></label>
-        {!readsInstruction && <span className="muted" id="instruction-note"> {REFERENCE_NOTE}</span>}
+          disabled={!readsInstruction} title={readsInstruction ? "blank: the task's own instruction" : note} /></label>
+        {!readsInstruction && <span className="muted" id="instruction-note"> {note}</span>}
         {offer && (
           <span id="instruction-left" data-task={leftBehind ?? ""}> your instruction for {leftBehind} stays with it (“{offer}”); this one runs its own.{" "}
             <button type="button" id="instruction-use-mine" onClick={() => { setInstruction(offer); setLeftBehind(null); }}>use my text for {task.name}</button>{" "}
