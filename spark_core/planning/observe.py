@@ -15,8 +15,9 @@ from ..perception.summary import summarise
 from .protocol import SceneView
 from .rules.lexicon import CONTAINERS, CONTENTS
 from .rules.mentions import clause_mentions, read_past, stray_nouns
-from .rules.parse import ParseError, is_pronoun, parse_instruction
+from .rules.parse import Clause, ParseError, is_pronoun, parse_instruction
 from .rules.reader import phrases as order_free_phrases
+from .rules.reader import readings as order_free_readings
 from .rules.spelling import corrected
 
 PART_OF_ACTION = {"open": "handle", "close": "handle", "turn_on": "knob", "turn_off": "knob"}
@@ -24,8 +25,10 @@ PART_OF_ACTION = {"open": "handle", "close": "handle", "turn_on": "knob", "turn_
 
 def phrases_for(instruction: str) -> list[str]:
     """Noun phrases to look for: objects, targets, tools, sources, plus the part an action grips."""
-    # what an order-free reading needs (rules/reader.py): the planner's fallback when the rule parse refuses
+    # what an order-free reading needs (rules/reader.py): the planner's fallback when the rule parse refuses; with
+    # the part an action of it grips ("open the drawer that is neither the top one nor the middle one")
     after = order_free_phrases(instruction)
+    after += [p for reading in order_free_readings(instruction) for p in _gripped(reading) if p not in after]
     try:
         clauses = parse_instruction(instruction)
     except ParseError:
@@ -45,17 +48,26 @@ def phrases_for(instruction: str) -> list[str]:
             # "the beads should end up in the bowl": poured from a container perception finds (planner.py)
             for holder in CONTAINERS:
                 out.setdefault(holder, None)
-        part = PART_OF_ACTION.get(c.action)
-        if part and c.obj:
-            out.setdefault(f"{c.obj} {part}", None)
-            if "drawer" in c.obj:
-                out.setdefault(f"drawer {part}", None)
+        for p in _gripped([c]):
+            out.setdefault(p, None)
     # what the phrases are located by, what the parser read past, and any noun no phrase holds: each must be in the
     # scene (rules/mentions.py)
     for p in [*clause_mentions(clauses), *read_past(instruction, clauses), *stray_nouns(instruction, clauses)]:
         out.setdefault(p, None)
     for p in after:
         out.setdefault(p, None)
+    return list(out)
+
+
+def _gripped(clauses: list[Clause]) -> list[str]:
+    """The parts the clauses' actions grip: a drawer's handle, a stove's knob."""
+    out: dict[str, None] = {}
+    for c in clauses:
+        part = PART_OF_ACTION.get(c.action)
+        if part and c.obj:
+            out.setdefault(f"{c.obj} {part}", None)
+            if "drawer" in c.obj:
+                out.setdefault(f"drawer {part}", None)
     return list(out)
 
 

@@ -64,7 +64,7 @@ def test_readings(text, expected):
         "put the lemon that is not green in the basket",  # negation is never dropped
         "leave the lemon and put the lime in the basket",
         "put the lemon in the basket and the lime in the bowl",  # two things: not one step
-        "open the drawer and put the lemon in it",  # two actions
+        # ("open the drawer and put the lemon in it": two steps since round twelve, test_rules_round12)
         "how warm does the mug get",  # a question about the scene
         "mug mug blue blue grab grab",  # words said twice over
         "eat the pear in the pot",  # a verb the planner does not know: a thing of its own, never read past

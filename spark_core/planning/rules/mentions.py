@@ -12,6 +12,7 @@ from ...perception.colors import BASE_COLOURS
 from ...perception.colors import SYNONYMS as COLOUR_SYNONYMS
 from ...perception.qualifiers import QUALIFIERS, split_relation
 from ...perception.variants import MATERIALS, SHAPES, SIZES
+from .frames import said_again
 from .lexicon import CONTAINERS, CONTENTS, DETERMINERS, PRONOUNS, REGIONS, TABLE
 from .parse import Clause, is_pronoun
 from .phrases import singular
@@ -42,6 +43,15 @@ _NP_STOP = frozenset(
 # Words that describe a thing without naming it: a phrase is about a thing the clauses name when it shares a noun.
 ATTRIBUTES = frozenset([*BASE_COLOURS, *COLOUR_SYNONYMS, *MATERIALS, *SHAPES, *SIZES])
 _DET = re.compile(r"\b(?:the|a|an|some|my|your|this|these|those) ")
+# The robot's own parts, said to place a thing relative to the robot ("further from the robot's base", "on your
+# left"): no thing in the scene, nothing perception could look for.
+ROBOT_PARTS = frozenset(["base", "arm", "arms", "gripper", "hand", "hands", "wrist", "camera", "body", "claw", "end"])
+_ROBOT_OWNERS = frozenset(["robot", "robot's", "robots", "your", "my", "its"])
+
+
+def _of_the_robot(words: list[str]) -> bool:
+    """ "robot's base", "robot base": the robot's own part."""
+    return len(words) >= 2 and words[0].removesuffix("'s") in ("robot", "robots") and words[-1] in ROBOT_PARTS
 
 
 def anchors(phrase: str) -> list[str]:
@@ -108,6 +118,8 @@ def read_past(instruction: str, clauses: list[Clause]) -> list[str]:
             if not words:
                 continue
             head = words[-1]
+            if _of_the_robot(words) or (m.group(0).strip() in ("your", "my") and head in ROBOT_PARTS):
+                continue  # where the robot is ("further from the robot's base", "your arm")
             if {head, singular(head)} & PLACE_WORDS or head in REGIONS or set(words) & set(CONTENTS):
                 continue  # a place, or what a container holds ("so the beads fall in")
             if not names_a_thing(" ".join(words)):
@@ -164,9 +176,11 @@ def stray_nouns(instruction: str, clauses: list[Clause]) -> list[str]:
             w = raw.removesuffix("'s")
             if len(w) < 3 or {w, singular(w)} & (said | closed | ABSTRACT | ATTRIBUTES) or w in CONTENTS:
                 continue
-            if w in DETERMINERS or w in PRONOUNS or not is_thing(w) or adverb_only(w):
-                continue
+            if w in DETERMINERS or w in PRONOUNS or not is_thing(w) or adverb_only(w) or said_again(w):
+                continue  # (a verb said again, "restack", is no thing either)
             before = words[i - 1].removesuffix("'s") if i else ""
+            if w in ROBOT_PARTS and i and words[i - 1] in _ROBOT_OWNERS:
+                continue  # the robot's own part ("the robot's base", "your arm")
             if _not_only_noun(w) and not (
                 before in _NOUN_BEFORE or before in ATTRIBUTES or words[i - 1].endswith("'s")
             ):

@@ -425,3 +425,26 @@ def qualify(text: str) -> str:
     text = partitive(text)
     push = re.match(r"(?:push|shove|nudge|slide)\b", text) is not None
     return extremes(ordinals(negations(text)), push)
+
+
+# Places along one line that a thing may be picked out by; ruling out all but one of them names the one left.
+_RUNS = (("top", "middle", "bottom"), ("upper", "middle", "lower"))
+
+
+def neither_nor(text: str) -> str:
+    """ "the drawer that is neither the top one nor the middle one" -> "the drawer bottom": of three places along one
+    line, ruling out two names the third; anything else ruled out so is left as said (and read as a negation)."""
+
+    def third(m: re.Match) -> str:
+        ruled = {m.group(1), m.group(2)}
+        for run in _RUNS:
+            if ruled < set(run) and len(ruled) == 2:
+                return f" {next(p for p in run if p not in ruled)}"
+        return m.group(0)
+
+    return re.sub(
+        r"\s*,?\s*(?:(?:that|which) (?:is|are) |(?:that|which)'s )?neither (?:the )?(\w+)(?: ones?)? nor (?:the )?"
+        r"(\w+)(?: ones?)?\b",
+        third,
+        text,
+    )

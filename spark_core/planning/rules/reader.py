@@ -21,14 +21,16 @@ from dataclasses import dataclass, replace
 from lemminflect import getAllLemmas
 
 from ...perception.colors import BASE_COLOURS
-from ...perception.variants import KIND_OF
+from ...perception.variants import GENERIC, KIND_OF, PACKAGING
 from .asides import aside_positions
-from .lexicon import CONTAINERS, CONTENTS, DETERMINERS, FILLERS, REGIONS, STATE_ACTIONS, TABLE, VERBS
+from .frames import goes_to, leading_verb, said_again
+from .lexicon import CONTAINERS, CONTENTS, DETERMINERS, FILLERS, PARTICIPLES, REGIONS, STATE_ACTIONS, TABLE, VERBS
 from .mentions import ABSTRACT, ATTRIBUTES, PLACE_WORDS, _closed_words
 from .parse import Clause, is_pronoun
 from .phrases import object_phrase, singular
-from .qualify import negations
+from .qualify import negations, neither_nor
 from .rewrite import CONTRACTIONS
+from .shapes import as_moved
 from .things import adverb_only, is_thing, is_verb
 
 # A mention's own preposition -> its role. Longest first when matched.
@@ -82,6 +84,8 @@ _GOAL_WORDS = frozenset(
     ["belongs", "belong", "goes", "go", "should", "must", "want", "wants", "needs", "need", "meant", "supposed"]
     + ["end", "ends", "wind", "winds", "sit", "sits", "rest", "rests", "stay", "stays", "like", "ought", "lives"]
 )
+# What a participle may say is done to the thing: moved somewhere, or poured.
+_MOVES = frozenset(["put", "stack", "push", "pour"])
 # A question about the scene, not a request (a request put as a question asks with "could you", "can the ...").
 _QUESTION = frozenset(["how", "what", "why", "who", "whose", "when", "does", "did", "do", "whether"])
 
@@ -103,7 +107,7 @@ def _tokens(instruction: str) -> list[str]:
     text = re.sub(r"\s*(?:-+>|=>|\u2192)\s*", " , to ", text)  # "ketchup -> basket": where it goes
     # ruling one out, as "<kind> not <what rules it out>" (the rule parser's forms: "the other bowl, not the one on
     # the stove" -> "the bowl not on the stove"); "the bowl that is not on ..." alike
-    text = re.sub(r"\b(?:that|which) (?:is|are) not\b", "not", negations(text))
+    text = re.sub(r"\b(?:that|which) (?:is|are) not\b", "not", negations(neither_nor(text)))
     text = re.sub(r"[,;:!?.()\"\u2013\u2014]|\s-\s", " , ", text)
     tokens = text.split()
     asides = aside_positions(tokens, _closed)  # "..., no need to be gentle about it": says how, names nothing
@@ -123,13 +127,19 @@ def _verbs() -> list[tuple[list[str], str]]:
 
 
 def intent(tokens: list[str]) -> tuple[set[str], bool]:
-    """The actions the sentence's verbs name (anywhere), and whether it states a goal without one."""
+    """The actions the sentence's verbs name (anywhere), or its participles ("..., poured out of the mug",
+    "the cube stacked on ..."), and whether it states a goal without one."""
     actions: set[str] = set()
     for i in range(len(tokens)):
         for form, action in _verbs():
             if tokens[i : i + len(form)] == form:
                 actions.add(action)
                 break
+        else:
+            if tokens[i] in PARTICIPLES and PARTICIPLES[tokens[i]] in _MOVES:
+                actions.add(PARTICIPLES[tokens[i]])
+            elif said_again(tokens[i]):
+                actions.add(said_again(tokens[i]) or "")
     goal = bool(set(tokens) & _GOAL_WORDS) or any(t in ("into", "onto", "atop", "inside") for t in tokens)
     return actions, goal
 
@@ -163,7 +173,7 @@ def _ends_phrase(tokens: list[str], k: int) -> bool:
 
 
 def _verb_spans(tokens: list[str]) -> set[int]:
-    out: set[int] = set()
+    out: set[int] = {i for i, t in enumerate(tokens) if said_again(t)}
     for i in range(len(tokens)):
         for form, _action in _verbs():
             if tokens[i : i + len(form)] == form:
@@ -292,6 +302,12 @@ def _second_of_between(tokens: list[str], k: int, verbs: set[int], span: list[st
     return k
 
 
+def _listed_into(things: list[Mention], tokens: list[str]) -> bool:
+    """Two things listed with a comma between them and nothing else, the second a container ("ketchup, basket")."""
+    first, second = things
+    return tokens[first.end : second.start] == [","] and _head(second.phrase) in CONTAINERS
+
+
 def _region(phrase: str) -> bool:
     """A flat area things are pushed into ("zone", "patch", "target")."""
     head = _head(phrase)
@@ -329,6 +345,27 @@ def _unknown_verb(word: str) -> bool:
     return word not in known and word not in DETERMINERS and is_verb(word) and not adverb_only(word)
 
 
+# Where a thing is said to be from the robot's side of the table, right after the thing ("the block on your left",
+# "the bowl closest to you", "the cube to the robot's right"): a qualifier perception reads ("left", "nearest").
+_SIDE = re.compile(
+    r"^(?:(?:that|which) (?:is|are) |, )?(?:(?:on|to|at|towards?) (?:your|the robot's|the) (left|right)(?: hand)?"
+    r"(?: side)?|(nearest|closest|nearer|closer) (?:to )?(?:you|the robot|robot)|(farthest|furthest|further|farther)"
+    r" (?:away )?from (?:you|the robot|robot))\b"
+)
+_SUPERLATIVE = {"nearer": "nearest", "closer": "nearest", "further": "farthest", "farther": "farthest"}
+
+
+def _sided(m: Mention, tokens: list[str]) -> Mention:
+    """The mention with the robot-relative qualifier said right after it, if any ("block on your left" -> "left
+    block")."""
+    said = _SIDE.match(" ".join(tokens[m.end :]))
+    if not said or m.role == "pronoun":
+        return m
+    word = next(g for g in said.groups() if g)
+    word = _SUPERLATIVE.get(word, word)
+    return m if word in m.phrase.split() else replace(m, phrase=f"{word} {m.phrase}")
+
+
 def _qualified(phrase: str, tokens: list[str]) -> str:
     """ "whichever block is further from the robot": the comparative said of the robot qualifies the thing."""
     text = " ".join(tokens)
@@ -354,14 +391,112 @@ _STEPS = re.compile(
     r"|next(?! to))\b\s*,?\s*|\s*;\s*"
 )
 _MAX_COMBINATIONS = 8
+# Letting go of the thing or keeping hold of it, said after a step that carries it ("..., and let go of it above the
+# bowl", "... and keep hold of it"): what the step before does anyway, no step of its own.
+_NO_STEP = re.compile(
+    r"^(?:let go of|let go|release|keep hold of|keep holding|keep a hold of|hold on to|hold onto)"
+    r" (?:it|them)\b"
+)
+_HOLD_FORMS = ("let go", "release", "keep hold", "keep holding", "keep a hold", "hold on to", "hold onto")
+
+
+def _clause_split() -> re.Pattern[str]:
+    """Where a step holds several clauses, each with a verb of its own ("pick the block up, carry it over to the
+    bowl and let go of it"): a comma or "and" before one of the planner's verbs, or before letting go."""
+    forms = sorted({f for fs in VERBS.values() for f in fs} | set(_HOLD_FORMS), key=len, reverse=True)
+    return re.compile(r"\s*(?:,\s*(?:and\s+)?|\s+and\s+)(?=(?:" + "|".join(map(re.escape, forms)) + r")\b)")
+
+
+_CLAUSES = _clause_split()
+
+
+def _steps(instruction: str) -> tuple[list[str], bool]:
+    """The steps of an instruction: parts a word orders ("then"), each split into clauses with verbs of their own;
+    a clause that only lets go of or keeps hold of what the clause before carried is no step (and whether one was
+    dropped)."""
+    out: list[str] = []
+    dropped = False
+    for part in _STEPS.split(instruction.lower().replace("that's", "that is")):
+        for clause in _CLAUSES.split(part):
+            if not clause.strip():
+                continue
+            if out and (_held_only(clause.strip(), out) or _describes_it(clause.strip())):
+                dropped = True
+            else:
+                out.append(clause)
+    return out, dropped
+
+
+def _describes_it(clause: str) -> bool:
+    """A remark that says what "it" looks like and names no kind ("it's the flat box", "it is the small red one"):
+    which thing was meant, said again; no step."""
+    m = re.fullmatch(r"(?:it|this|that)(?: is|'s) (?:the |a |an )?([a-z ]+?)[.!]?", clause)
+    if not m:
+        return False
+    *words, head = m.group(1).split()
+    return (head in PACKAGING or head in GENERIC) and all(w in ATTRIBUTES for w in words)
+
+
+def _held_only(clause: str, before: list[str]) -> bool:
+    """The clause lets go of "it" or keeps hold of it, and names nothing the steps before did not ("let go of it
+    above the bowl")."""
+    m = _NO_STEP.match(clause)
+    if not m:
+        return False
+    rest = clause[m.end() :].strip()
+    if not rest:
+        return True
+    found, _why = _mentions(rest)
+    said = {m.phrase for step in before for m in (_mentions(step, later=True)[0] or [])}
+    return found is not None and all(x.phrase in said for x in found)
+
+
+# A thing named first, then what to do with it ("the beads in the red mug - pour them into the bowl", "blue block:
+# put it in the tray"): the thing, a break, and a request that says "it" or "them".
+_TOPIC = re.compile(r"^\s*([^,:;\u2013\u2014]+?)\s*(?:,|:|\s-+\s|\u2013|\u2014)\s*(.*\b(?:it|them)\b.*)$")
+
+
+def _topic_first(instruction: str) -> str | None:
+    """The request with its "it" or "them" read as the thing named before it, when the sentence opens with a noun
+    phrase alone (no verb, no goal word: "blue block - put it in the yellow tray" -> "put blue block in the yellow
+    tray"); None otherwise."""
+    m = _TOPIC.match(instruction.lower().replace("\u2019", "'"))
+    if not m:
+        return None
+    topic, rest = m.group(1), m.group(2)
+    tokens = _tokens(topic)
+    found, _why = _mentions(topic)
+    actions, goal = intent(tokens)
+    rest_actions, _goal = intent(_tokens(rest))
+    if not found or actions or goal or [x.role for x in found].count("thing") != 1 or not rest_actions:
+        return None
+    return re.sub(r"\b(?:it|them)\b", topic, rest, count=1)
 
 
 def _readings(instruction: str) -> tuple[list[list[Clause]], str]:
-    """Several steps ("X, then Y"): each read on its own, a later one's "it" the thing said before; the readings
-    of the whole are every combination of the steps' readings (the planner keeps the one plan that grounds)."""
-    steps = [p for p in _STEPS.split(instruction.lower().replace("that's", "that is")) if p.strip()]
+    """The readings of the instruction as said, or of it said another way when that reads and it does not: a thing
+    named first, then said as "it" (`_topic_first`); a container said to end up full (rules/shapes.py)."""
+    topic = _topic_first(instruction)
+    if topic is not None:
+        found = _readings_of(topic)
+        if found[0]:
+            return found
+    as_said = _readings_of(instruction)
+    moved = as_moved(instruction)
+    if not as_said[0] and moved is not None:
+        found = _readings_of(moved)
+        if found[0]:
+            return found
+    return as_said
+
+
+def _readings_of(instruction: str) -> tuple[list[list[Clause]], str]:
+    """Several steps ("X, then Y", "X, carry it to Y"): each read on its own, a later one's "it" the thing said
+    before; the readings of the whole are every combination of the steps' readings (the planner keeps the one plan
+    that grounds)."""
+    steps, dropped = _steps(instruction)
     if len(steps) < 2:
-        return _one_step(instruction)
+        return _one_step(steps[0] if steps and dropped else instruction)
     each: list[list[list[Clause]]] = []
     for n, step in enumerate(steps):
         found, why = _one_step(step, later=n > 0)
@@ -376,17 +511,53 @@ def _readings(instruction: str) -> tuple[list[list[Clause]], str]:
 
 
 def _one_step(instruction: str, later: bool = False) -> tuple[list[list[Clause]], str]:
+    read, why = _one_step_as_said(instruction, later)
+    if read or why in ("negation", "question"):
+        return read, why
+    return _moved_by_frame(instruction, later) or (read, why)
+
+
+def _moved_by_frame(instruction: str, later: bool) -> tuple[list[list[Clause]], str] | None:
+    """A verb the planner lacks that opens the request, in a frame only a move fits ("dunk the cube into the
+    bowl": rules/frames.py): the request read without it, as a put, when what is left is one thing and one place
+    it goes to; None otherwise."""
+    tokens = _tokens(instruction)
+    n = leading_verb(tokens)
+    if n is None or _verb_spans(tokens) or intent(tokens)[0]:
+        return None
+    rest = " ".join(tokens[:n] + tokens[n + 1 :])
+    found, _why = _mentions(rest, later)
+    if not found:
+        return None
+    rest_tokens = _tokens(rest)
+    roles = sorted(m.role for m in found)
+    dests = [m for m in found if m.role == "dest"]
+    if roles not in (["dest", "thing"], ["dest", "source", "thing"]) or not goes_to(rest_tokens, dests[0].start):
+        return None
+    read, _why = _one_step_as_said(f"put {rest}", later)
+    return (read, "") if read else None
+
+
+def _one_step_as_said(instruction: str, later: bool = False) -> tuple[list[list[Clause]], str]:
     found, why = _mentions(instruction, later)
     if not found:
         return [], why or "no mention"
     tokens = _tokens(instruction)
+    found = [_sided(m, tokens) for m in found]
     actions, goal = intent(tokens)
     # an arrow says where it goes; a sentence of a thing and where it is, and nothing else, states the goal
     goal = goal or bool(re.search(r"-+>|=>|\u2192", instruction))
     roles = sorted(m.role for m in found)
     # ... or of a thing and where it is and where it goes, in either order: the scene tells which is which
-    goal = goal or (not actions and roles in (["dest", "thing"], ["dest", "dest", "thing"]))
+    # (or where it comes from and where it goes: "beads out of the mug and in the bowl")
+    goal = goal or (
+        not actions and roles in (["dest", "thing"], ["dest", "dest", "thing"], ["dest", "source", "thing"])
+    )
     things = [m for m in found if m.role == "thing"]
+    if len(things) == 2 == len(found) and not actions and _listed_into(things, tokens):
+        # "ketchup, basket": a thing and, after a comma, the container it goes in (a terse goal)
+        found = [things[0], replace(things[1], role="dest", relation="in")]
+        things, goal = things[:1], True
     if len(things) != 1:
         return [], f"{len(things)} things acted on"
     if any(m.role == "tool" for m in found):
@@ -405,6 +576,9 @@ def _one_step(instruction: str, later: bool = False) -> tuple[list[list[Clause]]
     sources = [m for m in found if m.role == "source"]
     near = [m for m in found if m.role == "near"]
     if _head(thing.phrase) in CONTENTS or "pour" in actions:  # "the beads out of the mug and into the bowl"
+        # "pour the beads in the red mug into the bowl": what they are in, said right after them, is the source
+        held_in = [d for d in dests if d.relation == "in" and d.start == thing.end and len(dests) == 2]
+        sources, dests = sources + held_in, [d for d in dests if d not in held_in]
         if len(dests) == 1 and len(sources) <= 1 and not near and actions <= {"pour", "put"}:
             source = sources[0].phrase if sources else obj
             return [[Clause("pour", obj=obj, target=dests[0].phrase, source=source, text=instruction)]], ""

@@ -61,7 +61,7 @@ _VERB_FORMS = sorted({f for forms in VERBS.values() for f in forms} | {"turn", "
 _FIRST_WORDS = {f.split()[0] for f in _VERB_FORMS}
 _TRAILING = re.compile(
     r"(?:\s*,\s*|\s+)(?:and\s+)?(?:then\s+)?(?:just\s+|simply\s+)?"
-    r"(?:keep|hold(?= (?:it|them|still|steady|on|up|there)\b)|make sure|"
+    r"(?:keep|keeping (?:it|them)|hold(?= (?:it|them|still|steady|on|up|there)\b)|make sure|"
     r"let go|release|stop|ensure|check|wait|let (?:it|them)\b|"
     # how to hold it, said after the action ("..., holding it by its two handles")
     r"(?:while )?(?:holding|gripping|grasping|grabbing) (?:it|them)\b|"

@@ -1,6 +1,9 @@
 """Slips of the keyboard ("the stvoe", "teh basket", "salad dresing", "creamcheese"): a word the English lexicon does
 not know, one keystroke away from exactly one word the planner reads or the scene's things are called by, is read
-as that word; a word the lexicon does not know that is two of the scene's words run together is read as both.
+as that word (of several such words, the one word of the scene's things among them: "blok" is the scene's block,
+not a book); a word the lexicon does not know that is two of the scene's words run together is read as both; a word
+the lexicon does not know that is the clipped start of exactly one of the scene's words, with a pet ending or not
+("choc", "choccy" for "chocolate"), is read as that word.
 
 Only words unknown to the lexicon are touched, so a real word that names something the scene lacks ("the
 grapefruit") is never turned into one it holds; and a slip is read only as a word the planner itself knows or a
@@ -56,10 +59,32 @@ def _fix(word: str, known: frozenset[str], scene: frozenset[str]) -> str | None:
     near = {k for k in known if len(k) >= _MIN and _one_slip(word, k)}
     if len(near) == 1:
         return next(iter(near))
+    # several words one keystroke away ("blok": block, book): the one the scene's things are called by, if one is
+    in_scene = near & scene
+    if len(in_scene) == 1:
+        return next(iter(in_scene))
     splits = [
         f"{word[:i]} {word[i:]}" for i in range(_MIN, len(word) - _MIN + 1) if word[:i] in scene and word[i:] in scene
     ]
-    return splits[0] if len(splits) == 1 else None
+    if len(splits) == 1:
+        return splits[0]
+    return _unclipped(word, scene)
+
+
+_PET_ENDINGS = ("ies", "ie", "y", "s", "o")
+_MIN_CLIP = 4  # "choc": shorter starts are shared by too many words
+
+
+def _unclipped(word: str, scene: frozenset[str]) -> str | None:
+    """The one scene word `word` is a clipped form of: its start, of at least four letters and at most all but two
+    of the word's, said as is or with a pet ending ("choccy": "choc" + "cy", a doubled consonant and "y")."""
+    stems = {word}
+    for end in _PET_ENDINGS:
+        stem = word.removesuffix(end)
+        if stem != word:
+            stems |= {stem, stem[:-1] if len(stem) > 1 and stem[-1] == stem[-2] else stem}
+    found = {w for w in scene for s in stems if len(s) >= _MIN_CLIP and len(w) >= len(s) + 2 and w.startswith(s)}
+    return next(iter(found)) if len(found) == 1 else None
 
 
 def corrected(instruction: str, inventory: tuple[str, ...] = ()) -> str:

@@ -24,6 +24,8 @@ NOT_THINGS = frozenset(
     + ["chance", "opportunity", "favour", "favor", "point", "view", "perspective", "viewpoint"]
     # pronouns name who speaks or listens, not an object ("the end state i am after")
     + ["i", "me", "you", "we", "us", "they", "them", "he", "she", "him", "her", "it"]
+    # ... and as they are texted ("can u", "ur arm")
+    + ["u", "ur", "ya"]
 )
 
 
