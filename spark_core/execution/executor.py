@@ -15,6 +15,7 @@ from .protocols import ActionOutcome, Actuator, FailureKind, Resolver
 from .recovery import PERTURB, REDETECT, REPLAN, RecoveryPolicy
 from .result import NodeRecord, NodeStatus, TrialResult
 from .step_control import Aborted, StepControl
+from .turns import Turns
 
 BOTH_ARMS = "both"
 # Label-binding moves that position the hand for the label-free primitives after them (grasp, release, ...).
@@ -50,6 +51,25 @@ class _Barriers:
         self._lock = threading.Lock()
         self._by_name: dict[str, threading.Barrier] = {}
         self._failed = False
+        # branches taking turns (a simulated world) meet by counting arrivals instead of blocking in a Barrier
+        self._arrived: dict[str, int] = {}
+        self.waiting = 0  # branches waiting at some barrier now
+        self.finished = 0  # branches that ended
+
+    @property
+    def failed(self) -> bool:
+        return self._failed
+
+    def arrive(self, name: str) -> int:
+        """Count an arrival at `name` (turn-taking); returns its ticket (1, 2, ...: cumulative over rounds)."""
+        with self._lock:
+            self._arrived[name] = self._arrived.get(name, 0) + 1
+            return self._arrived[name]
+
+    def complete(self, name: str, ticket: int) -> bool:
+        """Whether every branch has arrived for the round of `ticket`."""
+        with self._lock:
+            return self._arrived.get(name, 0) >= -(-ticket // self.parties) * self.parties
 
     def get(self, name: str) -> threading.Barrier:
         with self._lock:
@@ -92,6 +112,7 @@ class Executor:
         self.trial_id = trial_id or self.bus.trial_id
         self.records: dict[str, NodeRecord] = {}
         self._lock = threading.Lock()
+        self._turns: Turns | None = None  # parallel branches on a simulated world take turns (see turns.py)
         self._last_started = ""  # the primitive an abort interrupts (named in the aborted failure)
 
     # -- public ------------------------------------------------------------------------------------------------
@@ -102,6 +123,9 @@ class Executor:
         monitors = getattr(getattr(self.actuator, "world", None), "monitors", None)
         if isinstance(monitors, list):  # a simulated world calls its monitors every control period (10 ms sim)
             monitors.append(self._abort_within_a_tick)
+            # after every other monitor: a branch aborted or out of time unwinds before passing the turn
+            self._turns = Turns(getattr(getattr(self.actuator, "world", None), "_lock", None))
+            monitors.append(self._turns)
         try:
             prefix = ""
             while True:
@@ -134,6 +158,8 @@ class Executor:
         finally:
             if isinstance(monitors, list) and self._abort_within_a_tick in monitors:
                 monitors.remove(self._abort_within_a_tick)
+            if isinstance(monitors, list) and self._turns is not None and self._turns in monitors:
+                monitors.remove(self._turns)
             self.bus.close()
         return TrialResult(
             trial_id=self.trial_id,
@@ -201,19 +227,29 @@ class Executor:
         barriers = _Barriers(len(node.children))
         results: list[tuple[Failure | None, float] | BaseException] = [Aborted(path)] * len(node.children)
 
+        turns = self._turns
+
         def branch(i: int, child: Node) -> None:
             try:
+                if turns is not None:
+                    turns.begin()
                 results[i] = self._run_node(child, child_path(path, i), arm, barriers)
                 if results[i][0] is not None:  # type: ignore[index]
                     barriers.abort_all()
             except BaseException as e:
                 results[i] = e
                 barriers.abort_all()
+            finally:
+                barriers.finished += 1
+                if turns is not None:
+                    turns.end()
 
         threads = [
             threading.Thread(target=branch, args=(i, c), name=f"{path}[{i}]", daemon=True)
             for i, c in enumerate(node.children)
         ]
+        if turns is not None:
+            turns.spawn(threads)
         for t in threads:
             t.start()
         for t in threads:
@@ -317,12 +353,42 @@ class Executor:
         if barriers is None or barriers.parties == 1:
             return ActionOutcome.success(0.0)
         name = call.args.get("name", "sync")
+        if self._turns is not None and self._turns.taking_turns():
+            return self._sync_in_turns(call, barriers, name)
         try:
-            barriers.get(name).wait(timeout=call.spec.timeout_s)  # wall seconds: branches are threads
+            barriers.get(name).wait(timeout=call.spec.timeout_s)  # wall seconds: branches are free threads here
         except threading.BrokenBarrierError:
             return ActionOutcome.fail(
                 f"sync_barrier {name!r}: another branch failed or never arrived", FailureKind.CONTROL
             )
+        return ActionOutcome.success(0.0)
+
+    def _sync_in_turns(self, call: PrimitiveCall, barriers: _Barriers, name: str) -> ActionOutcome:
+        """sync_barrier between branches taking turns: pass the turn until every branch has arrived. Its timeout is
+        simulated seconds, as every primitive's (the other branches' motions advance the world's clock); a wall-clock
+        wait failed on a loaded machine where the same trial passes on a quiet one."""
+        assert self._turns is not None
+        world = getattr(self.actuator, "world", None)
+        t0 = world.sim_time_s if world is not None else 0.0
+        ticket = barriers.arrive(name)
+        barriers.waiting += 1
+        try:
+            while not barriers.complete(name, ticket):
+                if barriers.failed or barriers.waiting >= barriers.parties - barriers.finished:
+                    return ActionOutcome.fail(
+                        f"sync_barrier {name!r}: another branch failed or never arrived", FailureKind.CONTROL
+                    )
+                waited_s = (world.sim_time_s - t0) if world is not None else 0.0
+                if waited_s > call.spec.timeout_s:
+                    return ActionOutcome.fail(
+                        f"sync_barrier {name!r}: the other branches did not arrive within {call.spec.timeout_s:g} s",
+                        FailureKind.TIMEOUT,
+                        waited_s,
+                    )
+                self._turns.pass_turn()
+                self.control.check_abort(self._last_started or "tree")
+        finally:
+            barriers.waiting -= 1
         return ActionOutcome.success(0.0)
 
     def _recover(
