@@ -11,18 +11,7 @@ from fastapi.testclient import TestClient
 from server.app import create_app
 
 from .isolated_settings import isolated_settings
-
-
-def _paused_at(c: TestClient, trial_id: str, node: str) -> dict:
-    t0 = time.monotonic()
-    while True:
-        trial = c.get(f"/api/trials/{trial_id}").json()
-        paused = [e["node_path"] for e in trial.get("events", []) if e["kind"] == "paused"]
-        if trial.get("control_state") == "paused" and paused and paused[-1] == node:
-            return trial
-        assert trial["status"] in ("queued", "running"), f"{trial_id} ended without pausing at {node}: {paused}"
-        assert time.monotonic() - t0 < 120, f"{trial_id} never paused at {node} (pauses so far: {paused})"
-        time.sleep(0.05)
+from .paused import paused_at
 
 
 def _pairs(trial: dict) -> list[tuple[int, str]]:
@@ -33,9 +22,9 @@ def test_groundings_and_their_images_are_stored_while_the_trial_runs(tmp_path):
     body = {"task": "stack_two", "segmenter": "sim", "start_paused": True}
     with TestClient(create_app(isolated_settings(tmp_path))) as c:
         tid = c.post("/api/trials", json=body).json()["id"]
-        _paused_at(c, tid, "tree.children[0]")
+        paused_at(c, tid, "tree.children[0]")
         assert c.post(f"/api/trials/{tid}/control", json={"action": "step"}).status_code == 200
-        live = _paused_at(c, tid, "tree.children[1]")  # the first node ran (and grounded its label): paused
+        live = paused_at(c, tid, "tree.children[1]")  # the first node ran (and grounded its label): paused
         assert live["status"] == "running"
         assert live["groundings"], "a running trial's groundings are in its record"
         pairs = _pairs(live)

@@ -4,29 +4,15 @@ still queued is kept for when it starts (adversarial review L5)."""
 
 from __future__ import annotations
 
-import time
-
 from fastapi.testclient import TestClient
 
 from server.app import create_app
 
 from .isolated_settings import isolated_settings
+from .paused import paused_at
 
 # five quick nodes: where the trial pauses says how many nodes the steps let run
 PLAN = "task: wait\ntree:\n  type: sequence\n  children:\n" + "    - type: wait\n      params: {duration: 0.2}\n" * 5
-
-
-def _paused_at(c: TestClient, trial_id: str, node: str) -> dict:
-    """The trial once it is paused before `node` (waits for it); the trial record."""
-    t0 = time.monotonic()
-    while True:
-        trial = c.get(f"/api/trials/{trial_id}").json()
-        paused = [e["node_path"] for e in trial.get("events", []) if e["kind"] == "paused"]
-        if trial.get("control_state") == "paused" and paused and paused[-1] == node:
-            return trial
-        assert trial["status"] in ("queued", "running"), f"{trial_id} ended without pausing at {node}: {paused}"
-        assert time.monotonic() - t0 < 90, f"{trial_id} never paused at {node} (pauses so far: {paused})"
-        time.sleep(0.05)
 
 
 def _control(c: TestClient, trial_id: str, action: str) -> str:
@@ -40,16 +26,16 @@ def test_each_step_runs_one_node_and_answers_pausing(tmp_path):
     with TestClient(create_app(isolated_settings(tmp_path))) as c:
         first = c.post("/api/trials", json=body).json()["id"]
         queued = c.post("/api/trials", json=body).json()["id"]  # one worker: waits for the first
-        _paused_at(c, first, "tree.children[0]")
+        paused_at(c, first, "tree.children[0]")
         assert _control(c, first, "step") == "pausing"  # not "paused": the worker is leaving that pause
         assert _control(c, first, "step") == "pausing"  # a second step while pausing: still on its way to a pause
-        paused = _paused_at(c, first, "tree.children[2]")  # two steps, two nodes
+        paused = paused_at(c, first, "tree.children[2]")  # two steps, two nodes
         assert [e["node_path"] for e in paused["events"] if e["kind"] == "paused"][0] == "tree.children[0]"
         assert _control(c, first, "step") == "pausing"
-        _paused_at(c, first, "tree.children[3]")
+        paused_at(c, first, "tree.children[3]")
 
         assert _control(c, queued, "step") == "pausing"  # kept until the trial starts
         assert _control(c, first, "abort") == "aborted"
-        trial = _paused_at(c, queued, "tree.children[1]")  # the first node ran, as the step asked
+        trial = paused_at(c, queued, "tree.children[1]")  # the first node ran, as the step asked
         assert [e["node_path"] for e in trial["events"] if e["kind"] == "paused"] == ["tree.children[1]"]
         assert _control(c, queued, "resume") == "running"
