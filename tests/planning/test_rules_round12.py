@@ -252,3 +252,30 @@ def test_a_remark_on_what_it_looks_like_is_no_step():
 
 def test_a_remark_that_names_a_kind_is_read_as_before():
     assert _read("put the pear in the pot; it is the lime") == []
+
+
+# -- words that only frame the request -----------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "i'd appreciate it if you put the pear in the pot",
+        "do you think you could put the pear in the pot",
+        "how about putting the pear in the pot",
+        "why don't you place the pear in the pot",
+    ],
+)
+def test_the_words_that_frame_a_request_are_read_past(text):
+    assert _read(text) == ["put thing=pear in=pot"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "i don't want you to put the pear in the pot",  # negated: asks the opposite
+        "what happens if you put the pear in the pot",  # a question about it
+        "did you put the pear in the pot",  # a question about what was done
+        "eat the lime and put the pear in the pot",  # the frame names a thing
+    ],
+)
+def test_a_frame_that_negates_asks_about_or_names_a_thing_is_not_read_past(text):
+    assert _read(text) == []

@@ -24,6 +24,7 @@ from ...perception.colors import BASE_COLOURS
 from ...perception.variants import GENERIC, KIND_OF, PACKAGING
 from .asides import aside_positions
 from .frames import goes_to, leading_verb, said_again
+from .framing import unframed
 from .lexicon import CONTAINERS, CONTENTS, DETERMINERS, FILLERS, PARTICIPLES, REGIONS, STATE_ACTIONS, TABLE, VERBS
 from .mentions import ABSTRACT, ATTRIBUTES, PLACE_WORDS, _closed_words
 from .parse import Clause, is_pronoun
@@ -475,16 +476,18 @@ def _topic_first(instruction: str) -> str | None:
 
 def _readings(instruction: str) -> tuple[list[list[Clause]], str]:
     """The readings of the instruction as said, or of it said another way when that reads and it does not: a thing
-    named first, then said as "it" (`_topic_first`); a container said to end up full (rules/shapes.py)."""
+    named first, then said as "it" (`_topic_first`); the request without the words that frame it ("i'd appreciate
+    it if you put ...": rules/framing.py); a container said to end up full (rules/shapes.py)."""
     topic = _topic_first(instruction)
     if topic is not None:
         found = _readings_of(topic)
         if found[0]:
             return found
     as_said = _readings_of(instruction)
-    moved = as_moved(instruction)
-    if not as_said[0] and moved is not None:
-        found = _readings_of(moved)
+    if as_said[0]:
+        return as_said
+    for other in (unframed(instruction, _closed), as_moved(instruction)):
+        found = _readings_of(other) if other is not None else ([], "")
         if found[0]:
             return found
     return as_said
