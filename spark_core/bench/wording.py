@@ -2,10 +2,11 @@
 
 Planning check (every entry): the entry's instruction is planned from what perception (sim segmenter) found
 in its task's scene, and so is the task's official instruction in the same scene. The reworded plan reaches
-the goal when its steps are the official plan's steps: the same primitives in the same order (a `stack` counts
-as its pick + place, a `pick_with_arm` as a pick, `place_in` as `place`), every object/destination label at the
-same place in the scene (the keypoints perception gave both labels within `SAME_PLACE_M`), the same push
-direction and knob turn sense. Entries that expect a refusal count as correct when no plan comes back.
+the goal when its steps are the official plan's steps: the same primitives in the same order (moves that share no
+place may come in another order: the goal's steps are a partial order; a `stack` counts as its pick + place, a
+`pick_with_arm` as a pick, `place_in` as `place`), every object/destination label at the same place in the scene
+(the keypoints perception gave both labels within `SAME_PLACE_M`), the same push direction and knob turn sense.
+Entries that expect a refusal count as correct when no plan comes back.
 
 A `place` (on top, not into) sets the object on the highest surface under its target point, so two place targets
 are the same destination when they lead to the same support: a target whose point lies inside the other's seen
@@ -133,6 +134,59 @@ def _same_place(va: tuple | None, vb: tuple | None, name: str) -> bool:
 
 
 def same_effect(a: list[tuple[str, tuple]], b: list[tuple[str, tuple]]) -> bool:
+    """The same steps in the same order, or in another order that keeps every dependent pair of moves in the
+    reference `b`'s order (`_moves`, `_independent`)."""
+    if _same_steps(a, b):
+        return True
+    ua, ub = _moves(a), _moves(b)
+    if len(ua) != len(ub) or len(ub) < 2:
+        return False
+    used: set[int] = set()
+    for move in ua:
+        for n, ref in enumerate(ub):
+            if n in used or not _same_steps(move, ref):
+                continue
+            if all(m in used or _independent(ub[m], ref) for m in range(n)):
+                used.add(n)
+                break
+        else:
+            return False
+    return True
+
+
+def _moves(sig: list[tuple[str, tuple]]) -> list[list[tuple[str, tuple]]]:
+    """The plan's steps in units: a pick with the steps up to the next pick (a move), any other step alone."""
+    out: list[list[tuple[str, tuple]]] = []
+    for step in sig:
+        if step[0] != "pick" and out and out[-1][0][0] == "pick":
+            out[-1].append(step)
+        else:
+            out.append([step])
+    return out
+
+
+def _independent(u: list[tuple[str, tuple]], v: list[tuple[str, tuple]]) -> bool:
+    """Two moves whose order does not matter: both picks, and no place of one is a place of the other, except a
+    container both put things into (on top of one thing, the second would land on the first)."""
+    if u[0][0] != "pick" or v[0][0] != "pick":
+        return False
+    for _, pu in u:
+        for _, pv in v:
+            for name_u, va in pu:
+                for name_v, vb in pv:
+                    if not name_u.endswith("_label") or not name_v.endswith("_label"):
+                        continue
+                    if va is None or vb is None:
+                        return False
+                    if np.linalg.norm(np.subtract(va[0], vb[0])) > SAME_PLACE_M:
+                        continue
+                    into = name_u == name_v == "target_label" and not va[3] and not vb[3]
+                    if not into:
+                        return False
+    return True
+
+
+def _same_steps(a: list[tuple[str, tuple]], b: list[tuple[str, tuple]]) -> bool:
     if [k for k, _ in a] != [k for k, _ in b]:
         return False
     for (_, pa), (_, pb) in zip(a, b):

@@ -64,6 +64,38 @@ def test_a_stack_has_the_effect_of_a_pick_and_place_on_the_same_things():
     assert not wording.same_effect(turned_on, turned_off)
 
 
+def test_moves_that_share_no_place_may_come_in_another_order_but_dependent_ones_may_not():
+    view = _view(red=(0.5, 0, 0.02), blue=(0.5, 0.2, 0.02), green=(0.3, 0.1, 0.02), plate=(0.6, -0.2, 0.01))
+    basket = Keypoint("basket", np.array([0.4, -0.3, 0.05]), np.full(3, 0.1))
+    view.keypoints["basket"] = basket
+
+    def sig(*moves, into=False):
+        leaves = []
+        for thing, where in moves:
+            leaves.append(("pick", {"keypoint_label": thing}))
+            leaves.append(("place_in", {"container_label": where}) if into else ("place", {"target_label": where}))
+        return wording.signature(_plan(*leaves), view)
+
+    # two things to two places: either order reaches the goal
+    assert wording.same_effect(sig(("red", "plate"), ("blue", "green")), sig(("blue", "green"), ("red", "plate")))
+    # two things into one container: either order
+    assert wording.same_effect(
+        sig(("red", "basket"), ("blue", "basket"), into=True), sig(("blue", "basket"), ("red", "basket"), into=True)
+    )
+    # two things on top of one place: the second lands on the first, so the order is part of the goal
+    assert not wording.same_effect(sig(("red", "plate"), ("blue", "plate")), sig(("blue", "plate"), ("red", "plate")))
+    # a tower: the red block on the blue one, then the green one on the red one; not the other way round
+    assert not wording.same_effect(sig(("green", "red"), ("red", "blue")), sig(("red", "blue"), ("green", "red")))
+    # a thing moved, then the thing it was moved onto moved: dependent
+    assert not wording.same_effect(sig(("blue", "plate"), ("red", "blue")), sig(("red", "blue"), ("blue", "plate")))
+    # another order is still the same steps: a missing or different move is wrong
+    assert not wording.same_effect(sig(("blue", "green")), sig(("red", "plate"), ("blue", "green")))
+    assert not wording.same_effect(sig(("blue", "plate"), ("red", "green")), sig(("red", "plate"), ("blue", "green")))
+    knob = wording.signature(_plan(("turn_knob", {"keypoint_label": "green", "angle": 90.0})), view)
+    moved = sig(("red", "plate"))
+    assert not wording.same_effect(moved + knob, knob + moved)  # a fixture's step keeps its place in the order
+
+
 def test_planning_check_on_a_real_scene_tells_right_from_wrong_and_refusals():
     entries = [
         {"id": "a", "style": "synonym", "suite": "builtin", "task": "block_on_plate", "expect": "goal"},
