@@ -247,7 +247,9 @@ def test_other_contents_than_the_scene_shows_are_not_there():
     assert other_contents("rice", ("bead (5)", "mug", "bowl")) == "rice"
     assert other_contents("beads", ("bead (5)", "mug", "bowl")) is None
     assert other_contents("contents", ("bead (5)", "mug", "bowl")) is None
-    assert other_contents("water", ("jug", "pot")) is None  # nothing shown inside: it may be out of sight
+    assert other_contents("beads", ("jug", "pot")) is None  # nothing shown inside: rigid things may be out of sight
+    assert other_contents("water", ("jug", "pot")) == "water"  # round 13: a substance the scene cannot show is not
+    assert other_contents("water", ()) is None  # perception that cannot list the scene: nothing checked
 
 
 @pytest.mark.parametrize(

@@ -130,7 +130,7 @@ def test_round_nine_readings(text, expected):
 @pytest.mark.parametrize(
     "text,source",
     [
-        ("the jug has water in it, pour it into the glass", "jug"),  # a container named with what it holds
+        ("the jug has beads in it, pour them into the glass", "jug"),  # a container named with what it holds
         ("the beads in the blue cup: pour them into the tray", "blue cup"),  # contents located in their holder
         ("tip the beads that are sitting in the blue cup into the tray", "blue cup"),
     ],

@@ -9,7 +9,10 @@ perception can list of the scene (its inventory), word by word:
   describes one ("cream" of the cream cheese, "salad" of the salad dressing), unless that thing is named by its
   packaging ("the wine" of the wine bottle);
 - other contents: a thing poured out of a container may be out of sight inside it, but when the scene shows what
-  its containers hold ("beads"), contents of another kind ("water", "rice") are not there.
+  its containers hold ("beads"), contents of another kind ("water", "rice") are not there; and when it shows
+  none, only things a container may hold out of sight (beads, marbles, balls: the rigid things a scene can hold)
+  or words that name no kind ("the contents") may be poured: a substance ("water", "coffee") the scene cannot
+  show is not taken on the sentence's word.
 
 With no inventory (perception that cannot list the scene), nothing is checked here."""
 
@@ -106,11 +109,17 @@ def modifier_for_thing(phrase: str, inventory: tuple[str, ...]) -> str | None:
 
 
 def other_contents(poured: str, inventory: tuple[str, ...]) -> str | None:
-    """What is poured, when the scene shows what its containers hold and that is something else, or None."""
+    """What is poured, when the scene shows what its containers hold and that is something else, or shows nothing
+    inside and it is no rigid thing a container may hide ("water"); None otherwise."""
     words = _words(poured)
     if not words or words[-1] in _ANY_CONTENTS:
         return None
-    shown = [n for n in _names(inventory) if _forms(n[-1]) & _SHOWN_CONTENTS]
-    if not shown or any(_is_head(words[-1], n) or _forms(words[-1]) & _forms(n[-1]) for n in shown):
+    names = _names(inventory)
+    shown = [n for n in names if _forms(n[-1]) & _SHOWN_CONTENTS]
+    if not shown:
+        # nothing shown inside: rigid things may be out of sight in it; a substance the scene cannot show is not
+        rigid = _forms(words[-1]) & _SHOWN_CONTENTS or any(_is_head(words[-1], n) for n in names)  # or the mug
+        return None if not names or rigid else words[-1]
+    if any(_is_head(words[-1], n) or _forms(words[-1]) & _forms(n[-1]) for n in shown):
         return None
     return words[-1]

@@ -182,6 +182,9 @@ TABLE = ("table", "tabletop", "table top", "counter", "where it is", "where it s
 SELF_PARTS = ("centre", "center", "middle", "surface", "top face", "top side", "top surface", "inside", "interior")
 # What a container holds: "the mug's beads", "the mug's contents" pour from the mug.
 CONTENTS = ("contents", "content", "beads", "liquid", "water")
+# Contents that are a substance, not rigid things: a scene shows none, so saying a container holds one is a claim
+# the scene must bear out (rules/kinds.py), never read past.
+SUBSTANCES = ("water",)
 # Goal words after the object: the state the instruction wants, and the action that makes it.
 STATE_ACTIONS: tuple[tuple[str, str], ...] = (
     ("switched on", "turn_on"),

@@ -325,7 +325,11 @@ def _check_kinds(
         if c.action == "pour" and c.obj and not is_pronoun(c.obj) and (c.source or c.obj.split()[-1] in CONTENTS):
             word = other_contents(c.obj, inventory)
             if word:
-                raise CannotPlan(f"could not find {c.obj!r} in the scene: what is there to pour is not {word!r} {tail}")
+                raise CannotPlan(
+                    f"could not find {c.obj!r} in the scene: what is there to pour is not {word!r} (the scene shows "
+                    f"no {word!r}, and no {word!r} is taken on the sentence's word alone; 'the contents' pours "
+                    f"whatever it holds) {tail}"
+                )
 
 
 def _holder_of(source: str | None, dst: str, scene) -> str | None:
