@@ -433,7 +433,8 @@ _RUNS = (("top", "middle", "bottom"), ("upper", "middle", "lower"))
 
 def neither_nor(text: str) -> str:
     """ "the drawer that is neither the top one nor the middle one" -> "the drawer bottom": of three places along one
-    line, ruling out two names the third; anything else ruled out so is left as said (and read as a negation)."""
+    line, ruling out two names the third ("not the top one, not the middle one" alike); anything else ruled out so is
+    left as said (and read as a negation)."""
 
     def third(m: re.Match) -> str:
         ruled = {m.group(1), m.group(2)}
@@ -442,9 +443,16 @@ def neither_nor(text: str) -> str:
                 return f" {next(p for p in run if p not in ruled)}"
         return m.group(0)
 
-    return re.sub(
+    text = re.sub(
         r"\s*,?\s*(?:(?:that|which) (?:is|are) |(?:that|which)'s )?neither (?:the )?(\w+)(?: ones?)? nor (?:the )?"
         r"(\w+)(?: ones?)?\b",
+        third,
+        text,
+    )
+    # the same said as two negations in a row ("a drawer - not the top one, not the middle one")
+    return re.sub(
+        r"\s*(?:,|-+|:)?\s*(?:but )?not (?:the )?(\w+)(?: ones?)?\s*(?:,\s*(?:and |or )?|and |or |nor )(?:also )?not "
+        r"(?:the )?(\w+)(?: ones?)?\b",
         third,
         text,
     )

@@ -29,7 +29,7 @@ from .lexicon import CONTAINERS, CONTENTS, DETERMINERS, FILLERS, PARTICIPLES, RE
 from .mentions import ABSTRACT, ATTRIBUTES, PLACE_WORDS, _closed_words
 from .parse import Clause, is_pronoun
 from .phrases import object_phrase, singular
-from .qualify import negations, neither_nor
+from .qualify import negations, neither_nor, ordinals
 from .rewrite import CONTRACTIONS
 from .shapes import as_moved
 from .things import adverb_only, is_thing, is_verb
@@ -106,6 +106,10 @@ def _tokens(instruction: str) -> list[str]:
         text = re.sub(rf"\b{re.escape(short)}\b", long, text)
     text = re.sub(r"(\w)'s\b(?= (?:meant|supposed|going|got|to|in|on|at)\b)", r"\1 is", text)  # "block's meant"
     text = re.sub(r"\s*(?:-+>|=>|\u2192)\s*", " , to ", text)  # "ketchup -> basket": where it goes
+    # where an ordinal counts from ("the second drawer counting from the top"): the side, as "from the top" says
+    text = ordinals(
+        re.sub(r"\b(?:counting|starting|going|numbering) (?=from (?:the )?(?:top|bottom|left|right)\b)", "", text)
+    )  # "the second drawer from the top" -> "the second top drawer", as the rule parser reads it
     # ruling one out, as "<kind> not <what rules it out>" (the rule parser's forms: "the other bowl, not the one on
     # the stove" -> "the bowl not on the stove"); "the bowl that is not on ..." alike
     text = re.sub(r"\b(?:that|which) (?:is|are) not\b", "not", negations(neither_nor(text)))
@@ -142,6 +146,7 @@ def intent(tokens: list[str]) -> tuple[set[str], bool]:
             elif said_again(tokens[i]):
                 actions.add(said_again(tokens[i]) or "")
     goal = bool(set(tokens) & _GOAL_WORDS) or any(t in ("into", "onto", "atop", "inside") for t in tokens)
+    goal = goal or any(a == "on" and b == "to" for a, b in zip(tokens, tokens[1:]))  # "on to the plate": onto
     return actions, goal
 
 
@@ -499,7 +504,10 @@ def _readings_of(instruction: str) -> tuple[list[list[Clause]], str]:
     that grounds)."""
     steps, dropped = _steps(instruction)
     if len(steps) < 2:
-        return _one_step(steps[0] if steps and dropped else instruction)
+        read, why = _one_step(steps[0] if steps and dropped else instruction)
+        if not read and re.fullmatch(r"[2-3] things acted on", why):
+            return _pairs(steps[0] if steps and dropped else instruction) or (read, why)
+        return read, why
     each: list[list[list[Clause]]] = []
     for n, step in enumerate(steps):
         found, why = _one_step(step, later=n > 0)
@@ -510,6 +518,32 @@ def _readings_of(instruction: str) -> tuple[list[list[Clause]], str]:
     combos = list(itertools.product(*each))
     if len(combos) > _MAX_COMBINATIONS:
         return [], "too many readings"
+    return [[replace(c, text=instruction) for r in combo for c in r] for combo in combos], ""
+
+
+# Where a list of goals said without verbs breaks ("the pear in the pot and the lime in the tray").
+_PAIRS = re.compile(r"\s*(?:[,;]\s*(?:and\s+|then\s+)?|\s+and\s+)")
+
+
+def _pairs(instruction: str) -> tuple[list[list[Clause]], str] | None:
+    """Two or three things, each with where it goes, in one sentence with no word that orders them ("the pear in
+    the pot and the lime in the tray", "pear into the pot, lime into the tray"): each part read as a step of its
+    own when every part reads (a later part's "the green one" is of the kind said before it); None otherwise."""
+    parts = [p for p in _PAIRS.split(instruction) if p.strip()]
+    if not 2 <= len(parts) <= 3:
+        return None
+    each: list[list[list[Clause]]] = []
+    for n, part in enumerate(parts):
+        found, why = _one_step(part, later=n > 0)
+        if not found and why == "'one' with no noun before it" and each:
+            kind = _head(re.split(r" (?:not|on|in|next to|beside|near|between) ", each[-1][0][-1].obj or "one")[0])
+            found, why = _one_step(re.sub(r"\bones?\b", kind, part, count=1), later=True)
+        if not found or any(c.action not in ("put", "stack", "pour") for r in found for c in r):
+            return None
+        each.append(found)
+    combos = list(itertools.product(*each))
+    if len(combos) > _MAX_COMBINATIONS:
+        return None
     return [[replace(c, text=instruction) for r in combo for c in r] for combo in combos], ""
 
 
