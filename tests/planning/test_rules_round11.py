@@ -29,7 +29,7 @@ def _view(inventory=(), unresolved=None, **where):
     [
         ("eat the pear in the pot", "unknown verb: eat"),
         ("how warm does the mug get", "question"),
-        ("put the lemon in the basket and the lime in the bowl", "2 things acted on"),
+        ("put the lemon and the lime in the bowl", "2 things acted on"),  # (two goals listed: steps, round 13)
         ("put the blue on the plate", "0 things acted on"),
         ("put the lemon in the basket", ""),
     ],
