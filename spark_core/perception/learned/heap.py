@@ -15,7 +15,6 @@ applied once, by the `learned` segmenter's constructor; glibc only (elsewhere a 
 from __future__ import annotations
 
 import ctypes
-import ctypes.util
 import threading
 
 # glibc's mallopt parameters (malloc.h)
@@ -34,17 +33,20 @@ def keep_freed_memory() -> bool:
     global _applied
     with _LOCK:
         if _applied is None:
-            _applied = _mallopt(M_MMAP_THRESHOLD, MMAP_THRESHOLD_B) and _mallopt(M_TRIM_THRESHOLD, TRIM_THRESHOLD_B)
+            mallopt = _mallopt()
+            _applied = bool(
+                mallopt and mallopt(M_MMAP_THRESHOLD, MMAP_THRESHOLD_B) and mallopt(M_TRIM_THRESHOLD, TRIM_THRESHOLD_B)
+            )  # mallopt returns 1 on success
         return _applied
 
 
-def _mallopt(param: int, value: int) -> bool:
-    name = ctypes.util.find_library("c")
+def _mallopt():
+    """The C library's `mallopt`, looked up among the symbols already in the process (no library search, no
+    subprocess); None where there is none."""
     try:
-        libc = ctypes.CDLL(name)
-        mallopt = libc.mallopt
-    except (OSError, AttributeError, TypeError):
-        return False
+        mallopt = ctypes.CDLL(None).mallopt
+    except (OSError, AttributeError):
+        return None
     mallopt.argtypes = (ctypes.c_int, ctypes.c_int)
     mallopt.restype = ctypes.c_int
-    return bool(mallopt(param, value))  # 1 on success
+    return mallopt
