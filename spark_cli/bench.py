@@ -149,6 +149,12 @@ def register(sub) -> None:
         help="wording suite: plan and execute only this half of the corpus (default: both; develop on dev alone)",
     )
     b.add_argument(
+        "--corpus",
+        metavar="FILE.yaml",
+        help="wording suite: plan this corpus file (dev.yaml's schema, e.g. a probe) instead of the halves; "
+        "its rows are reported in the dev column",
+    )
+    b.add_argument(
         "--plan-only",
         action="store_true",
         help="wording suite: the planning check alone, without the execution sample (trials take minutes)",
@@ -237,7 +243,10 @@ def _wording(args: argparse.Namespace, command: str) -> str:
     """Both corpus halves planned, then (unless --plan-only) the execution sample (min(--trials, 2) seeds each)."""
     from spark_core.bench import wording
 
-    entries = [e for half in ([args.half] if args.half else wording.HALVES) for e in wording.load(half)]
+    if getattr(args, "corpus", None):
+        entries = wording.load_file(args.corpus)
+    else:
+        entries = [e for half in ([args.half] if args.half else wording.HALVES) for e in wording.load(half)]
     rows = wording.plan_entries(entries, args.seed, lambda r: print(_wording_line(r), flush=True))
     seeds = min(args.trials or 2, 2)
     exec_rows = (

@@ -169,6 +169,34 @@ def test_plan_only_skips_the_execution_sample(monkeypatch, tmp_path):
     assert ran == ["plan", "plan", "execute"]
 
 
+def test_corpus_option_plans_a_file_of_the_dev_schema_instead_of_the_halves(monkeypatch, tmp_path):
+    import argparse
+
+    import yaml
+
+    from spark_cli import bench as cli
+
+    entry = {"id": "p.1", "style": "synonym", "suite": "builtin", "task": "block_on_plate", "expect": "goal"}
+    probe = tmp_path / "probe.yaml"
+    probe.write_text(yaml.safe_dump([dict(entry, instruction="x")]))
+    seen: list[list[dict]] = []
+    monkeypatch.setattr(wording, "load", lambda half: pytest.fail("--corpus must not load a half"))
+    monkeypatch.setattr(
+        wording,
+        "plan_entries",
+        lambda entries, seed, progress: seen.append(entries)
+        or [dict(e, planned=True, correct=True, error="", understood=[]) for e in entries],
+    )
+    args = argparse.Namespace(half=None, seed=0, trials=None, json=None, plan_only=True, corpus=str(probe))
+    text = cli._wording(args, "spark bench wording --corpus probe.yaml --plan-only")
+    assert [e["id"] for e in seen[0]] == ["p.1"] and seen[0][0]["half"] == "dev"
+    assert "| synonym | 1 | 100" in text
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(yaml.safe_dump([dict(entry, task="no_such_task", instruction="x")]))
+    with pytest.raises(ValueError, match="no_such_task"):
+        wording.load_file(bad)
+
+
 def test_progress_lines_name_the_entry_but_never_its_wording_or_the_planner_message():
     from spark_cli import bench as cli
 
