@@ -184,8 +184,9 @@ def test_corpus_option_plans_a_file_of_the_dev_schema_instead_of_the_halves(monk
     monkeypatch.setattr(
         wording,
         "plan_entries",
-        lambda entries, seed, progress: seen.append(entries)
-        or [dict(e, planned=True, correct=True, error="", understood=[]) for e in entries],
+        lambda entries, seed, progress: (
+            seen.append(entries) or [dict(e, planned=True, correct=True, error="", understood=[]) for e in entries]
+        ),
     )
     args = argparse.Namespace(half=None, seed=0, trials=None, json=None, plan_only=True, corpus=str(probe))
     text = cli._wording(args, "spark bench wording --corpus probe.yaml --plan-only")
