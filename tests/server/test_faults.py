@@ -113,8 +113,10 @@ def _free_port() -> int:
         return s.getsockname()[1]
 
 
-def _serve(port: int, db: Path, log: Path) -> subprocess.Popen:
+def _serve(port: int, db: Path, log: Path, pythonpath: Path | None = None) -> subprocess.Popen:
     env = {**os.environ, "SPARK_VISER": "0", "SPARK_WORKERS": "1", "SPARK_ARTIFACTS_DIR": str(db.parent / "art")}
+    if pythonpath is not None:
+        env["PYTHONPATH"] = os.pathsep.join(p for p in (str(pythonpath), env.get("PYTHONPATH", "")) if p)
     return subprocess.Popen(
         [sys.executable, "-m", "spark_cli", "serve", "--port", str(port), "--store", f"sqlite:///{db}"],
         cwd=ROOT,
@@ -178,15 +180,35 @@ def test_restarting_the_server_process_mid_trial_marks_the_trial_interrupted(tmp
 
 
 def test_stopping_the_server_while_workers_warm_up_is_prompt_and_leaves_no_process(tmp_path):
+    # The workers' warm-up is made to last a minute (a sitecustomize on the server's path wraps spark_core.warm_up),
+    # so the bound below can leave room for a loaded machine while a shutdown that waited for the warm-up to end,
+    # or left a warming worker behind, still fails.
+    hook = tmp_path / "hook"
+    hook.mkdir()
+    (hook / "sitecustomize.py").write_text(
+        "import time\n"
+        "import spark_core\n"
+        "_warm_up = spark_core.warm_up\n"
+        "def _slow_warm_up():\n"
+        "    open(" + repr(str(tmp_path / "warming")) + ", 'a').write('x')\n"
+        "    _warm_up()\n"
+        "    time.sleep(60)\n"
+        "spark_core.warm_up = _slow_warm_up\n"
+    )
     port, db, log = _free_port(), tmp_path / "stop.db", tmp_path / "stop.log"
-    proc = _serve(port, db, log)  # `spark serve` spawns its workers at start; they take seconds to warm up
+    proc = _serve(port, db, log, pythonpath=hook)  # `spark serve` spawns its workers at start
     try:
         _wait_up(f"http://127.0.0.1:{port}", proc, log)
+        for _ in range(600):  # a worker is inside its warm-up
+            if (tmp_path / "warming").exists():
+                break
+            time.sleep(0.1)
+        assert (tmp_path / "warming").exists(), "no worker started warming up:\n" + log.read_text()[-3000:]
         children = [
             int(p) for t in Path(f"/proc/{proc.pid}/task").iterdir() for p in (t / "children").read_text().split()
         ]
         proc.send_signal(signal.SIGTERM)
-        proc.wait(5)  # the lifespan does not wait for a warm-up to finish (which takes 5-10 s)
+        proc.wait(30)  # far less than the minute the warm-up lasts: the lifespan does not wait for it
         time.sleep(1.0)
         assert children and not [c for c in children if _alive(c)]
     finally:
