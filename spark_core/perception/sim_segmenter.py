@@ -8,6 +8,7 @@ import re
 from collections.abc import Mapping, Sequence
 
 import numpy as np
+from lemminflect import getAllLemmas
 
 from .colors import BASE_COLOURS, normalise_colours
 from .colors import SYNONYMS as COLOUR_SYNONYMS
@@ -37,6 +38,9 @@ _FILLER = frozenset(["the", "a", "an", "one", "of", "with", "and", "on", "in", "
 # A head noun in no kinds table and not in the object's own words names the object only when the sentence encoder
 # puts it this close to the object's own noun ("cooker" / stove 0.66; "mustard" / ketchup 0.51, "ball" / block 0.28).
 UNKNOWN_NOUN_MIN_COSINE = 0.55
+# A food named with a noun before its own (`_other_food`) is the object when the encoder puts the phrase this near the
+# object's name: the noun only says what it is made of or where it comes from.
+SAME_PRODUCT_MIN_COSINE = 0.85
 
 
 def calibrated_score(cosine: float, threshold: float) -> float:
@@ -335,6 +339,9 @@ def mismatch(prompt: str, name: str, description: str, part_is_whole: bool = Tru
         if why:
             return why
     same_noun = bool(nw) and bool((_forms(pw[-1]) | (_kind(pw[-1]) or frozenset())) & _forms(nw[-1]))
+    other = _other_food(pw, nw, doc, attributes) or _other_package(said_head, nw, doc_words)
+    if other:
+        return other
     if len(pw) > 1 and len(nw) > 1 and same_noun:
         # "whiskey flask" is no wine bottle: the same kind of noun, and a word of its own where the object has another
         said = {w for w in pw[:-1] if w not in attributes and _kind(w) is None and not _forms(w) & doc}
@@ -375,6 +382,57 @@ def _unknown_head(head: str, modifiers: list[str], name_words: list[str], doc: s
         # that is only near this one's names another food ("cheddar" is no cream cheese, "oil" no butter, "vodka"
         # no wine bottle), however close the encoder puts them
         return f"noun: {head} vs {' '.join(name_words)}"
+    return None
+
+
+# Package nouns that say what a product comes in, by the kind of package: a jar is no box, a can no bottle. Words of
+# no group ("container", "package", "pack") claim no kind of package.
+_PACKAGE_KINDS: tuple[frozenset[str], ...] = (
+    frozenset(["box", "carton", "case", "packet"]),
+    frozenset(["can", "tin"]),
+    frozenset(["bottle"]),
+    frozenset(["jar"]),
+    frozenset(["tub"]),
+    frozenset(["bag", "pouch", "sachet"]),
+)
+
+
+def _package_kind(word: str) -> int | None:
+    return next((n for n, group in enumerate(_PACKAGE_KINDS) if _forms(word) & group), None)
+
+
+def _other_package(head: str, name_words: list[str], doc_words: list[str]) -> str | None:
+    """The object is (or, by its description, comes in) a package of one kind and the prompt's noun is a package of
+    another ("cookie jar" for the cookies in their box, "ketchup jar" for the ketchup's bottle): another product."""
+    said = _package_kind(head)
+    if said is None or not name_words:
+        return None
+    own = {k for w in [name_words[-1], *doc_words] if (k := _package_kind(w)) is not None}
+    if not own or said in own:
+        return None
+    return f"package: {head} vs {' '.join(name_words)}"
+
+
+def _other_food(said: list[str], name_words: list[str], doc: set[str], attributes: frozenset[str]) -> str | None:
+    """A food or drink named by its noun with a noun of its own before it that the object does not have ("peanut
+    butter" for the butter, "almond milk" for the milk): another product, unless the sentence encoder puts the
+    whole phrase as near the object's name as a word that only says what the product is made of or where it comes
+    from ("tomato ketchup", "cow milk": `SAME_PRODUCT_MIN_COSINE`). The object named by one word has no
+    distinguishing word for the multi-word check to compare with; a describing word (an adjective: "fresh",
+    "salted") or an attribute claims no other product."""
+    if len(said) < 2 or not name_words or not _forms(said[-1]) & _forms(name_words[-1]):
+        return None
+    if not _forms(name_words[-1]) & CONSUMABLES:
+        return None
+    for w in said[:-1]:
+        if w in attributes or w in GENERIC or _forms(w) & doc or _kind(w) is not None:
+            continue  # a word of the object's own, or a kind the kinds check has judged
+        pos = getAllLemmas(w)
+        if pos and set(pos) != {"NOUN"}:
+            continue
+        phrase = f"{w} {said[-1]}"
+        if _noun_cosine(phrase, " ".join(name_words)) < SAME_PRODUCT_MIN_COSINE:
+            return f"food: {phrase} is not {' '.join(name_words)}"
     return None
 
 
