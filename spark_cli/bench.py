@@ -8,6 +8,7 @@ import sys
 from dataclasses import replace
 from pathlib import Path
 
+from spark_core.bench.run_file import write_rows
 from spark_core.catalog import EMBODIMENTS, PLANNERS, SEGMENTERS
 
 from . import bench_manifest
@@ -142,7 +143,7 @@ def register(sub) -> None:
     )
     b.add_argument("--store-size", type=int, default=10_000, help="trials in the trace store (api, console suites)")
     b.add_argument("--write", metavar="BENCHMARKS.md", help="replace this benchmark's section in the file")
-    b.add_argument("--json", metavar="FILE", help="also write per-trial rows as JSON")
+    b.add_argument("--json", metavar="FILE", help="also write per-trial rows as JSON (gzipped when FILE ends in .gz)")
     b.add_argument(
         "--half",
         choices=["dev", "test"],
@@ -466,7 +467,7 @@ def _bench(args: argparse.Namespace) -> int:
                 body = body.replace("Protocol: ", "Protocol: " + _protocol_line(args) + "; ", 1)
             body, exit_code = bench_manifest.finish(args, manifest, rows, body)
         if args.json:
-            Path(args.json).write_text(json.dumps(rows, indent=1))
+            write_rows(args.json, rows)
     if args.manifest_id is None:  # not a trial suite's run: its manifest is what it ran on
         body = bench_manifest.finish_measurement(args, body, command)
     if args.write:

@@ -12,6 +12,7 @@ from pathlib import Path
 from .liberopro_attribution import attribution_table
 from .published import LIBEROPRO_CELLS, LIBEROPRO_MEAN
 from .report import footer, pct, wilson
+from .run_file import read_rows
 from .splits import SPLITS
 
 # The SPARK paper's LIBERO-PRO table: mean over the six position and task cells (success %). Only the Adaptive
@@ -33,12 +34,11 @@ class RunError(ValueError):
 
 
 def load_run(path: Path) -> list[dict]:
-    """The rows of one `spark bench liberopro --json` file; RunError naming the file when they are not that."""
-    import json
-
+    """The rows of one `spark bench liberopro --json` file (gzipped when its name ends in .gz); RunError naming the
+    file when they are not that."""
     try:
-        rows = json.loads(path.read_text())
-    except (OSError, ValueError) as e:
+        rows = read_rows(path)
+    except (OSError, ValueError, EOFError) as e:
         raise RunError(f"{path}: cannot read a run ({e})") from None
     if not isinstance(rows, list) or not rows or not all(isinstance(r, dict) for r in rows):
         raise RunError(f"{path}: expected the JSON list of trial rows `spark bench liberopro --json` writes")

@@ -22,6 +22,7 @@ from pathlib import Path
 from typing import Any
 
 from ..trial import TrialConfig
+from .run_file import read_rows, write_rows
 
 VERSION = 1
 REPO = Path(__file__).resolve().parents[2]
@@ -296,15 +297,19 @@ def _sum_tokens(usages) -> dict[str, int]:
 
 
 def save(manifest: dict[str, Any], path: str | Path) -> None:
-    Path(path).write_text(json.dumps(manifest, indent=1, default=str) + "\n")
+    """Write the manifest as JSON (gzipped when the name ends in .gz: run_file.py)."""
+    if Path(path).suffix == ".gz":
+        write_rows(path, manifest)
+    else:
+        Path(path).write_text(json.dumps(manifest, indent=1, default=str) + "\n")
 
 
 def load(path: str | Path) -> dict[str, Any]:
     """Read and check a manifest file; ManifestError naming the file and what is wrong."""
     try:
-        data = json.loads(Path(path).read_text())
-    except OSError as e:
-        raise ManifestError(f"manifest {path}: cannot read it ({e.strerror})") from None
+        data = read_rows(path)
+    except (OSError, EOFError) as e:  # gzip's errors among them
+        raise ManifestError(f"manifest {path}: cannot read it ({getattr(e, 'strerror', None) or e})") from None
     except json.JSONDecodeError as e:
         raise ManifestError(f"manifest {path}: not JSON ({e})") from None
     if not isinstance(data, dict) or data.get("manifest_version") != VERSION:

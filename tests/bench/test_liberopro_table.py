@@ -10,6 +10,7 @@ import pytest
 from spark_cli import main
 from spark_core.bench.liberopro_table import RunError, load_run, table
 from spark_core.bench.published import LIBEROPRO_CELLS
+from spark_core.bench.run_file import write_rows
 
 PROTOCOL = {"segmenter": "learned", "privileged": False, "planning": {"source": "rules"}, "wording": "official"}
 
@@ -70,3 +71,26 @@ def test_cli_asks_for_runs_and_writes_the_section(tmp_path, capsys):
     text = out.read_text()
     assert "## LIBERO-PRO per cell: our runs and the published rows" in text
     assert "held-out, 6 tasks, init states 10–11" in text and str(run) in text
+
+
+def test_a_gzipped_run_reads_as_the_plain_one_and_writes_the_same_bytes_each_time(tmp_path):
+    rows = [
+        {"task": "libero_goal_swap:turn_on_the_stove", "seed": 3, "success": True, "protocol": {"segmenter": "sim"}}
+    ]
+    plain, packed = tmp_path / "run.json", tmp_path / "run.json.gz"
+    write_rows(plain, rows)
+    write_rows(packed, rows)
+    assert packed.read_bytes()[:2] == b"\x1f\x8b"  # gzip's magic: compressed, not JSON text
+    assert load_run(packed) == load_run(plain) == rows
+    first = packed.read_bytes()
+    write_rows(packed, rows)  # no timestamp in the header: a re-written run is no change for git
+    assert packed.read_bytes() == first
+
+
+def test_a_truncated_gzipped_run_is_named_with_what_is_wrong(tmp_path):
+    path = tmp_path / "run.json.gz"
+    write_rows(path, [{"task": "libero_goal_swap:x", "seed": 0, "success": True, "protocol": {}}])
+    path.write_bytes(path.read_bytes()[:20])
+    with pytest.raises(RunError, match="cannot read a run") as e:
+        load_run(path)
+    assert str(path) in str(e.value)

@@ -236,3 +236,21 @@ def test_a_measurement_bench_names_the_code_it_ran_on(tmp_path, capsys):
     assert protocol[-1].endswith(f"; run manifest `{m['id']}`")
     with pytest.raises(mf.ManifestError, match="run.tasks is missing"):  # nothing to re-run: no tasks or seeds
         mf.load(out)
+
+
+def test_a_gzipped_manifest_loads_as_the_plain_one(tmp_path):
+    manifest = mf.build(
+        suite="builtin",
+        tasks=["lift_block"],
+        seeds=[0],
+        template=TrialConfig(task="lift_block", planner="reference", segmenter="privileged-keypoints"),
+    )
+    plain, packed = tmp_path / "run.manifest.json", tmp_path / "run.manifest.json.gz"
+    mf.save(manifest, plain)
+    mf.save(manifest, packed)
+    assert packed.read_bytes()[:2] == b"\x1f\x8b"
+    assert mf.load(packed) == mf.load(plain)
+    packed.write_bytes(packed.read_bytes()[:30])  # cut short: named, not a traceback
+    with pytest.raises(mf.ManifestError, match="cannot read it") as e:
+        mf.load(packed)
+    assert str(packed) in str(e.value)
