@@ -386,10 +386,10 @@ def _unknown_head(head: str, modifiers: list[str], name_words: list[str], doc: s
 
 
 # Package nouns that say what a product comes in, by the kind of package: a jar is no box, a can no bottle. Words of
-# no group ("container", "package", "pack") claim no kind of package.
+# no group ("container", "package", "pack"; "tin", said of a can and of a biscuit box alike) claim no kind of package.
 _PACKAGE_KINDS: tuple[frozenset[str], ...] = (
     frozenset(["box", "carton", "case", "packet"]),
-    frozenset(["can", "tin"]),
+    frozenset(["can"]),
     frozenset(["bottle"]),
     frozenset(["jar"]),
     frozenset(["tub"]),

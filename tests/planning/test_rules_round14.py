@@ -62,6 +62,7 @@ def test_a_package_of_another_kind_is_another_product(prompt, name, description)
         ("ketchup bottle", "ketchup", "squeeze bottle of tomato ketchup"),
         ("butter box", "butter", "small carton of butter"),
         ("cookie container", "cookies", "rectangular cardboard box of cookies"),  # claims no kind of package
+        ("cookie tin", "cookies", "rectangular cardboard box of cookies"),  # a tin may be a box
     ],
 )
 def test_a_package_of_the_objects_own_kind_still_grounds(prompt, name, description):
