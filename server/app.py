@@ -21,8 +21,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     async def lifespan(app: FastAPI):
         from spark_core import StoreLease, TraceStore
 
-        from .purge import start_purging
-        from .runner import TrialRunner
+        from .trials.purge import start_purging
+        from .trials.runner import TrialRunner
 
         store = TraceStore(settings.store_url)
         # One server per store: a second console refuses to start (LeaseHeld names the holder) before it touches
@@ -33,12 +33,12 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         store.interrupt_unfinished(lease=lease, keep_queued=True)  # running ones were cut off; queued ones run now
         scene = None
         if settings.viser:
-            from .viser_scene import ViserScene
+            from .view3d.viser_scene import ViserScene
 
             # loopback only: browsers come through /viser
             scene = ViserScene("127.0.0.1", settings.viser_port, env_map=settings.viser_env_map)
         app.state.store, app.state.settings, app.state.scene, app.state.lease = store, settings, scene, lease
-        from .replay import ReplayCursors
+        from .view3d.replay import ReplayCursors
 
         app.state.replays = ReplayCursors(store, scene)  # the 3D view and camera images at a page's cursor
         app.state.runner = TrialRunner(

@@ -175,7 +175,7 @@ def camera_at(
 ) -> Response:
     """A finished trial's camera at a time: the recorded scene state at or before `t_sim_s`, rendered, with the
     keypoints grounded by then drawn (the page's camera panel at its time cursor)."""
-    from ..replay import ReplayUnavailable
+    from ..view3d.replay import ReplayUnavailable
 
     try:
         png = request.app.state.replays.camera_png(trial_id, camera, t_sim_s)
@@ -226,7 +226,7 @@ def restore_trial(trial_id: TrialId, request: Request) -> TrialRestored:
 @router.post("/{trial_id}/replay", status_code=202)
 def replay(trial_id: TrialId, request: Request, speed: float = Query(1.0, gt=0.0, le=20.0)) -> dict:
     """Replay a finished trial in the 3D view from its recorded scene states (`speed`x real time)."""
-    from ..replay import ReplayUnavailable, start_replay
+    from ..view3d.replay import ReplayUnavailable, start_replay
 
     scene = request.app.state.scene
     if scene is None:

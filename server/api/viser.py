@@ -95,7 +95,7 @@ def focus(
     """Bind the 3D view to the trial a page shows: a live trial's own feed (other trials stop taking the view),
     or a finished trial's recorded scene at `t_sim_s` simulated seconds (default: its last state). No trial:
     unbind (the most recently started trial takes the view again)."""
-    from ..replay import ReplayUnavailable
+    from ..view3d.replay import ReplayUnavailable
 
     scene = request.app.state.scene
     if scene is None:

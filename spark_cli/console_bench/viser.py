@@ -10,8 +10,8 @@ from spark_core.bench.report import footer
 
 
 def run(task: str = "stack_three", seeds: int = 3) -> dict:
-    from server.runner import TrialRunner
-    from server.viser_scene import ViserScene
+    from server.trials.runner import TrialRunner
+    from server.view3d.viser_scene import ViserScene
     from spark_core import TraceStore, TrialConfig
 
     scene = ViserScene(rate_hz=30.0)

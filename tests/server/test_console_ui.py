@@ -13,7 +13,7 @@ from fastapi.testclient import TestClient
 
 from server.app import create_app
 from server.settings import Settings
-from server.viser_scene import ViserScene
+from server.view3d.viser_scene import ViserScene
 from spark_core import visual_geoms
 from spark_core.sim.tasks import BUILTIN
 

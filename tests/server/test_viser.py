@@ -10,9 +10,9 @@ from fastapi.testclient import TestClient
 from starlette.testclient import WebSocketDenialResponse
 
 from server.app import create_app
-from server.scene_feed import SceneFeed
 from server.settings import Settings
-from server.viser_scene import ViserScene
+from server.view3d.scene_feed import SceneFeed
+from server.view3d.viser_scene import ViserScene
 from spark_core.sim.geometry import body_poses
 from spark_core.sim.tasks import BUILTIN
 
@@ -111,7 +111,7 @@ def test_frame_rate_benchmark_runs():
 
 def test_a_robosuite_replay_draws_bodies_in_the_world_frame_of_the_keypoints():
     pytest.importorskip("robosuite", reason="benchmark extras: make bench-deps")
-    from server.replay import _play
+    from server.view3d.replay import _play
     from spark_core.sim.tasks import TASKS
 
     world = TASKS["Lift"].make_world(0)

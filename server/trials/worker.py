@@ -178,7 +178,7 @@ class _PipeSink(BaseSink):
         self.feed: Any = None
 
     def on_start(self, ctx) -> None:
-        from .scene_feed import SceneFeed
+        from ..view3d.scene_feed import SceneFeed
 
         self.send("status", self.trial_id, "running")
         self.feed = SceneFeed(
