@@ -260,7 +260,7 @@ def _wording(args: argparse.Namespace, command: str) -> str:
         )
     )
     if args.json:
-        Path(args.json).write_text(json.dumps({"planning": rows, "execution": exec_rows}, indent=1, default=str))
+        write_rows(args.json, {"planning": rows, "execution": exec_rows})
     return wording.section(rows, exec_rows, command, seeds)
 
 
