@@ -339,9 +339,6 @@ def mismatch(prompt: str, name: str, description: str, part_is_whole: bool = Tru
         if why:
             return why
     same_noun = bool(nw) and bool((_forms(pw[-1]) | (_kind(pw[-1]) or frozenset())) & _forms(nw[-1]))
-    other = _other_food(pw, nw, doc, attributes) or _other_package(said_head, nw, doc_words)
-    if other:
-        return other
     if len(pw) > 1 and len(nw) > 1 and same_noun:
         # "whiskey flask" is no wine bottle: the same kind of noun, and a word of its own where the object has another
         said = {w for w in pw[:-1] if w not in attributes and _kind(w) is None and not _forms(w) & doc}
@@ -349,7 +346,8 @@ def mismatch(prompt: str, name: str, description: str, part_is_whole: bool = Tru
         own = {w for w in nw[:-1] if w not in attributes and w not in pw}
         if said and own:
             return f"{pw[-1]}: {' '.join(sorted(said))} vs {' '.join(sorted(own))}"
-    return None
+    # checked after the distinguishing word above, whose reason is the more specific one ("sauce: bbq vs tomato")
+    return _other_food(pw, nw, doc, attributes) or _other_package(said_head, nw, doc_words)
 
 
 def _unknown_head(head: str, modifiers: list[str], name_words: list[str], doc: set[str]) -> str | None:
