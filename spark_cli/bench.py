@@ -160,6 +160,12 @@ def register(sub) -> None:
         action="store_true",
         help="wording suite: the planning check alone, without the execution sample (trials take minutes)",
     )
+    b.add_argument(
+        "--blind",
+        action="store_true",
+        help="wording suite: print counts and aggregate figures only (no per-entry lines with ids and styles, no "
+        "failure list), for a half or probe kept as an unseen sample",
+    )
     bench_manifest.add_arguments(b)
     b.set_defaults(func=_cmd_bench)
 
@@ -248,7 +254,13 @@ def _wording(args: argparse.Namespace, command: str) -> str:
         entries = wording.load_file(args.corpus)
     else:
         entries = [e for half in ([args.half] if args.half else wording.HALVES) for e in wording.load(half)]
-    rows = wording.plan_entries(entries, args.seed, lambda r: print(_wording_line(r), flush=True))
+    blind = bool(getattr(args, "blind", False))
+    done = iter(range(1, len(entries) + 1))
+    rows = wording.plan_entries(
+        entries,
+        args.seed,
+        lambda r: print(f"[{next(done)}/{len(entries)}] planned" if blind else _wording_line(r), flush=True),
+    )
     seeds = min(args.trials or 2, 2)
     exec_rows = (
         []
@@ -256,12 +268,17 @@ def _wording(args: argparse.Namespace, command: str) -> str:
         else wording.execute_sample(
             entries,
             seeds,
-            lambda r: print(f"{'ok  ' if r['success'] else 'FAIL'} {r['half']} {r['task'][:40]} {r['wording']}"),
+            lambda r: print(
+                "trial done"
+                if blind
+                else f"{'ok  ' if r['success'] else 'FAIL'} {r['half']} {r['task'][:40]} {r['wording']}",
+                flush=True,
+            ),
         )
     )
     if args.json:
         write_rows(args.json, {"planning": rows, "execution": exec_rows})
-    return wording.section(rows, exec_rows, command, seeds)
+    return wording.section(rows, exec_rows, command, seeds, list_failures=not blind)
 
 
 def _wording_line(r: dict) -> str:

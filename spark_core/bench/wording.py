@@ -328,7 +328,10 @@ def _why(row: dict[str, Any]) -> str:
     return "refused" if not row["planned"] else "planned, not the official plan's effect"
 
 
-def section(rows: list[dict[str, Any]], exec_rows: list[dict[str, Any]], command: str, seeds: int) -> str:
+def section(
+    rows: list[dict[str, Any]], exec_rows: list[dict[str, Any]], command: str, seeds: int, list_failures: bool = True
+) -> str:
+    """The wording table. `list_failures=False` (a blind run) leaves out the dev column's failing ids."""
     lines = ["| style | dev entries | dev correct | test entries | test correct |", "|---|---|---|---|---|"]
     styles = list(dict.fromkeys(r["style"] for r in rows))
     for style in styles:
@@ -368,7 +371,7 @@ def section(rows: list[dict[str, Any]], exec_rows: list[dict[str, Any]], command
             f"| execution: reworded / official | {pct(execs['dev']['ratio'])} | {pct(execs['test']['ratio'])} |"
         )
     wrong = [r for r in rows if r["half"] == "dev" and r["correct"] is False]
-    if wrong:
+    if wrong and list_failures:
         lines.append("")
         lines.append("Dev failures: " + "; ".join(f"`{r['id']}` ({_why(r)})" for r in wrong))
     return (

@@ -216,3 +216,36 @@ def test_progress_lines_name_the_entry_but_never_its_wording_or_the_planner_mess
     assert "builtin.x.v7" in line and "negation" in line and "refused" in line and "FAIL" in line
     assert "zebra" not in line
     assert "planned" in cli._wording_line(dict(row, planned=True, correct=True))
+
+
+def test_a_blind_run_prints_counts_and_figures_but_no_entry_id_style_or_failure_list(monkeypatch, capsys, tmp_path):
+    """`--blind` keeps a probe or the test half unseen: the person running it learns the aggregates alone."""
+    import argparse
+
+    import yaml
+
+    from spark_cli import bench as cli
+
+    entries = [
+        {"id": "secret.one", "style": "zzstyle", "suite": "builtin", "task": "block_on_plate", "expect": "goal"},
+        {"id": "secret.two", "style": "zzstyle", "suite": "builtin", "task": "block_on_plate", "expect": "goal"},
+    ]
+    probe = tmp_path / "probe.yaml"
+    probe.write_text(yaml.safe_dump([dict(e, instruction="put the block on the plate") for e in entries]))
+
+    def plan_entries(entries, seed, progress):
+        rows = [dict(e, planned=i == 0, correct=i == 0, error="no", understood=[]) for i, e in enumerate(entries)]
+        for r in rows:
+            progress(r)
+        return rows
+
+    monkeypatch.setattr(wording, "plan_entries", plan_entries)
+    args = argparse.Namespace(half=None, seed=0, trials=None, json=None, plan_only=True, corpus=str(probe))
+    seen = cli._wording(args, "spark bench wording --corpus probe.yaml --plan-only")
+    seen_out = capsys.readouterr().out
+    assert "secret.one" in seen_out and "secret.two" in seen  # without --blind: ids in progress and failure list
+    blind = cli._wording(argparse.Namespace(**vars(args), blind=True), "spark bench wording --blind")
+    out = capsys.readouterr().out + blind
+    assert "secret" not in out and "[2/2] planned" in out
+    assert "50.0 %" in blind  # the aggregate planning figure is still reported
+    assert "zzstyle" in blind  # per-style rows are aggregates (counts), kept
