@@ -114,8 +114,9 @@ def create_batch(body: BatchCreate, request: Request) -> dict:
                     task=sp.task,
                     instruction=sp.instruction,
                     seed=sp.seed,
-                    planner=sp.planner or body.planner,
-                    segmenter=sp.segmenter or body.segmenter,
+                    # unset (None) takes the batch's; an empty name is a name, refused below like any unknown one
+                    planner=body.planner if sp.planner is None else sp.planner,
+                    segmenter=body.segmenter if sp.segmenter is None else sp.segmenter,
                 ),
             )
             for i, sp in enumerate(body.specs)

@@ -34,6 +34,9 @@ def _nothing_recorded(client) -> bool:
         ({"tasks": ["lift_block"], "seed": 2**31 - 1, "trials": 2}, "seed: seeds 2147483647..2147483648 go past"),
         ({"tasks": ["lift_block"], "seed": True}, "seed"),
         ({"tasks": ["lift_block"], "planner": "openai"}, "model: the openai planner needs a model name"),
+        # an empty name in a spec is not "unset": it was run with the batch's planner / segmenter instead
+        ({"specs": [{"task": "lift_block", "planner": ""}]}, "unknown planner ''"),
+        ({"specs": [{"task": "lift_block", "segmenter": ""}]}, "unknown segmenter ''"),
     ],
 )
 def test_a_bad_batch_records_nothing_and_names_what_was_wrong(client, body, message):
