@@ -206,8 +206,15 @@ def delete_export(export_id: Annotated[str, PathParam(max_length=MAX_ID)], reque
     if export_id in request.app.state.exports_writing:
         raise HTTPException(409, f"export {export_id!r} is still being written: delete it once it is done")
     root = _directory(request, export_id)
-    freed = _bytes(root)
-    shutil.rmtree(root)
+    # Out of the listing in one atomic rename before anything is removed: of two deletes at once one gets the
+    # export, the other its 404 (both removing the same files answered 500s, and each counted part of the bytes).
+    doomed = root.with_name(f".deleting-{export_id}-{uuid.uuid4().hex[:8]}")
+    try:
+        root.rename(doomed)
+    except FileNotFoundError:
+        raise HTTPException(404, f"no export {export_id!r}") from None
+    freed = _bytes(doomed)
+    shutil.rmtree(doomed)
     return ExportDeleted(id=export_id, bytes_freed=freed)
 
 

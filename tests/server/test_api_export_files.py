@@ -100,3 +100,38 @@ def test_an_export_being_written_cannot_be_deleted_or_downloaded(console, monkey
     assert answer["r"].status_code == 201 and answer["r"].json()["id"] == item["id"]
     assert c.get("/api/exports").json()["items"][0]["status"] == "ready"
     assert c.delete(f"/api/exports/{item['id']}").status_code == 200
+
+
+def test_two_deletes_of_one_export_at_once_free_it_once_and_answer_404_to_the_other(tmp_path, monkeypatch):
+    """Both requests find the export; one removes it and reports every byte, the other answers 404 (they used to
+    remove the same files together: 500s, and bytes_freed counted only part of the export)."""
+    import server.api.exports as exports_api
+
+    with TestClient(create_app(isolated_settings(tmp_path)), raise_server_exceptions=False) as c:
+        root = tmp_path / "exports" / "export-0123456789"
+        for i in range(50):
+            (root / "dataset" / f"d{i}").mkdir(parents=True)
+            (root / "dataset" / f"d{i}" / "f.bin").write_bytes(b"x" * 1000)
+        (root / "export-0123456789.zip").write_bytes(b"z" * 500)
+        both_found = threading.Barrier(2, timeout=30)
+        real = exports_api._directory
+
+        def found_together(request, export_id):
+            path = real(request, export_id)
+            both_found.wait()  # each request has checked that the export is there before either removes it
+            return path
+
+        monkeypatch.setattr(exports_api, "_directory", found_together)
+        answers: list = []
+        deleters = [
+            threading.Thread(target=lambda: answers.append(c.delete("/api/exports/export-0123456789")))
+            for _ in range(2)
+        ]
+        for t in deleters:
+            t.start()
+        for t in deleters:
+            t.join(60)
+        assert sorted(r.status_code for r in answers) == [200, 404], [r.text for r in answers]
+        ok = next(r for r in answers if r.status_code == 200)
+        assert ok.json() == {"id": "export-0123456789", "bytes_freed": 50 * 1000 + 500}
+        assert list((tmp_path / "exports").iterdir()) == [] and c.get("/api/exports").json()["total"] == 0
