@@ -58,6 +58,18 @@ def test_a_trial_record_names_its_files_without_server_paths(client, tmp_path):
     assert client.get("/api/trials/t-art/artifacts/detection.png").content == b"png"  # still served by name
 
 
+def test_an_artifact_whose_file_is_gone_is_a_404_naming_it(client, tmp_path):
+    """The record names a file that is no longer on disk (removed by hand, or the console started elsewhere):
+    a 404 that names the artifact and not where it was, never a 500."""
+    gone = tmp_path / "art" / "t-gone" / "detection.png"
+    store = client.app.state.store  # type: ignore[attr-defined]
+    entry = {"name": "detection.png", "path": str(gone), "sha256": "x"}
+    store.create_trial("t-gone", status="done", task="lift_block", artifacts=[entry])
+    r = client.get("/api/trials/t-gone/artifacts/detection.png")
+    assert r.status_code == 404 and "'detection.png' is no longer on" in r.json()["detail"], r.text
+    assert str(tmp_path) not in r.text
+
+
 @pytest.mark.parametrize(
     "url,body,field",
     [
