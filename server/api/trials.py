@@ -37,6 +37,15 @@ def trial_config(body: TrialCreate, batch_id: str | None = None) -> TrialConfig:
     entry = PLANNERS[body.planner]
     if body.model is not None and entry.offline and not entry.needs_model and entry.default_model is None:
         raise HTTPException(422, f"model: the {body.planner} planner takes no model (only the LLM planners do)")
+    # a model name is an identifier: "   " is none (it passed "needs a model name" and went to the LLM server as is)
+    model = None if body.model is None else body.model.strip()
+    if model == "":
+        default = entry.default_model
+        raise HTTPException(
+            422,
+            "model: the model name is blank: name a model"
+            + (f", or leave it out for the {body.planner} planner's default ({default})" if default else ""),
+        )
     # a blank instruction is no instruction: the task's own, as the field's description says (not a planner's
     # refusal of "   ")
     instruction = body.instruction.strip() or None if body.instruction is not None else None
@@ -68,7 +77,7 @@ def trial_config(body: TrialCreate, batch_id: str | None = None) -> TrialConfig:
         body.task,
         instruction=instruction,
         planner=body.planner,
-        model=body.model,
+        model=model,
         base_url=None,  # never a caller's URL: endpoints are the operator's (named in spark.yaml)
         plan_text=body.plan,
         segmenter=body.segmenter,

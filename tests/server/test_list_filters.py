@@ -90,3 +90,13 @@ def test_a_model_for_a_planner_that_takes_none_is_refused(client):
         r.status_code == 422
         and r.json()["detail"] == "model: the reference planner takes no model (only the LLM planners do)"
     )
+
+
+@pytest.mark.parametrize("planner", ["openai", "gemini"])
+@pytest.mark.parametrize("model", ["", "   ", "\t"])
+def test_a_blank_model_name_is_refused(client, planner, model):
+    """A blank model is no model: openai's "needs a model name" let "   " through to the LLM server, and gemini
+    sent it instead of its default."""
+    r = client.post("/api/trials", json={"task": "lift_block", "planner": planner, "model": model})
+    assert r.status_code == 422 and r.json()["detail"].startswith("model: the model name is blank"), r.text
+    assert sorted(client.app.state.store.trial_ids()) == ["t-pct", "t-plain"]  # type: ignore[attr-defined]
