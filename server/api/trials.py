@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import asyncio
 import os
+import re
 import uuid
 from datetime import timedelta
 from typing import Annotated
@@ -270,6 +271,9 @@ def control(trial_id: TrialId, body: Control, request: Request) -> dict:
     return {"id": trial_id, "state": c.state, "breakpoints": sorted(c.breakpoints)}
 
 
+_NODE_PATH = re.compile(r"tree(\.children\[(0|[1-9][0-9]*)\])*")  # spark_core.grammar's walk(): the root, children
+
+
 def check_breakpoints(paths: list[str], config: TrialConfig) -> list[str]:
     """The paths, if each names a node of the trial's plan (when the plan is known before it runs: a given plan
     or the task's reference plan); 422 naming the unknown ones and a few that exist."""
@@ -279,7 +283,14 @@ def check_breakpoints(paths: list[str], config: TrialConfig) -> list[str]:
     if text is None and config.planner == "reference":
         text = TASKS[config.task].reference_plan_text()
     plan = validate(text)[0] if text is not None else None
-    if plan is None:  # an LLM's plan: its node paths are known only once it is written
+    if plan is None:  # an LLM's plan: its node paths are known only once it is written, but a path is a path
+        malformed = [p for p in paths if not _NODE_PATH.fullmatch(p)]
+        if malformed:
+            raise HTTPException(
+                422,
+                f"breakpoints: {', '.join(repr(p) for p in malformed[:5])} is not a node path (the plan is written "
+                "when the trial runs; node paths look like tree, tree.children[0], tree.children[2].children[1])",
+            )
         return paths
     nodes = [path for path, _node, _arm in plan.nodes()]
     unknown = [p for p in paths if p not in nodes]

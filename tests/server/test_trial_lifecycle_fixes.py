@@ -75,6 +75,17 @@ def test_breakpoints_must_name_nodes_of_the_plan(tmp_path):
         assert c.get("/api/trials").json()["total"] == 0
 
 
+@pytest.mark.parametrize("bad", ["zzz", "", "tree.children[01]", "tree.children[-1]", "tree/children/0"])
+def test_breakpoints_for_a_plan_not_yet_written_must_be_node_paths(tmp_path, bad):
+    """The rules planner (and an LLM) write the plan when the trial runs, so its node names cannot be checked when
+    it is queued; a breakpoint that is no node path at all could never fire, and was accepted silently."""
+    with _client(tmp_path) as c:
+        body = {"task": "lift_block", "planner": "rules", "breakpoints": ["tree.children[0]", bad]}
+        r = c.post("/api/trials", json=body)
+        assert r.status_code == 422 and f"breakpoints: {bad!r} is not a node path" in r.json()["detail"], r.text
+        assert c.get("/api/trials").json()["total"] == 0
+
+
 def _wait(c: TestClient, trial_id: str, state: str) -> None:
     t0 = time.monotonic()
     while c.get(f"/api/trials/{trial_id}").json().get("control_state") != state:
