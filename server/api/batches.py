@@ -78,6 +78,18 @@ def create_batch(body: BatchCreate, request: Request) -> dict:
         raise HTTPException(422, f"{n} trials is more than one batch may hold ({MAX_BATCH})")
     if body.specs is not None and not body.specs:
         raise HTTPException(422, "specs is empty: give at least one trial, or leave it out to run the suite")
+    if body.specs is not None:  # each spec names its task and seed: these would be ignored, not run
+        ignored = [
+            f"{name} ({value!r})"
+            for name, value, unset in (("tasks", body.tasks, None), ("trials", body.trials, 1), ("seed", body.seed, 0))
+            if value != unset
+        ]
+        if ignored:
+            raise HTTPException(
+                422,
+                f"{', '.join(ignored)}: not with specs (each spec names its own task and seed); give either specs, "
+                "or tasks with trials per task from seed",
+            )
     if body.tasks is not None and not body.tasks:
         raise HTTPException(422, f"tasks is empty: no tasks selected; omit `tasks` to run the whole {body.suite} suite")
     if body.tasks is not None:

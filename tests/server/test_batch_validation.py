@@ -37,6 +37,10 @@ def _nothing_recorded(client) -> bool:
         # an empty name in a spec is not "unset": it was run with the batch's planner / segmenter instead
         ({"specs": [{"task": "lift_block", "planner": ""}]}, "unknown planner ''"),
         ({"specs": [{"task": "lift_block", "segmenter": ""}]}, "unknown segmenter ''"),
+        # specs name their own tasks and seeds: the suite's fields beside them were ignored, not run
+        ({"specs": [{"task": "lift_block"}], "tasks": ["stack_two"]}, "tasks (['stack_two']): not with specs"),
+        ({"specs": [{"task": "lift_block"}], "trials": 100}, "trials (100): not with specs"),
+        ({"specs": [{"task": "lift_block"}], "seed": 5}, "seed (5): not with specs"),
     ],
 )
 def test_a_bad_batch_records_nothing_and_names_what_was_wrong(client, body, message):
