@@ -7,6 +7,8 @@ from pathlib import Path
 
 from fastapi import FastAPI
 from fastapi.middleware.cors import CORSMiddleware
+from starlette.routing import Match, Mount
+from starlette.types import Scope
 
 from .security.guard import Guard
 from .security.redact import install_log_redaction
@@ -111,12 +113,25 @@ def _mount_web(app: FastAPI, dist: Path) -> None:
         )
 
     if (dist / "index.html").is_file():
-        app.mount("/", StaticFiles(directory=dist, html=True), name="web")  # after the API: /api wins
+        app.router.routes.append(_WebMount("/", app=StaticFiles(directory=dist, html=True), name="web"))
     else:
 
         @app.get("/", include_in_schema=False)
         def not_built() -> HTMLResponse:
             return HTMLResponse(_NOT_BUILT, status_code=503)
+
+
+class _WebMount(Mount):
+    """The front end at "/", for every path but the API's. Mounted at "/" it matched /api/... too, and a request
+    no API route took was the static files' to answer: POST /api/trial (a typo) got 405 Method Not Allowed with
+    `allow: GET, HEAD`, PUT /api/trials the same, and HEAD /api/health 404. The API's own router answers those
+    (404 for no such endpoint, 405 naming the methods the path takes)."""
+
+    def matches(self, scope: Scope) -> tuple[Match, Scope]:
+        path = scope.get("path", "")
+        if path == "/api" or path.startswith("/api/"):
+            return Match.NONE, {}
+        return super().matches(scope)
 
 
 _NOT_BUILT = (

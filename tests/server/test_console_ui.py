@@ -204,3 +204,20 @@ def test_a_focus_request_overtaken_by_a_later_one_does_not_draw(tmp_path):
         assert c.post("/api/viser/focus").json()["pinned"] is None
         first.join(10)
         assert scene.pinned is None and scene.current == f"replay:{b}"
+
+
+def test_an_api_path_no_route_takes_is_answered_by_the_api_not_the_front_ends_files(tmp_path):
+    """The front end is mounted at "/", and used to answer every /api/... request no API route took: a typo'd
+    POST /api/trial got 405 `allow: GET, HEAD` (as if the path existed), PUT /api/trials the same although it
+    takes GET and POST, HEAD /api/health 404."""
+    if not (ROOT / "web" / "dist" / "index.html").is_file():
+        pytest.skip("front end not built")
+    with TestClient(_app(tmp_path, workers=0, viser=False)) as c:
+        r = c.post("/api/trial", json={"task": "lift_block"})
+        assert r.status_code == 404, r.text
+        r = c.put("/api/trials", json={})
+        assert r.status_code == 405 and "HEAD" not in r.headers["allow"] and "POST" in r.headers["allow"]
+        assert c.head("/api/health").status_code == 405  # a GET route: its method is named, not "not found"
+        assert c.delete("/api/exports/..").status_code == 404
+        assert c.get("/").status_code == 200 and "<html" in c.get("/").text.lower()  # the pages are still served
+        assert c.get("/favicon.svg").status_code == 200 and c.get("/api/health").json() == {"status": "ok"}
