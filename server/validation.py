@@ -30,7 +30,17 @@ def _loc_part(part: Any) -> str | int:
 
 
 def _is_non_finite(value: Any) -> bool:
+    """A NaN or infinite float, or the query or path text of one ("nan", "inf", "1e400"): a query's number
+    arrives as text and failed its bounds as a number ("t_sim_s=nan: less than or equal to 1000000")."""
+    if isinstance(value, str) and len(value) <= 400:
+        try:
+            value = float(value)
+        except ValueError:
+            return False
     return isinstance(value, float) and not math.isfinite(value)
+
+
+_BOUNDS = frozenset({"greater_than", "greater_than_equal", "less_than", "less_than_equal", "finite_number"})
 
 
 def safe_errors(errors: Any) -> list[dict[str, Any]]:
@@ -39,7 +49,10 @@ def safe_errors(errors: Any) -> list[dict[str, Any]]:
         loc = [_loc_part(p) for p in e.get("loc", ())]
         kind = str(e.get("type", ""))
         numeric = not kind.endswith("_type") or kind in ("float_type", "finite_number")
-        msg = _FINITE if numeric and _is_non_finite(e.get("input")) else _text(e.get("msg", "invalid value"))
+        value = e.get("input")
+        if isinstance(value, str) and kind not in _BOUNDS:  # text that fails as text ("nan" for a pattern) is text
+            numeric = False
+        msg = _FINITE if numeric and _is_non_finite(value) else _text(e.get("msg", "invalid value"))
         if kind == "string_unicode":
             msg = "not valid Unicode text: a lone surrogate (\\ud800-\\udfff) is not a character"
         field = ".".join(str(p) for p in loc[1:] if p != "body") if len(loc) > 1 else ""

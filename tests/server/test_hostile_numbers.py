@@ -49,6 +49,22 @@ def test_a_non_finite_number_is_called_what_it_is(client):
     assert d["field"] == "time_limit_s" and "finite number" in d["msg"]
 
 
+@pytest.mark.parametrize("value", ["nan", "NaN", "inf", "-Infinity", "1e400"])
+def test_a_non_finite_number_in_a_query_is_called_what_it_is(client, value):
+    """A query's number arrives as text: "nan" failed its bounds as a number (t_sim_s=nan: "Input should be less
+    than or equal to 1000000", speed=nan the same), not as what it is."""
+    for method, url, field in (
+        ("GET", f"/api/trials/t/camera.png?t_sim_s={value}", "t_sim_s"),
+        ("POST", f"/api/trials/t/replay?speed={value}", "speed"),
+    ):
+        r = client.request(method, url)
+        assert r.status_code == 422, r.text
+        (d,) = r.json()["detail"]
+        assert d["field"] == field and "finite number" in d["msg"], d
+    r = client.post("/api/exports", json={"batch": "x", "format": "nan"})  # text that is not a number stays text
+    assert r.status_code == 422 and "finite" not in r.text and "lerobot" in r.text
+
+
 LONG = "1" + "0" * 5000
 
 
