@@ -262,6 +262,12 @@ def control(trial_id: TrialId, body: Control, request: Request) -> dict:
     c = live.control
     if body.breakpoints is not None and body.action != "breakpoints":
         raise HTTPException(422, f"breakpoints: only with action 'breakpoints', not {body.action!r}")
+    if body.action == "breakpoints" and body.breakpoints is None:  # left out is not "clear them all"
+        raise HTTPException(
+            422,
+            "breakpoints: action 'breakpoints' sets the list given in `breakpoints` (the node paths to pause "
+            "before; [] clears them): give it",
+        )
     if c.aborted and body.action != "abort":
         raise HTTPException(409, f"trial {trial_id!r} was aborted: it cannot {body.action} any more")
     if body.action == "breakpoints":

@@ -107,6 +107,9 @@ def test_control_and_delete_of_live_trials_say_what_is_wrong(tmp_path):
         assert r.status_code == 422 and "only with action 'breakpoints'" in r.json()["detail"]
         ok = c.post(f"/api/trials/{first}/control", json={"action": "breakpoints", "breakpoints": ["tree.children[0]"]})
         assert ok.status_code == 200 and ok.json()["breakpoints"] == ["tree.children[0]"]
+        r = c.post(f"/api/trials/{first}/control", json={"action": "breakpoints"})  # no list: not "clear them all"
+        assert r.status_code == 422 and "[] clears them" in r.json()["detail"]
+        assert c.get(f"/api/trials/{first}").json()["breakpoints"] == ["tree.children[0]"]
         assert c.post(f"/api/trials/{second}/control", json={"action": "abort"}).status_code == 200
         resumed = c.post(f"/api/trials/{first}/control", json={"action": "resume"})
         assert resumed.status_code == 200 and resumed.json()["state"] == "running"  # not the pause it left
