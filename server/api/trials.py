@@ -126,6 +126,8 @@ def list_trials(
     from spark_core import enums
 
     verdicts = enums()["verdict"]
+    if sort.startswith("--"):  # the store drops every leading '-': "--created_at" sorted as "-created_at"
+        raise HTTPException(422, f"sort: {sort!r}: a column name, with one '-' before it for descending")
     if verdict and verdict not in verdicts:
         raise HTTPException(422, f"verdict: unknown verdict {verdict!r}; verdicts: {', '.join(verdicts)}")
     try:

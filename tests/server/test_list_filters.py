@@ -27,6 +27,9 @@ def test_an_unknown_verdict_or_status_is_422_listing_the_known_ones(client):
     r = client.get("/api/trials?status=bogus")
     assert r.status_code == 422 and "queued, running, done, interrupted" in r.json()["detail"]
     assert client.get("/api/trials?verdict=success&status=done").status_code == 200
+    r = client.get("/api/trials?sort=--created_at")  # was taken as -created_at
+    assert r.status_code == 422 and "one '-' before it for descending" in r.json()["detail"]
+    assert client.get("/api/trials?sort=-created_at").status_code == 200
 
 
 @pytest.mark.parametrize("q,ids", [("%", ["t-pct"]), ("lift_the", []), ("100%", ["t-pct"]), ("red", ["t-plain"])])
