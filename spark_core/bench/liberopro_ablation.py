@@ -2,11 +2,13 @@
 against the full system, on the same tasks and init states.
 
 Each run is the row list `spark bench liberopro --json` writes; a run's configuration is read from its rows'
-protocol (adaptive prompts on/off, recovery on/off), never from its file name. The three runs must hold the same
-trials (task and init state), so a difference is the switch and nothing else."""
+protocol (adaptive prompts on/off, recovery on/off), never from its file name. The two ablation runs must hold the same
+trials (task and init state), so a difference is the switch and nothing else; the full system's run holds them too,
+or more (the whole development run), and is then read on those trials alone."""
 
 from __future__ import annotations
 
+from collections import Counter
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -75,13 +77,29 @@ def section(runs: Sequence[tuple[Path, list[dict]]], command: str) -> str:
     if missing:
         raise RunError(f"no run for: {', '.join(missing)} (give one run of each of: {', '.join(CONFIGS)})")
     keys = {c: {(r["task"], int(r["seed"])) for r in rows} for c, (_, rows) in by_config.items()}
+    sampled = keys[CONFIGS[1]]
+    # the full system's run may be a larger one (the whole development run): its rows on the sampled trials are
+    # the same trials the ablations ran
+    restricted = keys["full"] > sampled and all(keys[c] == sampled for c in CONFIGS[1:])
+    if restricted:
+        path, rows = by_config["full"]
+        by_config["full"] = (path, [r for r in rows if (r["task"], int(r["seed"])) in sampled])
+        keys["full"] = sampled
     if len({frozenset(k) for k in keys.values()}) != 1:
         raise RunError("the runs hold different trials (task and init state): an ablation compares the same ones")
     rows_of = {c: rows for c, (_, rows) in by_config.items()}
     full = rows_of["full"]
+    per_cell = Counter(t.split(":", 1)[0] for t in {r["task"] for r in full})
+    sample = (
+        f"{next(iter(per_cell.values()))} in each of the {len(per_cell)} cells"
+        if len(set(per_cell.values())) == 1
+        else ", ".join(f"{c} {n}" for c, n in sorted(per_cell.items()))
+    )
     seeds = sorted({int(r["seed"]) for r in full})
     sources = "; ".join(
-        f"{c}: `{p}`" + (f", run manifest `{rows[0]['manifest_id']}`" if rows[0].get("manifest_id") else "")
+        f"{c}: `{p}`"
+        + (" (its rows on the sampled trials)" if c == "full" and restricted else "")
+        + (f", run manifest `{rows[0]['manifest_id']}`" if rows[0].get("manifest_id") else "")
         for c, (p, rows) in by_config.items()
     )
     won = {c: {(r["task"], int(r["seed"])) for r in rows if r["success"]} for c, rows in rows_of.items()}
@@ -93,8 +111,8 @@ def section(runs: Sequence[tuple[Path, list[dict]]], command: str) -> str:
         f"run's: {flips}.\n\n"
         + footer(
             command,
-            f"LIBERO-PRO, {len({r['task'] for r in full})} tasks (the first three of each of the six cells in the "
-            f"suite's order), init states {seeds[0]}–{seeds[-1]} (development); system: {run_label(full)}; "
+            f"LIBERO-PRO, {len({r['task'] for r in full})} tasks ({sample}), init states {seeds[0]}–{seeds[-1]} "
+            f"(development); system: {run_label(full)}; "
             "full = adaptive prompts on (label + 3 variants) and recovery on (tiers 1-2, 2 retries); each ablation "
             "switches one off and keeps everything else; runs: " + sources + "; the paper's effects are its "
             "ablation figures (Gemini planner + SAM3), not re-run here",

@@ -64,3 +64,34 @@ def test_runs_over_different_trials_or_a_missing_configuration_are_refused():
         )
     with pytest.raises(RunError, match="no run for: recovery off"):
         section([(Path("a"), full), (Path("b"), _run(False, True, {SPATIAL: 1, OBJECT: 1}))], "x")
+
+
+def test_a_full_run_over_more_trials_is_read_on_the_ablations_trials_alone():
+    """The whole development run serves as the full system: only its rows on the sampled trials count."""
+    sampled = {SPATIAL: 6, OBJECT: 4}
+    other = SPATIAL.replace("between", "beside")
+    full = _run(True, True, sampled) + [
+        dict(r, task=other) for r in _run(True, True, {SPATIAL: 0, OBJECT: 0}) if r["task"] == SPATIAL
+    ]  # 10 extra trials of another task, all failed: they must not dilute the full system's rates
+    runs = [
+        (Path("dev.json"), full),
+        (Path("off_ad.json"), _run(False, True, {SPATIAL: 2, OBJECT: 3})),
+        (Path("off_rec.json"), _run(True, False, {SPATIAL: 5, OBJECT: 4})),
+    ]
+    text = section(runs, "spark bench liberopro-ablation")
+    full_row = next(line for line in text.splitlines() if line.startswith("| full |"))
+    assert full_row.rstrip(" |").endswith("50.0 % [29.9–70.1] (20)")  # 10 of the 20 sampled trials
+    assert "full: `dev.json` (its rows on the sampled trials)" in text
+    assert "2 tasks (1 in each of the 2 cells)" in text
+    # the ablation runs themselves must still agree with each other
+    with pytest.raises(RunError, match="different trials"):
+        section([runs[0], runs[1], (Path("c"), _run(True, False, {SPATIAL: 1, OBJECT: 1}, seeds=range(5)))], "x")
+
+
+def test_the_protocol_line_counts_the_sampled_tasks_per_cell():
+    def run(adaptive: bool, recovery: bool) -> list[dict]:
+        rows = _run(adaptive, recovery, {SPATIAL: 3, OBJECT: 3})
+        return rows + [dict(r, task=r["task"].replace("between", "beside")) for r in rows if r["task"] == SPATIAL]
+
+    text = section([(Path("f"), run(True, True)), (Path("a"), run(False, True)), (Path("r"), run(True, False))], "x")
+    assert "3 tasks (libero_object_task 1, libero_spatial_swap 2)" in text and "first three" not in text
