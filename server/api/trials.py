@@ -176,7 +176,7 @@ def artifact(trial_id: TrialId, name: Annotated[str, Path(max_length=256)], requ
     if entry is None:
         raise HTTPException(404, f"trial {trial_id!r} has no artifact {name!r}")
     if not os.path.isfile(entry["path"]):  # removed from disk since (or another artifacts directory): no 500
-        raise HTTPException(404, f"trial {trial_id!r}'s artifact {name!r} is no longer on this server's disk")
+        raise HTTPException(404, f"trial {trial_id!r}: artifact {name!r} is no longer on this server's disk")
     media = "image/jpeg" if str(entry["path"]).endswith((".jpg", ".jpeg")) else "image/png"
     return FileResponse(entry["path"], media_type=media)
 
