@@ -16,6 +16,8 @@ class Settings:
     spawn_workers_at_start: bool = False  # True for `spark serve`: the first trial does not wait for a process
     api_token: str | None = None  # required for mutating calls when bound beyond loopback
     cors_origins: tuple[str, ...] = field(default_factory=tuple)
+    # DNS names (beyond localhost and IP addresses) a console without a token answers to (server/security/origin.py)
+    allowed_hosts: tuple[str, ...] = field(default_factory=tuple)
     artifacts_dir: str = "var/artifacts"  # annotated detection images, one directory per trial
     exports_dir: str = "var/exports"  # datasets exported from the console (LeRobot), one directory + zip each
     viser: bool = True  # live 3D view of the running trial (viser on its own port)
@@ -49,6 +51,7 @@ class Settings:
             hang_timeout_s=float(e.get("SPARK_HANG_TIMEOUT_S", cls.hang_timeout_s)),
             api_token=e.get("SPARK_API_TOKEN") or None,
             cors_origins=tuple(o.strip() for o in e.get("SPARK_CORS_ORIGINS", "").split(",") if o.strip()),
+            allowed_hosts=tuple(h.strip() for h in e.get("SPARK_ALLOWED_HOSTS", "").split(",") if h.strip()),
             trusted_proxies=tuple(p.strip() for p in e.get("SPARK_TRUSTED_PROXIES", "").split(",") if p.strip()),
             viser=e.get("SPARK_VISER", "1") != "0",
             artifacts_dir=e.get("SPARK_ARTIFACTS_DIR", cls.artifacts_dir),

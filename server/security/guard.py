@@ -1,5 +1,7 @@
 """The console's one gate (pure ASGI, so it sees streamed bodies and websockets before any route does):
 
+0. a console that asks no credentials (loopback, no token) answers only requests addressed to a loopback name
+   (origin.local_host: no DNS-rebinding page can reach it under its own name);
 1. `GET /page?token=T` (the UI login): a session cookie and a redirect to the same page without the token;
 2. websockets and mutating requests: same origin (origin.py), then credentials where they are needed (beyond
    loopback, or whenever SPARK_API_TOKEN is set), with wrong credentials limited per client (429);
@@ -26,7 +28,7 @@ from ..settings import Settings
 from . import credentials
 from .clients import client_address, parse_networks
 from .limits import FailureLimiter, TokenBucket
-from .origin import json_content_type, origin_allowed
+from .origin import json_content_type, local_host, origin_allowed
 
 MUTATING = {"POST", "PUT", "PATCH", "DELETE"}
 PUBLIC_READS = {"/api/health"}  # liveness probes need no token, and it says nothing
@@ -61,6 +63,13 @@ class Guard:
             return
         headers = Headers(scope=scope)
         try:
+            if not self.auth_needed and not local_host(headers, self.settings.allowed_hosts):
+                raise Refusal(
+                    403,
+                    f"Host {headers.get('host')!r} is not a name of this machine: a console that asks no credentials "
+                    "(loopback, no SPARK_API_TOKEN) answers to localhost and IP addresses only, not to a DNS name a "
+                    "web page may point here (DNS rebinding); list the name in SPARK_ALLOWED_HOSTS or set a token",
+                )
             page = (
                 scope["type"] == "http" and scope["method"] in ("GET", "HEAD") and not scope["path"].startswith("/api/")
             )

@@ -134,6 +134,35 @@ def test_cross_origin_pages_cannot_drive_a_loopback_console(tmp_path):
         assert listed.status_code == 200
 
 
+def test_a_dns_rebinding_page_cannot_read_or_drive_a_console_without_a_token(tmp_path):
+    """A page at http://rebind.attacker.example:8000 whose name then resolves to 127.0.0.1 is "same origin" with the
+    console (its Origin and the Host it sends are both its own name): on a console that asks no credentials it
+    could queue, read and purge trials. Such a console answers only to loopback names and IP addresses."""
+    rebound = {"Host": "rebind.attacker.example:8000", "Origin": "http://rebind.attacker.example:8000"}
+    with TestClient(create_app(isolated_settings(tmp_path))) as c:  # loopback, no token: the default console
+        r = c.post("/api/trials", json={"task": "lift_block"}, headers=rebound)
+        assert r.status_code == 403 and "DNS rebinding" in r.json()["detail"]
+        assert c.get("/api/trials", headers={"Host": "rebind.attacker.example:8000"}).status_code == 403
+        assert c.get("/", headers={"Host": "rebind.attacker.example."}).status_code == 403
+        with (
+            pytest.raises(WebSocketDenialResponse) as refused,
+            c.websocket_connect("/api/events", headers=rebound),
+        ):
+            pass
+        assert refused.value.status_code == 403
+        assert c.get("/api/trials").json()["total"] == 0  # nothing was queued
+        for host in ("localhost:8000", "127.0.0.1:8000", "[::1]:8000", "127.0.0.2", "spark.localhost:8000", "box"):
+            assert c.get("/api/trials", headers={"Host": host}).status_code == 200, host
+    allowed = isolated_settings(tmp_path, allowed_hosts=("spark.lab.example",))
+    with TestClient(create_app(allowed)) as c:  # SPARK_ALLOWED_HOSTS: the operator's own name for this machine
+        assert c.get("/api/trials", headers={"Host": "spark.lab.example:8000"}).status_code == 200
+        assert c.get("/api/trials", headers={"Host": "rebind.attacker.example"}).status_code == 403
+    with TestClient(create_app(isolated_settings(tmp_path, api_token=TOKEN))) as c:  # a token guards every name
+        auth = {"Authorization": f"Bearer {TOKEN}", "Host": "spark.lab.example"}
+        assert c.get("/api/trials", headers=auth).status_code == 200
+        assert c.get("/api/trials", headers={"Host": "spark.lab.example"}).status_code == 401
+
+
 def test_a_chunked_body_over_the_limit_is_refused(tmp_path):
     def body():
         for _ in range(32):  # 2 MiB in 64 KiB chunks: no Content-Length to check up front
