@@ -53,6 +53,8 @@ def safe_errors(errors: Any) -> list[dict[str, Any]]:
         if isinstance(value, str) and kind not in _BOUNDS:  # text that fails as text ("nan" for a pattern) is text
             numeric = False
         msg = _FINITE if numeric and _is_non_finite(value) else _text(e.get("msg", "invalid value"))
+        if kind == "value_error" and msg.startswith("Value error, "):  # pydantic's prefix on a validator's message
+            msg = msg[len("Value error, ") :]
         if kind == "string_unicode":
             msg = "not valid Unicode text: a lone surrogate (\\ud800-\\udfff) is not a character"
         field = ".".join(str(p) for p in loc[1:] if p != "body") if len(loc) > 1 else ""

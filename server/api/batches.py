@@ -14,6 +14,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 from spark_core import PLANNERS, PROTOCOLS, SEGMENTERS, StorePlanLibrary, batch_manifest, wilson
 from spark_core import suites as catalog_suites
 
+from ..validation import safe_errors
 from .models import MAX_ID, MAX_NAME, MAX_OFFSET, MAX_SEED, TrialCreate
 from .text import VISIBLE, Visible
 from .trials import trial_config
@@ -156,7 +157,7 @@ def create_batch(body: BatchCreate, request: Request) -> dict:
             )
             configs.append(trial_config(trial, batch_id))
         except ValidationError as e:  # a catalog name the batch or one of its specs got wrong
-            raise HTTPException(422, f"{where}: " + "; ".join(str(x["msg"]) for x in e.errors())) from None
+            raise HTTPException(422, f"{where}: " + "; ".join(x["msg"] for x in safe_errors(e.errors()))) from None
         except HTTPException as e:
             raise HTTPException(422, f"{where}: {e.detail}") from None
     store, runner = request.app.state.store, request.app.state.runner

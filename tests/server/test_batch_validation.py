@@ -35,8 +35,8 @@ def _nothing_recorded(client) -> bool:
         ({"tasks": ["lift_block"], "seed": True}, "seed"),
         ({"tasks": ["lift_block"], "planner": "openai"}, "model: the openai planner needs a model name"),
         # an empty name in a spec is not "unset": it was run with the batch's planner / segmenter instead
-        ({"specs": [{"task": "lift_block", "planner": ""}]}, "unknown planner ''"),
-        ({"specs": [{"task": "lift_block", "segmenter": ""}]}, "unknown segmenter ''"),
+        ({"specs": [{"task": "lift_block", "planner": ""}]}, "specs[0]: unknown planner ''"),
+        ({"specs": [{"task": "lift_block", "segmenter": ""}]}, "specs[0]: unknown segmenter ''"),
         # specs name their own tasks and seeds: the suite's fields beside them were ignored, not run
         ({"specs": [{"task": "lift_block"}], "tasks": ["stack_two"]}, "tasks (['stack_two']): not with specs"),
         ({"specs": [{"task": "lift_block"}], "trials": 100}, "trials (100): not with specs"),

@@ -103,3 +103,8 @@ def test_a_blank_model_name_is_refused(client, planner, model):
     r = client.post("/api/trials", json={"task": "lift_block", "planner": planner, "model": model})
     assert r.status_code == 422 and r.json()["detail"].startswith("model: the model name is blank"), r.text
     assert sorted(client.app.state.store.trial_ids()) == ["t-pct", "t-plain"]  # type: ignore[attr-defined]
+
+
+def test_a_validator_s_message_reads_without_pydantic_s_prefix(client):
+    r = client.post("/api/trials", json={"task": "lift_block", "planner": "oracle"})
+    assert r.status_code == 422 and r.json()["detail"][0]["msg"].startswith("unknown planner 'oracle'; available:")
