@@ -236,6 +236,10 @@ class TrialRunner:
         self._closing = True
         with self._lock:
             running = [(tid, live) for tid, live in self.live.items() if live.sent]
+            cancelled = [tid for tid, live in self.live.items() if not live.sent and live.control.aborted]
+        for trial_id in cancelled:  # still queued in the store: the next start would run what was cancelled
+            with contextlib.suppress(Exception):  # the store may be going away with the process
+                self._record_cancelled(trial_id)
         for _, live in running:
             if not live.control.aborted:  # an operator's abort stays the operator's
                 live.stopped_by_shutdown = True
@@ -253,6 +257,17 @@ class TrialRunner:
         for trial_id, live in running:  # still not recorded (its slot did not finish in time): say so now
             if live.stopped_by_shutdown:
                 self._mark_interrupted(trial_id)
+
+    def _record_cancelled(self, trial_id: str) -> None:
+        """A trial cancelled (aborted) while it was queued: done, never started."""
+        self.store.update_trial(
+            trial_id,
+            status="done",
+            outcome="aborted",
+            verdict=Verdict.ABORTED.value,
+            success=False,
+            reason="cancelled before it started",
+        )
 
     def _mark_interrupted(self, trial_id: str) -> None:
         """A trial the server stopped at shutdown: interrupted, unless it had already ended on its own."""
@@ -285,14 +300,7 @@ class TrialRunner:
             t0 = time.perf_counter()
             try:
                 if live.control.aborted:  # cancelled while queued: never starts
-                    self.store.update_trial(
-                        trial_id,
-                        status="done",
-                        outcome="aborted",
-                        verdict=Verdict.ABORTED.value,
-                        success=False,
-                        reason="cancelled before it started",
-                    )
+                    self._record_cancelled(trial_id)
                     continue
                 try:
                     worker = self._worker(i)

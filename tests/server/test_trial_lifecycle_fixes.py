@@ -116,3 +116,21 @@ def test_control_and_delete_of_live_trials_say_what_is_wrong(tmp_path):
         assert c.post(f"/api/trials/{first}/control", json={"action": "abort"}).status_code in (200, 409)
         # aborted (still winding down) or already finished: either way nothing to resume
         assert c.post(f"/api/trials/{first}/control", json={"action": "resume"}).status_code == 409
+
+
+def test_a_trial_cancelled_while_queued_is_not_run_by_the_next_start(tmp_path):
+    """Cancelled while it waited for a worker (here: none), then the console stopped before a slot reached it: it
+    stayed queued in the store, and the next start ran it (a cancelled batch came back after a restart)."""
+    settings = Settings(
+        store_url=f"sqlite:///{tmp_path / 'q.db'}", workers=0, viser=False, artifacts_dir=str(tmp_path / "art")
+    )
+    with TestClient(create_app(settings)) as c:
+        cancelled = c.post("/api/trials", json={"task": "lift_block"}).json()["id"]
+        kept = c.post("/api/trials", json={"task": "lift_block", "seed": 1}).json()["id"]
+        assert c.post(f"/api/trials/{cancelled}/control", json={"action": "abort"}).status_code == 200
+    with TestClient(create_app(settings)) as c:
+        runner = c.app.state.runner  # type: ignore[attr-defined]
+        assert cancelled not in runner.live and kept in runner.live  # only the one still wanted is queued again
+        t = c.get(f"/api/trials/{cancelled}").json()
+        assert (t["status"], t["verdict"], t["reason"]) == ("done", "aborted", "cancelled before it started")
+        assert c.get(f"/api/trials/{kept}").json()["status"] == "queued"
