@@ -168,9 +168,13 @@ class TrialRunner:
         the config recorded at queue time). One that cannot be rebuilt is marked interrupted with why.
         Returns (queued again, interrupted)."""
         again = lost = 0
+        batch_cancelled: dict[str, bool] = {}
         for rec in self.store.queued_trials():
             try:
                 config = config_from_record(rec["protocol"].get("config") or {})
+                if config.batch_id is not None and config.batch_id not in batch_cancelled:
+                    batch = self.store.get_batch(config.batch_id)
+                    batch_cancelled[config.batch_id] = batch is not None and batch["status"] == "cancelled"
             except TrialConfigError as e:
                 self.store.update_trial(
                     rec["id"],
@@ -181,6 +185,10 @@ class TrialRunner:
                     reason=f"the server stopped before the trial started, and it cannot be queued again: {e}",
                 )
                 lost += 1
+                continue
+            if config.batch_id is not None and batch_cancelled[config.batch_id]:
+                # its batch was cancelled by a server that stopped (or died) before recording this trial so
+                self._record_cancelled(rec["id"])
                 continue
             self._track(rec["id"], config)
             self.queue.put(rec["id"])

@@ -134,3 +134,25 @@ def test_a_trial_cancelled_while_queued_is_not_run_by_the_next_start(tmp_path):
         t = c.get(f"/api/trials/{cancelled}").json()
         assert (t["status"], t["verdict"], t["reason"]) == ("done", "aborted", "cancelled before it started")
         assert c.get(f"/api/trials/{kept}").json()["status"] == "queued"
+
+
+def test_a_cancelled_batch_s_trials_left_queued_by_a_dead_server_are_not_run_at_the_next_start(tmp_path):
+    """The batch is recorded cancelled, but its server died before it recorded the queued trials so: the next start
+    queued them again and ran them. A trial of another batch, and one of no batch, still run."""
+    from spark_core import TraceStore, TrialConfig
+
+    from server.trials.runner import TrialRunner
+
+    store = TraceStore(f"sqlite:///{tmp_path / 'b.db'}")
+    dead = TrialRunner(store, workers=0)  # a console that queued them, then died without shutting down
+    for batch in ("batch-cancelled", "batch-running"):
+        store.create_batch(batch, {"suite": "builtin", "trial_count": 1})
+        dead.submit(f"{batch}-0000-lift_block-0", TrialConfig("lift_block", batch_id=batch).check())
+    dead.submit("solo", TrialConfig("lift_block").check())
+    store.set_batch_status("batch-cancelled", "cancelled")
+
+    again = TrialRunner(store, workers=0)
+    assert again.requeue_recorded() == (2, 0)
+    assert sorted(again.live) == ["batch-running-0000-lift_block-0", "solo"]
+    t = store.get_trial("batch-cancelled-0000-lift_block-0")
+    assert (t["status"], t["verdict"], t["reason"]) == ("done", "aborted", "cancelled before it started")
