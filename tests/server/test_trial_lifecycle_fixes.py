@@ -139,9 +139,8 @@ def test_a_trial_cancelled_while_queued_is_not_run_by_the_next_start(tmp_path):
 def test_a_cancelled_batch_s_trials_left_queued_by_a_dead_server_are_not_run_at_the_next_start(tmp_path):
     """The batch is recorded cancelled, but its server died before it recorded the queued trials so: the next start
     queued them again and ran them. A trial of another batch, and one of no batch, still run."""
-    from spark_core import TraceStore, TrialConfig
-
     from server.trials.runner import TrialRunner
+    from spark_core import TraceStore, TrialConfig
 
     store = TraceStore(f"sqlite:///{tmp_path / 'b.db'}")
     dead = TrialRunner(store, workers=0)  # a console that queued them, then died without shutting down
