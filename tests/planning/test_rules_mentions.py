@@ -133,3 +133,27 @@ def test_what_is_poured_from_a_named_source_need_not_be_seen_itself():
         {"beads": "none found"},
     )
     assert res.ok, res.error
+
+
+def test_a_place_on_a_part_plans_with_the_camera_only_segmenters_list_of_what_it_sees():
+    """LIBERO-PRO goal-swap's "put the wine bottle on the top of the drawer" under the camera-only segmenter: the
+    check that a word before the head noun ("drawer" in "drawer top") names a thing the scene holds reads the
+    learned segmenter's list, which left parts out, so every such trial was refused (0/10 against the oracle's
+    10/10). The list now holds the parts it sees, as the oracle's does."""
+    from spark_core.perception.learned import segmenter as seg_mod
+    from spark_core.perception.learned.categories import CATEGORY_INDEX
+
+    seg = seg_mod.LearnedSegmenter()
+    mask = np.ones((48, 64), bool)
+    seen = ("wine bottle", "cabinet", "drawer", "drawer handle", "wine rack")
+    seg.instances = lambda f: [seg_mod.Instance(CATEGORY_INDEX[n], mask, 0.9, "none") for n in seen]
+    inventory = tuple(seg.names_in(None))  # instances() is stubbed: no frame is read
+    view = SceneView(
+        {"wine bottle": kp("wine bottle", (0.5, 0.1, 0.1)), "drawer top": kp("drawer top", (0.6, -0.2, 0.4))},
+        inventory=inventory,
+    )
+    res = RulesPlanner().plan(PlanRequest("put the wine bottle on the top of the drawer", view))
+    assert res.ok, res.error
+    without_parts = SceneView(view.keypoints, inventory=("cabinet", "wine bottle", "wine rack"))
+    refused = RulesPlanner().plan(PlanRequest("put the wine bottle on the top of the drawer", without_parts))
+    assert not refused.ok and "'drawer'" in refused.error  # what the old list led to

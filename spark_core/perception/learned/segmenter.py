@@ -340,10 +340,10 @@ class LearnedSegmenter:
     # -- the Segmenter protocol --------------------------------------------------------------------------------
     def names_in(self, frame: CameraFrame) -> list[str]:
         """What this frame shows, once per instance, by the network's own category names (no colours: they are
-        supervised only for some objects); parts are left out (a refusal lists things). Camera-only, like
-        everything here: for a planner that says what the scene holds."""
-        shown = (CATEGORIES[i.category] for i in self.instances(frame))
-        return sorted(c.name for c in shown if not c.part_of)
+        supervised only for some objects), parts included as the sim oracle lists them (a drawer, its handle): the
+        planner checks every thing an instruction names against this list ("the top of the drawer" needs a drawer
+        in it). Camera-only, like everything here: for a planner that says what the scene holds."""
+        return sorted(CATEGORIES[i.category].name for i in self.instances(frame))
 
     def segment(self, frame: CameraFrame, prompts: Sequence[str]) -> list[Detection]:
         out: list[Detection] = []
