@@ -12,7 +12,7 @@ from datetime import UTC, datetime, timedelta
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, cast
 
-from sqlalchemy import Text, case, create_engine, delete, event, func, not_, or_, select
+from sqlalchemy import Text, case, create_engine, delete, event, func, not_, or_, select, update
 from sqlalchemy import cast as sql_cast
 from sqlalchemy.orm import selectinload, sessionmaker
 
@@ -171,21 +171,34 @@ class TraceStore:
         """Hide the trial from every read (restorable with `restore_trial`); when it was deleted, or None if
         there is no such (visible) trial."""
         now = _now()
+        # one conditional UPDATE, not read-then-write: a purge (or another delete) between the read and the write
+        # left the ORM updating a row that was gone (StaleDataError, a 500), and two deletes at once both succeeded
         with self.Session.begin() as s:
-            row = s.get(TrialRow, trial_id)
-            if row is None or row.deleted_at is not None:
-                return None
-            row.deleted_at = now
-        return now
+            done = cast(
+                "CursorResult[Any]",
+                s.execute(
+                    update(TrialRow)
+                    .where(TrialRow.id == trial_id, TrialRow.deleted_at.is_(None))
+                    .values(deleted_at=now)
+                    .execution_options(synchronize_session=False)
+                ),
+            )
+        return now if done.rowcount == 1 else None
 
     def restore_trial(self, trial_id: str, grace_s: float) -> bool:
         """Undo a delete made within the last `grace_s` seconds; False if there is no such deleted trial."""
-        with self.Session.begin() as s:
-            row = s.get(TrialRow, trial_id)
-            if row is None or row.deleted_at is None or _aware(row.deleted_at) < _now() - timedelta(seconds=grace_s):
-                return False
-            row.deleted_at = None
-            return True
+        cutoff = _now() - timedelta(seconds=grace_s)
+        with self.Session.begin() as s:  # one conditional UPDATE, for the same reason as delete_trial's
+            done = cast(
+                "CursorResult[Any]",
+                s.execute(
+                    update(TrialRow)
+                    .where(TrialRow.id == trial_id, TrialRow.deleted_at.is_not(None), TrialRow.deleted_at >= cutoff)
+                    .values(deleted_at=None)
+                    .execution_options(synchronize_session=False)
+                ),
+            )
+        return done.rowcount == 1
 
     def purge_trial(self, trial_id: str, artifacts_dir: str | Path | None = None) -> bool:
         """Remove the trial for good (deleted or not): its record, events, groundings, the plan it gave the plan
@@ -521,11 +534,6 @@ def _row_dict(row: TrialRow, summary: bool = False) -> dict:
 
 def _now() -> datetime:
     return datetime.now(UTC)
-
-
-def _aware(t: datetime) -> datetime:
-    """SQLite hands back naive datetimes for what was stored in UTC."""
-    return t if t.tzinfo is not None else t.replace(tzinfo=UTC)
 
 
 def _remove_artifacts(root: Path, trial_id: str, entries: list[dict]) -> None:
