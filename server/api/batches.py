@@ -186,6 +186,11 @@ def list_batches(
 
 @router.get("/{batch_id}")
 def get_batch(batch_id: BatchId, request: Request) -> dict:
+    """The batch: its settings (`spec`, with the run's manifest), status, progress, its trials' summaries, and
+    `results`, one row per task: done / total, `judged` (trials with a verdict on the task: not aborted or
+    interrupted), `not_judged`, `deleted`, `successes`, `success_rate` and `ci95` (its 95 % Wilson interval,
+    [low, high]) over the judged trials. With no judged trial yet, `success_rate` and `ci95` are both null: there
+    is no rate to bound."""
     return _batch_with_results(request, batch_id)
 
 
@@ -210,7 +215,8 @@ CSV_TRIAL_COLUMNS = (
 
 @router.get("/{batch_id}/results.csv", response_class=PlainTextResponse)
 def batch_results_csv(batch_id: BatchId, request: Request) -> PlainTextResponse:
-    """The per-task result table (success rate with its Wilson 95 % interval) as CSV."""
+    """The per-task result table (success rate with its Wilson 95 % interval) as CSV; a task with no judged trial
+    has empty success_rate, ci95_low and ci95_high cells."""
     b = _batch_with_results(request, batch_id)
     rows = [
         {
@@ -219,8 +225,8 @@ def batch_results_csv(batch_id: BatchId, request: Request) -> PlainTextResponse:
             "total": r["total"],
             "successes": r["successes"],
             "success_rate": r["success_rate"],
-            "ci95_low": r["ci95"][0],
-            "ci95_high": r["ci95"][1],
+            "ci95_low": r["ci95"][0] if r["ci95"] is not None else None,  # empty cells: no judged trial
+            "ci95_high": r["ci95"][1] if r["ci95"] is not None else None,
             "judged": r["judged"],
             "not_judged": r["not_judged"],
             "deleted": r["deleted"],
@@ -294,7 +300,6 @@ def _batch_with_results(request: Request, batch_id: str) -> dict:
         rs = [t for t in finished if t["task"] == task]
         judged = [t for t in rs if t.get("verdict") not in NOT_JUDGED]
         k = sum(bool(t["success"]) for t in judged)
-        lo, hi = wilson(k, len(judged))
         table.append(
             {
                 "task": task,
@@ -305,7 +310,8 @@ def _batch_with_results(request: Request, batch_id: str) -> dict:
                 "deleted": sum(t["task"] == task for t in deleted),
                 "successes": k,
                 "success_rate": k / len(judged) if judged else None,
-                "ci95": [lo, hi],
+                # no judged trial, no rate: no interval either (wilson's [0, 0] read as "certainly never succeeds")
+                "ci95": list(wilson(k, len(judged))) if judged else None,
             }
         )
     status = batch["status"] if batch["status"] == "cancelled" or len(finished) < len(members) else "done"

@@ -65,9 +65,11 @@ def test_cancelled_and_interrupted_trials_are_not_failures(client):
     rows = {r["task"]: r for r in client.get("/api/batches/batch-m2").json()["results"]}
     lift, plate = rows["lift_block"], rows["block_on_plate"]
     assert (lift["judged"], lift["not_judged"], lift["successes"], lift["success_rate"]) == (2, 2, 1, 0.5)
-    assert (plate["judged"], plate["not_judged"], plate["success_rate"], plate["ci95"]) == (0, 1, None, [0.0, 0.0])
+    # no judged trial: no rate and no interval (it said ci95 [0, 0] beside success_rate null)
+    assert (plate["judged"], plate["not_judged"], plate["success_rate"], plate["ci95"]) == (0, 1, None, None)
+    assert lift["ci95"] is not None and lift["ci95"][0] < 0.5 < lift["ci95"][1]
     csv = client.get("/api/batches/batch-m2/results.csv").text.splitlines()
-    assert csv[1].startswith("block_on_plate,1,1,0,,") and csv[1].endswith(",0,1,0")
+    assert csv[1] == "block_on_plate,1,1,0,,,,0,1,0"  # success_rate, ci95_low, ci95_high all empty
     assert csv[2].startswith("lift_block,4,4,1,0.5,") and csv[2].endswith(",2,2,0")
 
 

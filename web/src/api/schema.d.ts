@@ -337,7 +337,14 @@ export interface paths {
             path?: never;
             cookie?: never;
         };
-        /** Get Batch */
+        /**
+         * Get Batch
+         * @description The batch: its settings (`spec`, with the run's manifest), status, progress, its trials' summaries, and
+         *     `results`, one row per task: done / total, `judged` (trials with a verdict on the task: not aborted or
+         *     interrupted), `not_judged`, `deleted`, `successes`, `success_rate` and `ci95` (its 95 % Wilson interval,
+         *     [low, high]) over the judged trials. With no judged trial yet, `success_rate` and `ci95` are both null: there
+         *     is no rate to bound.
+         */
         get: operations["get_batch_api_batches__batch_id__get"];
         put?: never;
         post?: never;
@@ -363,7 +370,8 @@ export interface paths {
         };
         /**
          * Batch Results Csv
-         * @description The per-task result table (success rate with its Wilson 95 % interval) as CSV.
+         * @description The per-task result table (success rate with its Wilson 95 % interval) as CSV; a task with no judged trial
+         *     has empty success_rate, ci95_low and ci95_high cells.
          */
         get: operations["batch_results_csv_api_batches__batch_id__results_csv_get"];
         put?: never;

@@ -74,5 +74,6 @@ export interface BatchSummary {
   id: string; created_at: string; status: string; spec: Record<string, unknown>;
   progress: { done: number; total: number; successes?: number };
 }
-export interface BatchResult { task: string; done: number; total: number; successes: number; success_rate: number | null; ci95: [number, number] }
+/** `success_rate` and its 95 % Wilson interval `ci95` are over the judged trials: both null while there is none */
+export interface BatchResult { task: string; done: number; total: number; successes: number; success_rate: number | null; ci95: [number, number] | null }
 export interface Batch extends BatchSummary { trials: TrialSummary[]; results: BatchResult[] }

@@ -30,6 +30,7 @@ export function SuccessChart({ results }: { results: BatchResult[] }) {
               ctx.fillStyle = "#6fa8ff";
               ctx.fillRect(x - w / 2, y, w, y0 - y);
             }
+            if (r.ci95 === null) return; // no judged trial: no bar and no whisker
             const lo = u.valToPos(r.ci95[0], "y", true), hi = u.valToPos(r.ci95[1], "y", true);
             ctx.strokeStyle = "#1d2330"; ctx.lineWidth = 2;
             ctx.beginPath(); ctx.moveTo(x, lo); ctx.lineTo(x, hi);

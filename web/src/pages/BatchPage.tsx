@@ -9,7 +9,9 @@ import { PhaseChart, type PhaseRow, TimingChart, type TimingRow } from "../compo
 import { TrialTable } from "../components/TrialTable";
 import { settingsOf } from "./Batches";
 
-const pct = (x: number | null) => (x === null ? "" : `${(100 * x).toFixed(1)} %`);
+// no judged trial yet: no rate and no interval, shown as a dash (not 0 %)
+const pct = (x: number | null) => (x === null ? "–" : `${(100 * x).toFixed(1)} %`);
+const interval = (ci: [number, number] | null) => (ci === null ? "–" : `${pct(ci[0])} – ${pct(ci[1])}`);
 
 export function BatchPage({ id }: { id: string }) {
   const [b, setB] = useState<Batch | null>(null);
@@ -55,7 +57,7 @@ export function BatchPage({ id }: { id: string }) {
         <SuccessChart results={b.results} />
         <table id="batch-table"><thead><tr><th>task</th><th>done</th><th>success</th><th>95 % CI</th></tr></thead>
           <tbody>{b.results.map((r) => (
-            <tr key={r.task}><td>{r.task}</td><td>{r.done}/{r.total}</td><td>{pct(r.success_rate)}</td><td>{pct(r.ci95[0])} – {pct(r.ci95[1])}</td></tr>))}</tbody></table>
+            <tr key={r.task} data-task={r.task}><td>{r.task}</td><td>{r.done}/{r.total}</td><td className="rate">{pct(r.success_rate)}</td><td className="ci95">{interval(r.ci95)}</td></tr>))}</tbody></table>
       </section>
       <section className="timing"><h3>Where the time went</h3>
         <div className="charts">

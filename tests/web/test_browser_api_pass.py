@@ -1,0 +1,41 @@
+"""Pages that show what the adversarial API pass's fixes changed in the API's answers, in a real browser (the
+fixtures of test_browser.py: uvicorn with trial workers, Debian's headless chromium)."""
+
+from __future__ import annotations
+
+from .test_browser import APPS, browser, page, server, shot  # noqa: F401 (fixtures)
+
+
+def _store():
+    return APPS[-1].state.store
+
+
+def test_a_task_with_no_judged_trial_shows_no_rate_and_no_interval(server, page):  # noqa: F811
+    """A batch task whose trials were all aborted has no success rate and no interval (the API said ci95 [0, 0]
+    beside success_rate null: the table showed '0.0 % – 0.0 %' and the chart an error bar pinned at 0 %)."""
+    store = _store()
+    store.create_batch("batch-unjudged", {"suite": "builtin", "trial_count": 2})
+    for n, (task, verdict) in enumerate((("lift_block", "aborted"), ("push_to_zone", "success"))):
+        store.create_trial(
+            f"batch-unjudged-{n:04d}-{task}-0",
+            status="done",
+            task=task,
+            verdict=verdict,
+            outcome="success" if verdict == "success" else "aborted",
+            success=verdict == "success",
+            batch_id="batch-unjudged",
+        )
+    errors: list[str] = []
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    page.goto(f"{server}/#/batch/batch-unjudged")
+    page.wait_for_selector("#batch-table tbody tr[data-task=lift_block]")
+    page.wait_for_selector("#success-chart canvas")
+    unjudged = page.locator("#batch-table tr[data-task=lift_block]")
+    assert unjudged.locator("td.rate").inner_text() == "–"
+    assert unjudged.locator("td.ci95").inner_text() == "–"
+    judged = page.locator("#batch-table tr[data-task=push_to_zone]")
+    assert judged.locator("td.rate").inner_text() == "100.0 %"
+    assert judged.locator("td.ci95").inner_text().endswith("– 100.0 %")
+    page.wait_for_timeout(300)  # the chart's draw hook has run
+    assert not errors, errors  # the chart skips the task's whisker instead of reading a null interval
+    shot(page, "batch-unjudged")
