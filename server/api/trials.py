@@ -6,6 +6,7 @@ from __future__ import annotations
 import asyncio
 import os
 import re
+import time
 import uuid
 from datetime import timedelta
 from typing import Annotated
@@ -313,7 +314,9 @@ def check_breakpoints(paths: list[str], config: TrialConfig) -> list[str]:
 
 @router.websocket("/{trial_id}/events")
 async def events(websocket: WebSocket, trial_id: str) -> None:
-    """Every event of the trial (history first), then live ones; closes when the trial ends."""
+    """Every event of the trial (history first), then live ones; closes when the trial ends. Each message carries
+    `sent_s`, the server's Unix time when it was sent: a page opened mid-trial reads the server's clock from it (a
+    replayed event's own `wall_s` is as old as the event)."""
     if not await websocket_allowed(websocket, trial_id=trial_id):
         return
     await websocket.accept()
@@ -326,11 +329,11 @@ async def events(websocket: WebSocket, trial_id: str) -> None:
         if trial_id not in runner.live:  # finished (or unknown): replay what the store has
             trial = websocket.app.state.store.get_trial(trial_id)
             for ev in (trial or {}).get("events", []):
-                await websocket.send_json(ev)
-            await websocket.send_json({"kind": "closed"})
+                await websocket.send_json({**ev, "sent_s": time.time()})
+            await websocket.send_json({"kind": "closed", "sent_s": time.time()})
             return
         while (ev := await q.get()) is not GONE:
-            await websocket.send_json(ev)
+            await websocket.send_json({**ev, "sent_s": time.time()})
             if ev.get("kind") == "closed":
                 return
     except WebSocketDisconnect:

@@ -116,6 +116,30 @@ def test_breakpoint_step_resume_and_live_events(client):
     assert client.post(f"/api/trials/{trial_id}/control", json={"action": "pause"}).status_code == 409
 
 
+def test_a_stream_opened_mid_trial_stamps_its_replayed_history_with_the_send_time(client):
+    """A page that connects after the trial began gets the history first: each message says when the server sent it,
+    since a replayed event's own wall_s is as old as the event (the page's live clock reads the server's time from
+    it)."""
+    r = client.post(
+        "/api/trials", json={"task": "stack_two", "segmenter": "privileged-keypoints", "breakpoints": ["tree.children[1]"]}
+    ).json()
+    trial_id = r["id"]
+    deadline = time.time() + 120
+    while client.get(f"/api/trials/{trial_id}").json().get("control_state") != "paused":
+        assert time.time() < deadline, "the trial never reached its breakpoint"
+        time.sleep(0.05)
+    time.sleep(0.3)  # the history is now at least this old
+    with client.websocket_connect(f"/api/trials/{trial_id}/events") as ws:
+        t_connect = time.time()
+        first = ws.receive_json()
+        assert first["kind"] == "started"
+        assert first["wall_s"] < t_connect - 0.25 and t_connect - 0.05 <= first["sent_s"] <= time.time() + 0.05
+        client.post(f"/api/trials/{trial_id}/control", json={"action": "abort"})
+        while (ev := ws.receive_json())["kind"] != "closed":
+            assert ev["sent_s"] >= ev.get("wall_s", 0.0)
+    wait_done(client, trial_id)
+
+
 def test_bad_requests_are_clear(client):
     r = client.post("/api/trials", json={"task": "juggle"})
     assert r.status_code == 422 and "unknown task 'juggle'" in r.json()["detail"]

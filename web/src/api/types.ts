@@ -25,7 +25,9 @@ export interface Catalog {
 
 /** `t`: wall seconds since the trial started; `t_sim`: the world's simulated seconds at publication (null on
  * records stored before the store's revision 0009); `wall_s`: the Unix time of publication (live events). */
-export interface TrialEvent { seq?: number; t: number; t_sim?: number | null; wall_s?: number; node_path: string; kind: string; detail?: Record<string, unknown> }
+export interface TrialEvent { seq?: number; t: number; t_sim?: number | null; wall_s?: number;
+  /** the server's Unix time when it sent the event over the live stream (absent in stored records) */
+  sent_s?: number; node_path: string; kind: string; detail?: Record<string, unknown> }
 
 export interface NodeRecord {
   path: string; kind: string; arm: string | null; status: string; attempts: number; retries: number;

@@ -75,7 +75,9 @@ export function TrialPage({ id }: { id: string }) {
         refresh().catch(() => {});
         return;
       }
-      if (ev.wall_s) lag.current = Math.min(lag.current, Date.now() / 1000 - ev.wall_s);
+      // browser clock minus server clock (plus delivery): from the send time, since a replayed event's wall_s is old
+      const sent = ev.sent_s ?? ev.wall_s;
+      if (sent) lag.current = Math.min(lag.current, Date.now() / 1000 - sent);
       setEvents((es) => [...es, ev]);
       if (ev.kind === "paused") { controlEpoch.current++; setControl("paused"); }
       else if (ev.kind === "started") { controlEpoch.current++; setControl((c) => (c === "paused" ? "running" : c || "running")); }
@@ -228,7 +230,7 @@ function liveNow(events: TrialEvent[], nowMs: number, lagS: number): number | nu
   const last = events.length ? events[events.length - 1] : null;
   if (!last) return null;
   if (!last.wall_s) return last.t;
-  return last.t + Math.max(0, nowMs / 1000 - last.wall_s - (Number.isFinite(lagS) ? Math.max(0, lagS) : 0));
+  return last.t + Math.max(0, nowMs / 1000 - last.wall_s - (Number.isFinite(lagS) ? lagS : 0));
 }
 
 function Header({ trial, cat, status, activeS }: { trial: Trial; cat: Catalog; status: string; activeS: number }) {
