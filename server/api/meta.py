@@ -75,11 +75,19 @@ def tasks() -> list[dict]:
 
 @router.post("/plans/validate", response_model=PlanValidation)
 def validate_plan(body: PlanText) -> PlanValidation:
+    """Type-check a plan: `ok`, with the plan and its canonical YAML, or every error at its path. With
+    `embodiment`, also each arm tag the robot has no arm for (and each two-arm primitive on one arm), at the node
+    that says so: what POST /api/trials refuses with a 422."""
     from spark_core import plan_to_dict, to_yaml, validate
+
+    from .arms import arm_errors
 
     plan, issues = validate(body.text)
     if plan is None:
         return PlanValidation(ok=False, errors=[{"path": i.path, "message": i.message} for i in issues])
+    misfits = arm_errors(plan, body.embodiment) if body.embodiment is not None else []
+    if misfits:
+        return PlanValidation(ok=False, errors=[{"path": path, "message": message} for path, message in misfits])
     return PlanValidation(ok=True, plan=plan_to_dict(plan), canonical_yaml=to_yaml(plan))
 
 

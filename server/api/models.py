@@ -128,6 +128,16 @@ class Control(BaseModel):
 
 class PlanText(BaseModel):
     text: Annotated[str, Field(max_length=256 * 1024), VISIBLE_PLAN]
+    embodiment: str | None = Field(
+        None,
+        json_schema_extra=_enum(EMBODIMENTS),
+        description="also check the plan's arm tags against this robot set-up's arms (GET /api/catalog lists them)",
+    )
+
+    @field_validator("embodiment")
+    @classmethod
+    def _embodiment(cls, v: str | None) -> str | None:
+        return None if v is None else _catalog(check_embodiment, v)
 
 
 class PlanValidation(BaseModel):

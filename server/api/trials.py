@@ -100,12 +100,23 @@ def trial_config(body: TrialCreate, batch_id: str | None = None) -> TrialConfig:
             from spark_core import apply_protocol
 
             config = apply_protocol(body.protocol, config)  # its settings, then may it be reported under it
-        return config.check()
+        config = config.check()
     except (TrialConfigError, ProtocolError) as e:
         message = str(e)  # named as the request names it: the body's field is `plan`
         raise HTTPException(
             422, "plan:" + message[len("plan_text:") :] if message.startswith("plan_text:") else message
         ) from None
+    if config.plan_text is not None:  # a given plan's arm tags: refused now, not when the node runs
+        from spark_core import check_task, validate
+
+        from .arms import arm_problem
+
+        plan = validate(config.plan_text)[0]
+        default = check_task(config.task).embodiments[0]
+        problem = arm_problem(plan, config.embodiment or default, config.task, config.embodiment is None)
+        if problem:
+            raise HTTPException(422, problem)
+    return config
 
 
 @router.get("", response_model=TrialPage)

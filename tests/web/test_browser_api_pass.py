@@ -39,3 +39,33 @@ def test_a_task_with_no_judged_trial_shows_no_rate_and_no_interval(server, page)
     page.wait_for_timeout(300)  # the chart's draw hook has run
     assert not errors, errors  # the chart skips the task's whisker instead of reading a null interval
     shot(page, "batch-unjudged")
+
+
+LEFT_PICK = """task: lift the red block with the left arm
+tree:
+  type: sequence
+  children:
+    - type: pick
+      arm: left
+      params: {keypoint_label: red block}
+"""
+
+
+def test_your_own_plans_arm_tags_are_checked_against_the_chosen_robot(server, page):  # noqa: F811
+    """The plan editor validates against the robot the form will run: `arm: left` on lift_block's default (the
+    one-arm Panda) is an error on its line and Run is off (the server would refuse it with a 422); on the
+    bimanual set-up the same plan is valid."""
+    page.goto(server + "/")
+    page.click("button[data-task=lift_block]")
+    page.click("#new-trial summary:has-text('Run your own plan')")
+    page.fill("#new-trial textarea[name=plan]", LEFT_PICK)
+    page.wait_for_selector("#plan-errors li")
+    line = page.locator(".plan-lines li.error-line")
+    assert line.get_attribute("data-path") == "tree.children[0].arm"
+    assert "its arms: right" in line.inner_text()
+    assert not page.is_enabled("#new-trial button[type=submit]")
+    page.select_option("#new-trial select[name=embodiment]", "bimanual")
+    page.wait_for_selector("#plan-ok")
+    assert page.is_enabled("#new-trial button[type=submit]")
+    page.select_option("#new-trial select[name=embodiment]", "ur10")
+    page.wait_for_selector("#plan-errors li:has-text('the ur10 embodiment has no such arm')")

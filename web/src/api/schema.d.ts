@@ -98,7 +98,12 @@ export interface paths {
         };
         get?: never;
         put?: never;
-        /** Validate Plan */
+        /**
+         * Validate Plan
+         * @description Type-check a plan: `ok`, with the plan and its canonical YAML, or every error at its path. With
+         *     `embodiment`, also each arm tag the robot has no arm for (and each two-arm primitive on one arm), at the node
+         *     that says so: what POST /api/trials refuses with a 422.
+         */
         post: operations["validate_plan_api_plans_validate_post"];
         delete?: never;
         options?: never;
@@ -703,6 +708,12 @@ export interface components {
         PlanText: {
             /** Text */
             text: string;
+            /**
+             * Embodiment
+             * @description also check the plan's arm tags against this robot set-up's arms (GET /api/catalog lists them)
+             * @enum {unknown}
+             */
+            embodiment?: string | null;
         };
         /** PlanValidation */
         PlanValidation: {

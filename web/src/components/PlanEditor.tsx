@@ -5,18 +5,19 @@ import { type PlanValidation, post } from "../api/client";
 import { linePaths } from "../lib/yamlPaths";
 import { NodePalette } from "./NodePalette";
 
-export function PlanEditor({ text, task, onChange, onValid }:
-  { text: string; task: string; onChange: (t: string) => void; onValid: (ok: boolean) => void }) {
+// `embodiment`: the robot set-up the plan is to run on; its arm tags are checked against that robot's arms too.
+export function PlanEditor({ text, task, embodiment, onChange, onValid }:
+  { text: string; task: string; embodiment?: string; onChange: (t: string) => void; onValid: (ok: boolean) => void }) {
   const [result, setResult] = useState<PlanValidation | null>(null);
   useEffect(() => {
     if (!text.trim()) { setResult(null); onValid(true); return; }
     const timer = setTimeout(() => {
-      post<PlanValidation>("/api/plans/validate", { text })
+      post<PlanValidation>("/api/plans/validate", embodiment ? { text, embodiment } : { text })
         .then((r) => { setResult(r); onValid(r.ok); })
         .catch((e) => { setResult({ ok: false, errors: [{ path: "", message: (e as Error).message }] }); onValid(false); });
     }, 250);
     return () => clearTimeout(timer);
-  }, [text]); // eslint-disable-line react-hooks/exhaustive-deps
+  }, [text, embodiment]); // eslint-disable-line react-hooks/exhaustive-deps
   const paths = linePaths(text);
   const errors = result?.errors ?? [];
   const lineOf = (path: string) => {

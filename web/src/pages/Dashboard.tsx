@@ -100,6 +100,11 @@ function TrialForm({ cat, task }: { cat: Catalog; task: Task }) {
   const [planOk, setPlanOk] = useState(true);
   const [error, setError] = useState("");
   const [busy, setBusy] = useState(false);
+  // the robot chosen for this task ("": its default); a plan of your own is checked against the robot's arms
+  const [embodiment, setEmbodiment] = useState("");
+  const robot = task.embodiments.includes(embodiment) ? embodiment : "";
+  const runsOn = robot || task.embodiments[0];
+  const checkedOn = cat.embodiments.some((x) => x.name === runsOn) ? runsOn : undefined;
   const readsInstruction = (cat.planners.find((p) => p.name === planner)?.reads_instruction ?? true) || !!plan.trim();
   const note = instructionNote(cat, planner);
   // An instruction typed for a task stays with that task: choosing another task empties the field (blank: the
@@ -156,14 +161,14 @@ function TrialForm({ cat, task }: { cat: Catalog; task: Task }) {
         )}<br />
         <PlannerFields cat={cat} planner={planner} setPlanner={setPlanner} />
         <label>Segmenter <select name="segmenter">{cat.segmenters.map((s) => <option key={s.name} value={s.name} title={s.description}>{segLabel(s)}</option>)}</select></label>
-        <label>Robot <select name="embodiment"><option value="">task default</option>
+        <label>Robot <select name="embodiment" value={robot} onChange={(e) => setEmbodiment(e.target.value)}><option value="">task default</option>
           {cat.embodiments.filter((x) => task.embodiments.includes(x.name)).map((x) => <option key={x.name} value={x.name}>{x.name}</option>)}</select></label>
         <label>Seed <input type="number" name="seed" defaultValue={0} min={0} className="narrow" /></label>
         <ProtocolField cat={cat} suite={task.suite} />
         <label>Pace <select name="pacing">{PACING.map(([v, l]) => <option key={v} value={v}>{l}</option>)}</select></label>
         <label><input type="checkbox" name="start_paused" /> start paused</label>
         <label title="agentview + wrist video and per-frame labels, for LeRobot export"><input type="checkbox" name="capture" /> record training data</label>
-        <details><summary>Run your own plan</summary><PlanEditor text={plan} task={task.instruction} onChange={setPlan} onValid={setPlanOk} /></details>
+        <details><summary>Run your own plan</summary><PlanEditor text={plan} task={task.instruction} embodiment={checkedOn} onChange={setPlan} onValid={setPlanOk} /></details>
         <button type="submit" disabled={busy || !planOk}>Run</button> <span id="form-error" className="fail">{error}</span>
       </form>
     </section>
