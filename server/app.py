@@ -68,7 +68,11 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         version="0.1.0",
         lifespan=lifespan,
         docs_url=None,  # /docs below: Swagger UI from our own origin (works offline), not from a CDN
-        description="Typed behavior trees over anchored keypoints: trials, plans, grammar, live events.",
+        description="Typed behavior trees over anchored keypoints: trials, plans, grammar, live events.\n\n"
+        "Times: every time the API serves (`created_at` of trials, batches and exports, `restore_until`, in JSON and "
+        "in CSV) is ISO 8601 in UTC with an explicit offset, e.g. `2026-11-28T11:51:12.352682+00:00`; lists sorted "
+        "by `created_at` are in that order. A time with no offset is read as UTC wherever one is given to the "
+        "server or its store (e.g. `spark export --since`).",
     )
     # Every request and websocket passes the Guard (security/guard.py) before any route reads it; CORS, when
     # configured, wraps it so that refusals carry the CORS headers a listed origin needs to read them.

@@ -210,6 +210,7 @@ CSV_TRIAL_COLUMNS = (
     "wall_time_s",
     "sim_time_s",
     "cost_usd",
+    "created_at",  # ISO 8601 in UTC with its offset, as the JSON has it
 )
 
 
@@ -253,7 +254,8 @@ RESULT_COLUMNS = (
 
 @router.get("/{batch_id}/trials.csv", response_class=PlainTextResponse)
 def batch_trials_csv(batch_id: BatchId, request: Request) -> PlainTextResponse:
-    """One row per trial of the batch (outcome, failure attribution, timings, cost) as CSV."""
+    """One row per trial of the batch (outcome, failure attribution, timings, cost, and when it was created:
+    `created_at`, ISO 8601 in UTC with its offset) as CSV."""
     b = _batch_with_results(request, batch_id)
     return _csv(b["trials"], CSV_TRIAL_COLUMNS, f"{batch_id}-trials.csv")
 

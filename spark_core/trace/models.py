@@ -2,14 +2,41 @@
 
 from __future__ import annotations
 
-from datetime import UTC, datetime
+from datetime import UTC, date, datetime
+from typing import Any
 
-from sqlalchemy import JSON, Boolean, DateTime, Float, ForeignKey, Integer, String, Text
+from sqlalchemy import JSON, Boolean, DateTime, Dialect, Float, ForeignKey, Integer, String, Text
 from sqlalchemy.orm import DeclarativeBase, Mapped, mapped_column, relationship
+from sqlalchemy.types import TypeDecorator
 
 
 def utcnow() -> datetime:
     return datetime.now(UTC)
+
+
+def as_utc(value: date | datetime) -> datetime:
+    """An instant in UTC (tz-aware). A naive datetime is read as UTC, a date as its midnight UTC; an aware one is
+    converted (2026-11-28T12:00+02:00 is 10:00 UTC)."""
+    if not isinstance(value, datetime):
+        value = datetime(value.year, value.month, value.day)
+    return value.replace(tzinfo=UTC) if value.tzinfo is None else value.astimezone(UTC)
+
+
+class UTCDateTime(TypeDecorator[datetime]):
+    """A timestamp that is a UTC instant on every backend, written and read as a tz-aware UTC datetime. SQLite has
+    no time zones (DateTime(timezone=True) there is text without an offset, read back naive): an aware value was
+    written as its own wall time whatever its offset, and read back naive, so the API served `created_at` with no
+    offset. Every value bound (a row's field or a filter's bound: `created_at >= since`) is converted to UTC first,
+    a naive one read as UTC; PostgreSQL keeps timestamptz. The DDL is DateTime(timezone=True) as before."""
+
+    impl = DateTime(timezone=True)
+    cache_ok = True
+
+    def process_bind_param(self, value: Any, dialect: Dialect) -> datetime | None:
+        return None if value is None else as_utc(value)
+
+    def process_result_value(self, value: Any, dialect: Dialect) -> datetime | None:
+        return None if value is None else as_utc(value)
 
 
 class Base(DeclarativeBase):
@@ -22,7 +49,7 @@ class TrialRow(Base):
     __tablename__ = "trials"
 
     id: Mapped[str] = mapped_column(String(255), primary_key=True)
-    created_at: Mapped[datetime] = mapped_column(DateTime(timezone=True), default=utcnow, index=True)
+    created_at: Mapped[datetime] = mapped_column(UTCDateTime(), default=utcnow, index=True)
     status: Mapped[str] = mapped_column(String(16), default="queued", index=True)  # queued|running|done|interrupted
     instruction: Mapped[str] = mapped_column(Text, default="")
     task: Mapped[str] = mapped_column(String(128), default="", index=True)
@@ -51,7 +78,7 @@ class TrialRow(Base):
     # [(t_s, qpos)] every 40 ms of simulated time: enough to replay the trial in the 3D view. Loaded on demand.
     scene_states: Mapped[list | None] = mapped_column(JSON, nullable=True, deferred=True)
     # Set by a delete: hidden from every read, restorable until the grace period ends, then purged (0007).
-    deleted_at: Mapped[datetime | None] = mapped_column(DateTime(timezone=True), nullable=True)
+    deleted_at: Mapped[datetime | None] = mapped_column(UTCDateTime(), nullable=True)
 
     events: Mapped[list[EventRow]] = relationship(
         back_populates="trial", cascade="all, delete-orphan", order_by="EventRow.seq"
@@ -95,7 +122,7 @@ class BatchRow(Base):
     __tablename__ = "batches"
 
     id: Mapped[str] = mapped_column(String(255), primary_key=True)
-    created_at: Mapped[datetime] = mapped_column(DateTime(timezone=True), default=utcnow)
+    created_at: Mapped[datetime] = mapped_column(UTCDateTime(), default=utcnow)
     status: Mapped[str] = mapped_column(String(16), default="running")  # running|cancelled|done
     spec: Mapped[dict] = mapped_column(JSON, default=dict)
 
@@ -106,7 +133,7 @@ class PlanLibraryRow(Base):
     __tablename__ = "plan_library"
 
     id: Mapped[int] = mapped_column(Integer, primary_key=True, autoincrement=True)
-    created_at: Mapped[datetime] = mapped_column(DateTime(timezone=True), default=utcnow)
+    created_at: Mapped[datetime] = mapped_column(UTCDateTime(), default=utcnow)
     instruction: Mapped[str] = mapped_column(Text, index=True)
     plan_text: Mapped[str] = mapped_column(Text)
     scene_summary: Mapped[str] = mapped_column(Text, default="")

@@ -3,6 +3,8 @@ fixtures of test_browser.py: uvicorn with trial workers, Debian's headless chrom
 
 from __future__ import annotations
 
+from zoneinfo import ZoneInfo
+
 from .test_browser import APPS, browser, page, server, shot  # noqa: F401 (fixtures)
 
 
@@ -69,3 +71,42 @@ def test_your_own_plans_arm_tags_are_checked_against_the_chosen_robot(server, pa
     assert page.is_enabled("#new-trial button[type=submit]")
     page.select_option("#new-trial select[name=embodiment]", "ur10")
     page.wait_for_selector("#plan-errors li:has-text('the ur10 embodiment has no such arm')")
+
+
+def test_times_are_shown_in_the_browsers_time_zone(server, browser):  # noqa: F811
+    """The API serves created_at in UTC with its offset; the history, the batch list and the batch page show it
+    in the browser's zone (they showed the first 19 characters of the text: UTC, unmarked, as if local)."""
+    from datetime import UTC, datetime
+
+    store = _store()
+    store.create_batch("batch-zoned", {"suite": "builtin", "trial_count": 1})
+    store.create_trial(
+        "zoned-trial",
+        task="lift_block",
+        instruction="zoned: lift the red block",
+        status="done",
+        batch_id="batch-zoned",
+        created_at=datetime(2026, 1, 2, 3, 4, 5, tzinfo=UTC),
+    )
+    ctx = browser.new_context(viewport={"width": 1400, "height": 1000}, timezone_id="Asia/Kolkata")  # UTC+05:30
+    try:
+        pg = ctx.new_page()
+        pg.goto(f"{server}/#/history")
+        pg.fill("input[name=q]", "zoned")  # its instruction: the one row, whatever else the history holds
+        row = pg.locator("tr[data-id=zoned-trial]")
+        row.wait_for()
+        assert row.locator("td[data-col=date]").inner_text() == "2026-01-02 08:34:05"
+        pg.goto(f"{server}/#/batches")
+        created = pg.locator("#batch-list tr[data-id=batch-zoned] td.created")
+        created.wait_for()
+        stamp = store.get_batch("batch-zoned")["created_at"]
+        local = datetime.fromisoformat(stamp).astimezone(ZoneInfo("Asia/Kolkata")).strftime("%Y-%m-%d %H:%M:%S")
+        assert created.inner_text() == local, (stamp, created.inner_text())
+        pg.goto(f"{server}/#/batch/batch-zoned")
+        pg.wait_for_selector("#batch-settings")
+        assert f"created {local}" in pg.locator("#batch-settings").inner_text()
+        assert pg.locator("#batch-trials tr[data-id=zoned-trial] td[data-col=date]").inner_text() == (
+            "2026-01-02 08:34:05"
+        )
+    finally:
+        ctx.close()

@@ -4,6 +4,7 @@ import { test } from "node:test";
 import type { Catalog, Trial, TrialEvent } from "../src/api/types";
 import { diffLines, firstDivergence } from "../src/lib/compare";
 import { activeWall, anchors, leafAnchors, treeStateAt, unpaused, wallToSim, withoutPauses } from "../src/lib/trialTime";
+import { localTime } from "../src/lib/localTime";
 import { linePaths } from "../src/lib/yamlPaths";
 
 const PLAN = `task: t
@@ -92,4 +93,20 @@ test("the first divergence names the node and both sides", () => {
   const b = trial({ nodes: { ...trial().nodes, "tree.children[1]": node("tree.children[1]", "place", 2, 3, 1, "failed") } });
   assert.match(firstDivergence(trial(), b), /tree.children\[1\] \(place\): A succeeded, B failed/);
   assert.match(firstDivergence(trial(), trial()), /^none/);
+});
+
+test("an API time is shown in the browser's time zone, one without an offset read as UTC", () => {
+  const zone = process.env.TZ;
+  process.env.TZ = "Asia/Kolkata"; // UTC+05:30, no daylight saving
+  try {
+    assert.equal(localTime("2026-01-02T03:04:05.123456+00:00"), "2026-01-02 08:34:05");
+    assert.equal(localTime("2026-01-02T03:04:05Z"), "2026-01-02 08:34:05");
+    assert.equal(localTime("2026-01-02T03:04:05.5-02:00"), "2026-01-02 10:34:05");
+    assert.equal(localTime("2026-01-02T03:04:05.123456"), "2026-01-02 08:34:05"); // naive: UTC, as stored
+    assert.equal(localTime("2026-12-31T23:59:59+00:00"), "2027-01-01 05:29:59"); // the date moves too
+    assert.equal(localTime(null), "");
+    assert.equal(localTime("soon"), "soon");
+  } finally {
+    if (zone === undefined) delete process.env.TZ; else process.env.TZ = zone;
+  }
 });

@@ -396,7 +396,8 @@ export interface paths {
         };
         /**
          * Batch Trials Csv
-         * @description One row per trial of the batch (outcome, failure attribution, timings, cost) as CSV.
+         * @description One row per trial of the batch (outcome, failure attribution, timings, cost, and when it was created:
+         *     `created_at`, ISO 8601 in UTC with its offset) as CSV.
          */
         get: operations["batch_trials_csv_api_batches__batch_id__trials_csv_get"];
         put?: never;

@@ -1,6 +1,7 @@
 // Trial summaries as a table; column headers sort (server-side) when `sort` is given.
 import { isPrivileged, PRIVILEGED_NOTE, useCatalog } from "../api/catalog";
 import type { TrialSummary } from "../api/types";
+import { localTime } from "../lib/localTime";
 import { VerdictBadge } from "./VerdictBadge";
 
 export interface Column { key: string; label: string; sortKey?: string; cell: (t: TrialSummary) => React.ReactNode }
@@ -8,7 +9,7 @@ export interface Column { key: string; label: string; sortKey?: string; cell: (t
 const num = (x: number | null | undefined, d = 2) => (x === null || x === undefined ? "" : x.toFixed(d));
 
 export const COLUMNS: Column[] = [
-  { key: "date", label: "date", sortKey: "created_at", cell: (t) => (t.created_at ?? "").replace("T", " ").slice(0, 19) },
+  { key: "date", label: "date", sortKey: "created_at", cell: (t) => localTime(t.created_at) },
   { key: "id", label: "trial", cell: (t) => <a href={`#/trial/${t.id}`}>{t.id}</a> },
   { key: "task", label: "task", sortKey: "task", cell: (t) => t.task },
   { key: "planner", label: "planner", sortKey: "planner", cell: (t) => t.planner },
@@ -51,7 +52,7 @@ export function TrialTable({ items, columns = COLUMNS, sort, onSort, picked, onP
         {items.map((t) => (
           <tr key={t.id} data-id={t.id}>
             {onPick && <td><input type="checkbox" className="pick" value={t.id} checked={picked?.has(t.id) ?? false} onChange={(e) => onPick(t.id, e.target.checked)} /></td>}
-            {columns.map((c) => <td key={c.key}>{c.cell(t)}</td>)}
+            {columns.map((c) => <td key={c.key} data-col={c.key}>{c.cell(t)}</td>)}
           </tr>))}
       </tbody>
     </table>

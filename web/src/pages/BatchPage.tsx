@@ -7,6 +7,7 @@ import { ExportButton } from "../components/ExportButton";
 import { SuccessChart } from "../components/SuccessChart";
 import { PhaseChart, type PhaseRow, TimingChart, type TimingRow } from "../components/TimingChart";
 import { TrialTable } from "../components/TrialTable";
+import { localTime } from "../lib/localTime";
 import { settingsOf } from "./Batches";
 
 // no judged trial yet: no rate and no interval, shown as a dash (not 0 %)
@@ -44,7 +45,7 @@ export function BatchPage({ id }: { id: string }) {
   return (
     <div>
       <section><h3>Batch {b.id}</h3>
-        <p id="batch-settings">{settingsOf(b.spec)} · created {b.created_at?.slice(0, 19)}</p>
+        <p id="batch-settings">{settingsOf(b.spec)} · created {localTime(b.created_at)}</p>
         <progress id="batch-progress" max={Math.max(1, b.progress.total)} value={b.progress.done} />
         <span id="batch-count"> {b.progress.done} / {b.progress.total} · {b.status}</span>{" "}
         <button id="batch-cancel" disabled={!running} onClick={() => post(`/api/batches/${encodeURIComponent(id)}/cancel`).then(() => setReload((n) => n + 1)).catch((e) => setError(e.message))}>Cancel</button>
