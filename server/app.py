@@ -10,6 +10,7 @@ from fastapi.middleware.cors import CORSMiddleware
 from starlette.routing import Match, Mount
 from starlette.types import Scope
 
+from .http_methods import HeadAndAllow
 from .security.guard import Guard
 from .security.redact import install_log_redaction
 from .settings import Settings
@@ -77,6 +78,9 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     # Every request and websocket passes the Guard (security/guard.py) before any route reads it; CORS, when
     # configured, wraps it so that refusals carry the CORS headers a listed origin needs to read them.
     app.add_middleware(Guard, settings=settings)
+    # HEAD wherever GET works (the GET's status and headers, no body), and 405s naming all of their path's methods;
+    # around the Guard, so a refusal of a HEAD request carries no body either
+    app.add_middleware(HeadAndAllow, routes=app.router.routes)
     app.state.exports_writing = set()  # ids of the exports being written now (api/exports.py)
     install_log_redaction()
     install_validation_handler(app)  # 422s that never echo the input (NaN, 1e400, lone surrogates: no 500)

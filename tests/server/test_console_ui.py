@@ -216,8 +216,9 @@ def test_an_api_path_no_route_takes_is_answered_by_the_api_not_the_front_ends_fi
         r = c.post("/api/trial", json={"task": "lift_block"})
         assert r.status_code == 404, r.text
         r = c.put("/api/trials", json={})
-        assert r.status_code == 405 and "HEAD" not in r.headers["allow"] and "POST" in r.headers["allow"]
-        assert c.head("/api/health").status_code == 405  # a GET route: its method is named, not "not found"
+        assert r.status_code == 405 and r.headers["allow"] == "GET, HEAD, POST"  # the path's methods, all of them
+        assert c.head("/api/health").status_code == 200  # HEAD wherever GET works (tests/server/test_http_methods.py)
+        assert c.head("/api/trial").status_code == 404  # and no route is no route, whatever the method
         assert c.delete("/api/exports/..").status_code == 404
         assert c.get("/").status_code == 200 and "<html" in c.get("/").text.lower()  # the pages are still served
         assert c.get("/favicon.svg").status_code == 200 and c.get("/api/health").json() == {"status": "ok"}
