@@ -15,7 +15,7 @@ from spark_core import PLANNERS, PROTOCOLS, SEGMENTERS, StorePlanLibrary, batch_
 from spark_core import suites as catalog_suites
 
 from ..validation import safe_errors
-from .models import MAX_ID, MAX_NAME, MAX_OFFSET, MAX_SEED, TrialCreate
+from .models import MAX_ID, MAX_NAME, MAX_OFFSET, MAX_SEED, MODEL_NAME, TrialCreate
 from .text import VISIBLE, Visible
 from .trials import trial_config
 
@@ -50,7 +50,7 @@ class BatchCreate(BaseModel):
     trials: int = Field(1, ge=1, le=100, strict=True, description="seeds per task")
     seed: int = Field(0, ge=0, le=MAX_SEED, strict=True)
     planner: str = Field("reference", json_schema_extra={"enum": list(PLANNERS)})
-    model: Annotated[str, Field(max_length=200), VISIBLE] | None = None
+    model: Annotated[str, Field(max_length=200), VISIBLE] | None = Field(None, description=MODEL_NAME)
     endpoint: Annotated[str, Field(max_length=100), VISIBLE] | None = Field(
         None, description="an LLM endpoint the operator configured"
     )

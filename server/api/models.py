@@ -25,6 +25,11 @@ MAX_ID = 256  # trial ids: "{batch}-{n}-{task}-{seed}" at most ~170 characters
 MAX_NAME = 128  # task, suite and backend names
 
 
+MODEL_NAME = (
+    "an LLM planner's model (default: the planner's own); letters, digits, '.', '-' and '_', plus a 'models/' or "
+    "'tunedModels/' prefix for gemini, '/' between parts and ':' before a tag for openai (Qwen/Qwen2.5-VL-7B, "
+    "qwen3:8b); any other character is a 422 naming it"
+)
 NodePath = Annotated[str, Field(max_length=256), VISIBLE]  # e.g. tree.children[2].children[0]
 
 
@@ -50,7 +55,7 @@ class TrialCreate(BaseModel):
     )
     seed: int = Field(0, ge=0, le=MAX_SEED, strict=True)
     breakpoints: list[NodePath] = Field(default_factory=list, max_length=200, description="node paths to pause before")
-    model: Annotated[str, Field(max_length=200), VISIBLE] | None = None
+    model: Annotated[str, Field(max_length=200), VISIBLE] | None = Field(None, description=MODEL_NAME)
     endpoint: Annotated[str, Field(max_length=100), VISIBLE] | None = Field(
         None, description="an LLM endpoint the operator configured (GET /api/catalog lists them)"
     )

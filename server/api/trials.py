@@ -48,6 +48,12 @@ def trial_config(body: TrialCreate, batch_id: str | None = None) -> TrialConfig:
             "model: the model name is blank: name a model"
             + (f", or leave it out for the {body.planner} planner's default ({default})" if default else ""),
         )
+    if model is not None:  # Gemini puts it into its URL's path: only the characters model names are made of
+        from .model_names import model_name_problem
+
+        problem = model_name_problem(body.planner, model)
+        if problem is not None:
+            raise HTTPException(422, problem)
     # a blank instruction is no instruction: the task's own, as the field's description says (not a planner's
     # refusal of "   ")
     instruction = body.instruction.strip() or None if body.instruction is not None else None

@@ -544,7 +544,10 @@ export interface components {
              * @enum {string}
              */
             planner: string;
-            /** Model */
+            /**
+             * Model
+             * @description an LLM planner's model (default: the planner's own); letters, digits, '.', '-' and '_', plus a 'models/' or 'tunedModels/' prefix for gemini, '/' between parts and ':' before a tag for openai (Qwen/Qwen2.5-VL-7B, qwen3:8b); any other character is a 422 naming it
+             */
             model?: string | null;
             /**
              * Endpoint
@@ -766,7 +769,10 @@ export interface components {
              * @description node paths to pause before
              */
             breakpoints?: string[];
-            /** Model */
+            /**
+             * Model
+             * @description an LLM planner's model (default: the planner's own); letters, digits, '.', '-' and '_', plus a 'models/' or 'tunedModels/' prefix for gemini, '/' between parts and ':' before a tag for openai (Qwen/Qwen2.5-VL-7B, qwen3:8b); any other character is a 422 naming it
+             */
             model?: string | null;
             /**
              * Endpoint
