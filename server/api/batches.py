@@ -217,7 +217,7 @@ CSV_TRIAL_COLUMNS = (
 @router.get("/{batch_id}/results.csv", response_class=PlainTextResponse)
 def batch_results_csv(batch_id: BatchId, request: Request) -> PlainTextResponse:
     """The per-task result table (success rate with its Wilson 95 % interval) as CSV; a task with no judged trial
-    has empty success_rate, ci95_low and ci95_high cells."""
+    has empty success_rate, ci95_low and ci95_high cells. Text cells are spreadsheet-safe as in trials.csv."""
     b = _batch_with_results(request, batch_id)
     rows = [
         {
@@ -255,9 +255,29 @@ RESULT_COLUMNS = (
 @router.get("/{batch_id}/trials.csv", response_class=PlainTextResponse)
 def batch_trials_csv(batch_id: BatchId, request: Request) -> PlainTextResponse:
     """One row per trial of the batch (outcome, failure attribution, timings, cost, and when it was created:
-    `created_at`, ISO 8601 in UTC with its offset) as CSV."""
+    `created_at`, ISO 8601 in UTC with its offset) as CSV.
+
+    Spreadsheet safety (OWASP, CSV injection): a text cell that starts with `=`, `+`, `-`, `@`, a tab or a carriage
+    return (an instruction such as `=HYPERLINK(...)`) is written with a single quote before it (`'=HYPERLINK(...)`),
+    so a spreadsheet app shows it as text instead of running it. Only this CSV does so: the JSON (GET
+    /api/batches/{id}, /api/trials/{id}) and the stored record keep the text as submitted; numbers, negative ones
+    too, are written as numbers."""
     b = _batch_with_results(request, batch_id)
     return _csv(b["trials"], CSV_TRIAL_COLUMNS, f"{batch_id}-trials.csv")
+
+
+# A text cell starting with one of these is read as a formula by spreadsheet apps (Excel, LibreOffice, Sheets):
+# `=HYPERLINK(...)` in an instruction, `-2+3` in a reason. OWASP's advice for CSV injection: prefix it with '.
+FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
+
+
+def spreadsheet_safe(value: object) -> object:
+    """A CSV cell as a spreadsheet shows it and never runs it: text that starts like a formula gets a leading
+    single quote (shown as text; the quote is the only change); numbers (a negative one too), booleans and empty
+    cells are written as they are."""
+    if isinstance(value, str) and value.startswith(FORMULA_START):
+        return "'" + value
+    return value
 
 
 def _csv(rows: list[dict], columns: tuple[str, ...], filename: str) -> PlainTextResponse:
@@ -265,9 +285,11 @@ def _csv(rows: list[dict], columns: tuple[str, ...], filename: str) -> PlainText
     import io
 
     buf = io.StringIO()
-    w = csv.DictWriter(buf, fieldnames=columns, extrasaction="ignore", lineterminator="\n")
+    # RFC 4180's CRLF: the writer quotes a cell holding any character of its line terminator, so a carriage return
+    # inside a cell is quoted too (with "\n" alone it went out bare, and a spreadsheet began a new row at it)
+    w = csv.DictWriter(buf, fieldnames=columns, extrasaction="ignore", lineterminator="\r\n")
     w.writeheader()
-    w.writerows(rows)
+    w.writerows({k: spreadsheet_safe(v) for k, v in row.items()} for row in rows)
     return PlainTextResponse(
         buf.getvalue(), media_type="text/csv", headers={"content-disposition": f'attachment; filename="{filename}"'}
     )

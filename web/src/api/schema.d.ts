@@ -376,7 +376,7 @@ export interface paths {
         /**
          * Batch Results Csv
          * @description The per-task result table (success rate with its Wilson 95 % interval) as CSV; a task with no judged trial
-         *     has empty success_rate, ci95_low and ci95_high cells.
+         *     has empty success_rate, ci95_low and ci95_high cells. Text cells are spreadsheet-safe as in trials.csv.
          */
         get: operations["batch_results_csv_api_batches__batch_id__results_csv_get"];
         put?: never;
@@ -398,6 +398,12 @@ export interface paths {
          * Batch Trials Csv
          * @description One row per trial of the batch (outcome, failure attribution, timings, cost, and when it was created:
          *     `created_at`, ISO 8601 in UTC with its offset) as CSV.
+         *
+         *     Spreadsheet safety (OWASP, CSV injection): a text cell that starts with `=`, `+`, `-`, `@`, a tab or a carriage
+         *     return (an instruction such as `=HYPERLINK(...)`) is written with a single quote before it (`'=HYPERLINK(...)`),
+         *     so a spreadsheet app shows it as text instead of running it. Only this CSV does so: the JSON (GET
+         *     /api/batches/{id}, /api/trials/{id}) and the stored record keep the text as submitted; numbers, negative ones
+         *     too, are written as numbers.
          */
         get: operations["batch_trials_csv_api_batches__batch_id__trials_csv_get"];
         put?: never;
