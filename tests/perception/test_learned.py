@@ -156,3 +156,33 @@ def test_the_instance_cache_never_answers_for_a_new_frame_that_reuses_a_freed_fr
         seg.instances(frame)
     seg._cache[key] = (rgb, own)
     assert seg.instances(frame) is own
+
+
+def test_predict_gives_the_whole_frame_softmax_on_object_pixels(stack_world):
+    """`predict` computes category probabilities only where the category is an object (every reader looks there
+    alone): there they equal the softmax over the whole frame's logits, elsewhere they are 0, and the category is
+    the softmax's argmax everywhere."""
+    import torch
+
+    from spark_core.perception.frame import CameraFrame
+    from spark_core.perception.learned.frozen import frozen_forward
+    from spark_core.perception.learned.model import network_input, shrink
+    from spark_core.perception.learned.segmenter import _net
+
+    seg = LearnedSegmenter()
+    f = stack_world.render("agentview", 640, 480)
+    frame = CameraFrame("agentview", f.rgb, f.depth_m, f.K, f.T_world_camera)
+    cat, prob, _bnd, _col, _depth, probs = seg.predict(frame)
+    net = _net(seg.weights)
+    rgb, depth = shrink(frame.rgb, np.nan_to_num(frame.depth_m.astype(np.float32), nan=0.0, posinf=10.0), 2)
+    with torch.no_grad():
+        x = network_input(torch.from_numpy(rgb[None]), torch.from_numpy(depth[None]))
+        logits = net.split(frozen_forward(net, x))[0]
+    logits[:, net.n_trained :] = -torch.inf
+    full = torch.softmax(logits[0].permute(1, 2, 0), -1).numpy()
+    thing = np.array([c.thing for c in CATEGORIES])[cat]
+    assert 0 < thing.mean() < 1  # both kinds of pixel are in the frame
+    np.testing.assert_array_equal(cat, full.argmax(-1))
+    np.testing.assert_allclose(probs[thing], full[thing], atol=1e-6)
+    assert not probs[~thing].any() and not prob[~thing].any()
+    np.testing.assert_allclose(prob[thing], full.max(-1)[thing], atol=1e-6)
