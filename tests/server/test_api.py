@@ -121,7 +121,8 @@ def test_a_stream_opened_mid_trial_stamps_its_replayed_history_with_the_send_tim
     since a replayed event's own wall_s is as old as the event (the page's live clock reads the server's time from
     it)."""
     r = client.post(
-        "/api/trials", json={"task": "stack_two", "segmenter": "privileged-keypoints", "breakpoints": ["tree.children[1]"]}
+        "/api/trials",
+        json={"task": "stack_two", "segmenter": "privileged-keypoints", "breakpoints": ["tree.children[1]"]},
     ).json()
     trial_id = r["id"]
     deadline = time.time() + 120
