@@ -13,6 +13,7 @@ from ..perception import Keypoint, LabelNotFound
 from ..perception.resolver_protocol import Resolver
 from ..perception.summary import summarise
 from .protocol import SceneView
+from .rules.discourse import restructured
 from .rules.lexicon import CONTAINERS, CONTENTS
 from .rules.mentions import clause_mentions, read_past, stray_nouns
 from .rules.parse import Clause, ParseError, is_pronoun, parse_instruction
@@ -77,7 +78,7 @@ def observe(instruction: str, resolver: Resolver, extra: Sequence[str] = ()) -> 
     listing = getattr(resolver, "inventory", None)
     inventory = tuple(listing()) if listing else ()
     # slips of the keyboard ("the stvoe") read as the words they miss, as the rules planner reads them
-    instruction = corrected(instruction, inventory)
+    instruction = restructured(corrected(instruction, inventory))  # as the rules planner reads it
     for phrase in dict.fromkeys([*phrases_for(instruction), *extra]):
         try:
             keypoints[phrase] = resolver.resolve(phrase)

@@ -292,18 +292,21 @@ def _unknown_verb(part: str) -> tuple[str, str] | None:
 
 def _remaining(c: Clause, before: list[Clause]) -> Clause:
     """ "then the remaining block on top of the green one": the one of the kind not named yet, i.e. not any of the
-    kind's attributes said before ("block not green blue": perception keeps the blocks those words contradict)."""
+    kind's attributes said before ("block not green blue": perception keeps the blocks those words contradict).
+    "The other <kind>" / "the other one" is the complement of the one of that kind picked out just before, in this
+    clause or an earlier one, whatever picked it out (`_complement`: an attribute, a side or extreme, a relation to
+    another thing, or a negation of one of those)."""
     updates: dict = {}
     for name in ("obj", "target"):
         phrase = getattr(c, name)
         m = re.fullmatch(r"(?:remaining|leftover|last remaining|spare) (\w+)", phrase or "")
-        # "the leftmost block goes in the green tray, the other block in the yellow one": "other" went with the
-        # determiners; the kind alone is the one not picked out before
-        m = m or (
-            re.fullmatch(r"()(\w+)", phrase or "")
-            and re.search(rf"\bthe other {re.escape(phrase or '')}s?\b", c.text)
-            and re.fullmatch(r"()(\w+)", phrase or "")
-        )
+        if not m and phrase:
+            said = [p for p in ([c.obj] if name == "target" else []) if p and not is_pronoun(p)]
+            said += [p for b in reversed(before) for p in (b.target, b.obj) if p and not is_pronoun(p)]
+            other = _other_of(phrase, c.text, said)
+            if other:
+                updates[name] = other
+            continue
         if not m:
             continue
         noun = m.groups()[-1]
@@ -318,6 +321,48 @@ def _remaining(c: Clause, before: list[Clause]) -> Clause:
         if said:
             updates[name] = f"{noun} not {' '.join(dict.fromkeys(said))}"
     return replace(c, **updates) if updates else c
+
+
+def _kind(phrase: str) -> str:
+    """The head noun of a phrase perception reads: before a negation or a relation ("block not blue" -> block)."""
+    head = re.split(r"\s+not\s+", phrase)[0]
+    head = split_relation(head)[0] if split_relation(head)[1] else head
+    return head.split()[-1] if head.split() else ""
+
+
+def _other_of(phrase: str, text: str, said: list[str]) -> str | None:
+    """ "the other <kind>" / "the other one" in the clause's words: the complement of the latest phrase of that kind
+    said before it (`said`, latest first); None when the words say no "other" or nothing of the kind was said."""
+    if phrase in ("one", "ones"):
+        if not re.search(r"\bthe other ones?\b", text) or not said:
+            return None
+        ref = said[0]
+    else:
+        kind = phrase.split()[-1]
+        if not re.search(rf"\bthe other (?:\w+ )*?{re.escape(kind)}s?\b", text):
+            return None
+        found = next((p for p in said if _kind(p) == kind and p != phrase), None)
+        if found is None:
+            return None
+        ref = found
+    return _complement(ref, None if phrase in ("one", "ones") else phrase)
+
+
+def _complement(ref: str, phrase: str | None) -> str | None:
+    """The phrase for "the other" of the kind `ref` picks out, in perception's forms: "red block" -> "block not red";
+    "block not blue" -> "blue block"; "black bowl on stove" -> "black bowl not on stove"; "bowl not on stove" ->
+    "bowl on stove"; "leftmost black bowl" (with "black bowl" said as the other) -> "black bowl not leftmost"."""
+    core, _, ruled = ref.partition(" not ")
+    if ruled:
+        head, relation, _anchors = split_relation(f"{core} {ruled}")
+        return f"{core} {ruled}" if relation else f"{ruled} {core}"
+    head, relation, anchors = split_relation(ref)
+    if relation:
+        return f"{head} not {relation} {' and '.join(anchors)}"
+    words = ref.split()
+    base = (phrase or words[-1]).split()
+    mods = [w for w in words[:-1] if w not in base]
+    return f"{' '.join(base)} not {' '.join(mods)}" if mods else None
 
 
 def _topic(part: str, later: list[str]) -> bool:
@@ -373,6 +418,20 @@ def _resolve(c: Clause, before: list[Clause]) -> Clause:
         obj = prev.obj
         if c.action in ("open", "close"):  # "put the block in the drawer, you will have to open it": the drawer
             obj = next((p for p in (prev.obj, prev.target) if p and _OPENS.search(p)), obj)
+        elif c.action in ("turn_on", "turn_off"):  # "put the pot on the stove and turn it on": the stove
+            obj = next((p for p in (prev.obj, prev.target) if p and _SWITCHED.search(p)), obj)
+        elif prev.action in _FIXTURE_ACTIONS and c.action in ("put", "stack", "pour", "push", "pick"):
+            # "pick up the block, open the drawer and put it inside": a fixture just opened or switched is not what
+            # is carried; the latest thing named before it that is neither a fixture worked nor the destination
+            fixtures = {b.obj for b in before if b.action in _FIXTURE_ACTIONS}
+            obj = next(
+                (
+                    b.obj
+                    for b in reversed(before)
+                    if b.obj and not is_pronoun(b.obj) and b.obj not in fixtures and b.obj != c.target
+                ),
+                obj,
+            )
         updates["obj"] = obj
         if c.action == "push" and prev.action == "pick":
             updates["action"] = "put"
@@ -394,6 +453,9 @@ def _resolve(c: Clause, before: list[Clause]) -> Clause:
 
 
 _WHERE_PARTICIPLES = "sitting|resting|standing|lying|perched|located|parked|kept|stacked|seated|sat|placed"
+# What is switched on and off: "turn it on" after a carry onto one of these is switching it.
+_SWITCHED = re.compile(r"\b(?:stove|burner|hob|cooktop|cooker|oven|lamp|light|tap|faucet|knob|dial)\b")
+_FIXTURE_ACTIONS = ("open", "close", "turn_on", "turn_off")
 # Things a robot opens and closes: "open it" after a carry into one of these is opening it.
 _OPENS = re.compile(r"\b(?:drawer|cabinet|door|lid|box|microwave|oven|fridge|cupboard)\b")
 # A preposition after one of these says where a thing is, not where it goes ("the plate that sits on the box").

@@ -11,6 +11,7 @@ import numpy as np
 from ...grammar import PlanError, check_plan, to_yaml
 from ...perception.qualifiers import split_relation
 from ..protocol import PlanRequest, PlanResult
+from .discourse import restructured
 from .kinds import modifier_for_thing, other_contents, other_variety
 from .lexicon import CONTAINERS, CONTENTS, REGIONS
 from .mentions import clause_mentions, foreign_modifiers, read_past, stray_nouns
@@ -49,6 +50,8 @@ class RulesPlanner:
         task = request.instruction.strip()
         # slips of the keyboard read as the words they miss (rules/spelling.py), as observe looked for them
         request = replace(request, instruction=corrected(request.instruction, request.scene.inventory))
+        # steps said out of order, context and contrast, headers, back-references: said plainly (rules/discourse.py)
+        request = replace(request, instruction=restructured(request.instruction))
         try:
             clauses = parse_instruction(request.instruction)
             understood = [_describe(c) for c in clauses]
@@ -291,7 +294,7 @@ class RulesPlanner:
             raise CannotPlan(f"lifting {together[0]!r} with both arms needs a second handle for the other arm")
         if clauses and clauses[-1].action in ("open", "close", "turn_on", "turn_off"):
             out.append(_prim("go_home"))  # leave the fixture's neighbourhood
-        return out
+        return _free_hand(out)
 
     @staticmethod
     def _push_geometry(c: Clause, obj: str, target: str | None, scene) -> tuple[str, float]:
@@ -330,6 +333,26 @@ def _check_kinds(
                     f"no {word!r}, and no {word!r} is taken on the sentence's word alone; 'the contents' pours "
                     f"whatever it holds) {tail}"
                 )
+
+
+FIXTURE_STEPS = ("open_drawer", "close_drawer", "turn_knob")
+
+
+def _free_hand(steps: list[dict]) -> list[dict]:
+    """A fixture is worked with the hand free: a thing picked up just before a drawer is opened or a knob turned,
+    and picked up again after it ("grab the block, open the drawer and put it inside"), is picked up after it only."""
+    out = []
+    for i, step in enumerate(steps):
+        label = step.get("params", {}).get("keypoint_label")
+        if (
+            step.get("primitive") == "pick"
+            and i + 1 < len(steps)
+            and steps[i + 1].get("primitive") in FIXTURE_STEPS
+            and any(s.get("primitive") == "pick" and s["params"].get("keypoint_label") == label for s in steps[i + 2 :])
+        ):
+            continue
+        out.append(step)
+    return out
 
 
 def _holder_of(source: str | None, dst: str, scene) -> str | None:

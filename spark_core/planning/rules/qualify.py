@@ -77,6 +77,20 @@ _ME = r"(?:the robot|you|me|us|the arm|the gripper)"
 _NEG = r"(?:is not|are not|was not|isn't|aren't|is n't)"
 
 
+_RANKED_EXTREME = {
+    "highest": "top",
+    "uppermost": "top",
+    "topmost": "top",
+    "lowest": "bottom",
+    "lowermost": "bottom",
+    "bottommost": "bottom",
+    "closest": "nearest",
+    "frontmost": "nearest",
+    "furthest": "farthest",
+    "rearmost": "farthest",
+}
+
+
 def ordinals(text: str) -> str:
     """Counting in a direction: "the second bowl from the left" -> "the second leftmost bowl"; "the last cup on the
     right" and "the first cup from the right" -> "the rightmost cup"; "the last bowl from the left" -> "the
@@ -89,6 +103,14 @@ def ordinals(text: str) -> str:
         return f"{RANK_WORDS[RANKS[rank_word]]}{_COUNT_SIDES[side]} {noun}"
 
     ranks = "|".join([*RANKS, "last"])
+    # a rank and an extreme said as one word ("the second-highest drawer", "the second leftmost bowl"): counted
+    # from that extreme
+    text = re.sub(
+        rf"\b({'|'.join(RANKS)})[- ](highest|uppermost|topmost|lowest|lowermost|bottommost|leftmost|rightmost|"
+        r"nearest|closest|frontmost|farthest|furthest|rearmost)\b",
+        lambda m: f"{m.group(1)} {_RANKED_EXTREME.get(m.group(2), m.group(2))}",
+        text,
+    )
     # counted down from the top or up from the bottom ("the second drawer down", "the third shelf up")
     text = re.sub(
         rf"\b({ranks}) ({NP}) (down|up)\b(?! (?:on|onto|in|into|to)\b(?! the (?:cabinet|shelf|rack)))",
@@ -161,6 +183,8 @@ def extremes(text: str, push: bool = False) -> str:
     # "the bowl sitting higher", "whichever bowl is highest up": the top one
     text = re.sub(
         rf"\b({DET}) ({NP}) (?:(?:that|which) )?(?:is |are )?(?:sitting |standing |resting |placed |set )?"
+        # "the bowl that sits lowest": where it is, said by a verb
+        rf"(?:(?:sits|stands|rests|lies|sit|stand|rest|lie) )?"
         rf"(higher|highest|lower|lowest|uppermost|lowermost)(?: up| down)?\b(?! than)",
         lambda m: f"{'the' if m.group(1) == 'whichever' else m.group(1)} {EXTREMES[m.group(3)]} {m.group(2)}",
         text,
@@ -446,6 +470,14 @@ def neither_nor(text: str) -> str:
     text = re.sub(
         r"\s*,?\s*(?:(?:that|which) (?:is|are) |(?:that|which)'s )?neither (?:the )?(\w+)(?: ones?)? nor (?:the )?"
         r"(\w+)(?: ones?)?\b",
+        third,
+        text,
+    )
+    # ... and as one negation of two places ("the drawer that isn't at the top or at the bottom", "... not the top
+    # or the middle one")
+    text = re.sub(
+        r"\s*,?\s*(?:(?:that|which) (?:is|are) not |(?:that|which) (?:isn't|aren't) |not )(?:at |in |on )?(?:the )?"
+        r"(\w+)(?: ones?)?,? (?:or|nor) (?:at |in |on )?(?:the )?(\w+)(?: ones?)?\b",
         third,
         text,
     )

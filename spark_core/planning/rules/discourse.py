@@ -1,0 +1,248 @@
+"""How the parts of an instruction relate, before any clause is read: the order the steps happen in, what is only
+context, what is only contrast, and which earlier thing a back-reference names.
+
+People say steps out of order ("before putting the block in the drawer, open it"; "put the blue block in the yellow
+tray once the red block is in the green one"), describe the scene before asking ("the drawer is open - shut it";
+"the green cube stays put; put the red cube on it"), add what is *not* meant after a complete request ("tip the
+beads into the bowl, not back into the mug"), open with a header that names nothing ("two jobs: ..."), refer back
+by list position ("red block and blue block: the former ..., the latter ..."), and state the goal as a cleft or as
+the holder with its contents ("the orange juice is what should go into the basket"; "bowl with the red block in
+it, that's what I want"). These are properties of discourse, not of any verb or object, so they are handled once,
+here, for every wording: `restructured` returns the instruction said plainly, in the order the steps happen, each
+step a clause the rule parser and the order-free reader already read. The planner and observe apply it alike.
+
+Safety is unchanged: a thing the original names is still named (context and contrast become "there is X"
+sentences, which only name a thing; the planner refuses when perception does not find it), and nothing is
+re-ordered unless both parts read as steps (a known verb, or a goal said as "X is in/on Y")."""
+
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+from lemminflect import getLemma
+
+from .lexicon import VERBS
+from .things import is_thing
+
+# A short noun phrase after its determiner: up to four words, none of them a preposition, conjunction or verb of
+# state (what a back-reference can stand for).
+_STOPS = (
+    r"on|in|at|to|from|onto|into|inside|with|for|that|which|not|of|and|or|but|then|is|are|it|them|once|after|"
+    r"before|when|so|until|near|by|beside|next|between|under|over|off"
+)
+_WORD = rf"(?!(?:{_STOPS})\b)[a-z][\w'-]*"
+_NP = rf"(?:{_WORD} ){{0,3}}{_WORD}"
+_DET = r"(?:the|a|an|that|this)"
+# Steps of the planner's own, and the words of a goal said as where a thing is ("the red block is in the tray").
+_GOAL_AS_STATE = re.compile(rf"^(?:{_DET} )?{_NP} (?:is|are) (?:now |already )?(?:in|inside|on|on top of|onto|into) ")
+# Current states a thing is described in before the request, and saying it is to stay as it is.
+_STATES = r"(?:open|opened|closed|shut|on|off|empty|full|ajar|cold|hot|there|here|in the way|out)"
+_STAYS = (
+    r"(?:stays?|remains?|is staying|should stay|must stay|can stay|stays? where (?:it|they) (?:is|are)|remains? where "
+    r"(?:it|they) (?:is|are))(?: put| still| in place| as (?:it|they) (?:is|are)| where (?:it|they) (?:is|are))?"
+)
+_OPENABLE = frozenset(["drawer", "door", "lid", "cabinet", "cupboard", "box", "microwave", "oven", "fridge"])
+_SWITCHED = frozenset(["stove", "burner", "hob", "cooktop", "knob", "dial", "light", "lamp", "tap", "faucet"])
+
+
+@lru_cache(maxsize=1)
+def _verb_forms() -> tuple[str, ...]:
+    return tuple(sorted({f for forms in VERBS.values() for f in forms}, key=len, reverse=True))
+
+
+@lru_cache(maxsize=1)
+def _first_words() -> frozenset[str]:
+    """The first word of each of the planner's verbs, said apart from the rest ("switch it on", "pull it open")."""
+    return frozenset(f.split()[0] for f in _verb_forms() if " " in f)
+
+
+def _starts_with_verb(clause: str) -> bool:
+    return any(clause == f or clause.startswith(f + " ") for f in _verb_forms()) or (
+        clause.split(" ", 1)[0] in _first_words()
+    )
+
+
+def _base_verb(clause: str) -> str:
+    """ "putting the block in ..." / "you've opened the drawer" -> "put the block in ..." / "open the drawer"."""
+    clause = re.sub(r"^(?:you(?:'ve| have| had)?|we(?:'ve| have)?|i(?:'ve| have)?) ", "", clause.strip())
+    clause = re.sub(r"^(?:done|finished|finish) ", "", clause)
+    first, _, rest = clause.partition(" ")
+    if first.endswith(("ing", "ed")) and len(first) > 4:
+        base = getLemma(first, upos="VERB")
+        if base and base[0] != first:
+            return f"{base[0]} {rest}".strip()
+    return clause
+
+
+def _is_step(clause: str) -> bool:
+    """A clause that is a step the parser reads: a verb of the planner's, or a goal said as where a thing is; and
+    it names a thing or says "it" ("when you get a sec" is no step)."""
+    names = any(is_thing(p.split()[-1]) for p in _noun_phrases(clause)) or re.search(r"\b(?:it|them)\b", clause)
+    return bool(names) and (_starts_with_verb(clause) or bool(_GOAL_AS_STATE.match(clause)))
+
+
+def _noun_phrases(clause: str) -> list[str]:
+    return [m.group(1) for m in re.finditer(rf"\b(?:the|a|an) ({_NP})", clause)]
+
+
+def _antecedent(main: str, sub: str) -> str | None:
+    """What "it" in `main` stands for, from the noun phrases of `sub` said with it: by what `main`'s verb can do
+    with a thing (open or close something that opens, switch something that is switched), else the thing `sub`
+    acts on (its first noun phrase)."""
+    phrases = _noun_phrases(sub)
+    if not phrases:
+        return None
+    verb = main.split(" ", 1)[0]
+    if verb in ("open", "close", "shut") or re.match(
+        r"^(?:pull|slide|push) (?:it|them) (?:open|out|shut|closed)", main
+    ):
+        fits = [p for p in phrases if p.split()[-1] in _OPENABLE]
+    elif verb in ("turn", "switch", "flip", "flick"):
+        fits = [p for p in phrases if p.split()[-1] in _SWITCHED]
+    else:
+        fits = phrases[:1]
+    return fits[-1] if fits else None
+
+
+def _with_antecedent(main: str, sub: str) -> str:
+    """`main` with its "it" named from `sub` (said before it, and about to be said after it)."""
+    if not re.search(r"\b(?:it|them)\b", main):
+        return main
+    who = _antecedent(main, sub)
+    return re.sub(r"\b(?:it|them)\b", f"the {who}", main, count=1) if who else main
+
+
+_STATE_STEP = {"open": "open", "opened": "open", "closed": "close", "shut": "close", "on": "turn on", "off": "turn off"}
+
+
+def _as_step(clause: str) -> str:
+    """A subordinate clause as the step it stands for: "putting X in Y" / "you've opened X" -> "put X in Y" /
+    "open X"; "the drawer is open" (a state to bring about first) -> "open the drawer"."""
+    clause = _base_verb(clause)
+    m = re.fullmatch(
+        rf"((?:{_DET} )?{_NP}) (?:is|are) (?:fully |all the way )?(open|opened|closed|shut|on|off)", clause
+    )
+    return f"{_STATE_STEP[m.group(2)]} {m.group(1)}" if m else clause
+
+
+def _temporal(text: str) -> str:
+    """Steps said out of order, put in the order they happen: "before X, Y" -> "Y, then X"; "after / once / as soon
+    as X, Y" -> "X, then Y"; "Y once / after / as soon as X" -> "X, then Y"; "Y before X-ing" -> "Y, then X". Only
+    when both parts read as steps. The part said first names what "it" in the other stands for."""
+    m = re.fullmatch(
+        r"(?:first(?:ly)?,? )?(?:before|prior to) (.+?)\s*,\s*(?:then |first )?(.+?)\s*(?:first)?\.?", text
+    )
+    if m:
+        sub, main = _as_step(m.group(1)), m.group(2).strip()
+        if _is_step(sub) and _is_step(main):
+            return f"{_with_antecedent(main, sub)}, then {sub}"
+    m = re.fullmatch(r"(?:after|once|as soon as|when) (.+?)\s*,\s*(?:then )?(.+?)\.?", text)
+    if m:
+        sub, main = _as_step(m.group(1)), m.group(2).strip()
+        if _is_step(sub) and _is_step(main):
+            return f"{_with_antecedent(sub, main)}, then {main}"
+    m = re.fullmatch(r"(.+?),? (?:but )?(?:only )?(?:once|after|as soon as) (.+?)\.?", text)
+    if m:
+        main, sub = m.group(1).strip(), _as_step(m.group(2))
+        if _is_step(sub) and _is_step(main):
+            return f"{_with_antecedent(sub, main)}, then {main}"
+    m = re.fullmatch(r"(.+?),? before (\w+ing\b.*?)\.?", text)
+    if m:
+        main, sub = m.group(1).strip(), _as_step(m.group(2))
+        if _is_step(sub) and _is_step(main):
+            return f"{main}, then {sub}"
+    return text
+
+
+def _context(text: str) -> str:
+    """A description of how a thing is now, said before the request about it ("the drawer is open - shut it", "the
+    stove is off, switch it on", "the green cube stays put; put the red cube on it"): no step, only the thing named
+    ("there is the drawer"), so that a later "it" finds it and it must be in the scene."""
+    m = re.fullmatch(
+        rf"({_DET} )?({_NP}) (?:(?:is|are|'s) (?:currently |still |now |already )?{_STATES}|{_STAYS})\s*"
+        r"(?:[,;:.!]|\s-+\s|\s\u2013\s|\s\u2014\s)\s*(.+)",
+        text,
+    )
+    if not m or not is_thing(m.group(2).split()[-1]) or not _is_step(m.group(3).strip()):
+        return text
+    return f"there is the {m.group(2)}. {m.group(3).strip()}"
+
+
+def _contrast(text: str) -> str:
+    """What is not meant, said after a complete request ("put the juice in the basket - not the ketchup and not the
+    bbq sauce", "tip the beads into the bowl, not back into the mug", "..., rather than the plate"): no step; each
+    thing it names is still named (a "there is" sentence before the request, so that it must be in the scene)."""
+    m = re.fullmatch(
+        r"(.+?)\s*(?:,|;|\s-+\s|\s\u2013\s|\s\u2014\s)\s*((?:(?:and |but )?(?:not|rather than|instead of) .+?)+)\.?",
+        text,
+    )
+    if not m or not _is_step(m.group(1)) and not _GOAL_AS_STATE.match(m.group(1)) and " goes " not in m.group(1):
+        return text
+    parts = re.split(r"\s*(?:,\s*)?(?:and |but )?(?:not|rather than|instead of)\s+", m.group(2))
+    things = []
+    for part in (p.strip() for p in parts if p.strip()):
+        said = re.fullmatch(
+            rf"(?:back |again )?(?:(?:in|into|onto|on|to|in front of|on top of|inside|from|out of) )?"
+            rf"(?:the|a|an) ({_NP})",
+            part,
+        )
+        if not said or not is_thing(said.group(1).split()[-1]):
+            return text  # a contrast of how or where, not of which thing ("not too fast"): the parser's to read
+        things.append(said.group(1))
+    return "".join(f"there is the {t}. " for t in things) + m.group(1).strip()
+
+
+def _former_latter(text: str) -> str:
+    """ "red block and blue block: the former into the green tray, the latter into the yellow one": the two things
+    listed first, named again where "the former" and "the latter" stand."""
+    m = re.fullmatch(rf"(?:{_DET} )?({_NP}) and (?:{_DET} )?({_NP})\s*(?:[:,;]|\s-+\s)\s*(.+)", text)
+    if not m or not re.search(r"\bthe (?:former|latter)\b", m.group(3)):
+        return text
+    rest = re.sub(r"\bthe former\b", f"the {m.group(1)}", m.group(3))
+    return re.sub(r"\bthe latter\b", f"the {m.group(2)}", rest)
+
+
+def _header(text: str) -> str:
+    """A header before a colon that names no thing and asks nothing ("two jobs: ...", "here's the plan: ..."):
+    what follows is the request."""
+    m = re.fullmatch(r"([a-z' ]{1,40}?)\s*:\s*(.+)", text)
+    if not m or _starts_with_verb(m.group(1)):
+        return text
+    words = re.findall(r"[a-z]+", m.group(1))
+    numbers = ("s", "here", "there", "one", "two", "three", "four", "five", "couple")
+    if not words or any(is_thing(w) for w in words if w not in numbers):
+        return text
+    return m.group(2)
+
+
+def _cleft(text: str) -> str:
+    """A goal said as a cleft ("the orange juice is what should go into the basket", "the red block is the one that
+    goes on the plate"), or as the holder with what it should hold ("bowl with the red block in it, that's what I
+    want"): said plainly."""
+    text = re.sub(
+        r"\s*[,;-]?\s*(?:that's|that is|this is|thats) (?:what|all) (?:i|we) (?:want|need|would like|'d like|am after"
+        r"|'m after|are after)\.?$",
+        "",
+        text,
+    )
+    text = re.sub(
+        rf"^((?:{_DET} )?{_NP}) (?:is|are) (?:what|the (?:one|ones|thing|things)(?: that)?) "
+        r"(?=(?:should|must|needs? to|has to|have to|goes|go|belongs?|is to|are to|ought to)\b)",
+        r"\1 ",
+        text,
+    )
+    m = re.fullmatch(rf"(?:{_DET} )?({_NP}) with (?:the|a|an) ({_NP}) (in|on|inside|on top of) (?:it|them)\.?", text)
+    if m:
+        return f"the {m.group(2)} {m.group(3)} the {m.group(1)}"
+    return text
+
+
+def restructured(instruction: str) -> str:
+    """The instruction said plainly and in the order its steps happen (see the module's docstring); the instruction
+    itself when none of these applies."""
+    text = re.sub(r"\s+", " ", instruction.strip().lower().replace("\u2019", "'"))
+    out = text
+    for step in (_header, _former_latter, _cleft, _temporal, _context, _contrast):
+        out = step(out)
+    return instruction if out == text else out
