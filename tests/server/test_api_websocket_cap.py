@@ -34,7 +34,7 @@ def test_websockets_beyond_the_cap_are_closed_with_a_reason(tmp_path):
         while True:
             try:
                 with c.websocket_connect("/api/trials/t-done/events") as ws:
-                    assert ws.receive_json() == {"kind": "closed"}  # a finished trial without events: closed
+                    assert ws.receive_json()["kind"] == "closed"  # a finished trial without events: closed
                 break
             except WebSocketDisconnect as e:
                 assert e.code == 1013 and time.monotonic() < deadline, "a closed socket never freed its place"
