@@ -204,3 +204,10 @@ def test_a_fixture_is_worked_with_the_hand_free():
     result = RulesPlanner().plan(PlanRequest("grab the cube. open the drawer, then drop it in there", view))
     assert result.ok, result.error
     assert _leaves(result) == [("open_drawer", "drawer handle"), ("pick", "cube"), ("place_in", "drawer")]
+
+
+def test_the_other_one_as_a_destination_is_the_other_destination_and_a_later_phrase_is_not_the_other():
+    clauses = parse_instruction("red cube into the bin that isn't yellow, blue cube into the other one")
+    assert [c.target for c in clauses] == ["bin not yellow", "yellow bin"]
+    clauses = parse_instruction("the leftmost cube goes in the green bin, the other cube in the yellow bin")
+    assert [(c.obj, c.target) for c in clauses] == [("leftmost cube", "green bin"), ("cube not leftmost", "yellow bin")]

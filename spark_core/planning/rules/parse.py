@@ -301,8 +301,13 @@ def _remaining(c: Clause, before: list[Clause]) -> Clause:
         phrase = getattr(c, name)
         m = re.fullmatch(r"(?:remaining|leftover|last remaining|spare) (\w+)", phrase or "")
         if not m and phrase:
-            said = [p for p in ([c.obj] if name == "target" else []) if p and not is_pronoun(p)]
-            said += [p for b in reversed(before) for p in (b.target, b.obj) if p and not is_pronoun(p)]
+            # latest first, a thing said in the same role first ("..., blue block into the other one": the other
+            # destination), then the clause's own object ("put the red cube on the other one")
+            same = [getattr(b, name) for b in reversed(before)]
+            rest = [c.obj if name == "target" else None] + [
+                b.obj if name == "target" else b.target for b in before[::-1]
+            ]
+            said = [p for p in [*same, *rest] if p and not is_pronoun(p)]
             other = _other_of(phrase, c.text, said)
             if other:
                 updates[name] = other
@@ -339,7 +344,10 @@ def _other_of(phrase: str, text: str, said: list[str]) -> str | None:
         ref = said[0]
     else:
         kind = phrase.split()[-1]
-        if not re.search(rf"\bthe other (?:\w+ )*?{re.escape(kind)}s?\b", text):
+        # "the other (black) bowl": describing words only between, never another phrase ("the other block in the
+        # yellow tray" says no other tray)
+        between = r"(?:(?!(?:in|on|into|onto|inside|to|at|by|with|from|of|the|a|an|and|then|not)\b)\w+ ){0,2}"
+        if not re.search(rf"\bthe other {between}{re.escape(kind)}s?\b", text):
             return None
         found = next((p for p in said if _kind(p) == kind and p != phrase), None)
         if found is None:
