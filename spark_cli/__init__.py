@@ -22,6 +22,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 def _apply_config(args: argparse.Namespace) -> None:
     """Settings from spark.yaml / SPARK_CONFIG fill in whatever the command line left unset."""
+    from spark_core.catalog import DEFAULT_SEGMENTER
     from spark_core.config import load_config
 
     cfg = load_config()
@@ -30,7 +31,7 @@ def _apply_config(args: argparse.Namespace) -> None:
             setattr(args, key, getattr(cfg, key))
     defaults = {
         "planner": "rules" if args.command == "plan" else "reference",
-        "segmenter": "sim",
+        "segmenter": DEFAULT_SEGMENTER,
         "plan_library": "store",
     }
     if args.command == "bench":  # bench's --plan-library is a FILE (default: none), not the console's store

@@ -22,7 +22,9 @@ def register(sub) -> None:
     r.add_argument("--capture-fps", type=float, default=10.0, help="capture rate, frames per simulated second")
     r.add_argument("--capture-size", default="256x256", help="capture image size WxH (multiples of 8)")
     r.add_argument("--plan", help="plan file to run instead of the task's reference plan or a planner's")
-    r.add_argument("--segmenter", choices=list(SEGMENTERS), help="perception backend (default: sim)")
+    r.add_argument(
+        "--segmenter", choices=list(SEGMENTERS), help="perception backend (default: learned; sim is the oracle)"
+    )
     r.add_argument("--sam3-model", help="SAM3 checkpoint directory for --segmenter sam3 (default: SPARK_SAM3_MODEL)")
     r.add_argument(
         "--planner",
@@ -59,7 +61,9 @@ def register(sub) -> None:
     pl.add_argument("--model", help="LLM model name (gemini default: gemini-3.1-pro-preview)")
     pl.add_argument("--base-url", help="an ad-hoc LLM URL (a local OpenAI-compatible server); it gets no key")
     pl.add_argument("--endpoint", help="a named LLM endpoint from spark.yaml `endpoints:` (with its key)")
-    pl.add_argument("--segmenter", choices=list(SEGMENTERS), help="perception backend (default: sim)")
+    pl.add_argument(
+        "--segmenter", choices=list(SEGMENTERS), help="perception backend (default: learned; sim is the oracle)"
+    )
     pl.add_argument("--sam3-model", help="SAM3 checkpoint directory for --segmenter sam3 (default: SPARK_SAM3_MODEL)")
     pl.set_defaults(func=_cmd_plan)
 

@@ -29,6 +29,7 @@ _EXPORTS: dict[str, str] = {
     "CatalogError": "spark_core.catalog",
     "PLANNERS": "spark_core.catalog",
     "SEGMENTERS": "spark_core.catalog",
+    "DEFAULT_SEGMENTER": "spark_core.catalog",
     "EMBODIMENTS": "spark_core.catalog",
     "check_task": "spark_core.catalog",
     "suites": "spark_core.catalog",

@@ -64,6 +64,10 @@ PLANNERS: dict[str, PlannerEntry] = {
     )
 }
 
+# What a trial perceives with when nobody chose: the camera-only segmenter (issue 17's bar met), not the oracle. The
+# console's form, the API, the CLI and the benchmarks all start from it.
+DEFAULT_SEGMENTER = "learned"
+
 SEGMENTERS: dict[str, SegmenterEntry] = {
     s.name: s
     for s in (
@@ -189,6 +193,7 @@ def catalog_json(with_tasks: bool = True) -> dict[str, Any]:
     out: dict[str, Any] = {
         "planners": [asdict(p) for p in PLANNERS.values()],
         "segmenters": [asdict(s) for s in SEGMENTERS.values()],
+        "default_segmenter": DEFAULT_SEGMENTER,
         "embodiments": [asdict(e) for e in EMBODIMENTS.values()],
         "suites": suites(),
         **enums(),
@@ -205,6 +210,7 @@ def catalog_json(with_tasks: bool = True) -> dict[str, Any]:
 
 __all__ = [
     "CatalogError",
+    "DEFAULT_SEGMENTER",
     "EMBODIMENTS",
     "EmbodimentEntry",
     "PLANNERS",

@@ -14,7 +14,15 @@ from collections.abc import Sequence
 from dataclasses import asdict, dataclass, field
 from typing import Any, Protocol
 
-from .catalog import PLANNERS, SEGMENTERS, check_embodiment, check_planner, check_segmenter, check_task
+from .catalog import (
+    DEFAULT_SEGMENTER,
+    PLANNERS,
+    SEGMENTERS,
+    check_embodiment,
+    check_planner,
+    check_segmenter,
+    check_task,
+)
 from .execution import Event, EventBus, Executor, RecoveryPolicy, StepControl, TrialResult
 from .grammar import Plan, parse_plan, to_yaml, validate
 from .perception.noisy_segmenter import NoiseModel
@@ -36,7 +44,7 @@ class TrialConfig:
     model: str | None = None  # LLM model name (planner default when None)
     base_url: str | None = None  # an ad-hoc LLM URL (CLI only; it gets no key); None: the vendor's
     plan_text: str | None = None  # a plan to run as given (the planner is then not called)
-    segmenter: str = "sim"  # a catalog segmenter
+    segmenter: str = DEFAULT_SEGMENTER  # a catalog segmenter (default: the camera-only `learned`)
     cameras: tuple[str, ...] | None = None  # None: the scene's perception cameras
     sam3_model: str | None = None  # SAM3 checkpoint directory (default SPARK_SAM3_MODEL)
     noise: NoiseModel = NoiseModel()  # sim-noisy's failure model

@@ -11,7 +11,7 @@ from fastapi import APIRouter, HTTPException, Path, Query, Request
 from fastapi.responses import PlainTextResponse
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
-from spark_core import PLANNERS, PROTOCOLS, SEGMENTERS, StorePlanLibrary, batch_manifest, wilson
+from spark_core import DEFAULT_SEGMENTER, PLANNERS, PROTOCOLS, SEGMENTERS, StorePlanLibrary, batch_manifest, wilson
 from spark_core import suites as catalog_suites
 
 from ..validation import safe_errors
@@ -54,7 +54,7 @@ class BatchCreate(BaseModel):
     endpoint: Annotated[str, Field(max_length=100), VISIBLE] | None = Field(
         None, description="an LLM endpoint the operator configured"
     )
-    segmenter: str = Field("sim", json_schema_extra={"enum": list(SEGMENTERS)})
+    segmenter: str = Field(DEFAULT_SEGMENTER, json_schema_extra={"enum": list(SEGMENTERS)})
     protocol: str | None = Field(
         None,
         json_schema_extra={"enum": list(PROTOCOLS)},

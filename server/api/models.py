@@ -7,6 +7,7 @@ from typing import Annotated, Any, Literal
 from pydantic import BaseModel, ConfigDict, Field, field_validator
 
 from spark_core import (
+    DEFAULT_SEGMENTER,
     EMBODIMENTS,
     PLANNERS,
     PROTOCOLS,
@@ -49,9 +50,10 @@ class TrialCreate(BaseModel):
     )
     planner: str = Field("reference", json_schema_extra=_enum(PLANNERS))
     segmenter: str = Field(
-        "sim",
+        DEFAULT_SEGMENTER,
         json_schema_extra=_enum(SEGMENTERS),
-        description="perception backend; GET /api/catalog says which are privileged",
+        description="perception backend (default: the camera-only `learned`; `sim` is the oracle); GET /api/catalog "
+        "says which are privileged",
     )
     seed: int = Field(0, ge=0, le=MAX_SEED, strict=True)
     breakpoints: list[NodePath] = Field(default_factory=list, max_length=200, description="node paths to pause before")

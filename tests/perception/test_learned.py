@@ -186,3 +186,25 @@ def test_predict_gives_the_whole_frame_softmax_on_object_pixels(stack_world):
     np.testing.assert_allclose(probs[thing], full[thing], atol=1e-6)
     assert not probs[~thing].any() and not prob[~thing].any()
     np.testing.assert_allclose(prob[thing], full.max(-1)[thing], atol=1e-6)
+
+
+def test_the_camera_only_segmenter_is_the_default_of_the_catalog_the_api_and_the_cli(monkeypatch, tmp_path):
+    """A trial nobody chose a segmenter for perceives through the cameras (`learned`), not the oracle: the
+    catalog says so (the console's form selects it), and so do a trial config, an API request and `spark run`."""
+    from server.api.batches import BatchCreate
+    from server.api.models import TrialCreate
+    from spark_cli import _apply_config, build_parser
+    from spark_core import TrialConfig
+
+    cat = catalog_json(with_tasks=False)
+    assert cat["default_segmenter"] == "learned"
+    assert not next(s for s in cat["segmenters"] if s["name"] == cat["default_segmenter"])["privileged"]
+    assert TrialConfig("lift_block").segmenter == "learned"
+    assert TrialCreate(task="lift_block").segmenter == "learned"
+    assert BatchCreate(suite="builtin", trials=1).segmenter == "learned"
+    monkeypatch.delenv("SPARK_CONFIG", raising=False)
+    monkeypatch.chdir(tmp_path)  # no spark.yaml: no operator settings
+    for argv in (["run", "lift_block"], ["plan", "--task", "lift_block", "lift the red block"]):
+        args = build_parser().parse_args(argv)
+        _apply_config(args)
+        assert args.segmenter == "learned", argv

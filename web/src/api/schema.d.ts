@@ -562,7 +562,7 @@ export interface components {
             endpoint?: string | null;
             /**
              * Segmenter
-             * @default sim
+             * @default learned
              * @enum {string}
              */
             segmenter: string;
@@ -760,8 +760,8 @@ export interface components {
             planner: string;
             /**
              * Segmenter
-             * @description perception backend; GET /api/catalog says which are privileged
-             * @default sim
+             * @description perception backend (default: the camera-only `learned`; `sim` is the oracle); GET /api/catalog says which are privileged
+             * @default learned
              * @enum {string}
              */
             segmenter: string;

@@ -17,7 +17,10 @@ export interface Task {
   has_reference_plan: boolean; max_sim_s: number; tags: string[]; objects: string[];
 }
 export interface Catalog {
-  planners: Planner[]; segmenters: Segmenter[]; embodiments: Embodiment[]; endpoints: Endpoint[];
+  planners: Planner[]; segmenters: Segmenter[];
+  /** what a trial perceives with when the form or request names no segmenter (the camera-only `learned`) */
+  default_segmenter: string;
+  embodiments: Embodiment[]; endpoints: Endpoint[];
   protocols: Protocol[]; suites: Record<string, string[]>; tasks: Task[];
   verdict: string[]; node_status: string[]; event_kind: string[]; tree_status: string[];
   event_node_status: Record<string, string>;

@@ -127,7 +127,7 @@ function TrialForm({ cat, task }: { cat: Catalog; task: Task }) {
     const f = new FormData(e.currentTarget);
     const s = (k: string) => (f.get(k) as string | null) || null;
     const body: TrialCreate = {
-      task: task.name, planner, segmenter: s("segmenter") ?? cat.segmenters[0].name, seed: Number(f.get("seed") ?? 0),
+      task: task.name, planner, segmenter: s("segmenter") ?? cat.default_segmenter, seed: Number(f.get("seed") ?? 0),
       start_paused: f.get("start_paused") === "on", capture: f.get("capture") === "on", breakpoints: [],
       recovery: true, adaptive: true,
     } as TrialCreate;
@@ -160,7 +160,7 @@ function TrialForm({ cat, task }: { cat: Catalog; task: Task }) {
           </span>
         )}<br />
         <PlannerFields cat={cat} planner={planner} setPlanner={setPlanner} />
-        <label>Segmenter <select name="segmenter">{cat.segmenters.map((s) => <option key={s.name} value={s.name} title={s.description}>{segLabel(s)}</option>)}</select></label>
+        <label>Segmenter <select name="segmenter" defaultValue={cat.default_segmenter}>{cat.segmenters.map((s) => <option key={s.name} value={s.name} title={s.description}>{segLabel(s)}</option>)}</select></label>
         <label>Robot <select name="embodiment" value={robot} onChange={(e) => setEmbodiment(e.target.value)}><option value="">task default</option>
           {cat.embodiments.filter((x) => task.embodiments.includes(x.name)).map((x) => <option key={x.name} value={x.name}>{x.name}</option>)}</select></label>
         <label>Seed <input type="number" name="seed" defaultValue={0} min={0} className="narrow" /></label>
@@ -209,7 +209,7 @@ function BatchForm({ cat }: { cat: Catalog }) {
         <label>Tasks <select name="tasks" multiple size={4}>{cat.suites[suite].map((t) => <option key={t} value={t}>{t}</option>)}</select></label>
         <label>Trials per task <input type="number" name="trials" defaultValue={2} min={1} max={100} className="narrow" /></label>
         <PlannerFields cat={cat} planner={planner} setPlanner={setPlanner} />
-        <label>Segmenter <select name="segmenter">{cat.segmenters.map((s) => <option key={s.name} value={s.name}>{segLabel(s)}</option>)}</select></label>
+        <label>Segmenter <select name="segmenter" defaultValue={cat.default_segmenter}>{cat.segmenters.map((s) => <option key={s.name} value={s.name}>{segLabel(s)}</option>)}</select></label>
         <ProtocolField cat={cat} suite={suite} />
         <label><input type="checkbox" name="capture" /> record training data</label>
         <button type="submit">Run batch</button> <span id="batch-error" className="fail">{error}</span>
