@@ -9,7 +9,7 @@ from dataclasses import replace
 from pathlib import Path
 
 from spark_core.bench.run_file import write_rows
-from spark_core.catalog import EMBODIMENTS, PLANNERS, SEGMENTERS
+from spark_core.catalog import DEFAULT_SEGMENTER, EMBODIMENTS, PLANNERS, SEGMENTERS
 
 from . import bench_manifest
 
@@ -63,10 +63,11 @@ def register(sub) -> None:
     b.add_argument("--endpoint", help="a named LLM endpoint from spark.yaml `endpoints:` (with its key)")
     b.add_argument(
         "--segmenter",
-        default="privileged-keypoints",
+        default=DEFAULT_SEGMENTER,
         choices=list(SEGMENTERS),
-        help="perception backend: privileged-keypoints (simulator state, no cameras), the sim / sim-noisy "
-        "oracles through the cameras, or sam3 (`spark catalog` says which are privileged)",
+        help=f"perception backend (default: {DEFAULT_SEGMENTER}, camera-only): privileged-keypoints (simulator "
+        "state, no cameras: control alone), the sim / sim-noisy oracles through the cameras, or sam3 (`spark "
+        "catalog` says which are privileged)",
     )
     b.add_argument("--sam3-model", help="SAM3 checkpoint directory for --segmenter sam3 (default: SPARK_SAM3_MODEL)")
     b.add_argument("--no-adaptive", action="store_true", help="one prompt per label (no adaptive self-consistency)")

@@ -9,7 +9,7 @@ from spark_core.catalog import SEGMENTERS
 def test_segmenter_is_the_one_name_and_its_choices_are_the_catalogs():
     args = build_parser().parse_args(["bench", "capbench", "--segmenter", "sim", "--trials", "3"])
     assert args.segmenter == "sim" and args.trials == 3
-    assert build_parser().parse_args(["bench", "capbench"]).segmenter == "privileged-keypoints"
+    assert build_parser().parse_args(["bench", "capbench"]).segmenter == "learned"  # the camera-only default
     for name in SEGMENTERS:
         assert build_parser().parse_args(["run", "lift_block", "--segmenter", name]).segmenter == name
 

@@ -190,7 +190,8 @@ def test_predict_gives_the_whole_frame_softmax_on_object_pixels(stack_world):
 
 def test_the_camera_only_segmenter_is_the_default_of_the_catalog_the_api_and_the_cli(monkeypatch, tmp_path):
     """A trial nobody chose a segmenter for perceives through the cameras (`learned`), not the oracle: the
-    catalog says so (the console's form selects it), and so do a trial config, an API request and `spark run`."""
+    catalog says so (the console's form selects it), and so do a trial config, an API request, `spark run`, `spark
+    plan` and `spark bench`."""
     from server.api.batches import BatchCreate
     from server.api.models import TrialCreate
     from spark_cli import _apply_config, build_parser
@@ -204,7 +205,7 @@ def test_the_camera_only_segmenter_is_the_default_of_the_catalog_the_api_and_the
     assert BatchCreate(suite="builtin", trials=1).segmenter == "learned"
     monkeypatch.delenv("SPARK_CONFIG", raising=False)
     monkeypatch.chdir(tmp_path)  # no spark.yaml: no operator settings
-    for argv in (["run", "lift_block"], ["plan", "--task", "lift_block", "lift the red block"]):
+    for argv in (["run", "lift_block"], ["plan", "--task", "lift_block", "lift the red block"], ["bench", "builtin"]):
         args = build_parser().parse_args(argv)
         _apply_config(args)
         assert args.segmenter == "learned", argv
