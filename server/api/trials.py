@@ -329,6 +329,11 @@ def check_breakpoints(paths: list[str], config: TrialConfig) -> list[str]:
     return paths
 
 
+def _stamped(ev: dict) -> dict:
+    """The event as sent over the live stream: with `sent_s`, the server's Unix time of sending."""
+    return {**ev, "sent_s": time.time()}
+
+
 @router.websocket("/{trial_id}/events")
 async def events(websocket: WebSocket, trial_id: str) -> None:
     """Every event of the trial (history first), then live ones; closes when the trial ends. Each message carries
@@ -346,11 +351,11 @@ async def events(websocket: WebSocket, trial_id: str) -> None:
         if trial_id not in runner.live:  # finished (or unknown): replay what the store has
             trial = websocket.app.state.store.get_trial(trial_id)
             for ev in (trial or {}).get("events", []):
-                await websocket.send_json({**ev, "sent_s": time.time()})
-            await websocket.send_json({"kind": "closed", "sent_s": time.time()})
+                await websocket.send_json(_stamped(ev))
+            await websocket.send_json(_stamped({"kind": "closed"}))
             return
         while (ev := await q.get()) is not GONE:
-            await websocket.send_json({**ev, "sent_s": time.time()})
+            await websocket.send_json(_stamped(ev))
             if ev.get("kind") == "closed":
                 return
     except WebSocketDisconnect:

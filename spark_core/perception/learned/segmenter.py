@@ -484,7 +484,7 @@ def _merge_confused(cat: np.ndarray, probs: np.ndarray, split: np.ndarray) -> np
     network hesitates between on each other's pixels (e.g. ketchup / tomato sauce bottles) are one object of the
     category with more pixels; categories it tells apart (a block on a plate) stay separate instances. `probs`:
     (h, w, n_categories) category probabilities."""
-    thing = np.array([c.thing for c in CATEGORIES])[cat]
+    thing = _THING[cat]
     n, comp = cv2.connectedComponents((thing & ~split).astype(np.uint8), connectivity=4)
     if n <= 1:
         return cat
