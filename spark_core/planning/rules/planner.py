@@ -11,6 +11,8 @@ import numpy as np
 from ...grammar import PlanError, check_plan, to_yaml
 from ...perception.qualifiers import split_relation
 from ..protocol import PlanRequest, PlanResult
+from .afford import Reading
+from .afford import best as afforded
 from .discourse import restructured
 from .kinds import modifier_for_thing, other_contents, other_variety
 from .lexicon import CONTAINERS, CONTENTS, REGIONS
@@ -65,6 +67,11 @@ class RulesPlanner:
                     children, understood = read
         except (ParseError, CannotPlan) as e:
             read = self._read_without_order(request)
+            if read is None:
+                read, why = self._afforded(request)
+                if read is None and why.startswith("which "):
+                    # several things fit a mention, and every other word said is placed: say so
+                    return self._refusal(CannotPlan(f"{why} (found in the scene: {_seen(request)})"), understood, t0)
             if read is None:
                 return self._refusal(e, understood, t0)
             children, understood = read
@@ -122,6 +129,26 @@ class RulesPlanner:
             children = _two_arm_branches(children, request) or children
             plans.setdefault(_effect(children, scene), (children, [f"read without word order: {describe(reading)}"]))
         return next(iter(plans.values())) if len(plans) == 1 else None
+
+    def _afforded(self, request: PlanRequest) -> tuple[tuple[list[dict], list[str]] | None, str]:
+        """The reading the scene affords (rules/afford.py): the grounded mentions' best single-step goal, when it
+        wins clearly and composes with the same checks as the rule parse's; else None and why not."""
+        scene = request.scene.keypoints
+        composed: dict[int, list[dict]] = {}
+
+        def effect(reading: Reading) -> tuple | None:
+            try:
+                children = self._compose([reading.clause], request)
+            except CannotPlan:
+                return None
+            children = _two_arm_branches(children, request) or children
+            composed[id(reading)] = children
+            return _effect(children, scene)
+
+        chosen, why = afforded(request.instruction, scene, request.scene.unresolved, effect)
+        if not chosen:
+            return None, why
+        return (composed[id(chosen[0])], [f"read from what the scene affords: {chosen[0].why}"]), ""
 
     # -- composition -------------------------------------------------------------------------------------------
     def _compose(self, clauses: list[Clause], request: PlanRequest) -> list[dict]:
@@ -311,6 +338,14 @@ class RulesPlanner:
         if not c.direction:
             raise CannotPlan(f"{c.text!r}: push which way? (forward, backward, left, right, or into something)")
         return c.direction, round(min(c.distance_m or 0.10, 0.5), 3)
+
+
+def _seen(request: PlanRequest) -> str:
+    """What perception found for the instruction's phrases, and what else the scene holds when it can list it."""
+    scene = request.scene
+    return (", ".join(scene.keypoints) or "nothing") + (
+        f"; the scene holds: {', '.join(scene.inventory)}" if scene.inventory else ""
+    )
 
 
 def _check_kinds(

@@ -646,12 +646,17 @@ def _one_step_as_said(instruction: str, later: bool = False) -> tuple[list[list[
 
 def phrases(instruction: str) -> list[str]:
     """What perception should look for so that each reading can be grounded (observe.py)."""
+    from .afford import phrases as afforded_phrases  # (afford.py reads with this module's words)
+
     out: dict[str, None] = {}
     for reading in readings(instruction):
         for c in reading:
             for p in (c.obj, c.target, c.source):
                 if p and not is_pronoun(p):
                     out.setdefault(p, None)
+    # the mentions the scene-afforded reading grounds (the planner's last fallback, rules/afford.py)
+    for p in afforded_phrases(instruction):
+        out.setdefault(p, None)
     return list(out)
 
 
