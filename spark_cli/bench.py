@@ -65,9 +65,10 @@ def register(sub) -> None:
         "--segmenter",
         default=DEFAULT_SEGMENTER,
         choices=list(SEGMENTERS),
-        help=f"perception backend (default: {DEFAULT_SEGMENTER}, camera-only): privileged-keypoints (simulator "
-        "state, no cameras: control alone), the sim / sim-noisy oracles through the cameras, or sam3 (`spark "
-        "catalog` says which are privileged)",
+        action=_Given,
+        help=f"perception backend (default: {DEFAULT_SEGMENTER}, camera-only; the wording suite: sim, as its "
+        "recorded table): privileged-keypoints (simulator state, no cameras: control alone), the sim / sim-noisy "
+        "oracles through the cameras, or sam3 (`spark catalog` says which are privileged)",
     )
     b.add_argument("--sam3-model", help="SAM3 checkpoint directory for --segmenter sam3 (default: SPARK_SAM3_MODEL)")
     b.add_argument("--no-adaptive", action="store_true", help="one prompt per label (no adaptive self-consistency)")
@@ -171,6 +172,22 @@ def register(sub) -> None:
     b.set_defaults(func=_cmd_bench)
 
 
+class _Given(argparse.Action):
+    """Stores the value and notes that it was given (`<dest>_given`), so a suite with a default of its own (the
+    wording suite's sim) can tell the shared default from an explicit choice."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        setattr(namespace, self.dest, values)
+        setattr(namespace, f"{self.dest}_given", True)
+
+
+def wording_segmenter(args: argparse.Namespace) -> str:
+    """The wording suite's segmenter: as given with --segmenter, else the one its recorded table used (sim)."""
+    from spark_core.bench import wording
+
+    return args.segmenter if getattr(args, "segmenter_given", False) else wording.SEGMENTER
+
+
 def _protocol_names() -> dict[str, str]:
     from spark_core.bench.protocols import PROTOCOLS
 
@@ -256,11 +273,13 @@ def _wording(args: argparse.Namespace, command: str) -> str:
     else:
         entries = [e for half in ([args.half] if args.half else wording.HALVES) for e in wording.load(half)]
     blind = bool(getattr(args, "blind", False))
+    segmenter = wording_segmenter(args)
     done = iter(range(1, len(entries) + 1))
     rows = wording.plan_entries(
         entries,
         args.seed,
         lambda r: print(f"[{next(done)}/{len(entries)}] planned" if blind else _wording_line(r), flush=True),
+        segmenter=segmenter,
     )
     seeds = min(args.trials or 2, 2)
     exec_rows = (
@@ -275,11 +294,12 @@ def _wording(args: argparse.Namespace, command: str) -> str:
                 else f"{'ok  ' if r['success'] else 'FAIL'} {r['half']} {r['task'][:40]} {r['wording']}",
                 flush=True,
             ),
+            segmenter=segmenter,
         )
     )
     if args.json:
         write_rows(args.json, {"planning": rows, "execution": exec_rows})
-    return wording.section(rows, exec_rows, command, seeds, list_failures=not blind)
+    return wording.section(rows, exec_rows, command, seeds, list_failures=not blind, segmenter=segmenter)
 
 
 def _wording_line(r: dict) -> str:
@@ -347,7 +367,9 @@ def _bench(args: argparse.Namespace) -> int:
         body = perception_bench.section(result, command, args.perception_weights)
         print(body)
     elif args.suite == "wording":
-        title, body = "rules planner on the wording corpus", _wording(args, command)
+        segmenter = wording_segmenter(args)
+        title = "rules planner on the wording corpus" + ("" if segmenter == "sim" else f" ({segmenter} segmenter)")
+        body = _wording(args, command)
         print(body)
     elif args.suite == "liberopro-table":
         from spark_core.bench import liberopro_table

@@ -39,6 +39,9 @@ from ..trial import TrialConfig, run_trial
 from .report import footer, pct
 
 CORPUS_DIR = Path(__file__).resolve().parents[2] / "data" / "wording"
+# The segmenter the recorded table used (BENCHMARKS.md's command): the sim oracle, privileged. `spark bench wording
+# --segmenter learned` plans and executes with the camera-only one instead.
+SEGMENTER = "sim"
 HALVES = ("dev", "test")
 SAME_PLACE_M = 0.04
 # Steps that leave the scene as it was (moving away from a fixture): not part of what reaches the goal.
@@ -207,8 +210,14 @@ def _same_steps(a: list[tuple[str, tuple]], b: list[tuple[str, tuple]]) -> bool:
     return True
 
 
-def plan_entries(entries: list[dict[str, Any]], seed: int = 0, progress: Callable[[dict], None] | None = None):
-    """One row per entry: planned?, correct?, the planner's error or what it understood."""
+def plan_entries(
+    entries: list[dict[str, Any]],
+    seed: int = 0,
+    progress: Callable[[dict], None] | None = None,
+    segmenter: str = SEGMENTER,
+):
+    """One row per entry: planned?, correct?, the planner's error or what it understood. The entry and the task's
+    official wording are both planned from what `segmenter` found in the scene."""
     planner = RulesPlanner()
     rows: list[dict[str, Any]] = []
     by_task: dict[tuple[str, str], list[dict[str, Any]]] = {}
@@ -218,7 +227,7 @@ def plan_entries(entries: list[dict[str, Any]], seed: int = 0, progress: Callabl
         task = SUITES[suite][task_name]
         world = task.make_world(seed)
         try:
-            resolver = make_resolver(world, "sim", seed)
+            resolver = make_resolver(world, segmenter, seed)
             arms, tools = arm_bases(world), arm_tools(world)
             official = getattr(world, "instruction", task.instruction)
 
@@ -257,15 +266,18 @@ def plan_entries(entries: list[dict[str, Any]], seed: int = 0, progress: Callabl
 
 
 def execute_sample(
-    entries: list[dict[str, Any]], seeds: int = 2, progress: Callable[[dict], None] | None = None
+    entries: list[dict[str, Any]],
+    seeds: int = 2,
+    progress: Callable[[dict], None] | None = None,
+    segmenter: str = SEGMENTER,
 ) -> list[dict[str, Any]]:
-    """Real trials (rules planner, sim segmenter) for a sample of goal-stating entries of each half, and for the
+    """Real trials (rules planner, `segmenter`) for a sample of goal-stating entries of each half, and for the
     official wording of the same tasks on the same seeds (rows with half "official")."""
     rows: list[dict[str, Any]] = []
 
     def trial(task_name: str, wording_id: str, instruction: str | None, half: str) -> None:
         for seed in range(seeds):
-            out = run_trial(TrialConfig(task_name, instruction, planner="rules", segmenter="sim", seed=seed))
+            out = run_trial(TrialConfig(task_name, instruction, planner="rules", segmenter=segmenter, seed=seed))
             row = {
                 "task": task_name,
                 "wording": wording_id,
@@ -328,8 +340,23 @@ def _why(row: dict[str, Any]) -> str:
     return "refused" if not row["planned"] else "planned, not the official plan's effect"
 
 
+def perception_note(segmenter: str) -> str:
+    """The protocol's words for the segmenter: its name and whether it is privileged (catalog)."""
+    from ..catalog import SEGMENTERS
+
+    entry = SEGMENTERS[segmenter]
+    if entry.privileged:
+        return f"{segmenter} segmenter (PRIVILEGED {'masks' if entry.cameras else 'keypoints from simulator state'})"
+    return f"{segmenter} segmenter (camera-only, not privileged)"
+
+
 def section(
-    rows: list[dict[str, Any]], exec_rows: list[dict[str, Any]], command: str, seeds: int, list_failures: bool = True
+    rows: list[dict[str, Any]],
+    exec_rows: list[dict[str, Any]],
+    command: str,
+    seeds: int,
+    list_failures: bool = True,
+    segmenter: str = SEGMENTER,
 ) -> str:
     """The wording table. `list_failures=False` (a blind run) leaves out the dev column's failing ids."""
     lines = ["| style | dev entries | dev correct | test entries | test correct |", "|---|---|---|---|---|"]
@@ -379,17 +406,17 @@ def section(
         + "\n\n"
         + footer(
             command,
-            "planner: rules (offline, deterministic), on the hand-written wording corpus data/wording/ (dev and test "
-            "halves apart; the test half frozen before the parser changed, never tuned on); perception: sim segmenter "
-            "(PRIVILEGED masks), the task's scene at seed 0; planning success: the plan's steps match the plan of "
-            "the task's official wording in the same scene (same primitives in order, every label's keypoint within "
-            f"{100 * SAME_PLACE_M:.0f} cm, or for a place on top the same support: one target's point inside the "
-            "other's seen top face and below its top (LIBERO-PRO goal-swap 'top of the drawer': its front lies under "
-            "the cabinet top; trials: the reworded cabinet-top plans meet the goal); same push direction and knob "
-            "sense); refusal entries: correct when no plan comes back (the message names what was understood, what "
-            "could not be placed and what was found); execution: real trials through the trial pipeline (sim "
-            "segmenter, recovery tiers "
-            f"1-2, seeds 0-{seeds - 1}) for up to {EXEC_PER_TASK} goal-stating entries of each of "
-            f"{len(EXEC_TASKS)} tasks, against the official wording of the same tasks and seeds",
+            f"planner: rules (offline, deterministic), on the hand-written wording corpus data/wording/ (dev and "
+            f"test halves apart; the test half frozen before the parser changed, never tuned on); perception: "
+            f"{perception_note(segmenter)}, the task's scene at seed 0; planning success: the plan's steps match "
+            f"the plan of the task's official wording in the same scene (same primitives in order, every label's "
+            f"keypoint within {100 * SAME_PLACE_M:.0f} cm, or for a place on top the same support: one target's "
+            f"point inside the other's seen top face and below its top (LIBERO-PRO goal-swap 'top of the drawer': "
+            f"its front lies under the cabinet top; trials: the reworded cabinet-top plans meet the goal); same "
+            f"push direction and knob sense); refusal entries: correct when no plan comes back (the message names "
+            f"what was understood, what could not be placed and what was found); execution: real trials through "
+            f"the trial pipeline ({perception_note(segmenter)}, recovery tiers 1-2, seeds 0-{seeds - 1}) for up to"
+            f" {EXEC_PER_TASK} goal-stating entries of each of {len(EXEC_TASKS)} tasks, against the official "
+            f"wording of the same tasks and seeds",
         )
     )

@@ -15,9 +15,9 @@ from spark_core.planning import SceneView
 def test_the_corpus_is_large_enough_split_by_its_hash_rule_and_names_real_tasks():
     dev, test = wording.load("dev"), wording.load("test")
     # dev: the original 351 (hash split; the odd-hash half is the retired first test half), then later probes (.pN,
-    # .qN, .sN) and the retired second to sixth test halves (.rN, .tN, .vN, .xN, .zN); test: the seventh half (.yN),
-    # written apart
-    later = [e for e in dev if re.search(r"\.[pqsrtvxz][0-9]+$", e["id"])]
+    # .qN, .sN, .kN, .mN) and the retired second to sixth test halves (.rN, .tN, .vN, .xN, .zN); test: the seventh
+    # half (.yN), written apart
+    later = [e for e in dev if re.search(r"\.[pqsrtvxzkm][0-9]+$", e["id"])]
     first = [e for e in dev if e not in later]
     assert later and len(first) >= 300
     odd = [hashlib.sha256(f"{e['task']}|{e['instruction']}".encode()).digest()[0] % 2 for e in first]
@@ -158,7 +158,7 @@ def test_plan_only_skips_the_execution_sample(monkeypatch, tmp_path):
     row = dict(entry, half="dev", instruction="x", planned=True, correct=True, error="", understood=[])
     ran: list[str] = []
     monkeypatch.setattr(wording, "load", lambda half: [dict(entry, half=half)])
-    monkeypatch.setattr(wording, "plan_entries", lambda entries, seed, progress: ran.append("plan") or [row])
+    monkeypatch.setattr(wording, "plan_entries", lambda entries, seed, progress, **k: ran.append("plan") or [row])
     monkeypatch.setattr(wording, "execute_sample", lambda *a, **k: ran.append("execute") or [])
     out = tmp_path / "rows.json"
     args = argparse.Namespace(half="dev", seed=0, trials=None, json=str(out), plan_only=True)
@@ -184,7 +184,7 @@ def test_corpus_option_plans_a_file_of_the_dev_schema_instead_of_the_halves(monk
     monkeypatch.setattr(
         wording,
         "plan_entries",
-        lambda entries, seed, progress: (
+        lambda entries, seed, progress, **k: (
             seen.append(entries) or [dict(e, planned=True, correct=True, error="", understood=[]) for e in entries]
         ),
     )
@@ -233,7 +233,7 @@ def test_a_blind_run_prints_counts_and_figures_but_no_entry_id_style_or_failure_
     probe = tmp_path / "probe.yaml"
     probe.write_text(yaml.safe_dump([dict(e, instruction="put the block on the plate") for e in entries]))
 
-    def plan_entries(entries, seed, progress):
+    def plan_entries(entries, seed, progress, **k):
         rows = [dict(e, planned=i == 0, correct=i == 0, error="no", understood=[]) for i, e in enumerate(entries)]
         for r in rows:
             progress(r)
