@@ -31,6 +31,8 @@ _EXPORTS: dict[str, str] = {
     "SEGMENTERS": "spark_core.catalog",
     "DEFAULT_SEGMENTER": "spark_core.catalog",
     "EMBODIMENTS": "spark_core.catalog",
+    "ALL_EMBODIMENTS": "spark_core.catalog",
+    "BENCHMARK_EMBODIMENTS": "spark_core.catalog",
     "check_task": "spark_core.catalog",
     "suites": "spark_core.catalog",
     "task_entry": "spark_core.catalog",

@@ -35,9 +35,14 @@ class SegmenterEntry:
 
 @dataclass(frozen=True)
 class EmbodimentEntry:
+    """A robot set-up and the arm names a plan may tag its nodes with on it. `suite`: the benchmark suite whose own
+    env brings this robot (it runs that suite's tasks and nothing else); None for a set-up our scene builder puts
+    any task that fits on."""
+
     name: str
     description: str
     arms: tuple[str, ...]
+    suite: str | None = None
 
 
 PLANNERS: dict[str, PlannerEntry] = {
@@ -102,6 +107,8 @@ SEGMENTERS: dict[str, SegmenterEntry] = {
     )
 }
 
+# The robot set-ups our scene builder builds a task's scene with (sim/embodiments.py): what `spark run --embodiment`
+# offers and `spark bench embodiments` compares the builtin tasks on.
 EMBODIMENTS: dict[str, EmbodimentEntry] = {
     e.name: e
     for e in (
@@ -110,6 +117,27 @@ EMBODIMENTS: dict[str, EmbodimentEntry] = {
         EmbodimentEntry("bimanual", "two Pandas 0.6 m apart over one table", ("left", "right")),
     )
 }
+
+# The robots a benchmark's own env comes with: each runs its suite's tasks only (the names those tasks list as their
+# embodiments), never a builtin scene. Listed for their arms, which a submitted plan's arm tags are checked against,
+# as RobosuiteWorld names them: robot 0 is `right`, robot 1 `left` (tests/sim/test_embodiment_catalog.py holds
+# these to the envs' robots).
+BENCHMARK_EMBODIMENTS: dict[str, EmbodimentEntry] = {
+    e.name: e
+    for e in (
+        EmbodimentEntry("robosuite-panda", "robosuite's one Panda (CaP-Bench one-arm envs)", ("right",), "capbench"),
+        EmbodimentEntry(
+            "robosuite-two-pandas",
+            "robosuite's two Pandas facing each other across the table (CaP-Bench TwoArm envs)",
+            ("right", "left"),
+            "capbench",
+        ),
+        EmbodimentEntry("libero-panda", "LIBERO's one mounted Panda (LIBERO-PRO envs)", ("right",), "liberopro"),
+    )
+}
+
+# Every embodiment a task can name: what the API validates and GET /api/catalog lists
+ALL_EMBODIMENTS: dict[str, EmbodimentEntry] = {**EMBODIMENTS, **BENCHMARK_EMBODIMENTS}
 
 
 class CatalogError(ValueError):
@@ -131,7 +159,7 @@ def check_segmenter(name: str) -> str:
 
 
 def check_embodiment(name: str) -> str:
-    return _check("embodiment", name, EMBODIMENTS)
+    return _check("embodiment", name, ALL_EMBODIMENTS)
 
 
 def suites() -> dict[str, list[str]]:
@@ -194,7 +222,7 @@ def catalog_json(with_tasks: bool = True) -> dict[str, Any]:
         "planners": [asdict(p) for p in PLANNERS.values()],
         "segmenters": [asdict(s) for s in SEGMENTERS.values()],
         "default_segmenter": DEFAULT_SEGMENTER,
-        "embodiments": [asdict(e) for e in EMBODIMENTS.values()],
+        "embodiments": [asdict(e) for e in ALL_EMBODIMENTS.values()],
         "suites": suites(),
         **enums(),
     }
@@ -209,6 +237,8 @@ def catalog_json(with_tasks: bool = True) -> dict[str, Any]:
 
 
 __all__ = [
+    "ALL_EMBODIMENTS",
+    "BENCHMARK_EMBODIMENTS",
     "CatalogError",
     "DEFAULT_SEGMENTER",
     "EMBODIMENTS",

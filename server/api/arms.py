@@ -1,20 +1,22 @@
 """A given plan's arm tags checked against the embodiment that is to run it, when the trial is submitted (or the
 plan validated for an embodiment). The executor refuses a node whose arm the robot lacks only when that node
 runs: after the scene was built and every node before it had run, the trial ended `tree_failed` for a request
-that could never have worked. The embodiment's arms come from the catalog."""
+that could never have worked. The embodiment's arms come from the catalog, which lists every embodiment a task runs
+on: our scene builder's set-ups and the robots the CaP-Bench and LIBERO-PRO envs come with."""
 
 from __future__ import annotations
 
 from typing import Any
 
-from spark_core import EMBODIMENTS
+from spark_core import ALL_EMBODIMENTS
 
 
 def arm_errors(plan: Any, embodiment: str) -> list[tuple[str, str]]:
     """(path, message) for each arm tag of `plan` (a grammar Plan) that `embodiment` has no arm for, at the node
     whose tag says so (its children inherit it: named once), and for each two-arm primitive on a one-arm robot.
-    [] when the plan fits, or when the catalog does not list the embodiment (then the executor still checks)."""
-    entry = EMBODIMENTS.get(embodiment)
+    [] when the plan fits, or when the catalog does not list the embodiment (no task runs on one it does not list:
+    tests/sim/test_embodiment_catalog.py; the executor would still check)."""
+    entry = ALL_EMBODIMENTS.get(embodiment)
     if entry is None:
         return []
     arms = tuple(entry.arms)
@@ -51,7 +53,9 @@ def arm_problem(plan: Any, embodiment: str, task: str, default: bool) -> str | N
     fits = [
         e
         for e in check_task(task).embodiments
-        if e in EMBODIMENTS and used <= set(EMBODIMENTS[e].arms) and (not two or len(EMBODIMENTS[e].arms) >= 2)
+        if e in ALL_EMBODIMENTS
+        and used <= set(ALL_EMBODIMENTS[e].arms)
+        and (not two or len(ALL_EMBODIMENTS[e].arms) >= 2)
     ]
     which = f"{embodiment!r}, the default of task {task!r}" if default else repr(embodiment)
     hint = f"; the task also runs on {' and '.join(fits)}, which fit{'s' if len(fits) == 1 else ''}: set `embodiment`"

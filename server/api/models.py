@@ -7,8 +7,8 @@ from typing import Annotated, Any, Literal
 from pydantic import BaseModel, ConfigDict, Field, field_validator
 
 from spark_core import (
+    ALL_EMBODIMENTS,
     DEFAULT_SEGMENTER,
-    EMBODIMENTS,
     PLANNERS,
     PROTOCOLS,
     SEGMENTERS,
@@ -69,7 +69,7 @@ class TrialCreate(BaseModel):
         False, strict=True, description="record training-data frames (agentview + wrist video at 10 fps)"
     )
     embodiment: str | None = Field(
-        None, json_schema_extra=_enum(EMBODIMENTS), description="robot set-up (default: the task's own)"
+        None, json_schema_extra=_enum(ALL_EMBODIMENTS), description="robot set-up (default: the task's own)"
     )
     time_limit_s: float | None = Field(None, gt=0, le=3600, description="simulated seconds (default: the task's own)")
     pacing: float | None = Field(None, ge=0.01, le=100, description="x real time (default: as fast as possible)")
@@ -137,7 +137,7 @@ class PlanText(BaseModel):
     text: Annotated[str, Field(max_length=256 * 1024), VISIBLE_PLAN]
     embodiment: str | None = Field(
         None,
-        json_schema_extra=_enum(EMBODIMENTS),
+        json_schema_extra=_enum(ALL_EMBODIMENTS),
         description="also check the plan's arm tags against this robot set-up's arms (GET /api/catalog lists them)",
     )
 

@@ -125,6 +125,12 @@ def _names(m: mujoco.MjModel, i: int) -> RobotNames:
     )
 
 
+def arm_indices(n_robots: int) -> dict[str, int]:
+    """Our arm names for an env's robots by index: one robot is `right`; two are `right` (robot 0) and `left`
+    (robot 1). The catalog's robosuite and LIBERO embodiments list these names (spark_core/catalog.py)."""
+    return {"right": 0} if n_robots == 1 else {"right": 0, "left": 1}
+
+
 class RobosuiteWorld(MujocoWorld):
     """A built and reset robosuite env behind the World protocol. `arms` maps our arm names to robosuite robot
     indices (one arm: `right`; two: `right`=robot0, `left`=robot1 unless given)."""
@@ -148,7 +154,7 @@ class RobosuiteWorld(MujocoWorld):
         self.env = env
         m, d = env.sim.model._model, env.sim.data._data
         n_robots = len(env.robots)
-        arms = arms or ({"right": 0} if n_robots == 1 else {"right": 0, "left": 1})
+        arms = arms or arm_indices(n_robots)
         table_z = _support_height(env)
         base0 = d.body(f"robot{min(arms.values())}_base").xpos.copy()
         origin = np.array([base0[0], base0[1], table_z])

@@ -73,6 +73,23 @@ def test_your_own_plans_arm_tags_are_checked_against_the_chosen_robot(server, pa
     page.wait_for_selector("#plan-errors li:has-text('the ur10 embodiment has no such arm')")
 
 
+def test_a_capbench_plans_arm_tags_are_checked_against_its_robosuite_panda(server, page):  # noqa: F811
+    """The CaP-Bench and LIBERO-PRO robots are in the catalog: the editor checks a plan for Lift against
+    robosuite's one Panda (it was not checked, and the server queued it), and the robot choice offers the task's
+    own robot only."""
+    page.goto(server + "/")
+    page.click("details[data-suite=capbench] summary")
+    page.click("button[data-task=Lift]")
+    page.wait_for_selector("#task-card[data-task=Lift]")
+    options = page.locator("#new-trial select[name=embodiment] option")
+    assert options.evaluate_all("os => os.map(o => o.value)") == ["", "robosuite-panda"]
+    page.click("#new-trial summary:has-text('Run your own plan')")
+    page.fill("#new-trial textarea[name=plan]", LEFT_PICK)
+    page.wait_for_selector("#plan-errors li:has-text('the robosuite-panda embodiment has no such arm')")
+    assert page.locator(".plan-lines li.error-line").get_attribute("data-path") == "tree.children[0].arm"
+    assert not page.is_enabled("#new-trial button[type=submit]")
+
+
 def test_times_are_shown_in_the_browsers_time_zone(server, browser):  # noqa: F811
     """The API serves created_at in UTC with its offset; the history, the batch list and the batch page show it
     in the browser's zone (they showed the first 19 characters of the text: UTC, unmarked, as if local)."""

@@ -92,7 +92,8 @@ def _robosuite_success(w: RobosuiteWorld) -> bool:
     return bool(w.env._check_success())
 
 
-def _task(name: str, instruction: str, success, predicate: str, two_arms: bool = False) -> TaskSpec:
+def _task(name: str, instruction: str, success, predicate: str) -> TaskSpec:
+    """The env's robots decide the embodiment: one Panda or two (the catalog lists both with their arms)."""
     return TaskSpec(
         name,
         instruction,
@@ -101,7 +102,7 @@ def _task(name: str, instruction: str, success, predicate: str, two_arms: bool =
         predicate,
         max_sim_s=ENVS[name].horizon_s,
         tags=("capbench", "robosuite"),
-        embodiments=(ROBOSUITE_TWO_PANDAS if two_arms else ROBOSUITE_PANDA,),
+        embodiments=(ROBOSUITE_TWO_PANDAS if len(ENVS[name].robots) == 2 else ROBOSUITE_PANDA,),
         world_factory=partial(_world, name),
     )
 
@@ -147,14 +148,12 @@ SUITE: dict[str, TaskSpec] = {
             "lift the pot with both arms, holding it by its two handles",
             _robosuite_success,
             "robosuite TwoArmLift: pot bottom > 10 cm above the table (does not check that both arms hold it)",
-            two_arms=True,
         ),
         _task(
             "TwoArmHandover",
             "pick up the hammer with one arm and hand it over to the other arm",
             _robosuite_success,
             "robosuite TwoArmHandover: arm 1 grasps the handle, arm 0 holds nothing, hammer above the height threshold",
-            two_arms=True,
         ),
     ]
 }

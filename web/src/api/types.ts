@@ -8,7 +8,9 @@ export interface Planner extends CatalogEntry {
   reads_instruction: boolean;
 }
 export interface Segmenter extends CatalogEntry { privileged: boolean; cameras: boolean; needs: string }
-export interface Embodiment extends CatalogEntry { arms: string[] }
+/** `arms`: the names a plan's arm tags may use on it; `suite`: the benchmark suite whose env brings this robot (it runs
+ * that suite's tasks only), null for a set-up the scene builder puts any task that fits on. */
+export interface Embodiment extends CatalogEntry { arms: string[]; suite: string | null }
 /** A named evaluation configuration of the paper (spark_core/bench/protocols.py). */
 export interface Protocol extends CatalogEntry { suites: string[]; wording: string; adaptive: boolean }
 export interface Endpoint { name: string; planner: string; [k: string]: unknown }
