@@ -35,6 +35,9 @@ class PromptSelection:
     label: str
     detection: Detection | None  # relabelled with `label`
     candidates: tuple[PromptCandidate, ...] = field(default_factory=tuple)
+    # the confident detections of every prompt that found several (their own prompts kept): what another view's
+    # choice is checked against (resolver.several_elsewhere)
+    ambiguous: tuple[Detection, ...] = field(default_factory=tuple)
 
     @property
     def chosen_prompt(self) -> str | None:
@@ -68,7 +71,7 @@ def select_prompt(
     by_prompt: dict[str, list[Detection]] = {p: [] for p in prompts}
     for d in dets:
         by_prompt.setdefault(d.prompt, []).append(d)
-    candidates, singles = [], []
+    candidates, singles, several = [], [], []
     for p in prompts:
         ds = by_prompt[p]
         best = max((d.score for d in ds), default=0.0)
@@ -76,6 +79,7 @@ def select_prompt(
             verdict = "none"
         elif len(ds) > 1:
             verdict = "ambiguous"
+            several += [d for d in ds if d.score >= confident]
         elif best < confident:
             verdict = "weak"
         else:
@@ -91,15 +95,15 @@ def select_prompt(
                 )
                 for c in candidates
             ]
-            return PromptSelection(label, near.with_label(label), tuple(candidates))
+            return PromptSelection(label, near.with_label(label), tuple(candidates), tuple(several))
     if not singles:
-        return PromptSelection(label, None, tuple(candidates))
+        return PromptSelection(label, None, tuple(candidates), tuple(several))
     chosen = max(singles, key=lambda d: d.score)
     candidates = [
         PromptCandidate(c.prompt, c.n_detections, c.best_score, "chosen" if c.prompt == chosen.prompt else c.verdict)
         for c in candidates
     ]
-    return PromptSelection(label, chosen.with_label(label), tuple(candidates))
+    return PromptSelection(label, chosen.with_label(label), tuple(candidates), tuple(several))
 
 
 def detection_threshold(segmenter: Segmenter, adaptive: bool) -> float:

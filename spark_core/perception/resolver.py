@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 
-from .adaptive import select_prompt
+from .adaptive import PromptSelection, select_prompt
 from .detection import Detection
 from .frame import CameraFrame
 from .keypoint import Keypoint, LabelNotFound
@@ -22,6 +22,10 @@ from .variants import prompt_variants
 
 FUSE_AGREEMENT_M = 0.05
 FUSE_OVERLAP = 0.5  # ...or when their xy point boxes overlap by more than this share of the smaller box
+# a second object seen in one view makes a label another view singled out ambiguous (several_elsewhere) when that
+# view is sure of it and it has about the kept one's size
+SECOND_SURE = 0.9
+SECOND_SIZE_RATIO = 2.0
 
 
 class PerceptionResolver:
@@ -99,8 +103,9 @@ class PerceptionResolver:
         evidence: list[PointEvidence] = []
         record: dict[str, Any] = {"label": label, "t_sim_s": self._captured_at, "cameras": {}}
         seen_at = self._seen_at.get(label)
+        selections = {}
         for cam, frame in self.frames.items():
-            sel = select_prompt(self.segmenter, frame, label, variants, seen_at_m=seen_at)
+            sel = selections[cam] = select_prompt(self.segmenter, frame, label, variants, seen_at_m=seen_at)
             record["cameras"][cam] = sel.to_dict()
             if sel.detection is None:
                 continue
@@ -110,6 +115,15 @@ class PerceptionResolver:
             if ev is not None:
                 evidence.append(ev)
         evidence = fused_evidence(evidence)
+        # the first time a label is resolved (the planner's look), a view that sees several of what another view
+        # kept makes the label ambiguous: one view may simply not see the second bowl. Later looks track the object
+        # already chosen (select_prompt's seen_at_m), so look-alikes appearing mid-task do not undo a plan.
+        several = several_elsewhere(selections, self.frames, evidence) if evidence and seen_at is None else 0
+        if several > 1:
+            record["keypoint"] = None
+            record["several"] = several
+            self._add_grounding(record)
+            raise LabelNotFound(label, f"several match: {several} (one view saw one, another saw {several})")
         if not evidence:
             tried = ", ".join([label, *variants])
             record["keypoint"] = None
@@ -125,6 +139,56 @@ class PerceptionResolver:
         self.groundings.append(record)
         for listener in list(self.grounding_listeners):
             listener(record)
+
+
+def several_elsewhere(
+    selections: dict[str, PromptSelection], frames: dict[str, CameraFrame], kept: list[PointEvidence]
+) -> int:
+    """How many distinct objects (in 3D) some view holds for a prompt another view kept as its single detection:
+    the kept object (`kept`, the fused evidence) plus every other one that view is sure of (score >=
+    SECOND_SURE) and that has about the kept object's size (SECOND_SIZE_RATIO); 0 when there is none.
+
+    A detection is the kept object when `_same_object` says so against any kept view (a plate one view sees whole
+    and another in two pieces either side of a bottle in front of it). The bars keep a segmenter's slips from
+    refusing a plannable task: a box of cream cheese one view takes for a second bowl at 0.75, a burner seen as a
+    second stove a third of its size. A parent answering for a part it could not see (`stand_in_for_part`) is no
+    instance of the part, and when the kept answer is one, nothing was singled out to compare with."""
+    if any(e.detection.detail.get("stand_in_for_part") for e in kept):
+        return 0
+    prompts = {s.chosen_prompt for s in selections.values() if s.detection is not None}
+    size = max(_xy_size(e) for e in kept)
+    most = 0
+    for cam, sel in selections.items():
+        frame = frames[cam]
+        exclude = wrist_self_occlusion(frame.shape) if "wrist" in cam else None
+        for prompt in prompts:
+            others: list[PointEvidence] = []
+            for d in sel.ambiguous:
+                if d.prompt != prompt or d.score < SECOND_SURE or d.detail.get("stand_in_for_part"):
+                    continue
+                e = masked_points(d, frame, exclude)
+                if e is None or any(_same_object(e, o) for o in [*kept, *others]):
+                    continue
+                if max(_xy_size(e), size) <= SECOND_SIZE_RATIO * min(_xy_size(e), size):
+                    others.append(e)
+            most = max(most, 1 + len(others) if others else 0)
+    return most
+
+
+def _xy_size(e: PointEvidence) -> float:
+    """The longer side of the view's xy point box (5th-95th percentile), m."""
+    lo, hi = np.percentile(e.points_world[:, :2], 5, axis=0), np.percentile(e.points_world[:, :2], 95, axis=0)
+    return float(max(hi - lo))
+
+
+def _same_object(a: PointEvidence, b: PointEvidence) -> bool:
+    """The views' rule for one thing (fused_evidence): medians within FUSE_AGREEMENT_M in xy or xy boxes
+    overlapping by FUSE_OVERLAP (of the smaller box: a piece inside the whole), and heights within FUSE_AGREEMENT_M
+    or half the taller visible height."""
+    ca, cb = np.median(a.points_world, axis=0), np.median(b.points_world, axis=0)
+    same_xy = np.linalg.norm(ca[:2] - cb[:2]) < FUSE_AGREEMENT_M or _xy_overlap(a, b) > FUSE_OVERLAP
+    tall = max(float(np.percentile(e.points_world[:, 2], 98) - np.percentile(e.points_world[:, 2], 2)) for e in (a, b))
+    return bool(same_xy and abs(ca[2] - cb[2]) < max(FUSE_AGREEMENT_M, 0.5 * tall))
 
 
 def fused_evidence(evidence: list[PointEvidence]) -> list[PointEvidence]:

@@ -94,6 +94,8 @@ def _why_unresolved(resolver: Resolver, phrase: str) -> str:
     record = records[-1]
     if record.get("label") != phrase:
         return "none found"
+    if record.get("several"):  # one view kept a single detection, another saw several of it (resolver.py)
+        return f"several match: {record['several']}"
     counts = [
         c["n_detections"] for cam in record.get("cameras", {}).values() for c in cam["candidates"] if c["n_detections"]
     ]

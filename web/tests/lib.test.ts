@@ -3,6 +3,7 @@ import assert from "node:assert/strict";
 import { test } from "node:test";
 import type { Catalog, Trial, TrialEvent } from "../src/api/types";
 import { diffLines, firstDivergence } from "../src/lib/compare";
+import { groundingOutcome } from "../src/lib/groundingOutcome";
 import { activeWall, anchors, leafAnchors, treeStateAt, unpaused, wallToSim, withoutPauses } from "../src/lib/trialTime";
 import { localTime } from "../src/lib/localTime";
 import { linePaths } from "../src/lib/yamlPaths";
@@ -109,4 +110,10 @@ test("an API time is shown in the browser's time zone, one without an offset rea
   } finally {
     if (zone === undefined) delete process.env.TZ; else process.env.TZ = zone;
   }
+});
+
+test("a grounding refused as ambiguous says so; one that found nothing, that it kept no keypoint", () => {
+  assert.equal(groundingOutcome({ keypoint: { position_m: [0, 0, 0] } }), "");
+  assert.equal(groundingOutcome({ keypoint: null, several: 2 }), " · ambiguous: one camera saw one, another 2");
+  assert.equal(groundingOutcome({ keypoint: null }), " · no keypoint");
 });

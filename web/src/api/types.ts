@@ -45,6 +45,7 @@ export interface Grounding {
   label: string; t_sim_s: number | null;
   cameras: Record<string, { label: string; chosen: string | null; candidates: Candidate[] }>;
   keypoint?: { position_m: number[]; score?: number; source?: string } | null;
+  several?: number;  // refused as ambiguous: one camera singled the label out, another saw this many
 }
 
 /** A file the trial kept. kind `grounding`: the annotated detection image of one grounding (`grounding` is its

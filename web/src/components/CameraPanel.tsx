@@ -4,6 +4,7 @@
 // Below, the earlier groundings. A finished trial's cameras are also drawn at the cursor, from its recorded scene
 // state. Trials stored before per-grounding images fall back to the one image per camera of the last frame.
 import type { Artifact, Grounding } from "../api/types";
+import { groundingOutcome } from "../lib/groundingOutcome";
 
 const EPS = 1e-6;
 
@@ -55,7 +56,7 @@ export function CameraPanel({ trialId, groundings, artifacts, simCursor, replaya
           <h5>earlier groundings</h5>
           {earlier.map(({ g, i }) => (
             <details key={i}>
-              <summary><b>{g.label}</b> at {(g.t_sim_s ?? 0).toFixed(2)} s sim{g.keypoint ? "" : " · no keypoint"}</summary>
+              <summary><b>{g.label}</b> at {(g.t_sim_s ?? 0).toFixed(2)} s sim{groundingOutcome(g)}</summary>
               <GroundingView g={g} i={i} images={images.get(i) ?? []} url={url} lazy />
             </details>
           ))}
@@ -69,7 +70,7 @@ function GroundingView({ g, i, images, url, lazy }:
   { g: Grounding; i: number; images: Artifact[]; url: (name: string) => string; lazy?: boolean }) {
   return (
     <div className="grounding" data-grounding={i} data-label={g.label}>
-      {!lazy && <div className="grounding-title"><b>{g.label}</b> grounded at {(g.t_sim_s ?? 0).toFixed(2)} s sim{g.keypoint ? "" : " · no keypoint"}</div>}
+      {!lazy && <div className="grounding-title"><b>{g.label}</b> grounded at {(g.t_sim_s ?? 0).toFixed(2)} s sim{groundingOutcome(g)}</div>}
       {Object.entries(g.cameras ?? {}).map(([cam, c]) => {
         const img = images.find((a) => a.camera === cam);
         return (
