@@ -13,7 +13,7 @@ def register(sub) -> None:
 
 
 def _cmd_catalog(args: argparse.Namespace) -> int:
-    from spark_core.catalog import EMBODIMENTS, PLANNERS, SEGMENTERS, catalog_json, suites
+    from spark_core.catalog import ALL_EMBODIMENTS, PLANNERS, SEGMENTERS, catalog_json, suites
 
     if args.json:
         print(json.dumps(catalog_json(), indent=1))
@@ -25,8 +25,9 @@ def _cmd_catalog(args: argparse.Namespace) -> int:
     for s in SEGMENTERS.values():
         print(f"  {s.name:<21} {'PRIVILEGED ' if s.privileged else 'camera-only'}  {s.description}")
     print("embodiments:")
-    for e in EMBODIMENTS.values():
-        print(f"  {e.name:<21} {e.description}")
+    for e in ALL_EMBODIMENTS.values():
+        only = f" ({e.suite} tasks only)" if e.suite else ""
+        print(f"  {e.name:<21} {e.description}{only}; arms: {', '.join(e.arms)}")
     for suite, tasks in suites().items():
         print(f"suite {suite} ({len(tasks)} tasks): {', '.join(tasks[:8])}{' ...' if len(tasks) > 8 else ''}")
     return 0

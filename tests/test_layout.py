@@ -118,3 +118,18 @@ def test_the_api_serves_the_catalog_the_cli_offers(tmp_path):
     assert schema["segmenter"]["enum"] == [s["name"] for s in served["segmenters"]]
     run = next(a for a in build_parser()._subparsers._group_actions[0].choices["run"]._actions if a.dest == "segmenter")
     assert list(run.choices) == schema["segmenter"]["enum"]
+
+
+def test_spark_catalog_lists_every_robot_the_api_accepts(capsys):
+    """`spark catalog` (text) names each embodiment the API takes, with its arms and, for a benchmark's own robot,
+    the suite it runs (the CaP-Bench and LIBERO-PRO robots were missing from the listing)."""
+    from spark_cli import main
+    from spark_core.catalog import ALL_EMBODIMENTS
+
+    assert main(["catalog"]) == 0
+    listing = capsys.readouterr().out
+    for e in ALL_EMBODIMENTS.values():
+        line = next(ln for ln in listing.splitlines() if ln.split()[:1] == [e.name])
+        assert f"arms: {', '.join(e.arms)}" in line
+        assert (f"({e.suite} tasks only)" in line) == bool(e.suite)
+    assert {"libero-panda", "robosuite-two-pandas"} <= set(ALL_EMBODIMENTS)
