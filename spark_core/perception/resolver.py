@@ -50,6 +50,7 @@ class PerceptionResolver:
         self.source = segmenter.name + (" (privileged masks)" if self.privileged else "")
         self.frames: dict[str, CameraFrame] = {}
         self._captured_at: float | None = None
+        self._first_capture_at: float | None = None  # sim time of the first look: the scene before the robot acts
         self.refreshes = 0
         self.groundings: list[dict] = []  # every resolution: label, prompt candidates, choice, keypoint
         # called with each grounding record as it is made, while its frames and detections are still the
@@ -77,6 +78,8 @@ class PerceptionResolver:
             frames[cam] = perturb(frame) if perturb else frame
         self.frames = frames
         self._captured_at = self.world.sim_time_s
+        if self._first_capture_at is None:
+            self._first_capture_at = self._captured_at
 
     def _ensure_fresh(self) -> None:
         if self._captured_at is None or self.world.sim_time_s != self._captured_at:
@@ -115,10 +118,12 @@ class PerceptionResolver:
             if ev is not None:
                 evidence.append(ev)
         evidence = fused_evidence(evidence)
-        # the first time a label is resolved (the planner's look), a view that sees several of what another view
-        # kept makes the label ambiguous: one view may simply not see the second bowl. Later looks track the object
-        # already chosen (select_prompt's seen_at_m), so look-alikes appearing mid-task do not undo a plan.
-        several = several_elsewhere(selections, self.frames, evidence) if evidence and seen_at is None else 0
+        # on the scene as it was before the robot acted (the planner's look) a view that sees several of what another
+        # view kept makes the label ambiguous: one view may simply not see the second bowl. Later looks track the
+        # object already chosen (select_prompt's seen_at_m) or keep the single detection, so look-alikes appearing
+        # mid-task (an opened drawer's inside) do not undo a plan.
+        before_acting = self._captured_at == self._first_capture_at and seen_at is None
+        several = several_elsewhere(selections, self.frames, evidence) if evidence and before_acting else 0
         if several > 1:
             record["keypoint"] = None
             record["several"] = several

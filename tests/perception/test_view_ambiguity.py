@@ -92,6 +92,16 @@ def test_every_view_agreeing_on_one_object_resolves():
     assert abs(kp.position_m[0] - (40 - W / 2) / F) < 0.02
 
 
+def test_a_label_first_asked_for_mid_task_keeps_the_single_detection():
+    """Once the robot has acted (sim time moved since the first look), a look-alike in one view does not refuse a
+    label the plan names for a later step: the check is the planner's, on the scene as it was."""
+    resolver = _resolver({"agentview": [BOWL_A], "frontview": [BOWL_A]})
+    resolver.resolve("plate")  # the first look, before anything moved
+    resolver.world.boxes["agentview"] = [BOWL_A, BOWL_B]
+    resolver.world.sim_time_s = 2.0
+    assert abs(resolver.resolve("black bowl").position_m[0] - (40 - W / 2) / F) < 0.02
+
+
 def test_a_label_already_resolved_keeps_tracking_its_object():
     """Mid-task (the label was resolved before), a look-alike appearing in one view does not undo the plan: the
     object nearest where it was last seen is kept."""
