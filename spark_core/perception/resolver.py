@@ -156,8 +156,8 @@ def several_elsewhere(
     A detection is the kept object when `_same_object` says so against any kept view (a plate one view sees whole
     and another in two pieces either side of a bottle in front of it). The bars keep a segmenter's slips from
     refusing a plannable task: a box of cream cheese one view takes for a second bowl at 0.75, a burner seen as a
-    second stove a third of its size. A parent answering for a part it could not see (`stand_in_for_part`) is no
-    instance of the part, and when the kept answer is one, nothing was singled out to compare with."""
+    second stove a third of its size. Only instances of the kind count (`_an_instance`), and when the kept answer is
+    a parent standing in for a part, nothing was singled out to compare with."""
     if any(e.detection.detail.get("stand_in_for_part") for e in kept):
         return 0
     prompts = {s.chosen_prompt for s in selections.values() if s.detection is not None}
@@ -169,7 +169,7 @@ def several_elsewhere(
         for prompt in prompts:
             others: list[PointEvidence] = []
             for d in sel.ambiguous:
-                if d.prompt != prompt or d.score < SECOND_SURE or d.detail.get("stand_in_for_part"):
+                if d.prompt != prompt or d.score < SECOND_SURE or not _an_instance(d):
                     continue
                 e = masked_points(d, frame, exclude)
                 if e is None or any(_same_object(e, o) for o in [*kept, *others]):
@@ -178,6 +178,14 @@ def several_elsewhere(
                     others.append(e)
             most = max(most, 1 + len(others) if others else 0)
     return most
+
+
+def _an_instance(d: Detection) -> bool:
+    """Whether a detection of an ambiguous prompt counts as one more of the kind: not a parent standing in for a
+    part it could not see, and not one of several a relational label ("the bowl on the stove") left undecided in a
+    view that saw none of its anchors (the view that saw them decided)."""
+    undecided = "relation_anchors" in d.detail and "relation_holds" not in d.detail
+    return not (d.detail.get("stand_in_for_part") or undecided)
 
 
 def _xy_size(e: PointEvidence) -> float:

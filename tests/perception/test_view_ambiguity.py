@@ -33,8 +33,9 @@ class _BoxSegmenter:
     name = "boxes"
     privileged = False
 
-    def __init__(self, views: _Views):
+    def __init__(self, views: _Views, detail: dict[str, dict] | None = None):
         self.views = views
+        self.detail = detail or {}  # camera -> what every detection of that view carries
 
     def segment(self, frame: CameraFrame, prompts: Sequence[str]) -> list[Detection]:
         out = []
@@ -42,13 +43,14 @@ class _BoxSegmenter:
             for u0, v0, u1, v1, *score in self.views.boxes[frame.camera]:
                 mask = np.zeros(frame.shape, bool)
                 mask[v0:v1, u0:u1] = True
-                out.append(Detection(p, p, mask, score[0] if score else 0.95, frame.camera))
+                detail = self.detail.get(frame.camera, {})
+                out.append(Detection(p, p, mask, score[0] if score else 0.95, frame.camera, False, detail))
         return out
 
 
-def _resolver(boxes: dict[str, list[tuple]]) -> PerceptionResolver:
+def _resolver(boxes: dict[str, list[tuple]], detail: dict[str, dict] | None = None) -> PerceptionResolver:
     views = _Views(boxes)
-    return PerceptionResolver(views, _BoxSegmenter(views), cameras=("agentview", "frontview"), size=(W, H))
+    return PerceptionResolver(views, _BoxSegmenter(views, detail), cameras=("agentview", "frontview"), size=(W, H))
 
 
 BOWL_A = (20, 40, 60, 80)  # 20 cm wide at 1 m
@@ -85,6 +87,21 @@ def test_a_second_detection_the_view_is_unsure_of_or_of_another_size_is_no_secon
     sure_and_alike = (100, 40, 140, 80, 0.92)
     with pytest.raises(LabelNotFound, match="several match: 2"):
         _resolver({"agentview": [BOWL_A, sure_and_alike], "frontview": [BOWL_A]}).resolve("black bowl")
+
+
+def test_a_relational_label_a_view_could_not_decide_is_left_to_the_view_that_did():
+    """ "The black bowl on the stove": frontview saw the stove and picked the bowl on it; agentview saw no stove and
+    left both bowls undecided. That is no ambiguity of the label."""
+    detail = {
+        "agentview": {"relation_anchors": ["stove"]},
+        "frontview": {"relation_anchors": ["stove"], "relation_holds": True},
+    }
+    boxes = {"agentview": [BOWL_A, BOWL_B], "frontview": [BOWL_A]}
+    kp = _resolver(boxes, detail).resolve("black bowl on the stove")
+    assert abs(kp.position_m[0] - (40 - W / 2) / F) < 0.02
+    decided = {**detail, "agentview": {"relation_anchors": ["stove"], "relation_holds": False}}
+    with pytest.raises(LabelNotFound, match="several match: 2"):  # a view that saw the anchor and kept two: two
+        _resolver(boxes, decided).resolve("black bowl on the stove")
 
 
 def test_every_view_agreeing_on_one_object_resolves():
