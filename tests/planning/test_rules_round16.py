@@ -143,3 +143,66 @@ def test_a_fixture_is_never_what_is_carried():
 def test_negation_and_questions_are_left_to_the_rule_parser():
     assert afford.mentions("the pear not stowed in the bin") is None
     assert afford.mentions("why is the pear stowed in the bin") is None
+
+
+# -- the loose reading's words ------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, where, steps",
+    [
+        # words that frame a wish name nothing ("would love to see"): the lime and the bin are what is meant
+        (
+            "would love to see the lime dropped into the bin",
+            dict(lime=(0.5, 0.1, 0.05), bin=(0.4, -0.2, 0.05)),
+            [("pick", "lime"), ("place_in", "bin")],
+        ),
+        # a two-word verb of the lexicon in another form ("switching on"), after the thing
+        (
+            "kettle needs switching on",
+            dict(kettle=(0.5, 0.1, 0.05), kettle_knob=(0.45, 0.1, 0.05)),
+            [("turn_knob", "kettle knob"), ("go_home", None)],
+        ),
+        # a verb the lexicon knows opening the request, the state said last ("crank the kettle on")
+        (
+            "crank the kettle on",
+            dict(kettle=(0.5, 0.1, 0.05), kettle_knob=(0.45, 0.1, 0.05)),
+            [("turn_knob", "kettle knob"), ("go_home", None)],
+        ),
+        # "the drawer of the crate" is one thing
+        (
+            "drawer of the crate needs opening",
+            dict(crate_drawer=(0.6, 0.0, 0.2), crate_drawer_handle=(0.5, 0.0, 0.2)),
+            [("open_drawer", "crate drawer handle"), ("go_home", None)],
+        ),
+        # where the thing is, said right after it when another destination follows, is part of its phrase
+        (
+            "the pear sat on the crate wants moving over to the bin",
+            dict(pear_on_crate=(0.5, 0.1, 0.15), bin=(0.4, -0.2, 0.05)),
+            [("pick", "pear on crate"), ("place_in", "bin")],
+        ),
+    ],
+)
+def test_loose_reading_of_framing_words_verb_forms_and_where_a_thing_is(text, where, steps):
+    result = _plan(text, _view(**where))
+    assert result.ok, result.error
+    assert _leaves(result) == steps
+
+
+def test_a_thing_said_in_another_colour_than_the_one_planned_is_refused_whichever_reading_planned():
+    view = _view(unresolved={"yellow cube": "none found"}, red_cube=(0.5, 0.1, 0.05))
+    assert afford.unplaced_variety("the red cube raised up onto the yellow cube", ["red cube"], view.unresolved)
+    result = _plan("the red cube raised up onto the yellow cube", view)
+    assert not result.ok and "yellow cube" in result.error
+    assert afford.unplaced_variety("the red cube raised up", ["red cube"], {}) is None
+
+
+def test_two_things_said_that_perception_found_as_one_are_refused():
+    kp = Keypoint("kettle", np.array([0.5, 0.1, 0.05]), np.full(3, 0.05))
+    scene = {"kettle": kp, "teapot": kp, "kettle knob": Keypoint("k", np.array([0.45, 0.1, 0.05]), np.full(3, 0.02))}
+    readings, why = afford.candidates("crank the kettle on, the teapot", scene, {})
+    assert not readings and "same thing" in why
+
+
+def test_a_fixtures_action_with_a_move_is_several_steps_and_not_read_here():
+    view = _view(kettle=(0.5, 0.1, 0.05), kettle_knob=(0.45, 0.1, 0.05), pear=(0.4, -0.2, 0.05))
+    readings, why = afford.candidates("kettle switched on, pear stowed", view.keypoints, {})
+    assert not readings and "several steps" in why

@@ -31,6 +31,7 @@ from dataclasses import dataclass
 
 from lemminflect import getAllLemmas
 
+from .frames import leading_verb
 from .lexicon import CONTAINERS, CONTENTS, DETERMINERS, FILLERS, HELD, PARTICIPLES, REGIONS, STATE_ACTIONS, VERBS
 from .mentions import ABSTRACT, ATTRIBUTES
 from .parse import Clause
@@ -54,6 +55,12 @@ FIXTURES = frozenset(
 _STATE_WORDS = {s: a for s, a in STATE_ACTIONS if " " not in s and s not in ("on", "off", "open")}
 _HELD_WORDS = {h for h in HELD if " " not in h and h != "up"}
 _CONTENTS = frozenset(singular(c) for c in CONTENTS)
+# Words that frame a request or a wish, with no thing or action of their own ("would love to see", "it wants").
+_FRAMING = frozenset(
+    ["love", "loves", "like", "likes", "wants", "wanted", "hope", "prefer", "mind", "see", "seeing", "have", "has"]
+    + ["make", "makes", "let", "lets", "after"]
+)
+_FILLER_WORDS = frozenset(f for f in FILLERS if " " not in f)
 MARGIN = 1.0
 MAX_MENTIONS = 3
 
@@ -64,6 +71,7 @@ class Mention:
     role: str  # thing | dest | source | near | tool
     relation: str | None  # on | in (dest, source)
     start: int
+    end: int = 0
 
 
 @dataclass(frozen=True)
@@ -74,10 +82,22 @@ class Reading:
 
 
 def _cue_positions(tokens: list[str]) -> dict[int, str]:
-    """Token index -> the action a goal-state word there names ("opened", "shut", "raised", "stacked")."""
+    """Token index -> the action a goal-state word there names ("opened", "shut", "raised", "stacked"); a word
+    that frames the request ("love", "wants") or a verb the lexicon knows opening it ("crank the stove on") maps
+    to "" (no action, no thing)."""
     out: dict[int, str] = {}
+    lead = leading_verb(tokens)
+    if lead is not None and not _verb_spans(tokens) & {lead} and tokens[lead + 1 : lead + 2] in (["the"], ["a"]):
+        out[lead] = ""
     for n, t in enumerate(tokens):
-        if t in _STATE_WORDS:
+        after = tokens[n + 1] if n + 1 < len(tokens) else ""
+        if t in ("on", "off") and n and (not after or after == "," or after in _FILLER_WORDS):
+            out[n] = "turn_on" if t == "on" else "turn_off"  # "crank the stove on": a state said last
+        elif (phrasal := _phrasal_action(t, after)) is not None:
+            out[n] = out[n + 1] = phrasal  # "switching on", "turned off"
+        elif t in _FRAMING:
+            out[n] = ""
+        elif t in _STATE_WORDS:
             out[n] = _STATE_WORDS[t]
         elif t in _HELD_WORDS:
             out[n] = "pick"
@@ -86,6 +106,14 @@ def _cue_positions(tokens: list[str]) -> dict[int, str]:
         elif t.endswith(("ed", "en", "ing")) and (action := _verb_action(t)):
             out[n] = action  # "stowed", "lifted", "tucked": the form of a verb the lexicon has
     return out
+
+
+def _phrasal_action(word: str, particle: str) -> str | None:
+    """The action of a two-word verb of the lexicon said in another form ("switching on" -> turn_on)."""
+    if not particle or particle in ("the", "a", "an"):
+        return None
+    lemmas = getAllLemmas(word).get("VERB", ())
+    return next((a for lemma in lemmas for a, forms in VERBS.items() if f"{lemma} {particle}" in forms), None)
 
 
 def _verb_action(word: str) -> str | None:
@@ -105,6 +133,10 @@ def mentions(instruction: str) -> tuple[list[Mention], list[str], bool] | None:
     stop = _verb_spans(tokens) | set(_cue_positions(tokens))
     fillers = {w for f in FILLERS for w in f.split()}
     found: list[Mention] = []
+
+    def of(span: list[str], k: int) -> bool:  # "the drawer of the cabinet": one thing
+        return bool(span) and tokens[k] == "of" and k + 1 < len(tokens) and tokens[k + 1] not in stop
+
     i = 0
     while i < len(tokens):
         role, relation, j = "thing", None, i
@@ -118,9 +150,15 @@ def mentions(instruction: str) -> tuple[list[Mention], list[str], bool] | None:
         while k < len(tokens) and (tokens[k] in DETERMINERS or tokens[k] in _QUANTIFIERS):
             k += 1
         span: list[str] = []
-        while k < len(tokens) and k not in stop and tokens[k] != "," and tokens[k] not in _BREAK:
+        while k < len(tokens) and k not in stop and tokens[k] != "," and (tokens[k] not in _BREAK or of(span, k)):
             if any(tokens[k : k + len(p.split())] == p.split() for p in _PREPS if p != "of"):
                 break
+            if of(span, k):
+                span.append("of")  # "the drawer of the cabinet": one thing
+                k += 1
+                while k < len(tokens) and tokens[k] in DETERMINERS:
+                    k += 1
+                continue
             if span and (tokens[k] in DETERMINERS or tokens[k] in _QUANTIFIERS):
                 break
             span.append(tokens[k])
@@ -133,15 +171,57 @@ def mentions(instruction: str) -> tuple[list[Mention], list[str], bool] | None:
         if heads and any(not _closed(w) for w in span):
             phrase = object_phrase(" ".join(span))
             if phrase:
-                found.append(Mention(phrase, role, relation if role in ("dest", "source") else relation, i))
+                found.append(Mention(phrase, role, relation, i, k))
             i = k
             continue
         i = max(i + 1, k if k > j else j)
+    found = _located(found, tokens)
     actions, goal = intent(tokens)
-    actions |= set(_cue_positions(tokens).values())
+    states = set(_cue_positions(tokens).values()) - {""}
+    if states & {"open", "close", "turn_on", "turn_off"} and set(tokens) & {"get", "gets", "getting", "have"}:
+        actions.discard("pick")  # "get the drawer opened": a state brought about, nothing taken
+    actions |= states
     if len(found) > MAX_MENTIONS:
         return None
     return found, sorted(actions), goal
+
+
+# Words that say where a thing is, between it and the place ("the bowl sat on the stove").
+_POSITION = frozenset(
+    ["sat", "sitting", "sits", "resting", "rests", "standing", "stands", "lying", "lies", "located", "kept", "now"]
+)
+
+
+def _located(found: list[Mention], tokens: list[str]) -> list[Mention]:
+    """A place said right after the thing (nothing or a word of position between) when another destination comes
+    later is where the thing is, not where it goes: "the black bowl sat on the stove ... to the plate" is the
+    black bowl on the stove (one phrase, as perception reads it), put on the plate."""
+    out = list(found)
+    for n in range(len(out) - 2):
+        a, b = out[n], out[n + 1]
+        later = [m for m in out[n + 2 :] if m.role == "dest"]
+        between = [t for t in tokens[a.end : b.start] if t not in _POSITION]
+        if a.role == "thing" and b.role == "dest" and b.relation in ("on", "in") and later and not between:
+            merged = Mention(f"{a.phrase} {b.relation} {b.phrase}", "thing", None, a.start, b.end)
+            return [*out[:n], merged, *out[n + 2 :]]
+    return out
+
+
+def unplaced_variety(instruction: str, labels: list[str], unresolved: dict[str, str]) -> str | None:
+    """A mention perception found nothing for that a plan's label of the same kind stands in for although the
+    mention says another colour, material or size ("the red block raised up onto the yellow block" read as a lift
+    of the red block, where there is no yellow block): the mention, or None."""
+    read = mentions(instruction)
+    if read is None:
+        return None
+    for m in read[0]:
+        if not unresolved.get(m.phrase, "").startswith("none"):
+            continue
+        said = {w for w in m.phrase.split() if w in ATTRIBUTES}
+        for label in labels:
+            if _head(label) == _head(m.phrase) and said - set(label.split()):
+                return m.phrase
+    return None
 
 
 def phrases(instruction: str) -> list[str]:
@@ -182,8 +262,10 @@ def candidates(instruction: str, scene, unresolved: dict[str, str]) -> tuple[lis
     found, actions, goal = read
     if not found:
         return [], "nothing named"
-    # every word perception found nothing for is a word of a mention (what another reading could not place)
-    placed = set().union(*(_words(m.phrase) for m in found))
+    # every word perception found nothing for is a word of a mention, or one this reading took for a cue (a verb,
+    # a goal-state word, a word that frames the request): what another reading could not place is placed here
+    tokens = _tokens(instruction)
+    placed = set().union(*(_words(m.phrase) for m in found), {tokens[n] for n in _cue_positions(tokens)})
     for phrase, why in unresolved.items():
         if not why.startswith("none"):
             continue
@@ -207,13 +289,19 @@ def candidates(instruction: str, scene, unresolved: dict[str, str]) -> tuple[lis
         return [], f"{m.phrase!r}: {why}"
     distinct: list[Mention] = []
     for m in found:
-        if m.phrase not in scene:
-            distinct.append(m)  # contents poured: not seen, a thing of its own
-        elif not any(d.phrase in scene and _same(scene[m.phrase], scene[d.phrase]) for d in distinct):
-            distinct.append(m)
+        same = [
+            d for d in distinct if m.phrase in scene and d.phrase in scene and _same(scene[m.phrase], scene[d.phrase])
+        ]
+        if same and _head(same[0].phrase) != _head(m.phrase):
+            # two things said, one thing found: one of them is not there ("the pan" found as the stove)
+            return [], f"{same[0].phrase!r} and {m.phrase!r} are the same thing to perception"
+        if not same:
+            distinct.append(m)  # (contents poured: not seen, a thing of their own)
     out: list[Reading] = []
     fixture_actions = [a for a in actions if a in ("open", "close", "turn_on", "turn_off")]
     moves = [a for a in actions if a in ("put", "stack", "pick", "sort")]
+    if fixture_actions and (moves or len(fixture_actions) > 1):
+        return [], "a fixture's action and another: several steps, the rule parser's to read"
     others = [a for a in actions if a not in (*fixture_actions, *moves, "pour", "push")]
     if others:
         return [], f"actions {others}: the rule parser's to read"

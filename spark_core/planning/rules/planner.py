@@ -11,7 +11,7 @@ import numpy as np
 from ...grammar import PlanError, check_plan, to_yaml
 from ...perception.qualifiers import split_relation
 from ..protocol import PlanRequest, PlanResult
-from .afford import Reading
+from .afford import Reading, unplaced_variety
 from .afford import best as afforded
 from .discourse import restructured
 from .kinds import modifier_for_thing, other_contents, other_variety
@@ -83,6 +83,18 @@ class RulesPlanner:
                 issues=e.issues,
                 error="the composed plan did not type-check",
                 latency_s=time.perf_counter() - t0,
+            )
+        # a thing said in another colour, material or size than the one planned, which perception did not find
+        # (rules/afford.py): refused, whichever reading planned around it
+        other = unplaced_variety(request.instruction, _labels(children), request.scene.unresolved)
+        if other is not None:
+            return self._refusal(
+                CannotPlan(
+                    f"could not find {other!r} in the scene: perception found nothing that matches it (found in "
+                    f"the scene: {_seen(request)})"
+                ),
+                understood,
+                t0,
             )
         data = {"task": task, "tree": {"type": "sequence", "children": children}}
         try:
@@ -338,6 +350,15 @@ class RulesPlanner:
         if not c.direction:
             raise CannotPlan(f"{c.text!r}: push which way? (forward, backward, left, right, or into something)")
         return c.direction, round(min(c.distance_m or 0.10, 0.5), 3)
+
+
+def _labels(steps: list[dict]) -> list[str]:
+    """Every object label of the steps, nested branches too."""
+    out: list[str] = []
+    for step in steps:
+        out += _labels(step.get("children", []))
+        out += [v for k, v in step.get("params", {}).items() if k.endswith("_label") and isinstance(v, str)]
+    return out
 
 
 def _seen(request: PlanRequest) -> str:
