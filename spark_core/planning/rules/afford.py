@@ -232,16 +232,17 @@ def phrases(instruction: str) -> list[str]:
         return []
     found, actions, _goal = read
     out: dict[str, None] = {}
+    fixture_only = not ({"put", "stack", "pick", "sort", "pour", "push"} & set(actions)) and len(found) == 1
     for m in found:
         out.setdefault(m.phrase, None)
-        if {"open", "close"} & set(actions):
+        if {"open", "close"} & set(actions) and fixture_only:  # (the one reading that can use a handle)
             out.setdefault(f"{m.phrase} handle", None)
             if "drawer" in m.phrase.split():
                 out.setdefault("drawer handle", None)
         if m.role == "dest" and "drawer" in m.phrase.split():  # into a drawer: opened first, by its handle
             out.setdefault(f"{m.phrase} handle", None)
             out.setdefault("drawer handle", None)
-        if {"turn_on", "turn_off"} & set(actions):
+        if {"turn_on", "turn_off"} & set(actions) and fixture_only:
             out.setdefault(f"{m.phrase} knob", None)
     return list(out)
 
@@ -354,6 +355,9 @@ def _pour_or_push(instruction: str, distinct: list[Mention], actions: list[str],
         source = sources[0].phrase if sources else obj
         clause = Clause("pour", obj=obj, target=dests[0].phrase, source=source, text=instruction)
         return [Reading(clause, 3.0, f"pour {obj} into {dests[0].phrase}")]
+    ways = {"forward", "forwards", "backward", "backwards", "ahead", "sideways", "left", "right", "toward", "towards"}
+    if set(_tokens(instruction)) & (ways | {"leftward", "leftwards", "rightward", "rightwards", "closer", "away"}):
+        return []  # which way is said: the rule parser's to read (and to check against where the area is)
     if "push" in actions and things and not sources and set(actions) <= {"push", "put"}:
         target = dests[0].phrase
         if _head(target) in REGIONS or _head(target) in ATTRIBUTES or "area" in target:

@@ -69,7 +69,7 @@ class RulesPlanner:
             read = self._read_without_order(request)
             if read is None:
                 read, why = self._afforded(request)
-                if read is None and why.startswith("which "):
+                if read is None and why.startswith("which ") and not str(e).startswith(("which ", "could not single")):
                     # several things fit a mention, and every other word said is placed: say so
                     return self._refusal(CannotPlan(f"{why} (found in the scene: {_seen(request)})"), understood, t0)
             if read is None:
