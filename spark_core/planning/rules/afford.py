@@ -230,7 +230,9 @@ def phrases(instruction: str) -> list[str]:
     read = mentions(instruction)
     if read is None:
         return []
-    found, actions, _goal = read
+    found, actions, goal = read
+    if not (actions or goal or any(m.role == "dest" for m in found)):
+        return []  # nothing says what to do: no reading here, nothing to look for ("make the red block fly")
     out: dict[str, None] = {}
     fixture_only = not ({"put", "stack", "pick", "sort", "pour", "push"} & set(actions)) and len(found) == 1
     for m in found:
