@@ -36,7 +36,18 @@ from .lexicon import CONTAINERS, CONTENTS, DETERMINERS, FILLERS, HELD, PARTICIPL
 from .mentions import ABSTRACT, ATTRIBUTES
 from .parse import Clause
 from .phrases import object_phrase, singular
-from .reader import _BREAK, _NEGATION, _PREPS, _QUESTION, _ROLE_OF, _WAYS, _closed, _tokens, _verb_spans, intent
+from .reader import (
+    _BREAK,
+    _NEGATION,
+    _QUESTION,
+    _WAYS,
+    _closed,
+    _starts_preposition,
+    _tokens,
+    _verb_spans,
+    intent,
+    preposition_at,
+)
 from .things import adverb_only
 
 # Quantifiers said before a thing ("every bead", "each block"): they count, they name nothing.
@@ -139,19 +150,13 @@ def mentions(instruction: str) -> tuple[list[Mention], list[str], bool] | None:
 
     i = 0
     while i < len(tokens):
-        role, relation, j = "thing", None, i
-        for p in _PREPS:
-            words = p.split()
-            if tokens[i : i + len(words)] == words:
-                role, relation = _ROLE_OF[p]
-                j = i + len(words)
-                break
+        role, relation, j = preposition_at(tokens, i)
         k = j
         while k < len(tokens) and (tokens[k] in DETERMINERS or tokens[k] in _QUANTIFIERS):
             k += 1
         span: list[str] = []
         while k < len(tokens) and k not in stop and tokens[k] != "," and (tokens[k] not in _BREAK or of(span, k)):
-            if any(tokens[k : k + len(p.split())] == p.split() for p in _PREPS if p != "of"):
+            if _starts_preposition(tokens, k):
                 break
             if of(span, k):
                 span.append("of")  # "the drawer of the cabinet": one thing

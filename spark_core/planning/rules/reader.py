@@ -173,6 +173,22 @@ def _participle(word: str) -> bool:
     return word.endswith(("ing", "ed")) and "VERB" in getAllLemmas(word)
 
 
+def preposition_at(tokens: list[str], i: int) -> tuple[str, str | None, int]:
+    """The role and relation the preposition starting at token `i` gives the phrase after it (_ROLE_OF), and the
+    index after the preposition; ("thing", None, i) when none starts there. The longest preposition wins."""
+    for p in _PREPS:
+        words = p.split()
+        if tokens[i : i + len(words)] == words:
+            role, relation = _ROLE_OF[p]
+            return role, relation, i + len(words)
+    return "thing", None, i
+
+
+def _starts_preposition(tokens: list[str], k: int) -> bool:
+    """A preposition other than "of" starts at token `k`: it ends the noun phrase before it."""
+    return any(tokens[k : k + len(p.split())] == p.split() for p in _PREPS if p != "of")
+
+
 def _ends_phrase(tokens: list[str], k: int) -> bool:
     """Nothing of a noun phrase follows: the end, a comma or a preposition ("sitting in the bowl")."""
     return k >= len(tokens) or tokens[k] in (",", "at", "by") or any(tokens[k] == p.split()[0] for p in _PREPS)
@@ -208,13 +224,7 @@ def _mentions(instruction: str, later: bool = False) -> tuple[list[Mention] | No
     out: list[Mention] = []
     i = 0
     while i < len(tokens):
-        role, relation, j = "thing", None, i
-        for p in _PREPS:
-            words = p.split()
-            if tokens[i : i + len(words)] == words:
-                role, relation = _ROLE_OF[p]
-                j = i + len(words)
-                break
+        role, relation, j = preposition_at(tokens, i)
         k = j
         while k < len(tokens) and tokens[k] in DETERMINERS:
             k += 1
@@ -224,7 +234,7 @@ def _mentions(instruction: str, later: bool = False) -> tuple[list[Mention] | No
                 ruled, k = _ruled_out(tokens, k, verbs)
                 span += ruled
                 break
-            if tokens[k] in _BREAK or any(tokens[k : k + len(p.split())] == p.split() for p in _PREPS if p != "of"):
+            if tokens[k] in _BREAK or _starts_preposition(tokens, k):
                 break
             if span and tokens[k] in DETERMINERS:
                 break  # "love the pear": a word before a determiner is no part of the phrase after it
@@ -287,7 +297,7 @@ def _ruled_out(tokens: list[str], k: int, verbs: set[int]) -> tuple[list[str], i
         n += 1
     start = n
     while n < len(tokens) and n not in verbs and tokens[n] != "," and tokens[n] not in _BREAK:
-        if any(tokens[n : n + len(p.split())] == p.split() for p in _PREPS if p != "of"):
+        if _starts_preposition(tokens, n):
             break
         out.append(tokens[n])
         n += 1
@@ -300,7 +310,7 @@ def _second_of_between(tokens: list[str], k: int, verbs: set[int], span: list[st
         k += 1
     more: list[str] = []
     while k < len(tokens) and k not in verbs and tokens[k] != "," and tokens[k] not in _BREAK:
-        if any(tokens[k : k + len(p.split())] == p.split() for p in _PREPS if p != "of"):
+        if _starts_preposition(tokens, k):
             break
         more.append(tokens[k])
         k += 1
