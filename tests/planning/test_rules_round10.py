@@ -5,22 +5,16 @@ accepts it only when exactly one reading grounds. Each test fails without the me
 
 (Examples are written for these tests; none comes from data/wording/.)"""
 
-import numpy as np
 import pytest
 
 from spark_core.grammar import plan_to_dict
-from spark_core.perception import Keypoint
-from spark_core.planning import PlanRequest, SceneView
+from spark_core.planning import PlanRequest
 from spark_core.planning.observe import phrases_for
 from spark_core.planning.rules import RulesPlanner, parse_instruction
 from spark_core.planning.rules.parse import ParseError
 from spark_core.planning.rules.planner import _effect
 from spark_core.planning.rules.reader import describe, mentions, readings, unused_mentions
-
-
-def _view(inventory=(), unresolved=None, **where):
-    kps = {k.replace("_", " "): Keypoint(k, np.array(v, float), np.full(3, 0.05)) for k, v in where.items()}
-    return SceneView(kps, unresolved=unresolved or {}, inventory=inventory)
+from tests.planning.scene_views import view as _view
 
 
 def _steps(result):

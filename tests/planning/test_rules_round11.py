@@ -10,17 +10,13 @@ import numpy as np
 import pytest
 
 from spark_core.perception import Keypoint
-from spark_core.planning import PlanRequest, SceneView
+from spark_core.planning import PlanRequest
 from spark_core.planning.observe import observe
 from spark_core.planning.rules import RulesPlanner
 from spark_core.planning.rules.kinds import modifier_for_thing, other_contents, other_variety
 from spark_core.planning.rules.reader import describe, readings, why_no_reading
 from spark_core.planning.rules.spelling import corrected
-
-
-def _view(inventory=(), unresolved=None, **where):
-    kps = {k.replace("_", " "): Keypoint(k, np.array(v, float), np.full(3, 0.05)) for k, v in where.items()}
-    return SceneView(kps, unresolved=unresolved or {}, inventory=inventory)
+from tests.planning.scene_views import view as _view
 
 
 # -- why no reading ---------------------------------------------------------------------------------------------

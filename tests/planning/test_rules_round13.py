@@ -7,23 +7,17 @@ in the tray"). Each test fails without the mechanism it names.
 
 (Examples are written for these tests; none comes from data/wording/.)"""
 
-import numpy as np
 import pytest
 
-from spark_core.perception import Keypoint
-from spark_core.planning import PlanRequest, SceneView
+from spark_core.planning import PlanRequest
 from spark_core.planning.rules import RulesPlanner
 from spark_core.planning.rules.kinds import other_contents
 from spark_core.planning.rules.reader import describe, readings
+from tests.planning.scene_views import view as _view
 
 
 def _read(text: str) -> list[str]:
     return [describe(r) for r in readings(text)]
-
-
-def _view(inventory=(), unresolved=None, **where):
-    kps = {k.replace("_", " "): Keypoint(k, np.array(v, float), np.full(3, 0.05)) for k, v in where.items()}
-    return SceneView(kps, unresolved=unresolved or {}, inventory=inventory)
 
 
 # -- a substance the scene cannot show is not poured on the sentence's word ------------------------------------------

@@ -9,37 +9,15 @@ test fails without the mechanism it names.
 
 (Examples are written for these tests; none comes from data/wording/.)"""
 
-import numpy as np
 import pytest
 
-from spark_core.grammar import plan_to_dict
-from spark_core.perception import Keypoint
-from spark_core.planning import PlanRequest, SceneView
+from spark_core.planning import PlanRequest
 from spark_core.planning.rules import RulesPlanner, parse_instruction
 from spark_core.planning.rules.discourse import restructured
 from spark_core.planning.rules.parse import _complement
 from spark_core.planning.rules.qualify import neither_nor, ordinals, qualify
-
-
-def _view(inventory=(), unresolved=None, **where):
-    kps = {k.replace("_", " "): Keypoint(k, np.array(v, float), np.full(3, 0.05)) for k, v in where.items()}
-    return SceneView(kps, unresolved=unresolved or {}, inventory=inventory)
-
-
-def _leaves(result) -> list[tuple[str, str | None]]:
-    """(primitive, its label) for each leaf of the plan, in order."""
-    out: list[tuple[str, str | None]] = []
-
-    def walk(node: dict) -> None:
-        if "children" in node:
-            for child in node["children"]:
-                walk(child)
-            return
-        params = node.get("params", {})
-        out.append((node["type"], next((v for k, v in params.items() if k.endswith("label")), None)))
-
-    walk(plan_to_dict(result.plan)["tree"])
-    return out
+from tests.planning.scene_views import leaves as _leaves
+from tests.planning.scene_views import view as _view
 
 
 # -- steps said out of order -----------------------------------------------------------------------------------------
