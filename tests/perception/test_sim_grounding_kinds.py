@@ -4,7 +4,8 @@ variants never widen a label into a word that also names something else."""
 
 import pytest
 
-from spark_core.perception.sim_segmenter import SimSegmenter, mismatch
+from spark_core.perception.naming import mismatch
+from spark_core.perception.sim_segmenter import SimSegmenter
 from spark_core.perception.variants import prompt_variants
 
 GROCERIES = {  # a LIBERO-object-like scene: no ketchup, no bbq sauce

@@ -11,7 +11,7 @@ import pytest
 
 from spark_core.bench import wording
 from spark_core.perception import Keypoint
-from spark_core.perception.sim_segmenter import mismatch
+from spark_core.perception.naming import mismatch
 from spark_core.planning import PlanRequest, SceneView
 from spark_core.planning.rules import RulesPlanner
 from tests.planning.clause_tuples import clauses

@@ -10,7 +10,8 @@ import numpy as np
 import pytest
 
 from spark_core.perception.frame import CameraFrame
-from spark_core.perception.sim_segmenter import SimSegmenter, mismatch
+from spark_core.perception.naming import mismatch
+from spark_core.perception.sim_segmenter import SimSegmenter
 
 H, W, F = 200, 200, 200.0
 # camera x (image right) = world -y (the robot's right), camera y (image down) = world -x (toward the robot)

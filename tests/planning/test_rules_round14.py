@@ -10,7 +10,7 @@ naming a thing the scene does not hold was planned. The refusal tests fail witho
 
 import pytest
 
-from spark_core.perception.sim_segmenter import mismatch
+from spark_core.perception.naming import mismatch
 
 
 # -- a food named with a noun before it that the object lacks is another product ------------------------------------

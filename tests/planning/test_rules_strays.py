@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from spark_core.perception import Keypoint
-from spark_core.perception.sim_segmenter import mismatch
+from spark_core.perception.naming import mismatch
 from spark_core.planning import PlanRequest, SceneView
 from spark_core.planning.observe import phrases_for
 from spark_core.planning.rules import RulesPlanner, parse_instruction
