@@ -31,6 +31,7 @@ from ..sim_segmenter import calibrated_score, pick_by_qualifier
 from ..text_encoder import SHARED_ENCODER, TextEncoder
 from . import patch_classifier
 from .categories import CATEGORIES, CATEGORY_INDEX, COLOURS, ROBOT, TABLE
+from .category_names import contradicted, lone_noun_categories
 from .drawers import below_cabinet_top, centred_on_handle
 from .frozen import frozen_forward
 from .heap import keep_freed_memory
@@ -152,6 +153,14 @@ class LearnedSegmenter:
             if head == name.split()[-1] or head.rstrip("s") == name.split()[-1]:
                 c += HEAD_NOUN_BONUS
             scores[i] = c
+        # a lone noun names each category it may mean alike: two sauces in view are several, not the likelier one
+        named = lone_noun_categories(core)
+        if named:
+            top = max(scores[i] for i in named)
+            return ({i: top for i in named} if top >= self.threshold else {}), colours
+        scores = {i: s for i, s in scores.items() if not contradicted(core, i)}
+        if not scores:
+            return {}, colours
         best = max(scores.values())
         return {i: s for i, s in scores.items() if s >= self.threshold and s >= best - self.margin}, colours
 

@@ -1,0 +1,49 @@
+"""Which of the learned segmenter's categories a prompt's words can name, by the same word rules the `sim` oracle
+applies to scene objects (perception/naming.py): a category whose name the words contradict is no match at any
+sentence similarity, and a lone noun names every category it may mean, so that two such objects in view are
+several (an ambiguous label) instead of whichever the sentence encoder ranks first."""
+
+from __future__ import annotations
+
+from ..naming import mismatch, word_kind
+from ..variants import PACKAGING
+from .categories import CATEGORIES
+
+# Package nouns said of the same package ("a tin of soup" is a can of soup).
+_SAME_PACKAGE = {"tin": ("tin", "can"), "can": ("can", "tin")}
+
+
+def _singular(word: str) -> set[str]:
+    return {word, word[:-1], word[:-2]} if word.endswith("s") and not word.endswith("ss") else {word}
+
+
+def contradicted(core: str, category: int) -> bool:
+    """The prompt's words (colours taken out) cannot name the category: another kind, another product ("bbq
+    sauce" is no tomato sauce), a part of something it is not part of. Checked against the category's name and
+    the kinds its description names ("drawer handle": on the cabinet drawer), not the description's other words:
+    they say what the category usually looks like ("square wooden peg": a round peg is a peg all the same) or
+    comes in ("carton of milk": "carton" is no word of the milk's own name)."""
+    c = CATEGORIES[category]
+    return mismatch(core, c.name, _kind_words(c.description)) is not None
+
+
+def _kind_words(description: str) -> str:
+    """The description's words that name a kind of thing ("the cabinet's sliding drawer": cabinet, drawer)."""
+    words = description.replace(",", " ").replace("'s", "").lower().split()
+    return " ".join(w for w in words if word_kind(w) is not None)
+
+
+def lone_noun_categories(core: str) -> set[int]:
+    """The categories a prompt that is one noun names ("sauce", "bottle", "carton"): every category whose name
+    ends in it, and, for a package noun that is no kind of thing ("box", "carton", "tin"), every category said
+    to come in it. Empty for a prompt of several words or a noun naming none."""
+    words = core.split()
+    if len(words) != 1:
+        return set()
+    forms = _singular(words[0])
+    out = {i for i, c in enumerate(CATEGORIES) if c.thing and c.name.split()[-1] in forms}
+    package = next((f for f in forms if f in PACKAGING), None)
+    if package is not None and word_kind(package) is None:
+        said = set(_SAME_PACKAGE.get(package, (package,)))
+        out |= {i for i, c in enumerate(CATEGORIES) if c.thing and said & set(c.description.replace(",", " ").split())}
+    return out
