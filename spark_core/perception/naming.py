@@ -167,17 +167,17 @@ _PACKAGE_KINDS: tuple[frozenset[str], ...] = (
 )
 
 
-def _package_kind(word: str) -> int | None:
+def package_kind(word: str) -> int | None:
     return next((n for n, group in enumerate(_PACKAGE_KINDS) if _forms(word) & group), None)
 
 
 def _other_package(head: str, name_words: list[str], doc_words: list[str]) -> str | None:
     """The object is (or, by its description, comes in) a package of one kind and the prompt's noun is a package of
     another ("cookie jar" for the cookies in their box, "ketchup jar" for the ketchup's bottle): another product."""
-    said = _package_kind(head)
+    said = package_kind(head)
     if said is None or not name_words:
         return None
-    own = {k for w in [name_words[-1], *doc_words] if (k := _package_kind(w)) is not None}
+    own = {k for w in [name_words[-1], *doc_words] if (k := package_kind(w)) is not None}
     if not own or said in own:
         return None
     return f"package: {head} vs {' '.join(name_words)}"

@@ -5,8 +5,8 @@ several (an ambiguous label) instead of whichever the sentence encoder ranks fir
 
 from __future__ import annotations
 
-from ..naming import mismatch, word_kind
-from ..variants import PACKAGING
+from ..naming import mismatch, package_kind, word_kind
+from ..variants import GENERIC, MATERIALS, PACKAGING
 from .categories import CATEGORIES
 
 # Package nouns said of the same package ("a tin of soup" is a can of soup).
@@ -28,22 +28,34 @@ def contradicted(core: str, category: int) -> bool:
 
 
 def _kind_words(description: str) -> str:
-    """The description's words that name a kind of thing ("the cabinet's sliding drawer": cabinet, drawer)."""
+    """The description's words that name a kind of thing ("the cabinet's sliding drawer": cabinet, drawer); a
+    material is no kind here ("dark glass wine bottle": no drinking glass)."""
     words = description.replace(",", " ").replace("'s", "").lower().split()
-    return " ".join(w for w in words if word_kind(w) is not None)
+    return " ".join(w for w in words if word_kind(w) is not None and w not in MATERIALS)
 
 
 def lone_noun_categories(core: str) -> set[int]:
     """The categories a prompt that is one noun names ("sauce", "bottle", "carton"): every category whose name
-    ends in it, and, for a package noun that is no kind of thing ("box", "carton", "tin"), every category said
-    to come in it. Empty for a prompt of several words or a noun naming none."""
+    ends in it; for a package noun that is no kind of thing ("box", "carton", "tin"), every category said to come
+    in a package of its kind too; for a word naming no kind ("object", "item"), every category. Empty for a prompt
+    of several words or a noun naming none."""
     words = core.split()
     if len(words) != 1:
         return set()
     forms = _singular(words[0])
-    out = {i for i, c in enumerate(CATEGORIES) if c.thing and c.name.split()[-1] in forms}
+    things = [i for i, c in enumerate(CATEGORIES) if c.thing]
+    if forms & GENERIC:  # "the object", "the item": anything
+        return set(things)
+    out = {i for i in things if CATEGORIES[i].name.split()[-1] in forms}
     package = next((f for f in forms if f in PACKAGING), None)
     if package is not None and word_kind(package) is None:
-        said = set(_SAME_PACKAGE.get(package, (package,)))
-        out |= {i for i, c in enumerate(CATEGORIES) if c.thing and said & set(c.description.replace(",", " ").split())}
+        out |= {i for i in things if _comes_in(package, CATEGORIES[i].description)}
     return out
+
+
+def _comes_in(package: str, description: str) -> bool:
+    """The description says the category comes in `package` or a package of its kind ("box": a carton too)."""
+    kind = package_kind(package)
+    said = set(_SAME_PACKAGE.get(package, (package,)))
+    words = description.replace(",", " ").lower().split()
+    return any(w in said or (kind is not None and package_kind(w) == kind) for w in words)
