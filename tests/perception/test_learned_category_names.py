@@ -86,3 +86,26 @@ def test_the_sauce_among_two_sauces_is_refused_as_ambiguous_from_camera_frames_a
         assert RulesPlanner().plan(PlanRequest(named, observe(named, resolver), arms=arm_bases(world))).ok
     finally:
         world.close()
+
+
+@pytest.mark.parametrize("prompt, name", [("red brick", "block"), ("basin", "bowl"), ("green patch", "zone")])
+def test_a_word_of_a_categorys_kind_names_it(segmenter, prompt, name):
+    """Words the kinds table files with a category's noun stand for it, however far the encoder puts them."""
+    assert _named(segmenter, prompt) == {name}
+
+
+def test_a_negated_colour_or_qualifier_keeps_every_instance_but_the_ones_it_picks():
+    """ "block not blue" in a scene of a red and a blue block is the red one, from camera frames alone; "block not
+    red" the blue one."""
+    from spark_core.perception.resolver import PerceptionResolver
+    from spark_core.sim.tasks import SUITES
+    from tests.perception.test_learned import CamerasOnly
+
+    world = SUITES["builtin"]["lift_block"].make_world(0)
+    try:
+        resolver = PerceptionResolver(CamerasOnly(world), LearnedSegmenter(), cameras=("agentview", "side"))
+        red, blue = resolver.resolve("red block").position_m, resolver.resolve("blue block").position_m
+        assert abs(resolver.resolve("block not blue").position_m - red).max() < 0.01
+        assert abs(resolver.resolve("block not red").position_m - blue).max() < 0.01
+    finally:
+        world.close()

@@ -59,3 +59,16 @@ def _comes_in(package: str, description: str) -> bool:
     said = set(_SAME_PACKAGE.get(package, (package,)))
     words = description.replace(",", " ").lower().split()
     return any(w in said or (kind is not None and package_kind(w) == kind) for w in words)
+
+
+def own_noun_prompts(core: str, names: list[str]) -> dict[int, str]:
+    """index into `names` -> the prompt with each word of that name's kind put as the name's own noun ("red
+    brick" -> "red block" for "block"), for the names where that changes the prompt."""
+    words = core.split()
+    out = {}
+    for k, name in enumerate(names):
+        noun = name.split()[-1]
+        swapped = [noun if w != noun and noun in (word_kind(w) or ()) else w for w in words]
+        if swapped != words:
+            out[k] = " ".join(swapped)
+    return out

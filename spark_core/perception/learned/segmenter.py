@@ -31,7 +31,7 @@ from ..sim_segmenter import calibrated_score, pick_by_qualifier
 from ..text_encoder import SHARED_ENCODER, TextEncoder
 from . import patch_classifier
 from .categories import CATEGORIES, CATEGORY_INDEX, COLOURS, ROBOT, TABLE
-from .category_names import contradicted, lone_noun_categories
+from .category_names import contradicted, lone_noun_categories, own_noun_prompts
 from .drawers import below_cabinet_top, centred_on_handle
 from .frozen import frozen_forward
 from .heap import keep_freed_memory
@@ -143,6 +143,13 @@ class LearnedSegmenter:
         if not core:
             return {}, colours
         cos = self._doc_vecs @ self.encoder.encode([core])[0]
+        # a word of the category's own kind stands for its noun ("brick" for a block, "basin" for a bowl): the
+        # category scores at least as the prompt with its noun in that word's place would (as the sim oracle does)
+        own = own_noun_prompts(core, [CATEGORIES[i].name for i in self._things])
+        if own:
+            vecs = self.encoder.encode(list(own.values()))
+            for k, v in zip(own, vecs):
+                cos[k] = max(cos[k], float(self._doc_vecs[k] @ v))
         # the head noun: the last word, unless it names a region of the thing before it ("cabinet drawer layer"
         # is a drawer); an unknown last word stays the head ("cabinet drawer grip" is a handle, not a drawer)
         words_core = core.split()
@@ -375,6 +382,16 @@ class LearnedSegmenter:
             head, relation, anchors = split_relation(prompt)
             if relation is not None:
                 out.extend(self._related(frame, prompt, head, relation, anchors))
+                continue
+            unlike = re.fullmatch(r"(.+?) not (.+)", prompt.strip().lower())
+            if unlike:  # "block not blue", "bowl not leftmost": every instance but those the negated words pick
+                core, said = unlike.group(1), unlike.group(2)
+                ruled_out = {d.detail["instance"] for d in self.segment(frame, [f"{said} {core}"])}
+                out.extend(
+                    Detection(prompt, prompt, d.mask, d.score, d.camera, False, {**d.detail, "unlike": said})
+                    for d in self.segment(frame, [core])
+                    if d.detail["instance"] not in ruled_out
+                )
                 continue
             qualifier, core = split_qualifier(prompt)
             if re.search(r"\bof\b", prompt):  # "the top drawer of the cabinet": the drawer is the target
