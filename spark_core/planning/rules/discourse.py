@@ -23,6 +23,7 @@ from functools import lru_cache
 from lemminflect import getLemma
 
 from .lexicon import VERBS
+from .steps import sequenced
 from .things import is_thing
 
 # A short noun phrase after its determiner: up to four words, none of them a preposition, conjunction or verb of
@@ -194,13 +195,27 @@ def _contrast(text: str) -> str:
 
 
 def _former_latter(text: str) -> str:
-    """ "red block and blue block: the former into the green tray, the latter into the yellow one": the two things
-    listed first, named again where "the former" and "the latter" stand."""
-    m = re.fullmatch(rf"(?:{_DET} )?({_NP}) and (?:{_DET} )?({_NP})\s*(?:[:,;]|\s-+\s)\s*(.+)", text)
-    if not m or not re.search(r"\bthe (?:former|latter)\b", m.group(3)):
+    """ "red block and blue block: the former into the green tray, the latter into the yellow one", "there's a green
+    cube and a red cube. put the latter on the former": the last two things listed before "the former" / "the
+    latter" are named again where those stand (the list said first, in any frame: "take ...", "there's ...")."""
+    said = re.search(r"\bthe (?:former|latter)\b", text)
+    if not said:
         return text
-    rest = re.sub(r"\bthe former\b", f"the {m.group(1)}", m.group(3))
-    return re.sub(r"\bthe latter\b", f"the {m.group(2)}", rest)
+    pairs = [
+        m
+        for m in re.finditer(rf"(?:^|\b{_DET} )({_NP}) and (?:{_DET} )?({_NP})", text[: said.start()])
+        if is_thing(m.group(1).split()[-1]) and is_thing(m.group(2).split()[-1])
+    ]
+    if not pairs:
+        return text
+    pair = pairs[-1]
+    # the words after the last article are the thing ("there's a green cube": green cube)
+    first, second = (re.split(rf"\b{_DET} ", pair.group(g))[-1] for g in (1, 2))
+    head = text[: said.start()]
+    if pair.start() == 0 and re.fullmatch(r"\s*(?:[:,;]|\s-+\s)\s*", head[pair.end() :]) and first == pair.group(1):
+        head = ""  # the list said as a header names nothing else: what follows is the request
+    rest = re.sub(r"\bthe former\b", f"the {first}", text[said.start() :])
+    return head + re.sub(r"\bthe latter\b", f"the {second}", rest)
 
 
 def _header(text: str) -> str:
@@ -243,6 +258,6 @@ def restructured(instruction: str) -> str:
     itself when none of these applies."""
     text = re.sub(r"\s+", " ", instruction.strip().lower().replace("\u2019", "'"))
     out = text
-    for step in (_header, _former_latter, _cleft, _temporal, _context, _contrast):
+    for step in (_header, _former_latter, _cleft, _temporal, _context, _contrast, sequenced):
         out = step(out)
     return instruction if out == text else out

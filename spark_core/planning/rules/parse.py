@@ -172,6 +172,9 @@ def parse_instruction(instruction: str) -> list[Clause]:
             )
         ):
             verb = ("mention", part)
+        named = re.fullmatch(r"(?:the|a|an) ((?:\w+ ){0,2}\w+)", part)
+        if verb is None and previous == "mention" and named and names_a_thing(named.group(1)):
+            verb = ("mention", part)  # "there's a green cube and a red cube": one more thing named
         if verb is None and previous in (None, "mention") and _topic(part, parts[i + 1 :]):
             verb = ("mention", part)  # "the bowl on the stove, move it to the plate": named first, then acted on
         if verb is None and previous in (None, "mention") and verbless_carry:
@@ -274,7 +277,8 @@ def _elided_object(c: Clause, before: list[Clause]) -> Clause:
     is one of the kind named before ("red block")."""
     if not c.obj or " " in c.obj or c.obj not in _ATTRIBUTE_WORDS:
         return c
-    kind = next((b.obj.split()[-1] for b in reversed(before) if b.obj and not is_pronoun(b.obj)), None)
+    # the head noun before a negation or a relation ('block not blue' is a block)
+    kind = next((_kind(b.obj) for b in reversed(before) if b.obj and not is_pronoun(b.obj)), None)
     if not kind or kind in _ATTRIBUTE_WORDS:  # "red in the tray and blue in ...": no kind was named
         return c
     return replace(c, obj=f"{c.obj} {kind}")

@@ -20,6 +20,7 @@ from .mentions import clause_mentions, foreign_modifiers, read_past, stray_nouns
 from .parse import Clause, ParseError, is_pronoun, parse_instruction
 from .reader import describe, readings, unused_mentions
 from .spelling import corrected
+from .stepwise import steps
 
 POUR_ANGLE_RAD = 2.2
 HANDLE_REACH_M = 0.25  # a handle further than this from the thing it opens belongs to something else
@@ -48,42 +49,15 @@ class RulesPlanner:
 
     def plan(self, request: PlanRequest) -> PlanResult:
         t0 = time.perf_counter()
-        understood: list[str] = []
         task = request.instruction.strip()
         # slips of the keyboard read as the words they miss (rules/spelling.py), as observe looked for them
         request = replace(request, instruction=corrected(request.instruction, request.scene.inventory))
         # steps said out of order, context and contrast, headers, back-references: said plainly (rules/discourse.py)
         request = replace(request, instruction=restructured(request.instruction))
-        try:
-            clauses = parse_instruction(request.instruction)
-            understood = [_describe(c) for c in clauses]
-            children = self._compose(clauses, request)
-            children = _two_arm_branches(children, request) or children
-            if unused_mentions(request.instruction, clauses):
-                # a thing the sentence names that no step uses ("the bowl needs to be up on top of the cabinet"
-                # read as a lift): the order-free reading, when exactly one grounds
-                read = self._read_without_order(request)
-                if read is not None:
-                    children, understood = read
-        except (ParseError, CannotPlan) as e:
-            read = self._read_without_order(request)
-            if read is None:
-                read, why = self._afforded(request)
-                if read is None and why.startswith("which ") and not str(e).startswith(("which ", "could not single")):
-                    # several things fit a mention, and every other word said is placed: say so
-                    return self._refusal(CannotPlan(f"{why} (found in the scene: {_seen(request)})"), understood, t0)
-            if read is None:
-                return self._refusal(e, understood, t0)
-            children, understood = read
-        except PlanError as e:  # a composition bug: report it rather than crash
-            return PlanResult(
-                self.name,
-                "",
-                None,
-                issues=e.issues,
-                error="the composed plan did not type-check",
-                latency_s=time.perf_counter() - t0,
-            )
+        read = self._read(request, t0, stepwise=True)
+        if isinstance(read, PlanResult):
+            return read
+        children, understood = read
         # a thing said in another colour, material or size than the one planned, which perception did not find
         # (rules/afford.py): refused, whichever reading planned around it
         other = unplaced_variety(request.instruction, _labels(children), request.scene.unresolved)
@@ -111,6 +85,63 @@ class RulesPlanner:
         return PlanResult(
             self.name, to_yaml(plan), plan, latency_s=time.perf_counter() - t0, detail={"understood": understood}
         )
+
+    def _read(self, request: PlanRequest, t0: float, stepwise: bool) -> tuple[list[dict], list[str]] | PlanResult:
+        """The steps and what was understood, by the first reading that grounds: the rule parse, the order-free
+        reader, the scene-afforded reading, then (`stepwise`) each step of the instruction on its own; else the
+        refusal."""
+        understood: list[str] = []
+        try:
+            clauses = parse_instruction(request.instruction)
+            understood = [_describe(c) for c in clauses]
+            children = self._compose(clauses, request)
+            children = _two_arm_branches(children, request) or children
+            if unused_mentions(request.instruction, clauses):
+                # a thing the sentence names that no step uses ("the bowl needs to be up on top of the cabinet"
+                # read as a lift): the order-free reading, when exactly one grounds
+                read = self._read_without_order(request)
+                if read is not None:
+                    children, understood = read
+        except (ParseError, CannotPlan) as e:
+            read = self._read_without_order(request)
+            if read is None:
+                read, why = self._afforded(request)
+                if read is None and stepwise:
+                    read = self._by_steps(request, t0)
+                if read is None and why.startswith("which ") and not str(e).startswith(("which ", "could not single")):
+                    # several things fit a mention, and every other word said is placed: say so
+                    return self._refusal(CannotPlan(f"{why} (found in the scene: {_seen(request)})"), understood, t0)
+            if read is None:
+                return self._refusal(e, understood, t0)
+            children, understood = read
+        except PlanError as e:  # a composition bug: report it rather than crash
+            return PlanResult(
+                self.name,
+                "",
+                None,
+                issues=e.issues,
+                error="the composed plan did not type-check",
+                latency_s=time.perf_counter() - t0,
+            )
+        return children, understood
+
+    def _by_steps(self, request: PlanRequest, t0: float) -> tuple[list[dict], list[str]] | None:
+        """Each step of the instruction (rules/stepwise.py) read on its own by the whole pipeline, the steps joined;
+        None when it has fewer than two steps or any step does not plan."""
+        children: list[dict] = []
+        understood: list[str] = []
+        for text in steps(request.instruction):
+            read = self._read(replace(request, instruction=text), t0, stepwise=False)
+            if isinstance(read, PlanResult):
+                return None
+            step, said = read
+            children += [c for c in step if c.get("primitive") != "go_home"]  # only the last step stands back
+            understood += [f"step {text!r}: {s}" for s in said]
+        if not children:
+            return None
+        if any(c.get("primitive") in FIXTURE_STEPS for c in children[-1:]):
+            children.append(_prim("go_home"))
+        return _free_hand(_one_grasp(children)), understood
 
     def _refusal(self, e: Exception, understood: list[str], t0: float) -> PlanResult:
         if isinstance(e, ParseError):
@@ -406,6 +437,17 @@ def _free_hand(steps: list[dict]) -> list[dict]:
             and steps[i + 1].get("primitive") in FIXTURE_STEPS
             and any(s.get("primitive") == "pick" and s["params"].get("keypoint_label") == label for s in steps[i + 2 :])
         ):
+            continue
+        out.append(step)
+    return out
+
+
+def _one_grasp(steps: list[dict]) -> list[dict]:
+    """Steps planned one by one: a pick of what the step before already picked up ("grab X." then "put X in Y")
+    is the same grasp."""
+    out: list[dict] = []
+    for step in steps:
+        if step.get("primitive") == "pick" and out and out[-1] == step:
             continue
         out.append(step)
     return out

@@ -74,6 +74,8 @@ _NP_END = (
     r"standing|lying|placed)\b)"
 )
 _ME = r"(?:the robot|you|me|us|the arm|the gripper)"
+# what is left once one is left alone: "the other one", "the remaining one" (of two)
+_OTHER = r"(?:other|remaining|leftover|left-over|spare)"
 _NEG = r"(?:is not|are not|was not|isn't|aren't|is n't)"
 
 
@@ -235,6 +237,16 @@ def negations(text: str) -> str:
     other bowl on the plate"; then a side or an extreme after "not" as its qualifier ("not on the left" -> "not
     leftmost")."""
     text = _corrections(text)
+    # "all but the blue block", "everything except the bowl on the stove": a quantifier with its exception names the
+    # rest of the exception's kind, ruled out by the exception's own words (or where it is, when a destination
+    # follows)
+    text = re.sub(
+        rf"\b(?:all|everything|anything|any|each|every one|whichever)(?: (?:one|ones|of them))? "
+        rf"(?:but|except(?: for)?|other than|apart from|besides|save(?: for)?|excluding) (?:the|a|an) ({NP})"
+        rf"((?: (?:on|in|near|next to|by|beside|under|at) (?:the|a|an) {NP}(?= (?:goes|go|into|onto|to|in|on)\b))?)",
+        lambda m: _ruled_out_noun(m.group(1), m.group(2).strip()),
+        text,
+    )
     # "..., but not the one in the middle": a correction of the clause's object, as "..., not the one ..."
     text = re.sub(r",\s*but not (?=(?:the|that|this) ones? [^,;:.]*$)", ", not ", text)
     # "leave the centre bowl alone; the other bowl goes ...", "ignore the bowl on the stove and put the other one
@@ -243,7 +255,7 @@ def negations(text: str) -> str:
         rf"^(?:leave|ignore|skip|do not touch|do not move|forget|never mind) the ({NP})"
         rf"(?: (?!alone\b|be\b|where it|in place\b|as it is\b)([^,;.]+?))?"
         rf"(?: alone| be| where it is| in place| as it is| where it stands)?[,;.]? (?:and |but |then )?"
-        rf"((?:(?:i|we) (?:want|need|would like) |\w+(?: up)? )?)the other (one|{NP})\b",
+        rf"((?:(?:i|we) (?:want|need|would like) |\w+(?: up)? )?)the {_OTHER} (one|{NP})\b",
         _left_alone,
         text,
     )
@@ -251,7 +263,7 @@ def negations(text: str) -> str:
     text = re.sub(
         rf"^(?:leave|ignore|skip|do not touch|do not move|forget|never mind) the ({NP}) ([^,;]+?)"
         rf"(?: alone| be| where it is| in place| as it is)?[,;]? (?:and |but |then )?(\w+(?: up)?) "
-        rf"the other (?:one|{NP})\b",
+        rf"the {_OTHER} (?:one|{NP})\b",
         r"\3 the \1 not \2",
         text,
     )
@@ -296,6 +308,7 @@ def negations(text: str) -> str:
     # "the non-blue block", "the non red one"
     text = re.sub(r"\bthe non[- ]?(\w+) (\w+)\b", r"the \2 not \1", text)
     text = _trailing_not(text)
+    text = _positive_of_ruled_out(text)
     # a side or an extreme after "not" is the qualifier that would pick the one ruled out
     return re.sub(
         rf"\b(?:(?:that|which) )?(?:(?:is|are) )?not (?:the )?((?:up |down |over )?(?:on|at|in) the (?:far )?{_SIDE}"
@@ -303,6 +316,22 @@ def negations(text: str) -> str:
         rf"(?:{_EXTREME})\b(?: one)?(?: away| back)?(?: (?:from|to) {_ME}\b)?)",
         lambda m: f"not {_ruled_out(m.group(1))}",
         text,
+    )
+
+
+def _positive_of_ruled_out(text: str) -> str:
+    """ "the cube not green ... on the one that is": "the one that is" after a thing ruled out by an attribute or a
+    place is the one of that kind it rules in ("the green cube"; "the bowl on the stove")."""
+    m = re.search(rf"\bthe ({NP}) not ([\w ]+?)(?= (?:and|then|on|onto|in|into|to|goes|go)\b|[,;.]|$)", text)
+    if m is None:
+        return text
+    kind, what = m.group(1), m.group(2).strip()
+    said = f"the {what} {kind}" if is_adjective(what) else f"the {kind} {what}"
+    return text[: m.end()] + re.sub(
+        r"\bthe ones? (?:that|which) (?:is|are)(?: (?:so|that way|like that))?(?=\s*(?:$|[,;.]|and\b|then\b))",
+        said,
+        text[m.end() :],
+        count=1,
     )
 
 
@@ -446,7 +475,7 @@ def partitive(text: str) -> str:
 def qualify(text: str) -> str:
     """A sentence with its ordinals, extremes, sides and negations in perception's forms. A push keeps its words:
     there "further", "closer" and "to the left" say which way to move, not which object."""
-    text = partitive(text)
+    text = neither_nor(partitive(text))
     push = re.match(r"(?:push|shove|nudge|slide)\b", text) is not None
     return extremes(ordinals(negations(text)), push)
 
@@ -483,7 +512,8 @@ def neither_nor(text: str) -> str:
     )
     # the same said as two negations in a row ("a drawer - not the top one, not the middle one")
     return re.sub(
-        r"\s*(?:,|-+|:)?\s*(?:but )?not (?:the )?(\w+)(?: ones?)?\s*(?:,\s*(?:and |or )?|and |or |nor )(?:also )?not "
+        r"\s*(?:,|-+|:)?\s*(?:but )?(?:(?:that|which) (?:is|are) )?not (?:the )?(\w+)(?: ones?)?\s*"
+        r"(?:,\s*(?:and |or )?|and |or |nor )(?:also )?(?:(?:is|are) )?not "
         r"(?:the )?(\w+)(?: ones?)?\b",
         third,
         text,

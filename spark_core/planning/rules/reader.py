@@ -32,6 +32,7 @@ from .phrases import object_phrase, singular
 from .qualify import negations, neither_nor, ordinals
 from .rewrite import CONTRACTIONS
 from .shapes import as_moved
+from .stepwise import steps
 from .things import adverb_only, is_thing, is_verb
 
 # A mention's own preposition -> its role. Longest first when matched.
@@ -667,6 +668,13 @@ def phrases(instruction: str) -> list[str]:
     # the mentions the scene-afforded reading grounds (the planner's last fallback, rules/afford.py)
     for p in afforded_phrases(instruction):
         out.setdefault(p, None)
+    # each step said on its own (rules/stepwise.py, the planner's fallback for instructions of several steps): what
+    # observe looks for in it (a step has no steps of its own, so this recursion ends there)
+    from ..observe import phrases_for  # observe reads with this package; imported here, when it is loaded
+
+    for text in steps(instruction):
+        for p in phrases_for(text):
+            out.setdefault(p, None)
     return list(out)
 
 
