@@ -4,6 +4,7 @@ _absorb_pieces): synthetic frames from a camera 1 m above a floor looking straig
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from spark_core.perception.learned.categories import CATEGORY_INDEX
 from spark_core.perception.learned.pieces import support_of, world_points
@@ -95,3 +96,24 @@ def test_a_mask_in_two_large_pieces_keeps_both():
     depth[100:140, 170:220] = 0.95
     mask = depth < 0.97
     assert (without_strays(mask, _frame(depth)) == mask).all()
+
+
+def test_a_brush_the_size_of_a_plates_rim_piece_is_part_of_the_plate_and_no_brush_is_found():
+    """builtin scrub_plate, seen through frames alone: the network names a few centimetres of the plate's rim
+    "brush" in both views; a brush is 14 cm long, so the piece joins the plate and "scrub the plate with the
+    brush" (no brush in the scene) is refused instead of planned."""
+    from spark_core.perception.keypoint import LabelNotFound
+    from spark_core.perception.learned.segmenter import LearnedSegmenter
+    from spark_core.perception.resolver import PerceptionResolver
+    from spark_core.sim.tasks import SUITES
+    from tests.perception.test_learned import CamerasOnly
+
+    world = SUITES["builtin"]["scrub_plate"].make_world(0)
+    try:
+        resolver = PerceptionResolver(CamerasOnly(world), LearnedSegmenter(), cameras=("agentview", "side"))
+        with pytest.raises(LabelNotFound):
+            resolver.resolve("brush")
+        resolver.resolve("plate")  # the plate and the sponge are still there
+        resolver.resolve("sponge")
+    finally:
+        world.close()

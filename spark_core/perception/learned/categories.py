@@ -44,7 +44,8 @@ CATEGORIES: tuple[Category, ...] = (
     Category("bottle", "tall cylindrical plastic bottle"),
     Category("peg", "square wooden peg, a short upright rod"),
     Category("nut", "square metal nut with a hole"),
-    Category("brush", "scrubbing brush with a handle and bristles"),
+    # a brush is 14 cm long: a few centimetres of "brush" on a plate is a piece of the plate (scrub_plate: its rim)
+    Category("brush", "scrubbing brush with a handle and bristles", min_extent_m=0.08),
     Category("zone", "flat square target area marked on the table, a region"),
     Category("cabinet", "wooden cabinet, a cupboard with a drawer", max_extent_m=0.40),
     Category("drawer", "the cabinet's sliding drawer", part_of=("cabinet",), max_extent_m=0.35),
