@@ -37,6 +37,9 @@ class Clause:
     arm: str | None = None  # the arm that picks it: right | left | one (the nearer)
     to_arm: str | None = None  # the arm it is handed to: right | left | other
     text: str = field(default="", compare=False)
+    # a remark before the request (no verb read in it) that names a thing no step after it uses: a step not read,
+    # which the planner refuses (never drops) once every thing named is found
+    unread: bool = field(default=False, compare=False)
 
 
 # Destination prepositions, longest first; the last one in a clause starts its destination.
@@ -137,6 +140,7 @@ def parse_instruction(instruction: str) -> list[Clause]:
     if not texts:
         raise ParseError("the instruction is empty")
     clauses: list[Clause] = []
+    remarks: list[Clause] = []  # parts read as a remark before the request (no verb read in them)
     previous: str | None = None
     parts = [p for t in texts for p in split_clauses(t)]
     for i, part in enumerate(parts):
@@ -190,6 +194,7 @@ def parse_instruction(instruction: str) -> list[Clause]:
             named = re.search(r"\b(?:the|a|an) ((?:\w+ ){0,2}?\w+)(?: (?:open|closed|shut|on|off|there|here))?$", part)
             if named and names_a_thing(named.group(1)):
                 clauses.append(Clause("mention", obj=object_phrase(named.group(1)), text=part))
+                remarks.append(clauses[-1])
                 previous = "mention"
             continue
         if verb is None:
@@ -219,7 +224,30 @@ def parse_instruction(instruction: str) -> list[Clause]:
     clauses = _open_before_filling(_grip_then_act(clauses))
     if all(c.action == "mention" for c in clauses):
         raise ParseError(f"{instruction.strip()!r} names {', '.join(c.obj or '?' for c in clauses)} but no action")
+    for remark in remarks:
+        at = next((i for i, c in enumerate(clauses) if c.action == "mention" and c.text == remark.text), None)
+        if at is not None and not _remark_used(clauses[at], clauses[at + 1 :]):
+            clauses[at] = replace(clauses[at], unread=True)  # "into the green bin with the lime. the pear ..."
     return clauses
+
+
+# A remark that only says the robot goes near a thing ("go over to the cabinet, take hold of the handle ..."): the
+# step after it reaches there anyway.
+_APPROACH = re.compile(r"^(?:go|walk|head|come|move|get)(?: over| up| back)? (?:to|towards?)\b")
+
+
+def _remark_used(remark: Clause, later: list[Clause]) -> bool:
+    """A remark before the request is no step but must serve one: a thing it names is what a later step acts on, or
+    is said again or referred back to by a pronoun after it ("someone left the drawer open, close it"), or it only
+    says to go near a thing."""
+    if _APPROACH.match(remark.text):
+        return True
+    said = f" {remark.obj} "
+    for c in later:
+        phrases = [p for p in (c.obj, c.target, c.source, c.tool) if p]
+        if any(is_pronoun(p) or said in f" {p} " for p in phrases) or said in f" {c.text} ":
+            return True
+    return False
 
 
 def _took(before: list[Clause]) -> bool:

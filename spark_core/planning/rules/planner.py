@@ -362,6 +362,12 @@ class RulesPlanner:
             last_object = obj or last_object
         if together:
             raise CannotPlan(f"lifting {together[0]!r} with both arms needs a second handle for the other arm")
+        for c in clauses:
+            if c.unread:  # a part no step uses, e.g. a step said in a way not read: refused, never dropped (issue 18)
+                raise CannotPlan(
+                    f"could not read {c.text!r}: it names {c.obj!r} but says nothing I can do with it, and no step "
+                    f"after it uses it (understood: {understood}; found in the scene: {seen})"
+                )
         if clauses and clauses[-1].action in ("open", "close", "turn_on", "turn_off"):
             out.append(_prim("go_home"))  # leave the fixture's neighbourhood
         return _free_hand(out)
