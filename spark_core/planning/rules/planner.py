@@ -74,16 +74,20 @@ class RulesPlanner:
         try:
             plan = check_plan(data)
         except PlanError as e:
-            return PlanResult(
-                self.name,
-                "",
-                None,
-                issues=e.issues,
-                error="the composed plan did not type-check",
-                latency_s=time.perf_counter() - t0,
-            )
+            return self._untyped(e, t0)
         return PlanResult(
             self.name, to_yaml(plan), plan, latency_s=time.perf_counter() - t0, detail={"understood": understood}
+        )
+
+    def _untyped(self, e: PlanError, t0: float) -> PlanResult:
+        """A composed plan the type checker rejects: a composition bug, reported rather than raised."""
+        return PlanResult(
+            self.name,
+            "",
+            None,
+            issues=e.issues,
+            error="the composed plan did not type-check",
+            latency_s=time.perf_counter() - t0,
         )
 
     def _read(self, request: PlanRequest, t0: float, stepwise: bool) -> tuple[list[dict], list[str]] | PlanResult:
@@ -115,14 +119,7 @@ class RulesPlanner:
                 return self._refusal(e, understood, t0)
             children, understood = read
         except PlanError as e:  # a composition bug: report it rather than crash
-            return PlanResult(
-                self.name,
-                "",
-                None,
-                issues=e.issues,
-                error="the composed plan did not type-check",
-                latency_s=time.perf_counter() - t0,
-            )
+            return self._untyped(e, t0)
         return children, understood
 
     def _by_steps(self, request: PlanRequest, t0: float) -> tuple[list[dict], list[str]] | None:
