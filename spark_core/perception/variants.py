@@ -183,12 +183,21 @@ NOT_NOUNS = frozenset(
 def prompt_variants(label: str, k: int = 3) -> list[str]:
     """`k` alternative prompts for `label` (never the label itself), e.g. red block -> red cube, red wooden block.
     Never the bare noun ("the area"): a variant that widens the label finds another object (the green area for
-    "blue area")."""
+    "blue area"). Never a narrower noun either (`_narrows`): "dish" -> "plate" would pick the plate of a plate and a
+    bowl the label names alike, where the label itself is ambiguous."""
     words = label.split()
     out: list[str] = []
     for i in range(len(words) - 1, -1, -1):
         for syn in SYNONYMS.get(words[i], ()):
+            if _narrows(words[i], syn):
+                continue
             cand = " ".join(words[:i] + [syn] + words[i + 1 :])
             if cand != label and cand not in out:
                 out.append(cand)
     return out[:k]
+
+
+def _narrows(word: str, synonym: str) -> bool:
+    """`synonym` names only some of the kinds `word` names ("dish": a plate, a bowl or a ramekin; "plate": a plate)."""
+    wide, narrow = KIND_OF.get(word), KIND_OF.get(synonym)
+    return wide is not None and narrow is not None and narrow < wide

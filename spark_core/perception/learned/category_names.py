@@ -46,7 +46,9 @@ def lone_noun_categories(core: str) -> set[int]:
     things = [i for i, c in enumerate(CATEGORIES) if c.thing]
     if forms & GENERIC:  # "the object", "the item": anything
         return set(things)
-    out = {i for i in things if CATEGORIES[i].name.split()[-1] in forms}
+    # its own noun, or a word of its kind ("dish": the bowl, the plate and the ramekin alike; "bin": basket, tray)
+    kinds = set().union(*(word_kind(f) or () for f in forms))
+    out = {i for i in things if CATEGORIES[i].name.split()[-1] in forms | kinds}
     package = next((f for f in forms if f in PACKAGING), None)
     if package is not None and word_kind(package) is None:
         out |= {i for i in things if _comes_in(package, CATEGORIES[i].description)}
