@@ -40,7 +40,7 @@ def _words(text: str) -> list[str]:
     return [SPELLINGS.get(w, w) for w in re.findall(r"[a-z]+", text.lower()) if w not in _FILLER]
 
 
-def _forms(word: str) -> set[str]:
+def word_forms(word: str) -> set[str]:
     """The word and its singular candidates ("cookies" -> cookie, "boxes" -> box)."""
     out = {word}
     if word.endswith("s") and not word.endswith("ss"):
@@ -50,12 +50,12 @@ def _forms(word: str) -> set[str]:
 
 def _kinds_of(word: str) -> int:
     """How many kinds `word` names ("dish": plate, bowl, ramekin)."""
-    return sum(bool(_forms(word) & k) for k in KINDS)
+    return sum(bool(word_forms(word) & k) for k in KINDS)
 
 
 def word_kind(word: str) -> frozenset[str] | None:
     """Every word of the kind (or kinds) `word` names, or None when the kinds table does not know it."""
-    return next((KIND_OF[f] for f in _forms(word) if f in KIND_OF), None)
+    return next((KIND_OF[f] for f in word_forms(word) if f in KIND_OF), None)
 
 
 def _colours(words: list[str]) -> set[str]:
@@ -76,7 +76,7 @@ def mismatch(prompt: str, name: str, description: str, part_is_whole: bool = Tru
     if not pw:
         return None
     doc_words = _words(f"{name} {description}")
-    doc = {f for w in doc_words for f in _forms(w)}
+    doc = {f for w in doc_words for f in word_forms(w)}
     want, have = _colours(pw), _colours(doc_words)
     if want and have and not want & have:
         return f"colour: {', '.join(sorted(want))} vs {', '.join(sorted(have))}"
@@ -90,17 +90,17 @@ def mismatch(prompt: str, name: str, description: str, part_is_whole: bool = Tru
     if kinds:
         *owners, (_, head_kind) = kinds
         # strictly the object's own noun must be of the head's kind; else its description may say it
-        is_head = head_kind & _forms(nw[-1]) if nw and not part_is_whole else head_kind & doc
+        is_head = head_kind & word_forms(nw[-1]) if nw and not part_is_whole else head_kind & doc
         # a modifier naming the object stands for it only through a part or its packaging ("stove knob", "ketchup
         # bottle"), or when it is the object's own noun ("burner plate" of a stove): "wine glass" is no wine bottle
         # (a wide word, of several kinds, says what a thing is for: a "dish towel" is no plate)
-        own_noun = any(k & _forms(nw[-1]) and _kinds_of(w) == 1 for w, k in owners) if nw else False
+        own_noun = any(k & word_forms(nw[-1]) and _kinds_of(w) == 1 for w, k in owners) if nw else False
         via_owner = owners and part_is_whole and (kinds[-1][0] in PARTS | PACKAGING or own_noun)
         foreign = [w for w, k in owners if not k & doc]
-        if nw and head_kind & _forms(nw[-1]) and kinds[-1][0] not in PARTS | PACKAGING:
+        if nw and head_kind & word_forms(nw[-1]) and kinds[-1][0] not in PARTS | PACKAGING:
             # the object is of the head's kind: another object's kind before it says what it is for ("bottle
             # rack"); food or drink says what it holds ("beer bottle" is no wine bottle)
-            foreign = [w for w in foreign if _forms(w) & CONSUMABLES]
+            foreign = [w for w in foreign if word_forms(w) & CONSUMABLES]
         if foreign or not via_owner and not is_head:
             return f"kind: {' '.join(w for w, _ in kinds)}"
     attributes = SHAPES | MATERIALS | SIZES | set(QUALIFIERS) | set(BASE_COLOURS) | set(COLOUR_SYNONYMS)
@@ -109,10 +109,10 @@ def mismatch(prompt: str, name: str, description: str, part_is_whole: bool = Tru
         why = _unknown_head(said_head, [w for w in said_kinds[:-1] if w not in attributes], nw, doc)
         if why:
             return why
-    same_noun = bool(nw) and bool((_forms(pw[-1]) | (word_kind(pw[-1]) or frozenset())) & _forms(nw[-1]))
+    same_noun = bool(nw) and bool((word_forms(pw[-1]) | (word_kind(pw[-1]) or frozenset())) & word_forms(nw[-1]))
     if len(pw) > 1 and len(nw) > 1 and same_noun:
         # "whiskey flask" is no wine bottle: the same kind of noun, and a word of its own where the object has another
-        said = {w for w in pw[:-1] if w not in attributes and word_kind(w) is None and not _forms(w) & doc}
+        said = {w for w in pw[:-1] if w not in attributes and word_kind(w) is None and not word_forms(w) & doc}
         # the object's own distinguishing words, kinds included: "beer bottle" is not the "wine bottle"
         own = {w for w in nw[:-1] if w not in attributes and w not in pw}
         if said and own:
@@ -126,27 +126,27 @@ def _unknown_head(head: str, modifiers: list[str], name_words: list[str], doc: s
     object's noun or the object comes in a package or is reached through a part ("salad" is no salad dressing,
     "wine" may be the wine bottle); a part or package noun only through a modifier the object has ("soda can" is
     no ketchup); any other noun only when the encoder puts it near the object's own noun (`_noun_cosine`)."""
-    own_head = _forms(name_words[-1])
-    if _forms(head) & own_head:
+    own_head = word_forms(name_words[-1])
+    if word_forms(head) & own_head:
         return None
-    if _forms(head) & doc:
+    if word_forms(head) & doc:
         if own_head & (PARTS | PACKAGING):
             return None
         return f"noun: {head} is a word of {' '.join(name_words)}, not its noun"
     if head in PARTS | PACKAGING:
         named = modifiers
-        if named and not any(_forms(w) & doc or (word_kind(w) or frozenset()) & doc for w in named):
+        if named and not any(word_forms(w) & doc or (word_kind(w) or frozenset()) & doc for w in named):
             return f"noun: {' '.join(named)} {head}"
         # a package holds what its modifier names: the object's noun ("ketchup bottle", "cream cheese box"), or
         # any of its words when the object is itself a package ("cookie tin"); "chocolate bar" is no pudding
         own = own_head if not own_head & (PARTS | PACKAGING) else doc
-        holds = any(_forms(w) & own or (word_kind(w) or frozenset()) & own for w in named)
+        holds = any(word_forms(w) & own or (word_kind(w) or frozenset()) & own for w in named)
         if named and head not in PARTS and not holds:
             return f"noun: {' '.join(named)} {head} holds no {name_words[-1]}"
         return None
     if _noun_cosine(head, name_words[-1]) < UNKNOWN_NOUN_MIN_COSINE:
         return f"noun: {head} vs {name_words[-1]}"
-    food = own_head & CONSUMABLES or own_head & PACKAGING and any(_forms(w) & CONSUMABLES for w in name_words[:-1])
+    food = own_head & CONSUMABLES or own_head & PACKAGING and any(word_forms(w) & CONSUMABLES for w in name_words[:-1])
     if food:
         # groceries are a closed vocabulary (their own words and the kinds table's synonyms): a food or drink noun
         # that is only near this one's names another food ("cheddar" is no cream cheese, "oil" no butter, "vodka"
@@ -168,7 +168,7 @@ _PACKAGE_KINDS: tuple[frozenset[str], ...] = (
 
 
 def package_kind(word: str) -> int | None:
-    return next((n for n, group in enumerate(_PACKAGE_KINDS) if _forms(word) & group), None)
+    return next((n for n, group in enumerate(_PACKAGE_KINDS) if word_forms(word) & group), None)
 
 
 def _other_package(head: str, name_words: list[str], doc_words: list[str]) -> str | None:
@@ -190,12 +190,12 @@ def _other_food(said: list[str], name_words: list[str], doc: set[str], attribute
     from ("tomato ketchup", "cow milk": `SAME_PRODUCT_MIN_COSINE`). The object named by one word has no
     distinguishing word for the multi-word check to compare with; a describing word (an adjective: "fresh",
     "salted") or an attribute claims no other product."""
-    if len(said) < 2 or not name_words or not _forms(said[-1]) & _forms(name_words[-1]):
+    if len(said) < 2 or not name_words or not word_forms(said[-1]) & word_forms(name_words[-1]):
         return None
-    if not _forms(name_words[-1]) & CONSUMABLES:
+    if not word_forms(name_words[-1]) & CONSUMABLES:
         return None
     for w in said[:-1]:
-        if w in attributes or w in GENERIC or _forms(w) & doc or word_kind(w) is not None:
+        if w in attributes or w in GENERIC or word_forms(w) & doc or word_kind(w) is not None:
             continue  # a word of the object's own, or a kind the kinds check has judged
         pos = getAllLemmas(w)
         if pos and set(pos) != {"NOUN"}:
@@ -210,3 +210,17 @@ def _other_food(said: list[str], name_words: list[str], doc: set[str], attribute
 def _noun_cosine(a: str, b: str) -> float:
     va, vb = SHARED_ENCODER.encode([a, b])
     return float(va @ vb)
+
+
+def own_noun_prompts(prompt: str, names: list[str]) -> dict[int, str]:
+    """index into `names` -> `prompt` with each word of that name's kind put as the name's own noun ("red brick"
+    -> "red block" for "block", "hob" -> "stove"), for the names where that changes the prompt: a thing scores at
+    least as the prompt naming it by its own noun would."""
+    words = prompt.split()
+    out = {}
+    for k, name in enumerate(names):
+        noun = name.split()[-1]
+        swapped = [noun if w != noun and noun in (word_kind(w) or ()) else w for w in words]
+        if swapped != words:
+            out[k] = " ".join(swapped)
+    return out

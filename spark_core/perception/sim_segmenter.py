@@ -11,7 +11,7 @@ import numpy as np
 from .colors import normalise_colours
 from .detection import Detection
 from .frame import CameraFrame
-from .naming import mismatch, word_kind
+from .naming import mismatch, own_noun_prompts
 from .qualifiers import QUALIFIERS, split_qualifier, split_relation
 from .text_encoder import SHARED_ENCODER, TextEncoder
 from .variants import (
@@ -69,7 +69,7 @@ class SimSegmenter:
         cos = self._doc_vecs @ q
         # a word the kinds table files with the object's own noun is that noun ("platter" for a plate, "hob" for a
         # stove): the object scores at least as the prompt with its own noun in that word's place would
-        own = self._own_noun_prompts(norm)
+        own = own_noun_prompts(norm, [self._names[label] for label in self._labels])
         if own:
             own_vecs = self.encoder.encode(list(own.values()))
             for (i, _), v in zip(own.items(), own_vecs):
@@ -90,18 +90,6 @@ class SimSegmenter:
             if mismatch(text, self._names[label], self.catalog[label]) if whole else strict[label]:
                 c -= MISMATCH_PENALTY
             out[label] = c
-        return out
-
-    def _own_noun_prompts(self, norm: str) -> dict[int, str]:
-        """object index -> the prompt with each word the kinds table files with that object's own noun replaced
-        by the noun, for the objects where that changes the prompt."""
-        out = {}
-        words = norm.split()
-        for i, label in enumerate(self._labels):
-            noun = self._names[label].split()[-1]
-            swapped = [noun if w != noun and noun in (word_kind(w) or ()) else w for w in words]
-            if swapped != words:
-                out[i] = " ".join(swapped)
         return out
 
     def names_in(self, frame: CameraFrame) -> list[str]:

@@ -5,16 +5,12 @@ several (an ambiguous label) instead of whichever the sentence encoder ranks fir
 
 from __future__ import annotations
 
-from ..naming import mismatch, package_kind, word_kind
+from ..naming import mismatch, package_kind, word_forms, word_kind
 from ..variants import GENERIC, MATERIALS, PACKAGING
 from .categories import CATEGORIES
 
 # Package nouns said of the same package ("a tin of soup" is a can of soup).
 _SAME_PACKAGE = {"tin": ("tin", "can"), "can": ("can", "tin")}
-
-
-def _singular(word: str) -> set[str]:
-    return {word, word[:-1], word[:-2]} if word.endswith("s") and not word.endswith("ss") else {word}
 
 
 def contradicted(core: str, category: int) -> bool:
@@ -42,7 +38,7 @@ def lone_noun_categories(core: str) -> set[int]:
     words = core.split()
     if len(words) != 1:
         return set()
-    forms = _singular(words[0])
+    forms = word_forms(words[0])
     things = [i for i, c in enumerate(CATEGORIES) if c.thing]
     if forms & GENERIC:  # "the object", "the item": anything
         return set(things)
@@ -61,16 +57,3 @@ def _comes_in(package: str, description: str) -> bool:
     said = set(_SAME_PACKAGE.get(package, (package,)))
     words = description.replace(",", " ").lower().split()
     return any(w in said or (kind is not None and package_kind(w) == kind) for w in words)
-
-
-def own_noun_prompts(core: str, names: list[str]) -> dict[int, str]:
-    """index into `names` -> the prompt with each word of that name's kind put as the name's own noun ("red
-    brick" -> "red block" for "block"), for the names where that changes the prompt."""
-    words = core.split()
-    out = {}
-    for k, name in enumerate(names):
-        noun = name.split()[-1]
-        swapped = [noun if w != noun and noun in (word_kind(w) or ()) else w for w in words]
-        if swapped != words:
-            out[k] = " ".join(swapped)
-    return out

@@ -24,6 +24,7 @@ from scipy import ndimage
 from ..colors import BASE_COLOURS, normalise_colours
 from ..detection import Detection
 from ..frame import CameraFrame
+from ..naming import own_noun_prompts
 from ..pixels import mask_pixels
 from ..qualifiers import relation_holds, split_qualifier, split_relation
 from ..quantiles import percentile, percentiles, percentiles_of_sorted
@@ -31,7 +32,7 @@ from ..sim_segmenter import calibrated_score, pick_by_qualifier
 from ..text_encoder import SHARED_ENCODER, TextEncoder
 from . import patch_classifier
 from .categories import CATEGORIES, CATEGORY_INDEX, COLOURS, ROBOT, TABLE
-from .category_names import contradicted, lone_noun_categories, own_noun_prompts
+from .category_names import contradicted, lone_noun_categories
 from .drawers import below_cabinet_top, centred_on_handle
 from .frozen import frozen_forward
 from .heap import keep_freed_memory
