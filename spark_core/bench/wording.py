@@ -401,6 +401,14 @@ def section(
     if wrong and list_failures:
         lines.append("")
         lines.append("Dev failures: " + "; ".join(f"`{r['id']}` ({_why(r)})" for r in wrong))
+    # a plan-only run executed nothing: its protocol says so instead of describing trials it did not run
+    execution = (
+        f"execution: real trials through the trial pipeline ({perception_note(segmenter)}, recovery tiers 1-2, "
+        f"seeds 0-{seeds - 1}) for up to {EXEC_PER_TASK} goal-stating entries of each of {len(EXEC_TASKS)} tasks, "
+        f"against the official wording of the same tasks and seeds"
+        if exec_rows
+        else "execution: not run (plan-only)"
+    )
     return (
         "\n".join(lines)
         + "\n\n"
@@ -414,9 +422,6 @@ def section(
             f"point inside the other's seen top face and below its top (LIBERO-PRO goal-swap 'top of the drawer': "
             f"its front lies under the cabinet top; trials: the reworded cabinet-top plans meet the goal); same "
             f"push direction and knob sense); refusal entries: correct when no plan comes back (the message names "
-            f"what was understood, what could not be placed and what was found); execution: real trials through "
-            f"the trial pipeline ({perception_note(segmenter)}, recovery tiers 1-2, seeds 0-{seeds - 1}) for up to"
-            f" {EXEC_PER_TASK} goal-stating entries of each of {len(EXEC_TASKS)} tasks, against the official "
-            f"wording of the same tasks and seeds",
+            f"what was understood, what could not be placed and what was found); {execution}",
         )
     )

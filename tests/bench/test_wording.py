@@ -165,6 +165,8 @@ def test_plan_only_skips_the_execution_sample(monkeypatch, tmp_path):
     text = cli._wording(args, "spark bench wording --half dev --plan-only")
     assert ran == ["plan"] and json.loads(out.read_text())["execution"] == []
     assert "execution success" not in text
+    # its protocol describes no trials it did not run
+    assert "execution: not run (plan-only)" in text and "real trials" not in text
     cli._wording(argparse.Namespace(**{**vars(args), "plan_only": False}), "spark bench wording --half dev")
     assert ran == ["plan", "plan", "execute"]
 

@@ -133,3 +133,15 @@ def test_a_wide_word_gets_no_narrower_variant_and_two_dishes_stay_ambiguous_from
         resolver.resolve("plate")
     finally:
         world.close()
+
+
+def test_grounding_is_worked_out_once_per_text_and_a_caller_cannot_change_it(segmenter, monkeypatch):
+    first, colours = segmenter.ground("the red sauce")
+    assert first  # the sauces are named
+    first.clear()
+    colours.add("blue")
+    calls = []
+    monkeypatch.setattr(segmenter, "_ground", lambda text: calls.append(text) or ({}, set()))
+    again, colours_again = segmenter.ground("the red sauce")
+    assert calls == [] and again and colours_again == {"red"}  # from the cache, unchanged by the caller's edits
+    assert segmenter.ground("a new prompt") == ({}, set()) and calls == ["a new prompt"]

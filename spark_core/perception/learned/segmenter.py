@@ -128,12 +128,20 @@ class LearnedSegmenter:
         )
         # per frame: its RGB array (held, so that its id is not reused while cached) and its instances
         self._cache: dict[tuple, tuple[np.ndarray, list[Instance]]] = {}
+        self._grounded: dict[str, tuple[dict[int, float], set[str]]] = {}  # prompt text -> `ground`
 
     # -- grounding ---------------------------------------------------------------------------------------------
     def ground(self, text: str) -> tuple[dict[int, float], set[str]]:
         """(category index -> cosine for the categories a prompt names, colours it asks for). Colour words are
         taken out before matching the category (categories carry no colour); a trailing instance number
-        ("bowl 2") is no visual property and is ignored."""
+        ("bowl 2") is no visual property and is ignored. Words alone decide it, so it is worked out once per
+        text (every frame and view asks again; the naming rules run against every category)."""
+        if text not in self._grounded:
+            self._grounded[text] = self._ground(text)
+        named, colours = self._grounded[text]
+        return dict(named), set(colours)
+
+    def _ground(self, text: str) -> tuple[dict[int, float], set[str]]:
         text = _protect_named(text)
         words = [w for w in _words(normalise_colours(text)) if w not in ("the", "a", "an")]
         colours = {w for w in words if w in BASE_COLOURS and w not in MATERIAL_WORDS}
