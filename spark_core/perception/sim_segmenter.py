@@ -11,7 +11,7 @@ import numpy as np
 from .colors import normalise_colours
 from .detection import Detection
 from .frame import CameraFrame
-from .naming import mismatch, own_noun_prompts
+from .naming import class_members, mismatch, own_noun_prompts
 from .qualifiers import QUALIFIERS, split_qualifier, split_relation
 from .text_encoder import SHARED_ENCODER, TextEncoder
 from .variants import (
@@ -83,11 +83,17 @@ class SimSegmenter:
             for label in self._labels
         }
         whole = all(strict.values())
+        # a word for a class ("the container", "the dairy product") names each thing WordNet files under it alike
+        # and nothing else, however the encoder ranks them (naming.class_members)
+        members = class_members(norm, [self._names[label] for label in self._labels])
         out = {}
-        for label, c in zip(self._labels, cos.tolist()):
+        for k, (label, c) in enumerate(zip(self._labels, cos.tolist())):
             if head and head == self._names[label].split()[-1]:
                 c += HEAD_NOUN_BONUS
-            if mismatch(text, self._names[label], self.catalog[label]) if whole else strict[label]:
+            mismatched = mismatch(text, self._names[label], self.catalog[label]) if whole else strict[label]
+            if members is not None and not mismatched:
+                c = max(self.threshold, max(float(cos[m]) for m in members)) if k in members else c - MISMATCH_PENALTY
+            elif mismatched:
                 c -= MISMATCH_PENALTY
             out[label] = c
         return out

@@ -145,3 +145,10 @@ def test_grounding_is_worked_out_once_per_text_and_a_caller_cannot_change_it(seg
     again, colours_again = segmenter.ground("the red sauce")
     assert calls == [] and again and colours_again == {"red"}  # from the cache, unchanged by the caller's edits
     assert segmenter.ground("a new prompt") == ({}, set()) and calls == ["a new prompt"]
+
+
+def test_a_class_word_names_each_category_filed_under_it_alike(segmenter):
+    named, _ = segmenter.ground("the dairy product")
+    assert {CATEGORIES[i].name for i in named} == {"butter", "cream cheese", "milk"}
+    assert len(set(named.values())) == 1  # alike: two in view are several, not the likelier one
+    assert {CATEGORIES[i].name for i in segmenter.ground("the appliance")[0]} == {"stove"}

@@ -24,7 +24,7 @@ from scipy import ndimage
 from ..colors import BASE_COLOURS, normalise_colours
 from ..detection import Detection
 from ..frame import CameraFrame
-from ..naming import own_noun_prompts
+from ..naming import class_members, own_noun_prompts
 from ..pixels import mask_pixels
 from ..qualifiers import relation_holds, split_qualifier, split_relation
 from ..quantiles import percentile, percentiles, percentiles_of_sorted
@@ -174,6 +174,12 @@ class LearnedSegmenter:
         if named:
             top = max(scores[i] for i in named)
             return ({i: top for i in named} if top >= self.threshold else {}), colours
+        # a word for a class ("the dairy product", "the appliance") names each category WordNet files under it alike
+        members = class_members(core, [CATEGORIES[i].name for i in self._things])
+        if members:
+            named = {self._things[k] for k in members if not contradicted(core, self._things[k])}
+            top = max([self.threshold] + [scores[i] for i in named])
+            return {i: top for i in named}, colours
         scores = {i: s for i, s in scores.items() if not contradicted(core, i)}
         if not scores:
             return {}, colours

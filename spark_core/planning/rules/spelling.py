@@ -12,6 +12,7 @@ word of a thing perception lists in this scene (its inventory), never guessed fr
 from __future__ import annotations
 
 import re
+import unicodedata
 from functools import lru_cache
 
 from lemminflect import getAllLemmas
@@ -87,8 +88,16 @@ def _unclipped(word: str, scene: frozenset[str]) -> str | None:
     return next(iter(found)) if len(found) == 1 else None
 
 
+def plain_letters(text: str) -> str:
+    """Accented letters as their plain letters ("soufflé" -> "souffle", "crème" -> "creme"): the planner's words and
+    the scene's names are written without accents, and a word cut at an accent names nothing."""
+    return "".join(c for c in unicodedata.normalize("NFKD", text) if not unicodedata.combining(c))
+
+
 def corrected(instruction: str, inventory: tuple[str, ...] = ()) -> str:
-    """`instruction` with each slip read as the word it misses; unchanged when it has none."""
+    """`instruction` with each slip read as the word it misses (accents dropped first); unchanged when it has
+    none."""
+    instruction = plain_letters(instruction)
     scene = _scene_words(inventory)
     known = _planner_words() | scene
 
