@@ -229,7 +229,7 @@ def own_noun_prompts(prompt: str, names: list[str]) -> dict[int, str]:
 
 # Words that name anything at all (the kinds table's GENERIC less the class words WordNet can place: "vessel",
 # "receptacle"); a class word among them would cover every object alike, which GENERIC already says.
-_ANYTHING = frozenset(["thing", "object", "item", "stuff", "piece", "one", "product", "goods"])
+_ANYTHING = GENERIC - {"receptacle", "vessel"}
 
 
 def _noun_of(words: list[str]) -> list[str]:

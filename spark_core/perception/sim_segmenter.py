@@ -57,8 +57,16 @@ class SimSegmenter:
         self._docs = [f"{self._names[label]}: {desc}" for label, desc in self.catalog.items()]
         self._doc_vecs = self.encoder.encode(self._docs) if self._docs else np.zeros((0, 384))
         self._labels = list(self.catalog)
+        self._similar: dict[str, dict[str, float]] = {}  # prompt text -> `similarities`
 
     def similarities(self, text: str) -> dict[str, float]:
+        """`_similarities`, worked out once per text: every frame and view asks again, and the naming rules run
+        against every object."""
+        if text not in self._similar:
+            self._similar[text] = self._similarities(text)
+        return dict(self._similar[text])
+
+    def _similarities(self, text: str) -> dict[str, float]:
         """Grounding score per object: cosine of the colour-normalised prompt with "label: description", plus
         a bonus when the prompt's head noun is the object's own noun (so "the stove" prefers the stove over
         its knob), minus MISMATCH_PENALTY when the prompt contradicts the object (`mismatch`)."""
