@@ -110,6 +110,10 @@ def mismatch(prompt: str, name: str, description: str, part_is_whole: bool = Tru
         why = _unknown_head(said_head, [w for w in said_kinds[:-1] if w not in attributes], nw, doc)
         if why:
             return why
+    if said_head in PARTS and nw:
+        why = _unknown_owner(said_kinds[:-1], nw, doc)
+        if why:
+            return why
     same_noun = bool(nw) and bool((word_forms(pw[-1]) | (word_kind(pw[-1]) or frozenset())) & word_forms(nw[-1]))
     if len(pw) > 1 and len(nw) > 1 and same_noun:
         # "whiskey flask" is no wine bottle: the same kind of noun, and a word of its own where the object has another
@@ -153,6 +157,22 @@ def _unknown_head(head: str, modifiers: list[str], name_words: list[str], doc: s
         # that is only near this one's names another food ("cheddar" is no cream cheese, "oil" no butter, "vodka"
         # no wine bottle), however close the encoder puts them
         return f"noun: {head} vs {' '.join(name_words)}"
+    return None
+
+
+def _unknown_owner(owners: list[str], name_words: list[str], doc: set[str]) -> str | None:
+    """Why a part said of a thing no kinds table knows ("the drawer of the bookcase") is no part of the object: the
+    owner is none of the object's words and the sentence encoder does not put it near any of its nouns, as for an
+    unknown head noun (`UNKNOWN_NOUN_MIN_COSINE`: "kitchen" is near a cabinet, "bookcase" is not)."""
+    nouns = [w for w in name_words if w not in PARTS and w not in _ATTRIBUTES] or name_words
+    for w in owners:
+        if w in _ATTRIBUTES | GENERIC | NOT_NOUNS | PARTS | PACKAGING or word_kind(w) is not None:
+            continue  # an attribute, or a kind the kinds check has judged
+        pos = getAllLemmas(w)
+        if word_forms(w) & doc or pos and "NOUN" not in pos:
+            continue  # the object's own word, or no noun ("upper", "sliding"); a word unknown to the lexicon is one
+        if max(_noun_cosine(w, n) for n in nouns) < UNKNOWN_NOUN_MIN_COSINE:
+            return f"owner: {w} vs {' '.join(name_words)}"
     return None
 
 

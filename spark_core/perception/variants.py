@@ -49,8 +49,9 @@ KINDS: tuple[frozenset[str], ...] = tuple(
         "saucer",  # a small plate under a cup: a scene's dinner plate is no saucer
         "bowl dish basin",
         "ramekin dish",  # a ramekin is a small dish: "dish" may name it too
-        # "bin" and "crate" are wider words: a basket or a tray
-        "basket hamper bin crate",
+        # "bin" is a wider word: a basket or a tray
+        "basket hamper bin",
+        "crate",  # a slatted box: no basket (WordNet files both as distinct containers)
         "tray bin",
         "mug cup",
         "glass tumbler",

@@ -194,3 +194,23 @@ def test_a_small_dish_can_be_the_ramekin_and_a_ramekin_is_no_plate():
     assert max(sims, key=sims.__getitem__) == "glazed rim porcelain ramekin", sims
     assert "kind" in (mismatch("ramekin", "plate", "plate") or "")
     assert "kind" in (mismatch("ramekin", "akita black bowl", "akita black bowl") or "")
+
+
+@pytest.mark.parametrize(
+    "prompt, why",
+    [
+        ("bookcase drawer", "owner: bookcase"),  # a part of a thing no kinds table knows, far from the cabinet
+        ("the drawer of the bookcase", "owner: bookcase"),
+        ("kitchen drawer", None),  # near the cabinet by the encoder: may be its drawer
+        ("cabinet drawer", None),
+        ("top drawer", None),
+    ],
+)
+def test_a_part_of_an_unknown_owner_is_checked_like_an_unknown_noun(prompt, why):
+    got = mismatch(prompt, "cabinet", KITCHEN["cabinet"])
+    assert (got or "").startswith(why) if why else got is None
+
+
+def test_a_crate_is_no_basket():
+    assert mismatch("crate", "basket", KITCHEN["basket"]) is not None
+    assert mismatch("hamper", "basket", KITCHEN["basket"]) is None
