@@ -169,8 +169,9 @@ def _unknown_owner(owners: list[str], name_words: list[str], doc: set[str]) -> s
         if w in _ATTRIBUTES | GENERIC | NOT_NOUNS | PARTS | PACKAGING or word_kind(w) is not None:
             continue  # an attribute, or a kind the kinds check has judged
         pos = getAllLemmas(w)
-        if word_forms(w) & doc or pos and "NOUN" not in pos:
-            continue  # the object's own word, or no noun ("upper", "sliding"); a word unknown to the lexicon is one
+        if word_forms(w) & doc or pos and set(pos) != {"NOUN"}:
+            continue  # the object's own word, or a word that may describe ("second", "middle", "sliding"); a word
+            # unknown to the lexicon is a name
         if max(_noun_cosine(w, n) for n in nouns) < UNKNOWN_NOUN_MIN_COSINE:
             return f"owner: {w} vs {' '.join(name_words)}"
     return None
