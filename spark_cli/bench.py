@@ -49,7 +49,12 @@ def register(sub) -> None:
         choices=list(EMBODIMENTS),
         help="robot set-ups compared by the embodiments suite",
     )
-    b.add_argument("--trials", type=int, help="trials (seeds) per task (default 20, or the whole --split)")
+    b.add_argument(
+        "--trials",
+        type=int,
+        help="trials (seeds) per task (default 20, or the whole --split; wording suite: seeds per sampled entry, "
+        "default 3)",
+    )
     b.add_argument("--tasks", nargs="*", help="subset of task names")
     b.add_argument("--seed", type=int, default=0, help="first seed")
     b.add_argument(
@@ -265,7 +270,8 @@ def _export_section(r: dict, command: str) -> str:
 
 
 def _wording(args: argparse.Namespace, command: str) -> str:
-    """Both corpus halves planned, then (unless --plan-only) the execution sample (min(--trials, 2) seeds each)."""
+    """Both corpus halves planned, then (unless --plan-only) the execution sample (--trials seeds each, default
+    wording.EXEC_SEEDS)."""
     from spark_core.bench import wording
 
     if getattr(args, "corpus", None):
@@ -281,7 +287,7 @@ def _wording(args: argparse.Namespace, command: str) -> str:
         lambda r: print(f"[{next(done)}/{len(entries)}] planned" if blind else _wording_line(r), flush=True),
         segmenter=segmenter,
     )
-    seeds = min(args.trials or 2, 2)
+    seeds = args.trials or wording.EXEC_SEEDS
     exec_rows = (
         []
         if args.plan_only

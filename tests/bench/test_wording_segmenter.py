@@ -28,12 +28,18 @@ def test_the_segmenter_reaches_planning_execution_and_the_protocol_text(monkeypa
     monkeypatch.setattr(
         wording, "plan_entries", lambda entries, seed, progress, segmenter: used.update(plan=segmenter) or [row]
     )
+    seeds_used: list[int] = []
     monkeypatch.setattr(
-        wording, "execute_sample", lambda entries, seeds, progress, segmenter: used.update(execute=segmenter) or []
+        wording,
+        "execute_sample",
+        lambda entries, seeds, progress, segmenter: used.update(execute=segmenter) or seeds_used.append(seeds) or [],
     )
     args = build_parser().parse_args(["bench", "wording", "--half", "dev", "--segmenter", "learned"])
     text = cli._wording(args, "spark bench wording --half dev --segmenter learned")
     assert used == {"plan": "learned", "execute": "learned"}
+    args = build_parser().parse_args(["bench", "wording", "--half", "dev", "--trials", "5"])
+    cli._wording(args, "spark bench wording --half dev --trials 5")
+    assert seeds_used == [wording.EXEC_SEEDS, 5]  # --trials sets the sample's seeds; no silent cap
     assert "perception: learned segmenter (camera-only, not privileged)" in text
     args = build_parser().parse_args(["bench", "wording", "--half", "dev", "--plan-only"])
     text = cli._wording(args, "spark bench wording --half dev --plan-only")
