@@ -53,7 +53,7 @@ def register(sub) -> None:
         "--trials",
         type=int,
         help="trials (seeds) per task (default 20, or the whole --split; wording suite: seeds per sampled entry, "
-        "default 3)",
+        "default 10)",
     )
     b.add_argument("--tasks", nargs="*", help="subset of task names")
     b.add_argument("--seed", type=int, default=0, help="first seed")

@@ -74,11 +74,20 @@ def prepare(args: argparse.Namespace) -> int | None:
         args.seed = seeds.start
         args.trials = len(seeds) if args.trials is None else min(args.trials, len(seeds))
     if args.trials is None:
-        args.trials = 20
+        args.trials = _default_trials(args.suite)
     if args.trials < 1:
         print(f"--trials: expected at least 1, got {args.trials}", file=sys.stderr)
         return 2
     return None
+
+
+def _default_trials(suite: str) -> int:
+    """Trials per task when --trials is not given: 20, or for the wording suite its execution sample's seeds."""
+    if suite == "wording":
+        from spark_core.bench.wording import EXEC_SEEDS
+
+        return EXEC_SEEDS
+    return 20
 
 
 def template_for(args: argparse.Namespace, template: Any) -> Any:

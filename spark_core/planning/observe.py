@@ -14,7 +14,7 @@ from ..perception.resolver_protocol import Resolver
 from ..perception.summary import summarise
 from .protocol import SceneView
 from .rules.discourse import restructured
-from .rules.lexicon import CONTAINERS, CONTENTS
+from .rules.lexicon import CLEANERS, CONTAINERS, CONTENTS
 from .rules.mentions import clause_mentions, read_past, stray_nouns
 from .rules.parse import Clause, ParseError, is_pronoun, parse_instruction
 from .rules.reader import phrases as order_free_phrases
@@ -49,6 +49,9 @@ def phrases_for(instruction: str) -> list[str]:
             # "the beads should end up in the bowl": poured from a container perception finds (planner.py)
             for holder in CONTAINERS:
                 out.setdefault(holder, None)
+        if c.action == "scrub" and not c.tool:  # "plate clean": scrubbed with the cleaning tool found (planner.py)
+            for cleaner in CLEANERS:
+                out.setdefault(cleaner, None)
         for p in _gripped([c]):
             out.setdefault(p, None)
     # what the phrases are located by, what the parser read past, and any noun no phrase holds: each must be in the

@@ -7,7 +7,7 @@ import argparse
 import pytest
 
 from spark_cli import bench as cli
-from spark_cli import build_parser
+from spark_cli import bench_manifest, build_parser
 from spark_core.bench import wording
 
 
@@ -40,6 +40,12 @@ def test_the_segmenter_reaches_planning_execution_and_the_protocol_text(monkeypa
     args = build_parser().parse_args(["bench", "wording", "--half", "dev", "--trials", "5"])
     cli._wording(args, "spark bench wording --half dev --trials 5")
     assert seeds_used == [wording.EXEC_SEEDS, 5]  # --trials sets the sample's seeds; no silent cap
+    # through the command's own set-up (bench_manifest.prepare fills in --trials): still the sample's seeds, not the
+    # other suites' 20 trials per task
+    args = build_parser().parse_args(["bench", "wording", "--half", "dev"])
+    assert bench_manifest.prepare(args) is None and args.trials == wording.EXEC_SEEDS
+    args = build_parser().parse_args(["bench", "capbench"])
+    assert bench_manifest.prepare(args) is None and args.trials == 20
     assert "perception: learned segmenter (camera-only, not privileged)" in text
     args = build_parser().parse_args(["bench", "wording", "--half", "dev", "--plan-only"])
     text = cli._wording(args, "spark bench wording --half dev --plan-only")

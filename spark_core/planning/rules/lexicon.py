@@ -101,6 +101,8 @@ VERBS: dict[str, tuple[str, ...]] = {
     "scrub": ("scrub", "wipe", "clean", "scour", "wash", "rub", "polish", "buff", "mop"),
     "sort": ("sort",),
 }
+# Things that scrub: the one the scene holds is the tool of a scrub said without one ("plate clean").
+CLEANERS = ("sponge", "cloth", "rag", "towel", "brush", "scrubber", "scourer", "pad")
 # Verb forms whose object comes after a particle ("pick the block up", "turn the stove on").
 PARTICLE_VERBS = {"pick": "up", "turn_on": "on", "turn_off": "off", "lift": "up"}
 ON = ("on top of", "onto", "on to", "atop", "on", "over")
@@ -204,6 +206,11 @@ STATE_ACTIONS: tuple[tuple[str, str], ...] = (
     ("off", "turn_off"),
     ("running", "turn_on"),
     ("lit", "turn_on"),
+    # clean: the scrub that makes it so ("table clean", "I want the plate spotless")
+    ("wiped clean", "scrub"),
+    ("wiped down", "scrub"),
+    ("clean", "scrub"),
+    ("spotless", "scrub"),
 )
 HELD = ("up in the air", "in the air", "up in the gripper", "in the gripper", "in the hand", "up", "held up", "raised")
 # Participles that join an object to its goal in a wish ("I'd like the cup placed on the saucer").

@@ -107,7 +107,7 @@ def read_past(instruction: str, clauses: list[Clause]) -> list[str]:
     "red block held" for "red block", is the clause's own thing with a verb after it.)"""
     said = _words([*clause_mentions(clauses), *(c.obj for c in clauses if c.obj)])
     out: dict[str, None] = {}
-    for sentence in sentences(instruction):
+    for sentence in (_CLOSING_REMARK.sub("", s) for s in sentences(instruction)):
         for m in _DET.finditer(sentence):
             words: list[str] = []
             for w in sentence[m.end() :].replace(",", " , ").split():
@@ -171,7 +171,7 @@ def stray_nouns(instruction: str, clauses: list[Clause]) -> list[str]:
     closed = _closed_words()
     out: dict[str, None] = {}
     for sentence in sentences(instruction):
-        words = re.findall(r"[a-z]+(?:'s)?", sentence)
+        words = re.findall(r"[a-z]+(?:'s)?", _CLOSING_REMARK.sub("", sentence))
         for i, raw in enumerate(words):
             w = raw.removesuffix("'s")
             if len(w) < 3 or {w, singular(w)} & (said | closed | ABSTRACT | ATTRIBUTES) or w in CONTENTS:
@@ -189,6 +189,13 @@ def stray_nouns(instruction: str, clauses: list[Clause]) -> list[str]:
     return list(out)
 
 
+# A remark that closes the request by naming it ("..., that's the target", "... - that's what I'm after", "..., is
+# what I want"): it names the request, not a thing.
+_CLOSING_REMARK = re.compile(
+    r"(?:\b(?:that|this) (?:is|will be|should be) |(?:,|-)\s*(?:is|are) )(?:the (?:target|goal|aim|idea|plan|"
+    r"end state|final state|end result|result|outcome|arrangement|state)|what (?:i|we) (?:am|are) (?:after|"
+    r"asking for|going for|looking for)|what (?:i|we) (?:want|need|mean|would like))\b.*$"
+)
 _NOUN_BEFORE = frozenset(
     ["the", "a", "an", "my", "your", "his", "her", "its", "their", "our", "this", "that", "these", "those", "some"]
     + ["any", "each", "every", "no", "another", "other"]

@@ -11,7 +11,7 @@ from dataclasses import dataclass, field, replace
 from ...perception.colors import BASE_COLOURS
 from ...perception.qualifiers import split_relation
 from ...perception.variants import SIZES
-from .lexicon import CONTAINERS, CONTENTS, DIRECTIONS, FROM, IN, ON, PARTICLE_VERBS, PRONOUNS, VERBS, WITH
+from .lexicon import CONTAINERS, CONTENTS, DIRECTIONS, FROM, IN, ON, PARTICLE_VERBS, PRONOUNS, TABLE, VERBS, WITH
 from .phrases import noun_phrase, object_phrase
 from .rewrite import bare_goal, goal_to_action, imperatives
 from .things import is_verb, names_a_thing
@@ -154,6 +154,10 @@ def parse_instruction(instruction: str) -> list[Clause]:
             r"^slide (.+) (?:over(?! to\b)|onto|on to|on top of) ", r"put \1 on ", part
         )  # slid on top: a carry
         verb = _match_verb(part)
+        hedged = re.match(rf"(?:{_HEDGES}) (?=\w)", part)
+        if verb is None and hedged and _match_verb(part[hedged.end() :]):
+            part = part[hedged.end() :]  # "- just put the butter in the basket": the hedge says nothing of what
+            verb = _match_verb(part)
         if verb is None:
             goal = goal_to_action(part)
             verb = _match_verb(goal) if goal else None
@@ -231,6 +235,8 @@ def parse_instruction(instruction: str) -> list[Clause]:
     return clauses
 
 
+# Words said before a part's verb that only soften or time it ("just put ...", "simply drop ...", "now open ...").
+_HEDGES = "just|simply|only|merely|now|also|instead|rather|kindly|quickly|gently|carefully|slowly|so|then"
 # A remark that only says the robot goes near a thing ("go over to the cabinet, take hold of the handle ..."): the
 # step after it reaches there anyway.
 _APPROACH = re.compile(r"^(?:go|walk|head|come|move|get)(?: over| up| back)? (?:to|towards?)\b")
@@ -569,6 +575,8 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
     direction = None
     if action == "push":  # elsewhere "left" and "closer" pick out an object, not a way to move it
         direction, rest = _direction(rest)
+    if action == "put" and re.match(rf"(?:the |some |all (?:the )?)?(?:{'|'.join(CONTENTS)})\b", rest):
+        action = "pour"  # "beads -> bowl": what a container holds goes in by pouring it out of the container
     if action == "mention":
         # "there's a drawer sticking out": how it stands is no part of its name
         rest = re.sub(r" (?:sticking|poking|hanging|standing|sitting|lying) (?:out|open|up|there|here)$", "", rest)
@@ -585,6 +593,8 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
             return Clause(action, target=noun_phrase(rubbed.group(2)), tool=noun_phrase(rubbed.group(1)), text=text)
         off = _split_on(obj, ("off of", "off", "from"))
         obj = re.sub(r"\s+(?:clean|down)$", "", off[0] if off else obj)  # "wipe the dirt off the table": the dirt
+        if not split and obj.removeprefix("the ") in TABLE:  # "wipe the table", "table clean": the dirt on it
+            obj = f"dirt on {obj.removeprefix('the ')}"
         return Clause(action, target=noun_phrase(obj), tool=noun_phrase(tool) if tool else None, text=text)
     if action == "pour":
         into = _split_on(rest, IN) or _split_on(rest, ON)

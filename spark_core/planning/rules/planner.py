@@ -15,7 +15,7 @@ from .afford import Reading, unplaced_variety
 from .afford import best as afforded
 from .discourse import restructured
 from .kinds import modifier_for_thing, other_contents, other_variety
-from .lexicon import CONTAINERS, CONTENTS, REGIONS
+from .lexicon import CLEANERS, CONTAINERS, CONTENTS, REGIONS
 from .mentions import clause_mentions, foreign_modifiers, read_past, stray_nouns
 from .parse import Clause, ParseError, is_pronoun, parse_instruction
 from .reader import describe, readings, unused_mentions
@@ -336,8 +336,18 @@ class RulesPlanner:
                 ]
             elif c.action == "scrub":
                 t = need(target or obj, "surface to scrub", c)
+                # said without a tool: the one cleaning tool perception found, if it found exactly one
+                found = [w for w in CLEANERS if w in scene and not _same_detection(scene[w], scene[t])]
+                cleaner = found[0] if len({scene[w].position_m.round(2).tobytes() for w in found}) == 1 else None
                 if not c.tool and request.tools:  # an arm carries a wiping pad: wipe the region clean with it
                     out.append(_prim("wipe_area", keypoint_label=t))
+                elif not c.tool and cleaner:
+                    out += [] if held == cleaner else [_prim("pick", keypoint_label=cleaner)]
+                    out += [
+                        _prim("constrained_scrub", target_label=t),
+                        _prim("move_relative", dz=0.10),
+                        _prim("release"),
+                    ]
                 elif not c.tool:
                     raise CannotPlan(f"{c.text!r}: scrub with what? say e.g. 'with the sponge'")
                 else:

@@ -143,12 +143,17 @@ def extremes(text: str, push: bool = False) -> str:
     (that is) farther away from the robot" / "the bowl nearest you" -> "the farthest block" / "the nearest bowl";
     "the bowl at the back" / "on the left" -> "the farthest bowl" / "the leftmost bowl"; "the bowl nearest (to) the
     plate" -> "the bowl near the plate" (the one by another object)."""
+    # "the more distant of the two": the farther
+    text = re.sub(rf"\b({DET}) (?:more|most) (?:distant|remote)\b", r"\1 farthest", text)
+    # "the block further from the robot on top of the one closer to it": "it" is the robot the comparison was
+    # said against before
+    if re.search(r"\b(?:farther|further|closer|nearer) (?:away )?(?:from|to) the robot\b", text):
+        text = re.sub(r"\b(farther|further|closer|nearer) (from|to) it\b", r"\1 \2 the robot", text)
     text = re.sub(
         rf"\b({_EXTREME}) (?:one )?of (?:the |these |those )?(?:(?:two|three|four|both|all) )?({NP})\b",
         lambda m: f"{EXTREMES[m.group(1)]} {_singular_phrase(m.group(2))}",
         text,
     )
-    text = re.sub(rf"\b({DET}) (?:more|most) (?:distant|remote) ", r"\1 farthest ", text)
     # "the further-back bowl", "the closer-in one": the comparison said before the noun as one word
     text = re.sub(rf"\b({DET}) (?:farther|further)-(?:back|away|out) ", r"\1 farthest ", text)
     text = re.sub(rf"\b({DET}) (?:nearer|closer)-(?:in|up|forward|front) ", r"\1 nearest ", text)
@@ -207,6 +212,13 @@ def extremes(text: str, push: bool = False) -> str:
     text = re.sub(
         rf"\b({DET}) ({NP}) {where}(?:the )?(nearer|closer|nearest|closest)(?: to)? (?!{_ME}\b)(the |a )",
         lambda m: f"{m.group(1)} {m.group(2)} near {m.group(4)}",
+        text,
+    )
+    # "the one closer to the robot": "one" stands for the kind named before (parse.py), the comparison before it
+    text = re.sub(
+        rf"\b(the|that) ones? (?:(?:that|which) (?:is|are) )?(nearer|closer|nearest|closest|farther|further|farthest|"
+        rf"furthest)(?: away)?(?: to| from)? {_ME}\b",
+        lambda m: f"the {EXTREMES[m.group(2)]} one",
         text,
     )
     # "the closest bowl to you": the extreme is said before the noun, the point of view after it

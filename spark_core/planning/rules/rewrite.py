@@ -72,7 +72,7 @@ ACTION_WORDS = {
 _VERB_FORMS = sorted({f for forms in VERBS.values() for f in forms} | {"turn", "switch", "use", "there is"}, key=len)
 _FIRST_WORDS = {f.split()[0] for f in _VERB_FORMS}
 _TRAILING = re.compile(
-    r"(?:\s*,\s*|\s+)(?:and\s+)?(?:then\s+)?(?:just\s+|simply\s+)?"
+    r"(?:\s*,\s*|\s+-+\s+|\s+)(?:and\s+)?(?:then\s+)?(?:just\s+|simply\s+)?"
     r"(?:keep|keeping (?:it|them)|hold(?= (?:it|them|still|steady|on|up|there)\b)|make sure|"
     r"let go|release|stop|ensure|check|wait|let (?:it|them)\b|"
     # how to hold it, said after the action ("..., holding it by its two handles")
@@ -97,6 +97,15 @@ _TRAILING = re.compile(
     r"(?:while |by )?(?:making sure|ensuring|checking|being careful|taking care|careful|trying|try to|try and|without|"
     r"rather than|"
     r"instead of|as (?:gently|carefully|slowly) as)|"
+    # the request closed ("..., blue block to the yellow tray, done")
+    r"(?<=,)\s*(?:and )?(?:done|finished|over|end|fin)\s*$|"
+    # the cleaning goal said again ("table clean, no dirt left")
+    r"no (?:dirt|mess|stains?|spills?|crumbs|grime|smudges?|marks?) (?:left|remaining|anywhere)\b|"
+    # the means, after the step it serves ("switch the stove on by twisting the knob")
+    r"by (?:twisting|turning|rotating|flicking|flipping|pressing|pushing|pulling|tugging|using|working|spinning|"
+    r"cranking|sliding|lifting|gripping|grabbing|holding|tipping|tilting)\b|"
+    # how, against how not ("..., sliding it rather than lifting", "... pushing them, not carrying them")
+    r"[a-z]+ing (?:it|them),? (?:rather than|instead of|as opposed to|and not|but not|not|without|never)\b|"
     # a remark to the listener, not a step ("..., then you are done", "..., that is all", "that is the goal")
     r"(?:you|we|i) (?:are|am|will be|should be) (?:done|finished|all set|good)|"
     # when the goal should hold, said after it ("... by the end", "... when you are done", "... at the end")
@@ -289,6 +298,31 @@ def sentences(instruction: str) -> list[str]:
         r"put \1 ",
         text,
     )
+    # a part worked for a purpose ("twist the knob on the stove to switch it on", "rotate the dial so as to turn
+    # the burner off", "tug the handle to open the drawer"): the purpose is the step, done to what it names (or to
+    # the part's own thing, which the planner finds the part of)
+    text = re.sub(
+        r"^(?:\w+)(?: \w+)? ((?:the|a|an) [\w' ]*?\b(?:knob|dial|handle|switch|lever|button|control)s?\b[\w ]*?),? "
+        r"(?:so as |in order |so that you can |so you can )?to "
+        r"(turn on|turn off|switch on|switch off|open|close|shut|"
+        r"(?:turn|switch) (?=(?:it|them|the [\w ]+?) (?:on|off)$))"
+        r" ?(it|them|(?:the|a|an) [\w ]+?)?( on| off| up| open| shut)?$",
+        _part_purpose,
+        text,
+    )
+    # a question that expects "yes" ("shouldn't the cheese be in the basket?", "isn't the bowl meant to be on the
+    # plate?"): the goal it asks after, as a statement
+    text = re.sub(
+        r"^(?:is|are) not ((?:the|a|an) .+?) (?:supposed|meant|expected) to (?=(?:be|go|sit|end up) )",
+        r"\1 should ",
+        text,
+    )
+    text = re.sub(
+        r"^(?:should|must|will|would|does|do) not ((?:the|a|an) .+?) (?=(?:be|go|belong|sit|end up) "
+        r"(?:in|into|on|onto|inside|on top of|to|next to|beside|near)\b)",
+        r"\1 should ",
+        text,
+    )
     # a phrasal verb split around its object ("fire the burner up", "power the stove on"), or a state brought
     # about ("get the hob going"): switching it on
     text = re.sub(r"^(fire|heat|power|switch|turn) ((?:the|a|an) [\w ]+?) (up|on)\b", r"\1 \3 \2", text)
@@ -313,6 +347,8 @@ def sentences(instruction: str) -> list[str]:
     )
     # "what i want is the cup on the saucer" (a cleft), "i want to see the cup on the saucer": the wish itself
     text = re.sub(r"\bwhat (?:i|we) (?:want|need|would like|am after|are after) (?:is|are)\b", "i want", text)
+    # a wish hedged ("i only want the ketchup in the basket", "we just need ..."): the wish itself
+    text = re.sub(r"\b(i|we) (?:only|just|really|simply|actually|mainly) (want|need)\b", r"\1 \2", text)
     text = re.sub(
         r"\b(i|we) (want|need|like|love) to (?:see|have|find|get)\b(?= (?:the|a|an|both|all) )", r"\1 \2", text
     )
@@ -388,7 +424,32 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(r"\b(?:in|at|on) the (?:gap|space|spot|area|middle) between\b", "between", text)
     # a cleft: "it is the upper bowl i want on the plate" is the wish "i want the upper bowl on the plate"
     text = re.sub(r"^it is ((?:the|a|an) .+?) (?:that )?(i|we) (want|need)\b", r"\2 \3 \1", text)
+    # the base of a stack said to stay ("the blue block stays at the bottom: green goes on it ..."): the thing is
+    # named for what follows, and nothing is done to it
+    text = re.sub(
+        r"^((?:the |a |an )?[\w ]+?) (?:stays|remains|sits|stands|should stay|can stay|will stay|is staying) "
+        r"(?:put|at the bottom|on the bottom|where it is|in place|as is|as the base|at the base)\s*[:;,.-]\s*(?=\w)",
+        r"there is \1 . ",
+        text,
+    )
+    # where a thing to use is, said after the request ("plate clean, sponge is right there"): the thing is named
+    # (it must be in the scene) before the request
+    text = re.sub(
+        r"^(.+?),\s*(?:and )?(?:the |a |your )?([a-z]+(?: [a-z]+)?) (?:is|are) (?:right |just |over )?(?:there|here|"
+        r"nearby|close by|to hand|handy|next to it|beside it|by it)$",
+        r"there is the \2 . \1",
+        text,
+    )
     text = qualify(text)
+    # "the beads that are (sitting) in the red mug": what a container holds, said by where it is (a relative clause
+    # after a destination stays: "on the plate that's on the stove" says which plate, not a second destination)
+    text = re.sub(
+        rf"\b((?:the|some|all the) (?:{'|'.join(CONTENTS)})) (?:that|which) (?:is|are) "
+        r"(?:(?:sitting|resting|lying|kept) )?(?=(?:in|inside) (?:the|a|an|your) )",
+        r"\1 ",
+        text,
+    )
+    text = re.sub(_LEAVE_ALONE, _left_be, text)
     text = re.sub(r",\s*(?=(?:which|who) (?:is|are)\b)", " ", text)  # "the block, which is on the plate," locates it
     text = re.sub(r"[!?;]+|\.(?=\s|$)", " . ", text)
     text = text.replace("next to", "next_to")  # a relation, not the filler "next"
@@ -404,6 +465,41 @@ def sentences(instruction: str) -> list[str]:
         for s in out
     ]
     return [s for s in out if not _CLOSING.fullmatch(s)]
+
+
+def _part_purpose(m: re.Match) -> str:
+    part, verb, thing, particle = m.group(1), m.group(2).strip(), m.group(3), (m.group(4) or "").strip()
+    what = part if thing in (None, "it", "them") else thing
+    if verb in ("turn", "switch"):
+        return f"turn {particle} {what}" if particle in ("on", "off") else m.group(0)
+    return f"{verb} {what}"
+
+
+# A thing to be left alone, said as a part of its own ("leave the basket where it is and drop the block into it",
+# "don't touch the cream cheese - just put the butter ...", "ignore the bbq sauce; ..."): no step, but the thing is
+# named, so it must be in the scene (mentions.py) and a pronoun after it may point back to it.
+_LEAVE_ALONE = re.compile(
+    r"(^|[,;:] |- |\band |\bbut )(?:just |please )?"
+    r"(leave|ignore|skip|do not touch|do not move|do not disturb|do not bother with|do not mess with|never mind|"
+    r"forget(?: about)?|keep away from|stay away from|avoid) "
+    # (not the rest: "... and leave the rest where they are" only closes the request, _TRAILING)
+    r"((?:the|that|this|those|these) (?!(?:rest|others?|other ones?|remaining ones?)\b)[\w' ]+?)"
+    r"( (?:alone|where it is|where they are|as it is|as they are|as is|in place|untouched|be|where it stands|"
+    r"where it sits|in peace))?(?=\s*(?:[,;:.!?]|- |$| and\b| but\b| then\b| just\b))"
+)
+# Where "leave" puts a thing or the state it leaves it in ("leave the bowl on the plate", "leave the drawer open"):
+# a step, not a thing left alone.
+_LEFT_SOMEWHERE = re.compile(
+    r"\b(?:on|in|into|onto|inside|on top of|under|next to|beside|by|near|at|behind|in front of)\b|"
+    r"\b(?:open|opened|closed|shut|on|off|running|empty|full)$"
+)
+
+
+def _left_be(m: re.Match) -> str:
+    lead, verb, thing, stays = m.group(1), m.group(2), m.group(3), m.group(4)
+    if verb == "leave" and not stays and _LEFT_SOMEWHERE.search(thing):
+        return m.group(0)
+    return f"{lead}there is {thing}"
 
 
 _ORDINAL_OF = {"one": "first", "1": "first", "two": "second", "2": "second", "three": "third", "3": "third"}
@@ -543,6 +639,10 @@ _TOWER_PLACES = (
 )
 
 
+_TOWER_HEADER = re.compile(
+    r"^(?:build|make|form|create|assemble|put together|stack up)(?: me)? (?:a|the|one) (?:tower|stack|pile)"
+    r"(?: of (?:the )?(?:blocks|cubes|three))?\s*[-:]?\s*"
+)
 # A word that makes a clause of a noun phrase ("the red block should end up in the air"): a goal said in words.
 _SAYS_GOAL = r"\b(?:should|must|will|would|could|can|needs?|has|have|is|are|be|ends?|gets?|goes|go|wants?|ought)\b"
 
@@ -551,14 +651,21 @@ def _tower(items: list[str]) -> list[str] | None:
     """Items that each say where a thing sits in a stack ("red cube on top", "green cube underneath"): the stack
     from the bottom up, or None when an item says no place in a stack or none is at the top or the bottom."""
     placed: dict[str, list[str]] = {"top": [], "middle": [], "bottom": []}
-    for item in (i.strip() for i in items if i.strip()):
+    items = [re.sub(r"^(?:and )?(?:then|next|after that)\s+", "", i.strip()) for i in items if i.strip()]
+    if items:  # "build a tower - blue on the bottom, ...": the stack named first, its order after
+        items[0] = _TOWER_HEADER.sub("", items[0])
+    for item in items:
         for where, words in _TOWER_PLACES:
             m = re.fullmatch(rf"((?:the |a |an )?[\w ]+?) (?:(?:is|sits|goes|should be|should go) )?(?:{words})", item)
             if m and _is_noun_phrase(m.group(1)):
                 placed[where].append(m.group(1))
                 break
         else:
-            return None
+            # a thing said with no place between the bottom and the top ("blue on the bottom, then green, then
+            # red on top"): it goes where it was said, in the middle
+            if not (placed["bottom"] and not placed["top"] and _is_noun_phrase(item) and not starts_with_verb(item)):
+                return None
+            placed["middle"].append(item)
     order = [x for k in ("bottom", "middle", "top") for x in placed[k]]
     if len(order) < 2 or len(placed["top"]) > 1 or len(placed["bottom"]) > 1 or not (placed["top"] or placed["bottom"]):
         return None
@@ -710,10 +817,63 @@ def _predicate(subject: str, predicate: str) -> str | None:
     return f"{ACTION_WORDS[action]} {subject} {predicate}"
 
 
+# Said of a robot's second arm: a task for two arms ("with both arms", "each hand", "to the other arm").
+_ARMS = re.compile(r"\b(?:both|two|each|either|one|second|other|left|right) (?:arms?|hands?|grippers?)\b")
+_TWO_HANDLES = re.compile(r"\b(?:both|two|each) (?:arms?|hands?|handles?)\b|\bhandles?\b[^.]*\beach side\b")
+_LIFT = re.compile(r"\b(?:lift|lifts|lifted|raise|raised|hoist|heave|hold up|pick up|pick it up|pick them up|up)\b")
+_GIVE = re.compile(
+    r"\b(?:hand|hands|pass|passes|give|transfer|move|switch|swap|shift)\b[^.]*?\b(?:to|into|over to|across to|"
+    r"across into) (?:the |your )?(other|left|right|second) (?:one|arm|hand|gripper)\b|"
+    r"\bso (?:that )?the (other|left|right|second) (?:arm|hand|gripper) (?:ends up holding|holds|has|takes|gets)\b"
+)
+# Any other step: a two-arm reading is only for an instruction that says nothing else to do.
+_OTHER_STEP = re.compile(r"\b(?:put|place|set|drop|stack|open|close|shut|turn|push|pour|wipe|scrub|slide|insert)\b")
+_NOT_CARRIED = frozenset(["arm", "arms", "hand", "hands", "gripper", "grippers", "handle", "handles", "side", "sides"])
+
+
+def _two_arms(said: list[str]) -> list[str] | None:
+    """A two-arm task read from its cues wherever they are said: a lift by both arms or by the thing's two handles
+    ("the pot has a handle on each side; grab one with each arm and lift it", "with both arms, grab the pot's handles
+    and raise it"), or a handover to the other arm ("grab the hammer with one arm, then pass it over so the other arm
+    ends up holding it"). None when no second arm or pair of handles is said, or another step is."""
+    text = " . ".join(said)
+    if not _ARMS.search(text) and not _TWO_HANDLES.search(text) or _OTHER_STEP.search(text):
+        return None
+    thing = _carried_thing(text)
+    if thing is None:
+        return None
+    give = _GIVE.search(text)
+    if give:
+        receiver = give.group(1) or give.group(2)
+        receiver = "other" if receiver == "second" else receiver
+        giver = re.search(r"\bwith (?:the |your |its )?(right|left|one) (?:arm|hand|gripper)\b", text)
+        return [f"pick up the {thing} with the {giver.group(1) if giver else 'one'} arm for the {receiver} arm"]
+    # by its handles, named: without them a lift "with both hands" stays one pick of the thing
+    if _TWO_HANDLES.search(text) and re.search(r"\bhandles?\b", text) and _LIFT.search(text):
+        return [f"pick up the {side} {thing} handle with both arms" for side in ("left", "right")]
+    return None
+
+
+def _carried_thing(text: str) -> str | None:
+    """The first thing named that is no arm, hand or handle ("the hammer's handle" names the hammer)."""
+    for m in re.finditer(
+        r"\b(?:the|a|an|its) ([\w ]+?)(?:'s\b|(?= (?:by|with|and|to|on|in|from|of|so|then|for|"
+        r"across|over|using|has|is)\b)|\s*$|\s*[,.;:])",
+        text,
+    ):
+        words = m.group(1).split()
+        if words[-1] not in _NOT_CARRIED and words[0] not in ("other", "one", "left", "right", "second", "two"):
+            return m.group(1)
+    return None
+
+
 def imperatives(instruction: str) -> list[str]:
     """The instruction as a list of imperative strings (each may still hold several clauses)."""
     out: list[str] = []
     said = sentences(instruction)
+    both_arms = _two_arms(said)
+    if both_arms:
+        return both_arms
     for i, sentence in enumerate(said):
         s = _gerund(re.sub(r"^(?:make sure|ensure|see to it|check) (?:that )?(?=the |a |an )", "", sentence))
         # "the plate's sitting on the stove at the moment; put the bowl on it": where a thing is now, said before the
@@ -726,6 +886,14 @@ def imperatives(instruction: str) -> list[str]:
                 r"there is \1 \2",
                 s,
             )
+            # "the beads are in the mug. pour them into the bowl": said as it is now, then acted on by a pronoun
+            if re.search(r"\b(?:it|them)\b", said[i + 1]) and starts_with_verb(said[i + 1]):
+                s = re.sub(
+                    r"^((?:the|a|an) [\w ]+?) (?:is|are) ((?:on|in|inside|on top of|at|by|near|next to|beside) "
+                    r"(?:the|a|an) [\w ]+?)(?: (?:at the moment|right now|right|currently|for now|now))?$",
+                    r"there is \1 \2",
+                    s,
+                )
         # "the mug has beads in it, pour them ...": a container named with what it holds, then acted on (a
         # substance it is said to hold stays said: the scene must show it, rules/kinds.py)
         s = re.sub(

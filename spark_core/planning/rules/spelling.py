@@ -19,7 +19,7 @@ from lemminflect import getAllLemmas
 
 from ...perception.colors import BASE_COLOURS
 from ...perception.variants import KIND_OF
-from .lexicon import DETERMINERS, FILLERS
+from .lexicon import DETERMINERS, FILLERS, VERBS
 from .mentions import ABSTRACT, _closed_words
 from .things import NOT_THINGS
 
@@ -54,7 +54,13 @@ def _scene_words(inventory: tuple[str, ...]) -> frozenset[str]:
     return frozenset(w for w in words if w.isalpha())
 
 
-def _fix(word: str, known: frozenset[str], scene: frozenset[str]) -> str | None:
+@lru_cache(maxsize=1)
+def _action_words() -> frozenset[str]:
+    """The one-word forms of the planner's action verbs ("stack", "put", "grab")."""
+    return frozenset(f for forms in VERBS.values() for f in forms if f.isalpha())
+
+
+def _fix(word: str, known: frozenset[str], scene: frozenset[str], verb_slot: bool = False) -> str | None:
     if len(word) < _MIN or word in known or getAllLemmas(word):
         return None
     near = {k for k in known if len(k) >= _MIN and _one_slip(word, k)}
@@ -64,6 +70,10 @@ def _fix(word: str, known: frozenset[str], scene: frozenset[str]) -> str | None:
     in_scene = near & scene
     if len(in_scene) == 1:
         return next(iter(in_scene))
+    # where a part's verb goes ("stak the cube ...": stack, stay): the one action verb the planner knows, if one is
+    actions = near & _action_words()
+    if verb_slot and len(actions) == 1:
+        return next(iter(actions))
     splits = [
         f"{word[:i]} {word[i:]}" for i in range(_MIN, len(word) - _MIN + 1) if word[:i] in scene and word[i:] in scene
     ]
@@ -94,6 +104,9 @@ def plain_letters(text: str) -> str:
     return "".join(c for c in unicodedata.normalize("NFKD", text) if not unicodedata.combining(c))
 
 
+_PART_START = re.compile(r"(?:^|[,;:.!?]|\s-|\band|\bthen)\s*$", re.IGNORECASE)
+
+
 def corrected(instruction: str, inventory: tuple[str, ...] = ()) -> str:
     """`instruction` with each slip read as the word it misses (accents dropped first); unchanged when it has
     none."""
@@ -103,7 +116,12 @@ def corrected(instruction: str, inventory: tuple[str, ...] = ()) -> str:
 
     def fix(m: re.Match) -> str:
         word = m.group(0)
-        better = _fix(word.lower(), known, scene)
+        # first in its part, before a word that is no verb itself ("stak the cube", not "plase put the cube")
+        after = instruction[m.end() :].split()
+        verb_slot = bool(_PART_START.search(instruction[: m.start()])) and not (
+            after and after[0].lower().strip(",.;:") in _action_words()
+        )
+        better = _fix(word.lower(), known, scene, verb_slot)
         return better if better is not None else word
 
     return re.sub(r"(?<!['\w])[A-Za-z]+(?!['\w])", fix, instruction)
