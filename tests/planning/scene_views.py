@@ -5,7 +5,8 @@ import numpy as np
 
 from spark_core.grammar import plan_to_dict
 from spark_core.perception import Keypoint
-from spark_core.planning import SceneView
+from spark_core.planning import PlanRequest, SceneView
+from spark_core.planning.rules import RulesPlanner
 
 
 def view(inventory=(), unresolved=None, **where) -> SceneView:
@@ -29,3 +30,8 @@ def leaves(result) -> list[tuple[str, str | None]]:
 
     walk(plan_to_dict(result.plan)["tree"])
     return out
+
+
+def plan(text: str, scene: SceneView):
+    """The rules planner's answer for `text` in `scene`."""
+    return RulesPlanner().plan(PlanRequest(text, scene))

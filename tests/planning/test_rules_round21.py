@@ -18,17 +18,12 @@ data/wording/.)"""
 
 import pytest
 
-from spark_core.planning import PlanRequest
-from spark_core.planning.rules import RulesPlanner
 from spark_core.planning.rules.parse import parse_instruction
 from spark_core.planning.rules.rewrite import imperatives
 from spark_core.planning.rules.spelling import corrected
 from tests.planning.scene_views import leaves as _leaves
+from tests.planning.scene_views import plan as _plan
 from tests.planning.scene_views import view as _view
-
-
-def _plan(text, view):
-    return RulesPlanner().plan(PlanRequest(text, view))
 
 
 def _read(text):
@@ -150,4 +145,8 @@ def test_clean_as_a_goal_the_dirt_on_the_table_and_the_one_cleaning_tool_in_view
 
 def test_contents_put_somewhere_are_poured_and_a_thing_right_there_is_named():
     assert _read("beads -> dish") == [("pour", "beads", "dish")]
+    # where they are said first, where they go last
+    assert [
+        (c.action, c.source, c.target) for c in parse_instruction("the beads in the cup should go in the dish")
+    ] == [("pour", "cup", "dish")]
     assert _read("tray clean, the cloth is right there") == [("mention", "cloth", None), ("scrub", None, "tray")]

@@ -598,6 +598,10 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
         return Clause(action, target=noun_phrase(obj), tool=noun_phrase(tool) if tool else None, text=text)
     if action == "pour":
         into = _split_on(rest, IN) or _split_on(rest, ON)
+        later = [m for m in re.finditer(r"(?:^|\s)in(?:to|side)?(?=\s)", rest)][1:]
+        if into and not re.search(r"\binto\b", rest) and later:
+            # "the beads in the mug in the bowl": where they are said first, where they go last
+            into = (rest[: later[-1].start()].strip(), rest[later[-1].end() :].strip())
         what, target = into if into else (rest, None)
         src = _split_on(what, FROM)
         obj, source = src if src else (what, None)
