@@ -103,7 +103,9 @@ def _match_verb(clause: str) -> tuple[str, str] | None:
 def split_clauses(text: str) -> list[str]:
     verbs = "|".join(re.escape(f) for forms in VERBS.values() for f in forms)
     parts = re.split(
-        r"\s*,\s*(?:and\s+)?(?:then\s+)?|\s+(?:and\s+)?then\s+|\s+and\s+(?=(?:"
+        r"\s*,\s*(?:and\s+)?(?:then\s+)?|\s+(?:and\s+)?then\s+|\s+and\s+(?=(?:(?:"
+        + _HEDGES
+        + r") )?(?:"
         + verbs
         + r"|turn|switch|use)\b)|\s+(?:and\s+)?after that\s+|\s+afterwards\s+|\s+before\s+",
         text,
