@@ -138,17 +138,6 @@ _TRAILING = re.compile(
 )
 # Surfaces said as a verb ("plate the bowl": put it on the plate).
 _SURFACES = ("plate", "saucer", "shelf", "rack")
-# "lift the pot with both arms, holding it by its two handles": one handle to each arm, lifted together.
-_TWO_HANDED = re.compile(
-    r"(?:pick up|lift up|lift|raise|hoist|hold up) (?:the |a )?(.+?) with (?:both|two|the two) (?:arms|hands)\b.*"
-    r"\bby (?:its|the|their) (?:two |both )?handles\b.*"
-)
-# "pick up the bar with the right arm and hand it to the left arm": one arm picks it and gives it to the other.
-_HANDOFF = re.compile(
-    r"(?:pick up|pick|grab|take|lift|lift up) (?:the |a )?(.+?) with (?:the |your )?(right|left|one) (?:arm|hand),? "
-    r"and (?:then )?(?:hand|pass|give|transfer) (?:it|them) (?:over )?(?:to|into) (?:the |your )?(right|left|other) "
-    r"(?:arm|hand)"
-)
 # Where to grip it is no object and no place: "pick up the mug by its handle" picks up the mug.
 _GRIP = re.compile(r"\s+by (?:its|the|their) (?:two |both )?(?:handles?|grips?|rims?|edges?)\b")
 # a place ruled out after the one given ("put the bowl on the plate, not on the stove"): the place said stands
@@ -920,15 +909,6 @@ def imperatives(instruction: str) -> list[str]:
         if first and (into or holder):  # "the bowl should end up in the top drawer, which you'll need to open first"
             out.append(f"open the {into.group(1) if into else strip_article(holder.group(1) if holder else '')}")
             s = first.group(1)
-        handoff = _HANDOFF.fullmatch(s)
-        if handoff:
-            what, giver, receiver = handoff.groups()
-            out.append(f"pick up the {what} with the {giver} arm for the {receiver} arm")
-            continue
-        two = _TWO_HANDED.fullmatch(s)
-        if two:
-            out += [f"pick up the {side} {two.group(1)} handle with both arms" for side in ("left", "right")]
-            continue
         s = re.sub(r"^the other (.+?),? not the one (.+?),\s*", r"the \1 not \2 ", s)
         s = re.sub(r",?\s*the one (?:on|sitting on|lying on|that is on) the table,?", " ", s).strip()
         # a remark about the thing after a comma ("..., it dents", "..., they are fragile"): no step, no place
