@@ -337,21 +337,13 @@ class RulesPlanner:
             elif c.action == "scrub":
                 t = need(target or obj, "surface to scrub", c)
                 # said without a tool: the one cleaning tool perception found, if it found exactly one
-                found = [w for w in CLEANERS if w in scene and not _same_detection(scene[w], scene[t])]
-                cleaner = found[0] if len({scene[w].position_m.round(2).tobytes() for w in found}) == 1 else None
+                cleaner = None if c.tool or request.tools else _the_one(CLEANERS, t, scene)
                 if not c.tool and request.tools:  # an arm carries a wiping pad: wipe the region clean with it
                     out.append(_prim("wipe_area", keypoint_label=t))
-                elif not c.tool and cleaner:
-                    out += [] if held == cleaner else [_prim("pick", keypoint_label=cleaner)]
-                    out += [
-                        _prim("constrained_scrub", target_label=t),
-                        _prim("move_relative", dz=0.10),
-                        _prim("release"),
-                    ]
-                elif not c.tool:
+                elif not c.tool and not cleaner:
                     raise CannotPlan(f"{c.text!r}: scrub with what? say e.g. 'with the sponge'")
                 else:
-                    tool = need(c.tool, "tool", c)
+                    tool = need(c.tool, "tool", c) if c.tool else str(cleaner)
                     if tool == t or _same_detection(scene[tool], scene[t]):
                         # one thing found for both: the tool named is not there (a "dish towel" found as the plate)
                         raise CannotPlan(
@@ -472,9 +464,15 @@ def _holder_of(source: str | None, dst: str, scene) -> str | None:
     perception found no such container or several."""
     if not source or source in scene or source.split()[-1] not in CONTENTS:
         return source
-    holders = [h for h in CONTAINERS if h in scene and not _same_detection(scene[h], scene[dst])]
-    distinct = [h for i, h in enumerate(holders) if not any(_same_detection(scene[h], scene[g]) for g in holders[:i])]
-    return distinct[0] if len(distinct) == 1 else source
+    return _the_one(CONTAINERS, dst, scene) or source
+
+
+def _the_one(words: tuple[str, ...], besides: str, scene) -> str | None:
+    """The one thing perception found under any of `words` apart from `besides` (several words may find the same
+    detection: "sponge", "scrubber"); None when it found none or several."""
+    found = [w for w in words if w in scene and not _same_detection(scene[w], scene[besides])]
+    distinct = [w for i, w in enumerate(found) if not any(_same_detection(scene[w], scene[g]) for g in found[:i])]
+    return distinct[0] if len(distinct) == 1 else None
 
 
 def _drawer_step(action: str, o: str, scene, seen: str) -> dict:
