@@ -24,6 +24,7 @@ def _plan(text, view):
 @pytest.fixture
 def without_fallback(monkeypatch):
     monkeypatch.setattr(RulesPlanner, "_afforded", lambda self, request: (None, ""))
+    monkeypatch.setattr(RulesPlanner, "_learned", lambda self, refusal, request: refusal)
 
 
 # -- plans the rule parse refuses --------------------------------------------------------------------------------

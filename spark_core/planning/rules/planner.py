@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 import time
+from collections.abc import Callable
 from dataclasses import replace
 
 import numpy as np
@@ -40,6 +41,10 @@ class RulesPlanner:
 
     name = "rules"
 
+    def __init__(self, fallback: bool = True):
+        # the learned reader (planning/learned_reader) reads what every rule reading refuses, when it can
+        self.fallback = fallback
+
     def prompt_variants(self, labels: list[str], k: int = 3) -> dict[str, list[str]]:
         """Deterministic variants from the label's words and a synonym table (no model call): the resolver's own,
         which never widen a label."""
@@ -55,6 +60,8 @@ class RulesPlanner:
         # steps said out of order, context and contrast, headers, back-references: said plainly (rules/discourse.py)
         request = replace(request, instruction=restructured(request.instruction))
         read = self._read(request, t0, stepwise=True)
+        if isinstance(read, PlanResult) and self.fallback:
+            read = self._learned(read, request)
         if isinstance(read, PlanResult):
             return read
         children, understood = read
@@ -78,6 +85,20 @@ class RulesPlanner:
         return PlanResult(
             self.name, to_yaml(plan), plan, latency_s=time.perf_counter() - t0, detail={"understood": understood}
         )
+
+    def _learned(self, refusal: PlanResult, request: PlanRequest) -> tuple[list[dict], list[str]] | PlanResult:
+        """The learned reader's reading (planning/learned_reader) of what every rule reading refused; the refusal,
+        with why the reader declined, when it does."""
+        from ..learned_reader.fallback import may_read, read
+
+        if not may_read(refusal.error, request):
+            return refusal
+        got = read(request, self)
+        if got is None:
+            return refusal
+        if isinstance(got, str):
+            return replace(refusal, error=f"{refusal.error} (the learned reader declined: {got})")
+        return got
 
     def _untyped(self, e: PlanError, t0: float) -> PlanResult:
         """A composed plan the type checker rejects: a composition bug, reported rather than raised."""
@@ -386,6 +407,27 @@ class RulesPlanner:
         if not c.direction:
             raise CannotPlan(f"{c.text!r}: push which way? (forward, backward, left, right, or into something)")
         return c.direction, round(min(c.distance_m or 0.10, 0.5), 3)
+
+
+def composer(
+    planner: RulesPlanner, request: PlanRequest
+) -> tuple[Callable[[list[Clause]], list[dict]], Callable[[list[dict]], tuple]]:
+    """The planner's composition of clauses into checked steps (ValueError when its checks refuse), and the effect
+    of steps in the request's scene: for readers outside this module (planning/learned_reader)."""
+
+    scene = request.scene.keypoints
+
+    def compose(clauses: list[Clause]) -> list[dict]:
+        for c in clauses:  # two roles of one step said with two phrases perception found as one thing
+            said = [p for p in (c.obj, c.target, c.source, c.tool) if p in scene]
+            if any(_same_detection(scene[a], scene[b]) for i, a in enumerate(said) for b in said[i + 1 :] if a != b):
+                raise CannotPlan(f"{_describe(c)}: two of its things are one thing to perception")
+        children = planner._compose(clauses, request)
+        children = _two_arm_branches(children, request) or children
+        check_plan({"task": "t", "tree": {"type": "sequence", "children": children}})
+        return children
+
+    return compose, lambda children: _effect(children, request.scene.keypoints)
 
 
 def _labels(steps: list[dict]) -> list[str]:

@@ -1,0 +1,166 @@
+"""The learned reading of an instruction every rule reading refused: the goal the scorer ranks first among those
+the scene view affords, when it is confident.
+
+It is tried only when nothing the sentence names is missing: every phrase perception was asked for was found
+once, and the rules refused for want of a reading, not because a thing is absent or ambiguous. Its goals only use
+found phrases and pass the planner's own checks (kinds, near-miss names, nothing put on itself), so it never plans
+around a thing the scene does not hold."""
+
+from __future__ import annotations
+
+import math
+import re
+
+from lemminflect import getAllLemmas
+
+from ..protocol import PlanRequest
+from ..rules.lexicon import PARTICIPLES, STATE_ACTIONS, VERBS
+from ..rules.parse import Clause
+from ..rules.planner import RulesPlanner, composer
+from .candidates import options
+from .scorer import NONE_SCORE, load
+
+# The top goal's probability (softmax over the instruction's goals) below which the reader declines: chosen on the
+# held-out tenth of the dev examples (train.py), where every kept top goal at or above it was right.
+THRESHOLD = 0.5
+# Refusals that stand whatever the reader makes of the sentence: the robot lacks an arm, a thing is absent by its
+# kind. Said anywhere in the message (a clause's text may come first): a word of the instruction itself matching
+# one only makes the reader stand back, the safe way.
+_STANDS = ("could not single", "arms are", "needs two arms", "needs a second handle", "nothing there is")
+_WHICH = re.compile(r"""which (?:'([^']*)'|"([^"]*)")""")
+# Words that name no thing: a phrase of only these, verbs and words of what perception found is a misreading of
+# the sentence ("blue not block", "there once it", "cabinet drawer is"), not a thing the scene lacks.
+_NAMES_NOTHING = frozenset(
+    ["a", "an", "the", "this", "that", "these", "those", "it", "its", "them", "they", "there", "here", "one", "ones"]
+    + ["not", "no", "never", "do", "does", "did", "is", "are", "was", "be", "been", "has", "have", "had", "got"]
+    + ["dont", "don't", "doesnt", "isnt", "wont", "cant"]
+    + ["once", "then", "now", "just", "so", "and", "or", "but", "if", "when", "while", "until", "as", "than"]
+    + ["in", "on", "at", "of", "to", "into", "onto", "from", "with", "by", "for", "up", "down", "out", "off", "over"]
+    + ["against", "back", "other", "same", "also", "too", "very", "i", "you", "me", "we", "us", "my", "your"]
+)
+_NOT_FOUND = re.compile(r"""could not find (?:'([^']*)'|"([^"]*)")""")
+
+
+def _may_be_thing(word: str) -> bool:
+    """A word that may name a thing: a noun, or a word the lexicon does not know (taken as one, the safe way)."""
+    lemmas = getAllLemmas(word)
+    return not lemmas or "NOUN" in lemmas or "PROPN" in lemmas
+
+
+# Words after which a word that may be a noun or a verb is the verb ("do not touch", "it sits", "to box").
+_VERB_BEFORE = frozenset(
+    ["not", "never", "dont", "don't", "doesnt", "doesn't", "do", "does", "did", "to", "it", "they", "i", "you", "we"]
+    + ["will", "would", "can", "could", "should", "must", "shall", "may", "might"]
+)
+
+
+def misread(phrase: str, known: set[str]) -> bool:
+    """A phrase perception found nothing for that names no thing of its own: every word is a word of what
+    perception found, a word that names nothing, no noun, or a word that may be a verb said right after a word
+    that only a verb follows ("do not touch red block", "dont touch"). A phrase with a
+    noun perception found nothing for ("banana", "red ball", "pot handle", "the box") is not misread: that thing
+    is absent."""
+    words = phrase.split()
+
+    def placed(i: int) -> bool:
+        w = words[i]
+        if w in known or w in _NAMES_NOTHING or not _may_be_thing(w):
+            return True
+        return bool(i) and words[i - 1] in _VERB_BEFORE and "VERB" in getAllLemmas(w)
+
+    return all(placed(i) for i in range(len(words)))
+
+
+_RELATIONS = frozenset(["on", "in", "at", "of", "next", "to", "near", "by", "beside", "between", "under", "behind"])
+
+
+def _named_precisely(phrase: str, found: list[str]) -> bool:
+    """Another phrase of the sentence perception found once names the same kind with every word of `phrase` before
+    any relation ("the top drawer ... that drawer", "the black bowl on the cookie box ... the black bowl"): the
+    sentence says which one it is. "square nut next to round peg" names a nut, not which "peg"."""
+    words = phrase.split()
+    for p in found:
+        said = p.split()
+        thing = said[: next((i for i, w in enumerate(said) if w in _RELATIONS), len(said))]
+        if p != phrase and thing and thing[-1] == words[-1] and set(words) <= set(thing):
+            return True
+    return False
+
+
+def may_read(error: str | None, request: PlanRequest) -> bool:
+    """The rules' refusal is one the reader may read past: a failure to read the sentence ("did not understand",
+    a phrase perception found nothing for, a "which" of a kind it found several of), never a check of the plan
+    (no handle, no tool, a substance it cannot show). Every phrase perception found nothing for is a misreading
+    (`misread`), none a thing the scene lacks; every phrase it found several of, and the one the refusal asks
+    "which" of, is named precisely by another phrase it found once."""
+    if not error or any(s in error for s in _STANDS):
+        return False
+    which, said = _WHICH.match(error), _NOT_FOUND.match(error)
+    if not (error.startswith("did not understand") or which or said):
+        return False
+    scene = request.scene
+    found = list(scene.keypoints)
+    known = {w for p in [*found, *scene.inventory] for w in re.findall(r"[a-z]+", p.lower())}
+    for phrase, why in scene.unresolved.items():
+        if not (_named_precisely(phrase, found) if why.startswith("several") else misread(phrase, known)):
+            return False
+    if which is not None and not _named_precisely(which.group(1) or which.group(2), found):
+        return False
+    return said is None or (said.group(1) or said.group(2)) in scene.unresolved
+
+
+# Words that say a goal without a verb of the lexicon: where a thing goes, a wish, a duty.
+_GOAL_WORDS = frozenset(
+    ["in", "into", "on", "onto", "inside", "atop", "over", "up", "off", "out", "away", "back", "open", "shut"]
+    + ["should", "must", "want", "wants", "need", "needs", "belongs", "belong", "goes", "go", "let", "get", "have"]
+    + ["make", "give", "hold", "hand", "bring", "take", "fetch", "carry", "stow", "keep", "leave", "clean"]
+)
+
+
+def says_a_goal(instruction: str) -> bool:
+    """The sentence has a word that can say what is to be done: a verb the lexicon knows in any form, a
+    goal-state word, a place a thing goes to, a wish or a duty. "the pear is ripe and the bin is green" has none:
+    a description, not a request, whatever goal its things afford."""
+    words = re.findall(r"[a-z']+", instruction.lower())
+    verbs = {f.split()[0] for forms in VERBS.values() for f in forms}
+    states = {w for s, _ in STATE_ACTIONS for w in s.split()} | set(PARTICIPLES)
+    for w in words:
+        if w in _GOAL_WORDS or w in verbs or w in states:
+            return True
+        if any(lemma in verbs for lemma in getAllLemmas(w).get("VERB", ())):
+            return True
+    return False
+
+
+def _unused(clauses: tuple[Clause, ...], found: list[str]) -> list[str]:
+    """Phrases perception found that the goal leaves out: neither one of its things, nor a word of one (what
+    locates it: "plate" of "black bowl next to plate"), nor one with a part of it ("stove knob" of "stove")."""
+    used = [p for c in clauses for p in (c.obj, c.target, c.source, c.tool) if p]
+    words = {w for p in used for w in p.split()}
+    return [p for p in found if p not in used and p.split()[-1] not in words and not any(u in p for u in used)]
+
+
+def read(request: PlanRequest, planner: RulesPlanner) -> tuple[list[dict], list[str]] | str | None:
+    """(steps, what was understood) for the confident top goal; else why the reader declined; None when no reader
+    weights are installed."""
+    model = load()
+    if model is None:
+        return None
+    if not says_a_goal(request.instruction):
+        return "the sentence says no goal: no word in it asks for one"
+    compose, effect = composer(planner, request)
+    goals = options(list(request.scene.keypoints), compose, effect)
+    if not goals:
+        return "the things found afford no goal the planner can compose"
+    scores = model.scores(request.instruction, [c.text for c, _ in goals])
+    top = max(scores)
+    total = sum(math.exp(s - top) for s in [*scores, NONE_SCORE])
+    k = scores.index(top)
+    p = 1.0 / total
+    text = goals[k][0].text
+    if p < THRESHOLD:
+        return f"its best guess, {text!r}, had probability {p:.2f} (below {THRESHOLD})"
+    left = _unused(goals[k][0].clauses, list(request.scene.keypoints))
+    if left:  # a part of the request no step would carry out: never a partial plan
+        return f"its best guess, {text!r}, leaves out {', '.join(map(repr, left))}"
+    return goals[k][1], [f"read by the learned reader as {text!r} (probability {p:.2f} among {len(goals)} goals)"]

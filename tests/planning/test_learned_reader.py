@@ -1,0 +1,121 @@
+"""The learned reader: the rules planner's fallback for instructions every rule reading refuses."""
+
+from pathlib import Path
+
+import pytest
+import torch
+
+from spark_core.planning import PlanRequest
+from spark_core.planning.learned_reader import fallback, scorer
+from spark_core.planning.learned_reader.candidates import options, pairs, singles
+from spark_core.planning.learned_reader.train import DEV_FILES
+from spark_core.planning.rules import RulesPlanner
+from spark_core.planning.rules.planner import composer
+from tests.planning.scene_views import leaves, view
+
+SCENE = {"red_block": (0.5, 0.1, 0.02), "bowl": (0.5, -0.1, 0.03), "plate": (0.6, 0.0, 0.01)}
+SAID = {k: v for k, v in SCENE.items() if k != "plate"}  # what perception finds for the phrases of UNREAD
+# worded so that no rule reading plans them (checked below with the reader off)
+UNREAD = ["make the bowl hold the red block", "give the bowl the red block"]
+
+
+def test_every_goal_names_only_phrases_perception_found():
+    found = {"red block", "bowl", "plate"}
+    goals = singles(sorted(found))
+    said = {p for g in goals for c in g.clauses for p in (c.obj, c.target, c.source, c.tool) if p}
+    assert said == found
+    texts = {g.text for g in goals}
+    assert {"put the red block in the bowl", "open the bowl", "scrub the plate with the red block"} <= texts
+
+
+def test_two_moves_and_an_opening_then_a_move_are_goals():
+    moves = [g for g in singles(["red block", "drawer"]) if g.clauses[0].action in ("put", "pick")]
+    texts = {g.text for g in pairs(moves, ["red block", "drawer"])}
+    assert "open the drawer, then put the red block in the drawer" in texts
+    assert not any("put the red block in the drawer, then put the red block" in t for t in texts)
+
+
+def test_the_goals_offered_are_the_ones_the_planner_composes_one_per_effect():
+    request = PlanRequest("x", view(**SCENE))
+    compose, effect = composer(RulesPlanner(fallback=False), request)
+    goals = options(list(request.scene.keypoints), compose, effect)
+    texts = [g.text for g, _ in goals]
+    assert "put the red block in the bowl" in texts
+    assert len({effect(children) for _, children in goals}) == len(goals)
+    assert options([f"thing {n}" for n in range(7)], compose, effect) == []  # too many things: no enumeration
+
+
+def test_missing_or_ambiguous_things_are_never_read_past():
+    request = PlanRequest("x", view(**SCENE))
+    assert fallback.may_read("did not understand the instruction: no action I know in 'x'", request)
+    assert not fallback.may_read("which 'bowl'? perception found 2 things that match it", request)
+    assert not fallback.may_read("could not find 'wine glass' in the scene: nothing there is a 'glass'", request)
+    for absent in ("banana", "red ball", "pot handle", "red block in pot", "box", "plate and box", "the cup"):
+        missing = PlanRequest("x", view(unresolved={absent: "none found"}, **SCENE))
+        assert not fallback.may_read(f"could not find {absent!r} in the scene", missing), absent
+    several = PlanRequest("x", view(unresolved={"cup": "several match: 2"}, **SCENE))
+    assert not fallback.may_read("did not understand the instruction", several)
+
+
+def test_a_kind_found_several_times_is_read_past_only_when_another_phrase_says_which():
+    precise = {"top_drawer": (0.6, 0.0, 0.3), "black_bowl": (0.5, 0.1, 0.02)}
+    request = PlanRequest("x", view(unresolved={"drawer": "several match: 3"}, **precise))
+    assert fallback.may_read("which 'drawer'? perception found 3 things that match it", request)
+    bare = PlanRequest("x", view(unresolved={"plate": "several match: 2"}, **precise))
+    assert not fallback.may_read("which 'plate'? perception found 2 things that match it", bare)
+
+
+@pytest.mark.parametrize("phrase", ["blue not block", "there once it", "do not touch red block", "cabinet drawer is"])
+def test_a_phrase_that_names_nothing_of_its_own_is_a_misreading_not_an_absent_thing(phrase):
+    known = {"blue", "block", "red", "cabinet", "drawer"}
+    assert fallback.misread(phrase, known)
+    found = {"blue_block": (0.5, 0.1, 0.02), "red_block": (0.5, -0.1, 0.02), "cabinet_drawer": (0.7, 0.0, 0.2)}
+    request = PlanRequest("x", view(unresolved={phrase: "none found"}, **found))
+    assert fallback.may_read(f"could not find {phrase!r} in the scene: perception found nothing", request)
+    assert not fallback.may_read("could not find 'banana' in the scene: perception found nothing", request)
+
+
+def test_two_phrases_perception_found_as_one_thing_make_no_goal():
+    scene = view(smaller_cube=(0.5, 0.0, 0.02), bigger_cube=(0.5, 0.0, 0.02))
+    request = PlanRequest("x", scene)
+    compose, effect = composer(RulesPlanner(fallback=False), request)
+    texts = [g.text for g, _ in options(list(scene.keypoints), compose, effect)]
+    assert texts and not any("smaller cube" in t and "bigger cube" in t for t in texts)
+
+
+@pytest.mark.parametrize("text", UNREAD)
+def test_the_reader_plans_what_every_rule_reading_refused(text):
+    scene = view(**SAID)
+    assert not RulesPlanner(fallback=False).plan(PlanRequest(text, scene)).ok
+    result = RulesPlanner().plan(PlanRequest(text, scene))
+    assert result.ok, result.error
+    assert leaves(result)[0] == ("pick", "red block")
+    assert leaves(result)[1] in (("place_in", "bowl"), ("place", "bowl"))
+    assert "learned reader" in result.detail["understood"][0]
+
+
+def test_an_absent_thing_stays_refused_with_the_reader_on():
+    scene = view(unresolved={"banana": "none found"}, **SAID)
+    result = RulesPlanner().plan(PlanRequest("make the bowl hold the banana", scene))
+    assert not result.ok and "learned reader" not in result.error
+
+
+def test_below_its_threshold_the_reader_declines_and_says_its_best_guess(monkeypatch):
+    monkeypatch.setattr(fallback, "THRESHOLD", 1.01)
+    result = RulesPlanner().plan(PlanRequest(UNREAD[0], view(**SAID)))
+    assert not result.ok
+    assert "the learned reader declined: its best guess, 'put the red block in the bowl'" in result.error
+
+
+def test_the_shipped_weights_are_the_last_layer_and_the_head_only():
+    state = torch.load(scorer.WEIGHTS, map_location="cpu", weights_only=True)
+    assert {k.split(".")[0] for k in state} == {"bert", "head"}
+    layers = {int(k.split(".")[3]) for k in state if k.startswith("bert.")}
+    assert layers == set(range(6 - scorer.TRAINED_LAYERS, 6))
+    assert all(v.dtype == torch.float16 for v in state.values())
+
+
+def test_training_reads_dev_files_only():
+    names = {Path(p).name for p in DEV_FILES}
+    assert "dev.yaml" in names
+    assert not any(n.startswith("test") or n == "probe22.yaml" for n in names)
