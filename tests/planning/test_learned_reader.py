@@ -50,7 +50,16 @@ def test_missing_or_ambiguous_things_are_never_read_past():
     assert fallback.may_read("did not understand the instruction: no action I know in 'x'", request)
     assert not fallback.may_read("which 'bowl'? perception found 2 things that match it", request)
     assert not fallback.may_read("could not find 'wine glass' in the scene: nothing there is a 'glass'", request)
-    for absent in ("banana", "red ball", "pot handle", "red block in pot", "box", "plate and box", "the cup"):
+    for absent in (
+        "banana",
+        "red ball",
+        "pot handle",
+        "red block in pot",
+        "box",
+        "plate and box",
+        "the cup",
+        "box in it",
+    ):
         missing = PlanRequest("x", view(unresolved={absent: "none found"}, **SCENE))
         assert not fallback.may_read(f"could not find {absent!r} in the scene", missing), absent
     several = PlanRequest("x", view(unresolved={"cup": "several match: 2"}, **SCENE))

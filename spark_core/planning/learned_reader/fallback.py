@@ -61,12 +61,15 @@ def misread(phrase: str, known: set[str]) -> bool:
     noun perception found nothing for ("banana", "red ball", "pot handle", "the box") is not misread: that thing
     is absent."""
     words = phrase.split()
+    # a phrase ending in a word of description, not a thing ("look nicer"): its words before may be verbs
+    described = words[-1] not in _NAMES_NOTHING and not _may_be_thing(words[-1])
 
     def placed(i: int) -> bool:
         w = words[i]
         if w in known or w in _NAMES_NOTHING or not _may_be_thing(w):
             return True
-        return bool(i) and words[i - 1] in _VERB_BEFORE and "VERB" in getAllLemmas(w)
+        verb = "VERB" in getAllLemmas(w)
+        return verb and (described or (bool(i) and words[i - 1] in _VERB_BEFORE))
 
     return all(placed(i) for i in range(len(words)))
 
