@@ -16,9 +16,11 @@ import re
 from lemminflect import getAllLemmas
 
 from ..protocol import PlanRequest
-from ..rules.lexicon import PARTICIPLES, STATE_ACTIONS, VERBS
+from ..rules.framing import verb_words
+from ..rules.lexicon import PARTICIPLES, STATE_ACTIONS
 from ..rules.parse import Clause
 from ..rules.planner import RulesPlanner, composer
+from ..rules.things import is_verb
 from .candidates import options
 from .scorer import NONE_SCORE, load
 
@@ -71,8 +73,7 @@ def misread(phrase: str, known: set[str]) -> bool:
         w = words[i]
         if w in known or w in _NAMES_NOTHING or not _may_be_thing(w):
             return True
-        verb = "VERB" in getAllLemmas(w)
-        return verb and (described or (bool(i) and words[i - 1] in _VERB_BEFORE))
+        return is_verb(w) and (described or (bool(i) and words[i - 1] in _VERB_BEFORE))
 
     return all(placed(i) for i in range(len(words)))
 
@@ -128,7 +129,7 @@ def says_a_goal(instruction: str) -> bool:
     goal-state word, a place a thing goes to, a wish or a duty. "the pear is ripe and the bin is green" has none:
     a description, not a request, whatever goal its things afford."""
     words = re.findall(r"[a-z']+", instruction.lower())
-    verbs = {f.split()[0] for forms in VERBS.values() for f in forms}
+    verbs = verb_words()
     states = {w for s, _ in STATE_ACTIONS for w in s.split()} | set(PARTICIPLES)
     for w in words:
         if w in _GOAL_WORDS or w in verbs or w in states:

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
+from functools import cache
 
 from lemminflect import getAllLemmas, getLemma
 
@@ -27,13 +28,15 @@ _ASKS_ABOUT = frozenset(
 _ABOUT = (["how", "about"], ["what", "about"])
 
 
-def _verb_words() -> frozenset[str]:
+@cache
+def verb_words() -> frozenset[str]:
+    """The first word of every verb form the lexicon knows ("pick" of "pick up")."""
     return frozenset(f.split()[0] for forms in VERBS.values() for f in forms)
 
 
 def _base(word: str) -> str | None:
     """The word as one of the planner's verbs ("putting" -> "put"), or None."""
-    verbs = _verb_words()
+    verbs = verb_words()
     if word in verbs:
         return word
     if word.endswith("ing"):
