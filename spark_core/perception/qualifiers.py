@@ -28,7 +28,11 @@ QUALIFIERS: dict[str, tuple[int, float]] = {
     "bottom": (2, -1.0),
     "lower": (2, -1.0),
     "middle": (2, 0.0),
+    # size, not place: axis 3 is the footprint's area in the table plane ("the bigger cube", "the smallest bowl")
+    "largest": (3, 1.0),
+    "smallest": (3, -1.0),
 }
+SIZE_AXIS = 3
 _ARTICLES = re.compile(r"\b(the|a|an|one|of|to|robot|from)\b", re.I)
 
 

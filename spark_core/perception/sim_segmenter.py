@@ -12,7 +12,7 @@ from .colors import normalise_colours
 from .detection import Detection
 from .frame import CameraFrame
 from .naming import class_members, mismatch, own_noun_prompts
-from .qualifiers import QUALIFIERS, split_qualifier, split_relation
+from .qualifiers import QUALIFIERS, SIZE_AXIS, split_qualifier, split_relation
 from .text_encoder import SHARED_ENCODER, TextEncoder
 from .variants import (
     SPELLINGS,
@@ -266,10 +266,17 @@ def _centroid_xy(d: Detection, frame: CameraFrame) -> np.ndarray:
 
 
 def pick_by_qualifier(dets: list[Detection], frame: CameraFrame, qualifier: str, rank: int = 1) -> Detection:
-    """The instance a spatial qualifier points at, from each mask's back-projected centroid; `rank` counts from
+    """The instance a spatial qualifier points at, from each mask's back-projected centroid (a size qualifier: from
+    its points' footprint); `rank` counts from
     that end ("second leftmost"). "middle": the median one along the axis the instances spread along most (stacked
     drawers: height; blocks in a row on the table: across or along it)."""
     axis, sign = QUALIFIERS[qualifier]
+    if axis == SIZE_AXIS:  # footprint area (m^2) between the 5th and 95th percentile of its points
+        area = {
+            id(d): float(np.prod(np.ptp(np.percentile(_points(d, frame)[:, :2], [5, 95], axis=0), axis=0)))
+            for d in dets
+        }
+        return sorted(dets, key=lambda d: -sign * area[id(d)])[min(rank, len(dets)) - 1]
     centres = {id(d): np.median(_points(d, frame), axis=0) for d in dets}
     if sign == 0.0:
         spread = np.ptp(np.array(list(centres.values())), axis=0)

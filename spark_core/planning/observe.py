@@ -17,6 +17,7 @@ from .rules.discourse import restructured
 from .rules.lexicon import CLEANERS, CONTAINERS, CONTENTS
 from .rules.mentions import clause_mentions, read_past, stray_nouns
 from .rules.parse import Clause, ParseError, is_pronoun, parse_instruction
+from .rules.qualify import bare_rank
 from .rules.reader import phrases as order_free_phrases
 from .rules.reader import readings as order_free_readings
 from .rules.spelling import corrected
@@ -60,6 +61,10 @@ def phrases_for(instruction: str) -> list[str]:
         out.setdefault(p, None)
     for p in after:
         out.setdefault(p, None)
+    for p in list(out):  # "the second plate": how many plates there are (planner.py refuses it when one)
+        kind = bare_rank(p)
+        if kind:
+            out.setdefault(kind, None)
     return list(out)
 
 

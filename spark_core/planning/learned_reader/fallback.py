@@ -139,12 +139,44 @@ def says_a_goal(instruction: str) -> bool:
     return False
 
 
-def _unused(clauses: tuple[Clause, ...], found: list[str]) -> list[str]:
+# Words before a thing that say it is to be left alone or is not the one meant ("dont touch the red block", "not
+# the bowl on the cabinet", "ignore the mug"); said before these, a negation asks for something after all.
+_LEFT_ALONE = frozenset(["not", "never", "dont", "don't", "ignore", "ignoring", "without", "except", "besides"])
+_STILL_ASKS = frozenset(["forget", "fail", "hesitate", "stop", "just", "only"])
+_PARTS = ("handle", "knob")
+
+
+def left_alone(phrase: str, instruction: str) -> bool:
+    """The phrase is said, word for word, within four words after a word that leaves it alone or sets it apart
+    ("turn the stove on. dont touch the red block"): no goal has to use it."""
+    tokens = re.findall(r"[a-z']+", instruction.lower())
+    words = phrase.split()
+    for i in range(len(tokens) - len(words) + 1):
+        if tokens[i : i + len(words)] != words:
+            continue
+        before = tokens[max(0, i - 4) : i]
+        if set(before) & _LEFT_ALONE and not set(before) & _STILL_ASKS:
+            return True
+    return False
+
+
+def _unused(clauses: tuple[Clause, ...], found: list[str], instruction: str) -> list[str]:
     """Phrases perception found that the goal leaves out: neither one of its things, nor a word of one (what
-    locates it: "plate" of "black bowl next to plate"), nor one with a part of it ("stove knob" of "stove")."""
+    locates it: "plate" of "black bowl next to plate"), nor one with a part of it ("stove knob" of "stove"), nor a
+    part the planner looked for though the sentence does not say it ("drawer handle"), nor a thing the sentence
+    leaves alone (`left_alone`)."""
     used = [p for c in clauses for p in (c.obj, c.target, c.source, c.tool) if p]
     words = {w for p in used for w in p.split()}
-    return [p for p in found if p not in used and p.split()[-1] not in words and not any(u in p for u in used)]
+    said = set(re.findall(r"[a-z]+", instruction.lower()))
+    return [
+        p
+        for p in found
+        if p not in used
+        and p.split()[-1] not in words
+        and not any(u in p for u in used)
+        and not (p.split()[-1] in _PARTS and p.split()[-1] not in said)
+        and not left_alone(p, instruction)
+    ]
 
 
 def read(request: PlanRequest, planner: RulesPlanner) -> tuple[list[dict], list[str]] | str | None:
@@ -167,7 +199,7 @@ def read(request: PlanRequest, planner: RulesPlanner) -> tuple[list[dict], list[
     text = goals[k][0].text
     if p < THRESHOLD:
         return f"its best guess, {text!r}, had probability {p:.2f} (below {THRESHOLD})"
-    left = _unused(goals[k][0].clauses, list(request.scene.keypoints))
+    left = _unused(goals[k][0].clauses, list(request.scene.keypoints), request.instruction)
     if left:  # a part of the request no step would carry out: never a partial plan
         return f"its best guess, {text!r}, leaves out {', '.join(map(repr, left))}"
     return goals[k][1], [f"read by the learned reader as {text!r} (probability {p:.2f} among {len(goals)} goals)"]

@@ -253,11 +253,16 @@ def _cleft(text: str) -> str:
     return text
 
 
+def _joined(text: str) -> str:
+    """A superlative of place said with a hyphen as one word: "right-most" is "rightmost"."""
+    return re.sub(r"\b(left|right|front|back|top|bottom|upper|lower|rear|fore)[- ]most\b", r"\1most", text)
+
+
 def restructured(instruction: str) -> str:
     """The instruction said plainly and in the order its steps happen (see the module's docstring); the instruction
     itself when none of these applies."""
     text = re.sub(r"\s+", " ", instruction.strip().lower().replace("\u2019", "'"))
-    out = text
+    out = _joined(text)
     for step in (_header, _former_latter, _cleft, _temporal, _context, _contrast, sequenced):
         out = step(out)
     return instruction if out == text else out

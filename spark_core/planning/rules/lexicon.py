@@ -97,7 +97,7 @@ VERBS: dict[str, tuple[str, ...]] = {
     "close": ("close", "shut", "push closed", "push shut", "slam", "slam shut"),
     "turn_on": ("turn on", "switch on", "ignite", "start", "light", "fire up", "power on", "activate", "heat up"),
     "turn_off": ("turn off", "switch off", "power off", "shut off", "deactivate", "extinguish", "shut down", "kill"),
-    "pour": ("pour", "empty", "tip", "dump"),
+    "pour": ("pour", "empty", "tip", "dump", "tilt"),
     "scrub": ("scrub", "wipe", "clean", "scour", "wash", "rub", "polish", "buff", "mop"),
     "sort": ("sort",),
 }
@@ -176,6 +176,8 @@ FILLERS = (
 )
 # Things that hold other things: "to the basket" means into it; "basket: the butter" puts the butter in it.
 CONTAINERS = ("bowl", "basket", "tray", "drawer", "box", "bin", "mug", "cup", "pot", "hamper", "jar", "crate", "sink")
+# Kinds that are solid through: nothing goes inside one ("put the basket inside the green block").
+SOLIDS = ("block", "cube", "brick", "ball", "butter", "hammer")
 # Flat regions an object is pushed into rather than carried to.
 REGIONS = ("area", "zone", "region", "square", "spot", "mark")
 # Surfaces the objects stand on anyway: "off the table" or "from the table" says nothing about which object.

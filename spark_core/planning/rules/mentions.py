@@ -39,13 +39,17 @@ _NP_STOP = frozenset(
     + ["should", "must", "will", "would", "can", "goes", "go", "belongs", "belong", "needs", "sits", "stays", "not"]
     + ["up", "down", "out", "away", "back", "please", "too", "first", "again", "instead", "rather", "than", "as"]
     + ["if", "when", "while", "without", "until", "before", "after", "it", "them", "there", "here", "where"]
+    + ["per", "each"]
 )
 # Words that describe a thing without naming it: a phrase is about a thing the clauses name when it shares a noun.
 ATTRIBUTES = frozenset([*BASE_COLOURS, *COLOUR_SYNONYMS, *MATERIALS, *SHAPES, *SIZES])
 _DET = re.compile(r"\b(?:the|a|an|some|my|your|this|these|those) ")
 # The robot's own parts, said to place a thing relative to the robot ("further from the robot's base", "on your
 # left"): no thing in the scene, nothing perception could look for.
-ROBOT_PARTS = frozenset(["base", "arm", "arms", "gripper", "hand", "hands", "wrist", "camera", "body", "claw", "end"])
+ROBOT_PARTS = frozenset(
+    ["base", "arm", "arms", "gripper", "hand", "hands", "wrist", "camera", "body", "claw", "end", "grip", "grasp"]
+    + ["fingers", "finger", "jaws", "pincers"]
+)
 _ROBOT_OWNERS = frozenset(["robot", "robot's", "robots", "your", "my", "its"])
 
 

@@ -605,6 +605,7 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
             # "the beads in the mug in the bowl": where they are said first, where they go last
             into = (rest[: later[-1].start()].strip(), rest[later[-1].end() :].strip())
         what, target = into if into else (rest, None)
+        what = re.sub(r"(?<=\w) (?:out|over|away)$", "", what)  # "tip them out into the bowl": the verb's particle
         src = _split_on(what, FROM)
         obj, source = src if src else (what, None)
         source = noun_phrase(source) if source else _holder(obj) or noun_phrase(obj)
@@ -660,7 +661,8 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
         # destination said by its colour or size, "one" is of that destination's kind
         if last_target and not is_pronoun(last_target) and set(last_target.split()[:-1]) & _ATTRIBUTE_WORDS:
             kind = last_target
-        target = "it" if target in ("that", "this") else _elided_noun(target, kind)  # "on top of that": a pronoun
+        # "on top of that (one)": a pronoun, for the clause before to resolve
+        target = "it" if target in ("that", "this", "that one", "this one") else _elided_noun(target, kind)
         # "the plate that sits on the cookie box": a destination located by what it rests on reads as an object does
         located = _PLACED.search(target) or (
             is_pronoun(said) and re.search(r"\s(?:on top of|on|in|inside|next to|beside|near|by)\s", target)

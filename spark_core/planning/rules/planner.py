@@ -16,9 +16,11 @@ from .afford import Reading, unplaced_variety
 from .afford import best as afforded
 from .discourse import restructured
 from .kinds import modifier_for_thing, other_contents, other_variety
-from .lexicon import CLEANERS, CONTAINERS, CONTENTS, REGIONS
+from .lexicon import CLEANERS, CONTAINERS, CONTENTS, REGIONS, SOLIDS
 from .mentions import clause_mentions, foreign_modifiers, read_past, stray_nouns
 from .parse import Clause, ParseError, is_pronoun, parse_instruction
+from .phrases import singular
+from .qualify import bare_rank
 from .reader import describe, readings, unused_mentions
 from .spelling import corrected
 from .stepwise import steps
@@ -30,6 +32,12 @@ DIR_VECTORS = {"forward": (1.0, 0.0), "backward": (-1.0, 0.0), "left": (0.0, 1.0
 
 class CannotPlan(ValueError):
     pass
+
+
+class Impossible(CannotPlan):
+    """What the sentence asks, read as said, cannot be done (a thing put inside one that is solid or too small, a
+    knob on a thing without one, the second of one thing): no other reading of it is tried in its place, so "put
+    the basket inside the block" is never read as the block into the basket."""
 
 
 def _prim(name: str, **params) -> dict:
@@ -127,6 +135,8 @@ class RulesPlanner:
                 read = self._read_without_order(request)
                 if read is not None:
                     children, understood = read
+        except Impossible as e:
+            return self._refusal(e, understood, t0)
         except (ParseError, CannotPlan) as e:
             read = self._read_without_order(request)
             if read is None:
@@ -263,6 +273,13 @@ class RulesPlanner:
                 f"found in the scene: {seen})"
             )
         _check_kinds(said, clauses, request.scene.inventory, understood, seen)
+        for phrase in {p for c in clauses for p in (c.obj, c.target, c.source, c.tool) if p}:
+            kind = bare_rank(phrase)  # "the second plate" where perception singled out the one plate
+            if kind and phrase in scene and kind in scene and _same_detection(scene[phrase], scene[kind]):
+                raise Impossible(
+                    f"could not find {phrase!r} in the scene: perception found one {kind!r} only "
+                    f"(understood: {understood}; found in the scene: {seen})"
+                )
         out: list[dict] = []
         last_object: str | None = None
         last_container: str | None = None
@@ -313,6 +330,8 @@ class RulesPlanner:
                     )
                 if c.relation == "near":
                     raise CannotPlan(f"{c.text!r}: I can put things on or in something, not next to it")
+                if c.relation == "in":
+                    _check_fits(c.text, o, t, scene, f"(understood: {understood}; found in the scene: {seen})")
                 pick = [] if held == o else [_prim("pick", keypoint_label=o)]  # "pick X and place it": X is in hand
                 if c.action == "stack":
                     out += (
@@ -343,6 +362,13 @@ class RulesPlanner:
                     raise CannotPlan(
                         f"cannot turn {obj!r} {c.action[5:]}: perception did not find it with a knob "
                         f"(looked for {obj!r} and {knob!r}; found: {seen})"
+                    )
+                itself_a_knob = bool({"knob", "dial"} & set(obj.split()))  # "the knob on the stove"
+                if knob != obj and not itself_a_knob and obj in scene and _same_detection(scene[knob], scene[obj]):
+                    # "turn on the red block": what perception took for its knob is the thing itself
+                    raise Impossible(
+                        f"cannot turn {obj!r} {c.action[5:]}: perception found no knob on it, only {obj!r} itself "
+                        f"(looked for {knob!r}; found: {seen})"
                     )
                 out.append(_prim("turn_knob", keypoint_label=knob, angle=90.0 if c.action == "turn_on" else -90.0))
             elif c.action == "pour":
@@ -519,7 +545,9 @@ def _the_one(words: tuple[str, ...], besides: str, scene) -> str | None:
 
 def _drawer_step(action: str, o: str, scene, seen: str) -> dict:
     """open_drawer / close_drawer by the handle perception found on `o` (refused when there is none on it)."""
-    handle = next((h for h in (f"{o} handle", "drawer handle" if "drawer" in o else "") if h in scene), None)
+    said = [h for h in (f"{o} handle", "drawer handle" if "drawer" in o.split() else "") if h in scene]
+    # a handle phrase perception took for the drawer itself is passed over for one it found apart from it
+    handle = next((h for h in said if not _same_detection(scene[h], scene[o])), said[0] if said else None)
     gap_m = np.linalg.norm(scene[handle].position_m - scene[o].position_m) if handle else 0.0
     if handle and _same_detection(scene[handle], scene[o]):
         raise CannotPlan(
@@ -667,6 +695,25 @@ def _effect(steps: list[dict], scene) -> tuple:
             )
         )
     return tuple(out)
+
+
+# How much wider than a container, across its narrowest side, a thing may look and still go inside it: perception's
+# extents are loose (a mask's spill, a bowl seen at a slant), so only a thing clearly too big is refused.
+FITS_MARGIN = 1.2
+
+
+def _check_fits(text: str, o: str, t: str, scene, tail: str) -> None:
+    """Refused: putting a thing inside one that is solid through ("inside the green block"), or inside one
+    perception sees as clearly narrower than it ("the basket into the butter")."""
+    kind = singular(re.split(r"\s+(?:not|on|in|inside|next to|beside|near|between|under|at|from)\s+", t)[0].split()[-1])
+    if kind in SOLIDS:
+        raise Impossible(f"{text!r}: nothing goes inside {t!r}: a {kind} is solid, it holds nothing {tail}")
+    thing_m = float(np.min(scene[o].extent_m[:2]))
+    room_m = float(np.max(scene[t].extent_m[:2]))
+    if room_m > 0 and thing_m > FITS_MARGIN * room_m:
+        raise Impossible(
+            f"{text!r}: {o!r} ({thing_m:.2f} m across) does not fit inside {t!r} ({room_m:.2f} m across) {tail}"
+        )
 
 
 def _same_detection(a, b) -> bool:

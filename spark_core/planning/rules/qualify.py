@@ -56,6 +56,15 @@ EXTREMES = {
     "bottommost": "bottom",
     "leftmost": "leftmost",
     "rightmost": "rightmost",
+    # size, as perception's qualifiers "largest" and "smallest" (perception/qualifiers.py)
+    "bigger": "largest",
+    "larger": "largest",
+    "biggest": "largest",
+    "largest": "largest",
+    "smaller": "smallest",
+    "smallest": "smallest",
+    "tinier": "smallest",
+    "tiniest": "smallest",
 }
 _EXTREME = "|".join(EXTREMES)
 _QUALIFIER_WORDS = frozenset([*EXTREMES.values(), *EXTREMES, "middle", "centre", "center", "top", "bottom"])
@@ -530,3 +539,12 @@ def neither_nor(text: str) -> str:
         third,
         text,
     )
+
+
+def bare_rank(phrase: str) -> str | None:
+    """The kind a rank said without a side counts among ("second plate" -> "plate"; not "second leftmost bowl",
+    which counts from the left): the scene must hold that many of it. None for any other phrase."""
+    first, _, rest = phrase.partition(" ")
+    if RANKS.get(first, 1) < 2 or not rest or rest.split()[0] in _QUALIFIER_WORDS:
+        return None
+    return rest

@@ -144,7 +144,7 @@ _GRIP = re.compile(r"\s+by (?:its|the|their) (?:two |both )?(?:handles?|grips?|r
 _NOT_THERE = re.compile(
     r",\s*(?:and |but )?not (?:on|in|into|onto|inside|on top of|next to|beside|near) (?:the|a|an) .*$"
 )
-_PURPOSE = re.compile(r"(?:\s*,\s*|\s+)(?:so(?: that)?|in order that|until)\s+(.*)$")
+_PURPOSE = re.compile(r"(?:\s*,\s*|\s+)(?:so(?: that)?|in order that|until|till)\s+(.*)$")
 _PURPOSE_PLACE = re.compile(
     r"\b(?:sits?|is|are|ends? up|rests?|lands?|stays?|goes|fall|falls|drops?)\s+"
     r"(in front of|next to|beside|inside|into|in|on top of|onto|on)\s+(.+)$"
@@ -162,6 +162,8 @@ def sentences(instruction: str) -> list[str]:
     text = instruction.lower().replace("’", "'").strip()
     for short, long in CONTRACTIONS.items():
         text = re.sub(rf"\b{re.escape(short)}", long, text)
+    # "the mug's got beads in it": the mug has them, not whose
+    text = re.sub(r"(\w)'s got\b|\bhas got\b", lambda m: f"{m.group(1) or ''} has".lstrip(), text)
     # an interjection or a turn-taking word said first ("hey, ...", "um ...", "next: ..."): no part of the request
     text = re.sub(
         r"^(?:(?:hey|hi|hello|oi|yo|um+|uh+|hmm+|erm?)(?: there| robot| buddy| mate)?\b[,!.]?\s*|"
@@ -439,6 +441,8 @@ def sentences(instruction: str) -> list[str]:
         text,
     )
     text = re.sub(_LEAVE_ALONE, _left_be, text)
+    # "the bbq sauce into the basket, not the tomato sauce": the thing ruled out is named, and not moved
+    text = re.sub(r",\s*(?:and |but )?not (the|that|this) ([\w' ]+?)(?=\s*(?:[.;!?]|$))", r" ; there is \1 \2", text)
     text = re.sub(r",\s*(?=(?:which|who) (?:is|are)\b)", " ", text)  # "the block, which is on the plate," locates it
     text = re.sub(r"[!?;]+|\.(?=\s|$)", " . ", text)
     text = text.replace("next to", "next_to")  # a relation, not the filler "next"
@@ -453,7 +457,15 @@ def sentences(instruction: str) -> list[str]:
         re.sub(r"^(?:and )?(?:then|after that|afterwards|after which|once that is done|next)\s*,?\s+", "", s)
         for s in out
     ]
+    # "once it is there, put ...": a step done before, said again only to link the next to it
+    out = [re.sub(_DONE_BEFORE, "", s) for s in out]
     return [s for s in out if not _CLOSING.fullmatch(s)]
+
+
+_DONE_BEFORE = re.compile(
+    r"^(?:and )?(?:once|when|after|as soon as) (?:it|that|this|they|those|both) (?:is|are|has been|have been) "
+    r"(?:there|done|in place|placed|down|finished|on it|in it|in there|on there|settled)\s*,?\s+(?:then\s+)?"
+)
 
 
 def _part_purpose(m: re.Match) -> str:
@@ -488,6 +500,8 @@ def _left_be(m: re.Match) -> str:
     lead, verb, thing, stays = m.group(1), m.group(2), m.group(3), m.group(4)
     if verb == "leave" and not stays and _LEFT_SOMEWHERE.search(thing):
         return m.group(0)
+    if lead.strip() in ("and", "but"):  # "switch the stove on and leave the block alone": a sentence of its own
+        lead = "; "
     return f"{lead}there is {thing}"
 
 
@@ -549,11 +563,14 @@ def _purpose(text: str) -> str:
     if not m:
         return text
     main, purpose = text[: m.start()], m.group(1)
+    main = re.sub(r"(?<=\w) (?:over|along|across|around|round)$", "", main)  # "nudge the plate over so ...": a particle
     state = re.fullmatch(
         r"(?:it|they|that|the \w+) (?:comes?|goes|turns?|switches|is|gets?|ends? up) (on|off|open|closed|shut)", purpose
     )
     verb, _, what = main.partition(" ")
-    if state and not starts_with_verb(main) and is_verb(verb) and what:
+    # "turn the knob so it comes on": a turn said with no sense of its own takes the state's
+    unsaid = verb in ("turn", "switch", "flip", "twist") and not re.match(r"(?:on|off)\b", what)
+    if state and (unsaid or not starts_with_verb(main)) and is_verb(verb) and what:
         # a verb the list lacks, with the state it brings about: "twist the knob so it comes on" turns it on
         return f"{ACTION_WORDS[dict(STATE_ACTIONS)[state.group(1)]]} {what}"
     place = _PURPOSE_PLACE.search(purpose)
@@ -811,8 +828,8 @@ _ARMS = re.compile(r"\b(?:both|two|each|either|one|second|other|left|right) (?:a
 _TWO_HANDLES = re.compile(r"\b(?:both|two|each) (?:arms?|hands?|handles?)\b|\bhandles?\b[^.]*\beach side\b")
 _LIFT = re.compile(r"\b(?:lift|lifts|lifted|raise|raised|hoist|heave|hold up|pick up|pick it up|pick them up|up)\b")
 _GIVE = re.compile(
-    r"\b(?:hand|hands|pass|passes|give|transfer|move|switch|swap|shift)\b[^.]*?\b(?:to|into|over to|across to|"
-    r"across into) (?:the |your )?(other|left|right|second) (?:one|arm|hand|gripper)\b|"
+    r"\b(?:hand|hands|pass|passes|give|gives|transfer|transfers|move|switch|swap|shift)\b[^.]*?"
+    r"\b(?:to|into|over to|across to|across into) (?:the |your )?(other|left|right|second) (?:one|arm|hand|gripper)\b|"
     r"\bso (?:that )?the (other|left|right|second) (?:arm|hand|gripper) (?:ends up holding|holds|has|takes|gets)\b"
 )
 # Any other step: a two-arm reading is only for an instruction that says nothing else to do.
@@ -885,13 +902,18 @@ def imperatives(instruction: str) -> list[str]:
                 )
         # "the mug has beads in it, pour them ...": a container named with what it holds, then acted on (a
         # substance it is said to hold stays said: the scene must show it, rules/kinds.py)
+        # ("the mug has beads in it. tip them out into the bowl": the same, said as a sentence of its own)
+        acted_on = (
+            i < len(said) - 1 and bool(re.search(r"\b(?:it|them)\b", said[i + 1])) and starts_with_verb(said[i + 1])
+        )
         s = re.sub(
             r"^((?:the|a|an) [\w ]+?) (?:has|holds|contains|is full of) (?:some |the )?(?:"
             + "|".join(c for c in CONTENTS if c not in SUBSTANCES)
-            + r")(?: in (?:it|there))?\s*,\s*(?=\w)",
+            + r")(?: in (?:it|there))?(?:\s*,\s*(?=\w)"
+            + ("|$)" if acted_on else ")"),
             r"there is \1, ",
             s,
-        )
+        ).rstrip(", ")
         # "see the red block? put it on the plate": pointing a thing out names it for what follows
         s = re.sub(
             r"^(?:do you |can you )?(?:see|notice|spot|you see|you can see|you will see|you will find) "
