@@ -36,7 +36,7 @@ class CannotPlan(ValueError):
 
 class Impossible(CannotPlan):
     """What the sentence asks, read as said, cannot be done (a thing put inside one that is solid or too small, a
-    knob on a thing without one, the second of one thing): no other reading of it is tried in its place, so "put
+    solid thing turned on, the second of one thing): no other reading of it is tried in its place, so "put
     the basket inside the block" is never read as the block into the basket."""
 
 
@@ -363,12 +363,10 @@ class RulesPlanner:
                         f"cannot turn {obj!r} {c.action[5:]}: perception did not find it with a knob "
                         f"(looked for {obj!r} and {knob!r}; found: {seen})"
                     )
-                itself_a_knob = bool({"knob", "dial"} & set(obj.split()))  # "the knob on the stove"
-                if knob != obj and not itself_a_knob and obj in scene and _same_detection(scene[knob], scene[obj]):
-                    # "turn on the red block": what perception took for its knob is the thing itself
+                if _kind(obj) in SOLIDS:  # "turn on the red block": solid through, nothing on it turns
                     raise Impossible(
-                        f"cannot turn {obj!r} {c.action[5:]}: perception found no knob on it, only {obj!r} itself "
-                        f"(looked for {knob!r}; found: {seen})"
+                        f"cannot turn {obj!r} {c.action[5:]}: a {_kind(obj)} has no knob or switch (understood: "
+                        f"{understood}; found in the scene: {seen})"
                     )
                 out.append(_prim("turn_knob", keypoint_label=knob, angle=90.0 if c.action == "turn_on" else -90.0))
             elif c.action == "pour":
@@ -702,10 +700,17 @@ def _effect(steps: list[dict], scene) -> tuple:
 FITS_MARGIN = 1.2
 
 
+def _kind(phrase: str) -> str:
+    """The head noun, singular, before any relation or negation: "green block next to bowl" -> "block"."""
+    return singular(
+        re.split(r"\s+(?:not|on|in|inside|next to|beside|near|between|under|at|from)\s+", phrase)[0].split()[-1]
+    )
+
+
 def _check_fits(text: str, o: str, t: str, scene, tail: str) -> None:
     """Refused: putting a thing inside one that is solid through ("inside the green block"), or inside one
     perception sees as clearly narrower than it ("the basket into the butter")."""
-    kind = singular(re.split(r"\s+(?:not|on|in|inside|next to|beside|near|between|under|at|from)\s+", t)[0].split()[-1])
+    kind = _kind(t)
     if kind in SOLIDS:
         raise Impossible(f"{text!r}: nothing goes inside {t!r}: a {kind} is solid, it holds nothing {tail}")
     thing_m = float(np.min(scene[o].extent_m[:2]))
