@@ -168,6 +168,33 @@ def test_wordings_of_round_twenty_three(said, read):
     assert _read(said) == read
 
 
+@pytest.mark.parametrize(
+    "said, read",
+    [
+        ("lime cube on top of the grey one, not the other way round", [("put", "lime cube", "on", "grey cube")]),
+        ("stack the lime cube onto the one that isn't lime", [("stack", "lime cube", "on", "cube not lime")]),
+        (
+            "pour the beads from the tin on your right into the one on your left",
+            [("pour", "beads", None, "leftmost tin")],
+        ),
+        (
+            "the teacup has beads. get them into the tureen by pouring",
+            [("mention", "teacup", None, None), ("pour", "teacup", None, "tureen")],
+        ),
+    ],
+)
+def test_wordings_of_round_twenty_three_second_pass(said, read):
+    assert _read(said) == read
+
+
 def test_per_and_each_name_no_thing():
     said = "grab the pot's two handles, one per arm, and raise it"
     assert "per" not in stray_nouns(said, parse_instruction(said))
+
+
+def test_a_carry_over_the_bowl_just_before_pouring_into_it_is_the_pours_approach():
+    scene = view(teacup=(0.5, 0.1, 0.04), tureen=(0.5, -0.1, 0.04))
+    result = plan("pick the teacup up, carry it over the tureen and tip it so the beads fall into the tureen", scene)
+    assert result.ok, result.error
+    assert leaves(result) == leaves(plan("pour the beads from the teacup into the tureen", scene))
+    assert leaves(plan("put the teacup on the tureen", scene)) == [("pick", "teacup"), ("place", "tureen")]

@@ -609,6 +609,8 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
         src = _split_on(what, FROM)
         obj, source = src if src else (what, None)
         source = noun_phrase(source) if source else _holder(obj) or noun_phrase(obj)
+        if target and source:  # "from the mug on your right into the one on your left": of the source's kind
+            target = _elided_noun(target, source)
         return Clause(
             action,
             obj=noun_phrase(obj) if obj else None,
@@ -691,11 +693,16 @@ def _holder(phrase: str) -> str | None:
 
 def _elided_noun(target: str, obj: str) -> str:
     """ "one" stands for the noun just named: "put the farther block onto the nearer one" -> "... nearest block";
-    "stack the red block on the blue one" -> "blue block"."""
+    "stack the red block on the blue one" -> "blue block"; "onto the one that isn't red" -> "block not red"."""
+    head = re.split(r" not ", split_relation(obj)[0])[0].split() if obj else []
+    said = re.fullmatch(
+        r"(?:the )?one ((?:that|which) .+|(?:on|to|at) (?:the |your )?(?:left|right|back|front)\b.*)", target
+    )
+    if said and head:  # "onto the one that isn't red", "into the one on your left": one of the kind just named
+        return object_phrase(f"{head[-1]} {said.group(1)}")
     m = re.fullmatch(r"(.*\S)\s+ones?", target)
     if not m or not obj or m.group(1) in ("the", "that", "this", "the other", "other"):
         return target
-    head = re.split(r" not ", split_relation(obj)[0])[0].split()
     return f"{m.group(1)} {head[-1]}" if head else target
 
 

@@ -86,7 +86,7 @@ def comparative(text: str) -> str:
     m = re.fullmatch(r"(\w+) of (?:the )?(?:two|three|both|all) (.+)", text)
     if m and m.group(1) in COMPARATIVES:
         return f"{COMPARATIVES[m.group(1)]} {' '.join(singular(w) for w in m.group(2).split())}"
-    m = re.fullmatch(r"(.+?) (?:on|to|at) (?:the )?(left|right|back|front)(?: side)?", text)
+    m = re.fullmatch(r"(.+?) (?:on|to|at) (?:the |your )?(left|right|back|front)(?: side)?", text)
     if m:  # "the bowl on the left" -> "leftmost bowl"; "the mug at the back" -> "farthest mug"
         word = {"left": "leftmost", "right": "rightmost", "back": "farthest", "front": "nearest"}[m.group(2)]
         return f"{word} {m.group(1)}"

@@ -292,6 +292,7 @@ class RulesPlanner:
             target = (last_container or last_object) if is_pronoun(c.target) else c.target
             if target is None and c.relation == "in" and c.text.rstrip().endswith(("inside", "in", "into")):
                 target = last_container  # "open the drawer and put the bowl inside"
+            approach = c.action == "put" and _poured_next(obj, target, clauses[_i + 1 : _i + 2])
             if c.action == "mention":  # "there's a cup on the table; put it ...": only names the cup
                 pass
             elif c.action == "put" and target is None and put_last == obj:
@@ -315,6 +316,8 @@ class RulesPlanner:
                 o = need(obj, "object", c)
                 inside = re.search(r"\b(in|inside)\b", o) is not None  # out of a drawer or a box: clear its walls
                 out.append(_prim("pick", keypoint_label=o, **({"lift_height": 0.2} if inside else {})))
+            elif approach:
+                pass  # "bring it over the bowl and tip it into the bowl": the carry is the pour's approach
             elif c.action == "put" and c.relation == "in" and _opened_later(target, clauses[_i + 1 :], last_object):
                 pass  # "the cheese goes in the top drawer, so open it and put it inside": the goal, then its steps
             elif c.action in ("put", "sort", "stack"):
@@ -402,7 +405,7 @@ class RulesPlanner:
                         _prim("release"),
                     ]
             put_last = obj if c.action in ("put", "stack") and target else None
-            held = obj if c.action == "pick" else held if c.action == "mention" else None
+            held = obj if c.action == "pick" else held if c.action == "mention" or approach else None
             last_object = obj or last_object
         if together:
             raise CannotPlan(f"lifting {together[0]!r} with both arms needs a second handle for the other arm")
@@ -569,6 +572,14 @@ def _drawer_step(action: str, o: str, scene, seen: str) -> dict:
 def _among(label: str, labels: set[str], scene) -> bool:
     """`label` is one of `labels`, by name or as the same detection ("cabinet drawer" opened, "the drawer" filled)."""
     return label in labels or any(x in scene and _same_detection(scene[x], scene[label]) for x in labels)
+
+
+def _poured_next(obj: str | None, target: str | None, after: list[Clause]) -> bool:
+    """The next clause pours the thing just carried (by name or as "it") into where it was carried."""
+    return bool(obj and target) and any(
+        c.action == "pour" and c.target == target and (c.obj == obj or c.source == obj or is_pronoun(c.obj))
+        for c in after
+    )
 
 
 def _opened_later(target: str | None, later: list[Clause], last_object: str | None) -> bool:

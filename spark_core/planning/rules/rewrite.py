@@ -441,6 +441,15 @@ def sentences(instruction: str) -> list[str]:
         text,
     )
     text = re.sub(_LEAVE_ALONE, _left_be, text)
+    # "red on blue, not the other way round": the order said again, no thing
+    text = re.sub(r",?\s*(?:and |but )?not (?:the other way|vice versa)(?: a?round)?(?=\s*(?:[.;!?,]|$))", "", text)
+    # "get them into the bowl by pouring": a pour said by its manner
+    text = re.sub(
+        r"\b(?:get|put|move|transfer|empty|send) ((?:the |them|it)[\w ]*?) (?:into|in|onto|on) ([\w ]+?),? by "
+        r"(?:pouring|tipping|tilting)(?: (?:it|them))?(?: out)?\b",
+        r"pour \1 into \2",
+        text,
+    )
     # "the bbq sauce into the basket, not the tomato sauce": the thing ruled out is named, and not moved
     text = re.sub(r",\s*(?:and |but )?not (the|that|this) ([\w' ]+?)(?=\s*(?:[.;!?]|$))", r" ; there is \1 \2", text)
     text = re.sub(r",\s*(?=(?:which|who) (?:is|are)\b)", " ", text)  # "the block, which is on the plate," locates it
@@ -578,7 +587,9 @@ def _purpose(text: str) -> str:
     if place and subject and not starts_with_verb(main) and is_verb(verb):
         # "swap them round so the red cube ends up on the green one": a verb the list lacks, and the goal it serves
         return f"put {subject.group(1)} {'in' if place.group(1) in ('in', 'into', 'inside') else 'on'} {place.group(2)}"
-    if place and starts_with_verb(main) and not _DESTINATION.search(main.split(" ", 1)[-1]):
+    # (of the last step said: "pick the mug up, bring it over the bowl and tip it so the beads fall into the bowl")
+    last = re.split(r"\s*,\s*(?:and |then )?|\s+and (?:then )?|\s+then\s+", main)[-1]
+    if place and starts_with_verb(last) and not _DESTINATION.search(last.split(" ", 1)[-1]):
         prep = {"in front of": "to the front of", "next to": "next to", "beside": "next to"}.get(place.group(1), "into")
         if place.group(1) in ("on", "onto", "on top of"):
             prep = "onto"
