@@ -24,6 +24,9 @@ COMPARATIVES = {
     "lower": "bottom",
     "higher": "top",
     "taller": "top",
+    "bigger": "largest",
+    "larger": "largest",
+    "smaller": "smallest",
 }
 LOCATORS = ("between", "next to", "beside", "near", "by", "on top of", "on", "in", "inside", "at", "from", "under")
 _PARTICIPLE = re.compile(

@@ -94,7 +94,8 @@ _TRAILING = re.compile(
     r"nice and(?: (?:slow|easy|gentle|steady|gently|slowly))?(?= so\b|\s*$)|"
     # how to do it or a check on the result, said after the action ("..., making sure it ends up inside",
     # "..., taking care not to tip it", "... without knocking anything over", "... rather than on the rim")
-    r"(?:while |by )?(?:making sure|ensuring|checking|being careful|taking care|careful|trying|try to|try and|without|"
+    r"(?:while |by )?(?:making sure|ensuring|checking|being careful|taking care|careful|trying|try to|try and|"
+    r"try not to|without|"
     r"rather than|"
     r"instead of|as (?:gently|carefully|slowly) as)|"
     # the request closed ("..., blue block to the yellow tray, done")
@@ -114,6 +115,7 @@ _TRAILING = re.compile(
     # a step that only takes the arm away, or a don't: no thing moves ("... and then go back to where you
     # started", "... and move your arm out of the way", "... and do not squash it")
     r"(?:go|come|head|return|get) (?:back|home)\b|move (?:your|the) (?:arm|gripper|hand)\b|(?:do not|never) |"
+    r"(?:send|bring|take|move|return) (?:the |your )?(?:arm|robot|gripper|hand) (?:back )?(?:home|away|back)\b|"
     # the goal's own name after it ("..., that is the end state i am after", "not the other way round")
     r"that is the (?:end state|final state|result|outcome|state|arrangement|one|target|aim|idea|goal)\b|"
     r"(?:and )?not the other way\b|that is what (?:i|we) (?:am|are) after\b|"
@@ -441,6 +443,9 @@ def sentences(instruction: str) -> list[str]:
         text,
     )
     text = re.sub(_LEAVE_ALONE, _left_be, text)
+    # "take hold of the handle": grab it; "straight onto the plate": the place, said directly
+    text = re.sub(r"\b(?:take|get|grab|catch) (?:a )?hold of\b", "grab", text)
+    text = re.sub(r"\b(?:straight|directly|right) (?=(?:onto|into|on top of|on|in|inside)\b)", "", text)
     # "red on blue, not the other way round": the order said again, no thing
     text = re.sub(r",?\s*(?:and |but )?not (?:the other way|vice versa)(?: a?round)?(?=\s*(?:[.;!?,]|$))", "", text)
     # "get them into the bowl by pouring": a pour said by its manner
