@@ -187,6 +187,27 @@ def test_wordings_of_round_twenty_three_second_pass(said, read):
     assert _read(said) == read
 
 
+@pytest.mark.parametrize(
+    "said, read",
+    [
+        (
+            "don't move the grey cube. just put the other one on top of it",
+            [("mention", "grey cube", None, None), ("put", "cube not grey", "on", "grey cube")],
+        ),
+        (
+            "ignore the bowl on the hob. just put the other one on the plate",
+            [("put", "bowl not on hob", "on", "plate")],
+        ),
+        (
+            "there are beads in the teacup. get them into the tureen by pouring",
+            [("mention", "teacup", None, None), ("pour", "teacup", None, "tureen")],
+        ),
+    ],
+)
+def test_a_thing_left_alone_in_a_sentence_of_its_own(said, read):
+    assert _read(said) == read
+
+
 def test_per_and_each_name_no_thing():
     said = "grab the pot's two handles, one per arm, and raise it"
     assert "per" not in stray_nouns(said, parse_instruction(said))
@@ -198,3 +219,13 @@ def test_a_carry_over_the_bowl_just_before_pouring_into_it_is_the_pours_approach
     assert result.ok, result.error
     assert leaves(result) == leaves(plan("pour the beads from the teacup into the tureen", scene))
     assert leaves(plan("put the teacup on the tureen", scene)) == [("pick", "teacup"), ("place", "tureen")]
+
+
+@pytest.mark.parametrize(
+    "said", ["put the hob on the plate", "pick up the cabinet", "shove the sink next to the plate"]
+)
+def test_a_thing_fixed_in_place_is_never_carried_and_never_read_another_way(said):
+    scene = view(hob=(0.5, 0.1, 0.04), plate=(0.5, -0.1, 0.01), cabinet=(0.7, 0.0, 0.2), sink=(0.6, 0.3, 0.1))
+    result = plan(said, scene)
+    assert not result.ok and "is fixed in place" in result.error
+    assert plan("put the plate on the hob", scene).ok

@@ -16,7 +16,7 @@ from .afford import Reading, unplaced_variety
 from .afford import best as afforded
 from .discourse import restructured
 from .kinds import modifier_for_thing, other_contents, other_variety
-from .lexicon import CLEANERS, CONTAINERS, CONTENTS, REGIONS, SOLIDS
+from .lexicon import CLEANERS, CONTAINERS, CONTENTS, FIXED, REGIONS, SOLIDS
 from .mentions import clause_mentions, foreign_modifiers, read_past, stray_nouns
 from .parse import Clause, ParseError, is_pronoun, parse_instruction
 from .phrases import singular
@@ -278,6 +278,13 @@ class RulesPlanner:
             if kind and phrase in scene and kind in scene and _same_detection(scene[phrase], scene[kind]):
                 raise Impossible(
                     f"could not find {phrase!r} in the scene: perception found one {kind!r} only "
+                    f"(understood: {understood}; found in the scene: {seen})"
+                )
+        for c in clauses:  # "put the stove on the plate": what is fixed in place is no thing to carry
+            moved = c.obj if c.action in ("pick", "put", "stack", "push", "sort") else None
+            if moved and not is_pronoun(moved) and _kind(moved) in FIXED and not c.together and not c.to_arm:
+                raise Impossible(
+                    f"{c.text!r}: {moved!r} is fixed in place (a {_kind(moved)} is not carried, pushed or lifted) "
                     f"(understood: {understood}; found in the scene: {seen})"
                 )
         out: list[dict] = []

@@ -276,13 +276,13 @@ def negations(text: str) -> str:
         rf"^(?:leave|ignore|skip|do not touch|do not move|forget|never mind) the ({NP})"
         rf"(?: (?!alone\b|be\b|where it|in place\b|as it is\b)([^,;.]+?))?"
         rf"(?: alone| be| where it is| in place| as it is| where it stands)?[,;.]? (?:and |but |then )?"
-        rf"((?:(?:i|we) (?:want|need|would like) |\w+(?: up)? )?)the {_OTHER} (one|{NP})\b",
+        rf"(?:just |simply |only )?((?:(?:i|we) (?:want|need|would like) |\w+(?: up)? )?)the {_OTHER} (one|{NP})\b",
         _left_alone,
         text,
     )
     # "leave the bowl on the cabinet alone and put the other bowl ...": the one left alone is ruled out
     text = re.sub(
-        rf"^(?:leave|ignore|skip|do not touch|do not move|forget|never mind) the ({NP}) ([^,;]+?)"
+        rf"^(?:leave|ignore|skip|do not touch|do not move|forget|never mind) the ({NP}) ([^,;.]+?)"
         rf"(?: alone| be| where it is| in place| as it is)?[,;]? (?:and |but |then )?(\w+(?: up)?) "
         rf"the {_OTHER} (?:one|{NP})\b",
         r"\3 the \1 not \2",
@@ -401,6 +401,8 @@ def _left_alone(m: re.Match) -> str:
     ruled = _ruled_out(where) if where else " ".join(words.get(w, w) for w in left[:-1] if w not in kind.split())
     if not ruled:
         return m.group(0)
+    if re.search(r"\b(?:it|them)\b", m.string[m.end() :]):  # "... on top of it": the one left alone, named first
+        return f"there is the {' '.join([*left, where]).strip()}, {verb}the {kind} not {ruled}"
     return f"{verb}the {kind} not {ruled}"
 
 

@@ -930,6 +930,14 @@ def imperatives(instruction: str) -> list[str]:
             r"there is \1, ",
             s,
         ).rstrip(", ")
+        if acted_on:  # "there are beads in the mug. tip them out ...": the holder is what is named, then poured
+            s = re.sub(
+                r"^there (?:are|is) (?:some |the |a few )?(?:"
+                + "|".join(c for c in CONTENTS if c not in SUBSTANCES)
+                + r") (?:in|inside) ((?:the|a|an) [\w ]+)$",
+                r"there is \1",
+                s,
+            )
         # "see the red block? put it on the plate": pointing a thing out names it for what follows
         s = re.sub(
             r"^(?:do you |can you )?(?:see|notice|spot|you see|you can see|you will see|you will find) "
