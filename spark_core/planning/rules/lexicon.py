@@ -178,8 +178,8 @@ FILLERS = (
 CONTAINERS = ("bowl", "basket", "tray", "drawer", "box", "bin", "mug", "cup", "pot", "hamper", "jar", "crate", "sink")
 # Kinds fixed in place, or too big for one arm to carry: never the thing picked, carried, pushed or poured ("put
 # the stove on the plate"), only a place or what is worked (a drawer opened, a knob turned).
-FIXED = ("cabinet", "stove", "table", "counter", "shelf", "sink", "fridge", "oven", "microwave", "cupboard", "drawer")
-FIXED += ("dishwasher", "wall", "floor", "rack", "hob", "burner", "cooktop", "cooker")
+FIXED: tuple[str, ...] = ("cabinet", "stove", "table", "counter", "shelf", "sink", "fridge", "oven", "microwave")
+FIXED += ("cupboard", "drawer", "dishwasher", "wall", "floor", "rack", "hob", "burner", "cooktop", "cooker")
 # Kinds that are solid through: nothing goes inside one ("put the basket inside the green block").
 SOLIDS = ("block", "cube", "brick", "ball", "butter", "hammer")
 # Flat regions an object is pushed into rather than carried to.
