@@ -229,3 +229,31 @@ def test_a_thing_fixed_in_place_is_never_carried_and_never_read_another_way(said
     result = plan(said, scene)
     assert not result.ok and "is fixed in place" in result.error
     assert plan("put the plate on the hob", scene).ok
+
+
+@pytest.mark.parametrize(
+    "said, read",
+    [
+        (
+            "the drawer on the cabinet is open; close it",
+            [("mention", "drawer on cabinet", None, None), ("close", "drawer on cabinet", None, None)],
+        ),
+        ("the hob is off. turn it on", [("mention", "hob", None, None), ("turn_on", "hob", None, None)]),
+        (
+            "the drawer should be open. then put the lime cube in it",
+            [("open", "drawer", None, None), ("put", "lime cube", "in", "drawer")],
+        ),
+    ],
+)
+def test_the_state_a_thing_is_in_before_a_request_describes_it(said, read):
+    assert _read(said) == read
+
+
+def test_a_drawer_worked_by_the_handle_said_and_the_arm_sent_home_names_no_thing():
+    scene = view(cabinet=(0.7, 0.0, 0.2), drawer_handle=(0.55, 0.0, 0.1), tin=(0.5, 0.2, 0.03), plate=(0.5, -0.2, 0.01))
+    result = plan("go over to the cabinet, take hold of the drawer handle and push it shut", scene)
+    assert result.ok, result.error
+    assert leaves(result)[0] == ("close_drawer", "drawer handle")
+    result = plan("put the tin on the plate, then send the arm home", scene)
+    assert result.ok, result.error
+    assert leaves(result) == [("pick", "tin"), ("place", "plate")]

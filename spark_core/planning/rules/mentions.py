@@ -50,6 +50,7 @@ ROBOT_PARTS = frozenset(
     ["base", "arm", "arms", "gripper", "hand", "hands", "wrist", "camera", "body", "claw", "end", "grip", "grasp"]
     + ["fingers", "finger", "jaws", "pincers"]
 )
+_ARM_WORDS = frozenset(["arm", "arms", "gripper", "grippers", "hand", "hands", "claw", "fingers"])
 _ROBOT_OWNERS = frozenset(["robot", "robot's", "robots", "your", "my", "its"])
 
 
@@ -124,6 +125,8 @@ def read_past(instruction: str, clauses: list[Clause]) -> list[str]:
             head = words[-1]
             if _of_the_robot(words) or (m.group(0).strip() in ("your", "my") and head in ROBOT_PARTS):
                 continue  # where the robot is ("further from the robot's base", "your arm")
+            if words[0] in _ARM_WORDS and head in (*_ARM_WORDS, "home"):
+                continue  # the robot's own arm ("then send the arm home")
             if {head, singular(head)} & PLACE_WORDS or head in REGIONS or set(words) & set(CONTENTS):
                 continue  # a place, or what a container holds ("so the beads fall in")
             if not names_a_thing(" ".join(words)):

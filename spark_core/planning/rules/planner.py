@@ -552,28 +552,35 @@ def _the_one(words: tuple[str, ...], besides: str, scene) -> str | None:
 
 
 def _drawer_step(action: str, o: str, scene, seen: str) -> dict:
-    """open_drawer / close_drawer by the handle perception found on `o` (refused when there is none on it)."""
-    said = [h for h in (f"{o} handle", "drawer handle" if "drawer" in o.split() else "") if h in scene]
-    # a handle phrase perception took for the drawer itself is passed over for one it found apart from it
-    handle = next((h for h in said if not _same_detection(scene[h], scene[o])), said[0] if said else None)
-    gap_m = np.linalg.norm(scene[handle].position_m - scene[o].position_m) if handle else 0.0
-    if handle and _same_detection(scene[handle], scene[o]):
-        raise CannotPlan(
-            f"cannot {action} {o!r}: perception found no handle on it, only {o!r} itself "
-            f"(looked for {handle!r}; found: {seen})"
-        )
-    if gap_m > HANDLE_REACH_M:
-        raise CannotPlan(
-            f"cannot {action} {o!r}: the handle perception found ({handle!r}) is not on it ({gap_m:.2f} m away)"
-        )
-    if handle is None:
-        raise CannotPlan(
-            f"cannot {action} {o!r}: perception found no handle on it (looked for {o + ' handle'!r}; found: {seen})"
-        )
+    """open_drawer / close_drawer by the handle perception found on `o` (refused when there is none on it), or by
+    `o` itself when it is a drawer's handle ("take hold of the drawer handle and push it shut")."""
+    handle = o if o.split()[-1] == "handle" and "drawer" in o.split() else _handle_on(action, o, scene, seen)
     if action == "open":
         # fully: into the end stop if it comes first (LIBERO's drawers count as open past 14 of 16 cm)
         return _prim("open_drawer", keypoint_label=handle, distance=0.18)
     return _prim("close_drawer", keypoint_label=handle)
+
+
+def _handle_on(action: str, o: str, scene, seen: str) -> str:
+    """The handle perception found on `o`; refused when it found none, or only `o` itself, or one too far away."""
+    said = [h for h in (f"{o} handle", "drawer handle" if "drawer" in o.split() else "") if h in scene]
+    # a handle phrase perception took for the drawer itself is passed over for one it found apart from it
+    handle = next((h for h in said if not _same_detection(scene[h], scene[o])), said[0] if said else None)
+    if handle is None:
+        raise CannotPlan(
+            f"cannot {action} {o!r}: perception found no handle on it (looked for {o + ' handle'!r}; found: {seen})"
+        )
+    if _same_detection(scene[handle], scene[o]):
+        raise CannotPlan(
+            f"cannot {action} {o!r}: perception found no handle on it, only {o!r} itself "
+            f"(looked for {handle!r}; found: {seen})"
+        )
+    gap_m = np.linalg.norm(scene[handle].position_m - scene[o].position_m)
+    if gap_m > HANDLE_REACH_M:
+        raise CannotPlan(
+            f"cannot {action} {o!r}: the handle perception found ({handle!r}) is not on it ({gap_m:.2f} m away)"
+        )
+    return handle
 
 
 def _among(label: str, labels: set[str], scene) -> bool:

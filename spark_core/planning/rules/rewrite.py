@@ -908,6 +908,14 @@ def imperatives(instruction: str) -> list[str]:
                 r"there is \1 \2",
                 s,
             )
+            # "the drawer is open; close it": the state it is in now, before the request that changes it
+            if starts_with_verb(said[i + 1]):
+                s = re.sub(
+                    r"^((?:the|a|an) [\w ]+?) (?:is|are) (?:currently |still |now |already |left )?"
+                    r"(?:open|opened|closed|shut|on|off|running|sticking out|pulled out|out)$",
+                    r"there is \1",
+                    s,
+                )
             # "the beads are in the mug. pour them into the bowl": said as it is now, then acted on by a pronoun
             if re.search(r"\b(?:it|them)\b", said[i + 1]) and starts_with_verb(said[i + 1]):
                 s = re.sub(
