@@ -257,3 +257,11 @@ def test_a_drawer_worked_by_the_handle_said_and_the_arm_sent_home_names_no_thing
     result = plan("put the tin on the plate, then send the arm home", scene)
     assert result.ok, result.error
     assert leaves(result) == [("pick", "tin"), ("place", "plate")]
+
+
+def test_a_fixed_thing_stands_refused_only_when_said_after_a_verb_of_carrying():
+    from spark_core.planning.rules.planner import _carried_as_said
+
+    assert _carried_as_said("stove", "please pick up the flat stove")
+    assert _carried_as_said("drawer", "put the drawer on the plate")
+    assert not _carried_as_said("drawer", "the middle one of the cabinet's drawers, pull it open")

@@ -283,7 +283,9 @@ class RulesPlanner:
         for c in clauses:  # "put the stove on the plate": what is fixed in place is no thing to carry
             moved = c.obj if c.action in ("pick", "put", "stack", "push", "sort") else None
             if moved and not is_pronoun(moved) and _kind(moved) in FIXED and not c.together and not c.to_arm:
-                raise Impossible(
+                # said right after a verb of carrying, it is what was asked: no other reading in its place
+                stands = Impossible if _carried_as_said(_kind(moved), request.instruction) else CannotPlan
+                raise stands(
                     f"{c.text!r}: {moved!r} is fixed in place (a {_kind(moved)} is not carried, pushed or lifted) "
                     f"(understood: {understood}; found in the scene: {seen})"
                 )
@@ -723,6 +725,19 @@ def _effect(steps: list[dict], scene) -> tuple:
 # How much wider than a container, across its narrowest side, a thing may look and still go inside it: perception's
 # extents are loose (a mask's spill, a bowl seen at a slant), so only a thing clearly too big is refused.
 FITS_MARGIN = 1.2
+
+
+_CARRY_VERBS = frozenset(["put", "place", "set", "pick", "lift", "move", "carry", "push", "shove", "slide", "stack"])
+_CARRY_VERBS |= {"bring", "take", "grab", "drop", "raise", "hoist", "nudge", "get", "fetch"}
+
+
+def _carried_as_said(kind: str, instruction: str) -> bool:
+    """`kind` is said within four words after a verb of carrying ("pick up the stove", "put the flat stove in"),
+    not only read into a clause by the parser ("the middle one of the cabinet's drawers, pull it open")."""
+    words = re.findall(r"[a-z]+", instruction.lower())
+    return any(
+        singular(w) == kind and any(v in _CARRY_VERBS for v in words[max(0, i - 4) : i]) for i, w in enumerate(words)
+    )
 
 
 def _kind(phrase: str) -> str:
