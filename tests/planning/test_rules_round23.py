@@ -265,3 +265,44 @@ def test_a_fixed_thing_stands_refused_only_when_said_after_a_verb_of_carrying():
     assert _carried_as_said("stove", "please pick up the flat stove")
     assert _carried_as_said("drawer", "put the drawer on the plate")
     assert not _carried_as_said("drawer", "the middle one of the cabinet's drawers, pull it open")
+
+
+@pytest.mark.parametrize(
+    "said, read",
+    [
+        (
+            "could you switch the hob on? no need to move the lime cube.",
+            [("turn_on", "hob", None, None), ("mention", "lime cube", None, None)],
+        ),
+        (
+            "set the lime cube on the grey cube, carefully so the stack doesn't tip.",
+            [("put", "lime cube", "on", "grey cube")],
+        ),
+        (
+            "push the lime cube forward till it's in the green zone - just push it, don't pick it up.",
+            [("push", "lime cube", "in", "green zone")],
+        ),
+        (
+            "two stacking moves: lime cube onto the grey cube first; after that, pink cube on top of the lime one.",
+            [("put", "lime cube", "on", "grey cube"), ("put", "pink cube", "on", "lime cube")],
+        ),
+        ("open the oak drawer, i need to get at what's inside.", [("open", "oak drawer", None, None)]),
+        ("put the lemon in the tin, since it's going back to the pantry.", [("put", "lemon", "in", "tin")]),
+        (
+            "one of the teacups is on the hob. move that one onto the plate.",
+            [("mention", "teacup on hob", None, None), ("put", "teacup on hob", "on", "plate")],
+        ),
+        ("i'd love a table with no dirt left on it.", [("scrub", None, None, "dirt on table")]),
+        ("get the dirt off the table's surface.", [("scrub", None, None, "dirt on table")]),
+        ("lime cube up off the table, please.", [("pick", "lime cube", None, None)]),
+        ("the lemon in the tin would be great.", [("put", "lemon", "in", "tin")]),
+    ],
+)
+def test_wordings_of_probe24_read_after_its_blind_figure(said, read):
+    assert _read(restructured(said)) == read
+
+
+def test_the_reader_never_plans_a_goal_that_does_not_do_what_the_verbs_say():
+    assert fallback.said_actions("pour the pot into its own handle") == {"pour"}
+    assert fallback.said_actions("the block close to the plate, in the empty bowl") == set()
+    assert fallback.said_actions("switch on the hob and pick up the lime cube") == {"turn_on", "pick"}

@@ -17,7 +17,7 @@ from lemminflect import getAllLemmas
 
 from ..protocol import PlanRequest
 from ..rules.framing import verb_words
-from ..rules.lexicon import PARTICIPLES, STATE_ACTIONS
+from ..rules.lexicon import PARTICIPLES, STATE_ACTIONS, VERBS
 from ..rules.parse import Clause
 from ..rules.planner import RulesPlanner, composer
 from ..rules.things import is_verb
@@ -160,6 +160,33 @@ def left_alone(phrase: str, instruction: str) -> bool:
     return False
 
 
+# Kinds of carrying, one kind of doing to `said_actions`: "pick up X and drop it in Y" is a put.
+_CARRY = frozenset(["pick", "put", "stack", "sort"])
+
+
+def _kinds(actions: set[str]) -> set[str]:
+    return {"carry" if a in _CARRY else a for a in actions}
+
+
+def said_actions(instruction: str) -> set[str]:
+    """The actions the sentence's own verbs name without doubt: a two-word verb of the lexicon ("turn on", "pick
+    up"), or a one-word verb in any form that is nothing but a verb ("pour", "poured"; not "close", "empty",
+    "stack", which also describe or name)."""
+    words = re.findall(r"[a-z]+", instruction.lower())
+    out: set[str] = set()
+    for action, forms in VERBS.items():
+        for form in forms:
+            said = form.split()
+            for i, w in enumerate(words):
+                lemmas = getAllLemmas(w)
+                if w not in said[:1] and said[0] not in lemmas.get("VERB", ()):
+                    continue
+                two_words = len(said) > 1 and words[i + 1 : i + len(said)] == said[1:]
+                if two_words or (len(said) == 1 and set(lemmas) <= {"VERB"}):
+                    out.add(action)
+    return out
+
+
 def _unused(clauses: tuple[Clause, ...], found: list[str], instruction: str) -> list[str]:
     """Phrases perception found that the goal leaves out: neither one of its things, nor a word of one (what
     locates it: "plate" of "black bowl next to plate"), nor one with a part of it ("stove knob" of "stove"), nor a
@@ -199,6 +226,9 @@ def read(request: PlanRequest, planner: RulesPlanner) -> tuple[list[dict], list[
     text = goals[k][0].text
     if p < THRESHOLD:
         return f"its best guess, {text!r}, had probability {p:.2f} (below {THRESHOLD})"
+    said = _kinds(said_actions(request.instruction))
+    if said and not said & _kinds({c.action for c in goals[k][0].clauses}):  # "pour the pot into its own handle"
+        return f"its best guess, {text!r}, does not do what the sentence's verbs say ({', '.join(sorted(said))})"
     left = _unused(goals[k][0].clauses, list(request.scene.keypoints), request.instruction)
     if left:  # a part of the request no step would carry out: never a partial plan
         return f"its best guess, {text!r}, leaves out {', '.join(map(repr, left))}"

@@ -226,7 +226,10 @@ def _header(text: str) -> str:
         return text
     words = re.findall(r"[a-z]+", m.group(1))
     numbers = ("s", "here", "there", "one", "two", "three", "four", "five", "couple")
-    if not words or any(is_thing(w) for w in words if w not in numbers):
+    # what a request is made of ("two stacking moves: ...", "three steps: ...")
+    parts = {"move", "moves", "step", "steps", "job", "jobs", "task", "tasks", "thing", "things", "stage", "stages"}
+    parts |= {"stacking", "action", "actions", "sequence", "order"}
+    if not words or any(is_thing(w) for w in words if w not in numbers and w not in parts):
         return text
     return m.group(2)
 

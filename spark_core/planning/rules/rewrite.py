@@ -19,6 +19,7 @@ from .lexicon import (
     SUBSTANCES,
     VERBS,
 )
+from .phrases import singular
 from .qualify import qualify
 from .things import adverb_only, is_verb
 
@@ -116,6 +117,13 @@ _TRAILING = re.compile(
     # started", "... and move your arm out of the way", "... and do not squash it")
     r"(?:go|come|head|return|get) (?:back|home)\b|move (?:your|the) (?:arm|gripper|hand)\b|(?:do not|never) |"
     r"(?:send|bring|take|move|return) (?:the |your )?(?:arm|robot|gripper|hand) (?:back )?(?:home|away|back)\b|"
+    # a reason or a need of the speaker's after the request ("..., since it's going back to the fridge", "..., i
+    # need to get at what's inside"), the action said again to say how ("- just push it, don't pick it up"),
+    # how carefully ("..., carefully so the stack doesn't tip")
+    r"(?:since|because|as) (?:it|they|that|this|i|we|you)\b|"
+    r"(?:i|we) (?:need|want|have) to (?:get|reach|see|look|check)\b|"
+    r"(?:just |simply |only )(?:push|slide|shove|nudge|move) (?:it|them)\b|"
+    r"(?:carefully|gently|slowly)\b(?= so\b|\s*$)|"
     # the goal's own name after it ("..., that is the end state i am after", "not the other way round")
     r"that is the (?:end state|final state|result|outcome|state|arrangement|one|target|aim|idea|goal)\b|"
     r"(?:and )?not the other way\b|that is what (?:i|we) (?:am|are) after\b|"
@@ -171,6 +179,13 @@ def sentences(instruction: str) -> list[str]:
         r"^(?:(?:hey|hi|hello|oi|yo|um+|uh+|hmm+|erm?)(?: there| robot| buddy| mate)?\b[,!.]?\s*|"
         r"(?:next(?: up| one)?|and next)\s*:\s*)+",
         "",
+        text,
+    )
+    # "red cube up off the table, please": a lift said by where the thing ends up
+    text = re.sub(
+        r"^((?:the |a |an )?[a-z]+(?: [a-z]+){0,2}) up(?: (?:off|from) (?:of )?(?:the )?(?:table|counter|surface))?"
+        r"(?=\s*(?:[.;!?]|,\s*please\b|$))",
+        lambda m: m.group(0) if _verb_first(m.group(1)) else f"pick up {m.group(1)}",
         text,
     )
     # a thing held up "off the table" / "clear of the table": where it was lifted from, not another place; "grasped
@@ -443,6 +458,31 @@ def sentences(instruction: str) -> list[str]:
         text,
     )
     text = re.sub(_LEAVE_ALONE, _left_be, text)
+    # "one of the black bowls is on the stove": that one, the bowl on the stove, named for what follows
+    text = re.sub(
+        r"(^|[.;!?] )one of the ((?:\w+ ){0,2})(\w+s) (?:is|sits|rests|stands) (?:up |down |over |now )?"
+        r"((?:on top of|on|in|inside|next to|beside|near|by) (?:the|a|an) [\w ]+?)(?=\s*(?:[.;!?]|$))",
+        lambda m: f"{m.group(1)}there is the {m.group(2)}{singular(m.group(3))} {m.group(4)}",
+        text,
+    )
+    # a goal said as the thing in the state wanted ("a table with no dirt left on it"), dirt got off a thing (a
+    # wipe), a thing up off the table (a lift), a wish closed by how good it would be
+    text = re.sub(
+        r"\b(?:a|the) (table|counter|surface) with no (?:dirt|mess|crumbs|stains?|grime)(?: left)?(?: on it)?\b",
+        r"the \1 clean",
+        text,
+    )
+    text = re.sub(
+        r"\b(?:get|take|remove|clear) (?:the |all the |any )?(?:dirt|mess|crumbs|stains?|grime|dust) "
+        r"(?:off|from) (?:of )?((?:the|a|an) \w+(?: \w+)?)(?:'s (?:surface|top)| (?:surface|top))?\b",
+        r"wipe \1",
+        text,
+    )
+    text = re.sub(
+        r",?\s+(?:would|will|'d) be (?:great|nice|lovely|good|perfect|ideal|appreciated|awesome|fantastic|brilliant)\b",
+        "",
+        text,
+    )
     # "take hold of the handle": grab it; "straight onto the plate": the place, said directly
     text = re.sub(r"\b(?:take|get|grab|catch) (?:a )?hold of\b", "grab", text)
     text = re.sub(r"\b(?:straight|directly|right) (?=(?:onto|into|on top of|on|in|inside)\b)", "", text)
@@ -482,6 +522,16 @@ _DONE_BEFORE = re.compile(
 )
 
 
+def _verb_first(phrase: str) -> bool:
+    """The phrase starts with a verb: one of the planner's ("fire the cooker" of "fire ... up"), or a word the
+    lexicon knows only as a verb."""
+    from lemminflect import getAllLemmas
+
+    first = phrase.split()[0]
+    lemmas = getAllLemmas(first)
+    return first in _FIRST_WORDS or (bool(lemmas) and not {"NOUN", "ADJ", "PROPN"} & set(lemmas))
+
+
 def _part_purpose(m: re.Match) -> str:
     part, verb, thing, particle = m.group(1), m.group(2).strip(), m.group(3), (m.group(4) or "").strip()
     what = part if thing in (None, "it", "them") else thing
@@ -494,8 +544,9 @@ def _part_purpose(m: re.Match) -> str:
 # "don't touch the cream cheese - just put the butter ...", "ignore the bbq sauce; ..."): no step, but the thing is
 # named, so it must be in the scene (mentions.py) and a pronoun after it may point back to it.
 _LEAVE_ALONE = re.compile(
-    r"(^|[,;:] |- |\band |\bbut )(?:just |please )?"
+    r"(^|[,;:.?!] |- |\band |\bbut )(?:just |please )?"
     r"(leave|ignore|skip|do not touch|do not move|do not disturb|do not bother with|do not mess with|never mind|"
+    r"no need to (?:move|touch)|(?:you )?do not need to (?:move|touch)|"
     r"forget(?: about)?|keep away from|stay away from|avoid) "
     # (not the rest: "... and leave the rest where they are" only closes the request, _TRAILING)
     r"((?:the|that|this|those|these) (?!(?:rest|others?|other ones?|remaining ones?)\b)[\w' ]+?)"
@@ -514,7 +565,7 @@ def _left_be(m: re.Match) -> str:
     lead, verb, thing, stays = m.group(1), m.group(2), m.group(3), m.group(4)
     if verb == "leave" and not stays and _LEFT_SOMEWHERE.search(thing):
         return m.group(0)
-    if lead.strip() in ("and", "but"):  # "switch the stove on and leave the block alone": a sentence of its own
+    if lead.strip() in ("and", "but", "."):  # "switch the stove on and leave the block alone": a sentence of its own
         lead = "; "
     return f"{lead}there is {thing}"
 
