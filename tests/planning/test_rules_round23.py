@@ -306,3 +306,19 @@ def test_the_reader_never_plans_a_goal_that_does_not_do_what_the_verbs_say():
     assert fallback.said_actions("pour the pot into its own handle") == {"pour"}
     assert fallback.said_actions("the block close to the plate, in the empty bowl") == set()
     assert fallback.said_actions("switch on the hob and pick up the lime cube") == {"turn_on", "pick"}
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "put the apple in the tin, since it's going back to the pantry.",
+        "open the oak drawer, i need to get at what's inside.",
+        "set the lime cube on the grey cube, carefully so the stack doesn't tip.",
+    ],
+)
+def test_what_an_aside_after_the_request_names_need_not_be_in_the_scene(said):
+    from spark_core.planning.rules.mentions import read_past
+
+    clauses = parse_instruction(restructured(said))
+    assert read_past(said, clauses) == [] and stray_nouns(said, clauses) == []
+    assert read_past("put the apple in the tin with the pantry key", parse_instruction("put the apple in the tin"))

@@ -112,7 +112,7 @@ def read_past(instruction: str, clauses: list[Clause]) -> list[str]:
     "red block held" for "red block", is the clause's own thing with a verb after it.)"""
     said = _words([*clause_mentions(clauses), *(c.obj for c in clauses if c.obj)])
     out: dict[str, None] = {}
-    for sentence in (_CLOSING_REMARK.sub("", s) for s in sentences(instruction)):
+    for sentence in (_ASIDE.sub("", _CLOSING_REMARK.sub("", s)) for s in sentences(instruction)):
         for m in _DET.finditer(sentence):
             words: list[str] = []
             for w in sentence[m.end() :].replace(",", " , ").split():
@@ -178,7 +178,7 @@ def stray_nouns(instruction: str, clauses: list[Clause]) -> list[str]:
     closed = _closed_words()
     out: dict[str, None] = {}
     for sentence in sentences(instruction):
-        words = re.findall(r"[a-z]+(?:'s)?", _CLOSING_REMARK.sub("", sentence))
+        words = re.findall(r"[a-z]+(?:'s)?", _ASIDE.sub("", _CLOSING_REMARK.sub("", sentence)))
         for i, raw in enumerate(words):
             w = raw.removesuffix("'s")
             if len(w) < 3 or {w, singular(w)} & (said | closed | ABSTRACT | ATTRIBUTES) or w in CONTENTS:
@@ -198,6 +198,14 @@ def stray_nouns(instruction: str, clauses: list[Clause]) -> list[str]:
 
 # A remark that closes the request by naming it ("..., that's the target", "... - that's what I'm after", "..., is
 # what I want"): it names the request, not a thing.
+# An aside after the request, no part of it ("..., since it's going back to the fridge", "..., i need to get at
+# what's inside", "..., (carefully) so the stack doesn't tip"): the parser drops it (rewrite._TRAILING), and what it
+# names need not be in the scene.
+_ASIDE = re.compile(
+    r",?\s*(?:(?:since|because) (?:it|they|that|this|i|we|you)\b|(?:i|we) (?:need|want|have) to "
+    r"(?:get|reach|see|look|check)\b|(?:carefully|gently|slowly) so\b|"
+    r"so (?:that )?(?:it|they|the [a-z]+) (?:does|do|will|would|is|are|can|could) not\b).*$"
+)
 _CLOSING_REMARK = re.compile(
     r"(?:\b(?:that|this) (?:is|will be|should be) |(?:,|-)\s*(?:is|are) )(?:the (?:target|goal|aim|idea|plan|"
     r"end state|final state|end result|result|outcome|arrangement|state)|what (?:i|we) (?:am|are) (?:after|"
