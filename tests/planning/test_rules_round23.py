@@ -162,15 +162,6 @@ def test_a_handle_phrase_found_as_the_drawer_itself_gives_way_to_the_handle_foun
             "the teacup has beads in it. tip them out into the tureen",
             [("mention", "teacup", None, None), ("pour", "teacup", None, "tureen")],
         ),
-    ],
-)
-def test_wordings_of_round_twenty_three(said, read):
-    assert _read(said) == read
-
-
-@pytest.mark.parametrize(
-    "said, read",
-    [
         ("lime cube on top of the grey one, not the other way round", [("put", "lime cube", "on", "grey cube")]),
         ("stack the lime cube onto the one that isn't lime", [("stack", "lime cube", "on", "cube not lime")]),
         (
@@ -181,15 +172,6 @@ def test_wordings_of_round_twenty_three(said, read):
             "the teacup has beads. get them into the tureen by pouring",
             [("mention", "teacup", None, None), ("pour", "teacup", None, "tureen")],
         ),
-    ],
-)
-def test_wordings_of_round_twenty_three_second_pass(said, read):
-    assert _read(said) == read
-
-
-@pytest.mark.parametrize(
-    "said, read",
-    [
         (
             "don't move the grey cube. just put the other one on top of it",
             [("mention", "grey cube", None, None), ("put", "cube not grey", "on", "grey cube")],
@@ -202,10 +184,19 @@ def test_wordings_of_round_twenty_three_second_pass(said, read):
             "there are beads in the teacup. get them into the tureen by pouring",
             [("mention", "teacup", None, None), ("pour", "teacup", None, "tureen")],
         ),
+        (
+            "the drawer on the cabinet is open; close it",
+            [("mention", "drawer on cabinet", None, None), ("close", "drawer on cabinet", None, None)],
+        ),
+        ("the hob is off. turn it on", [("mention", "hob", None, None), ("turn_on", "hob", None, None)]),
+        (
+            "the drawer should be open. then put the lime cube in it",
+            [("open", "drawer", None, None), ("put", "lime cube", "in", "drawer")],
+        ),
     ],
 )
-def test_a_thing_left_alone_in_a_sentence_of_its_own(said, read):
-    assert _read(said) == read
+def test_wordings_of_round_twenty_three(said, read):
+    assert _read(restructured(said)) == read
 
 
 def test_per_and_each_name_no_thing():
@@ -229,24 +220,6 @@ def test_a_thing_fixed_in_place_is_never_carried_and_never_read_another_way(said
     result = plan(said, scene)
     assert not result.ok and "is fixed in place" in result.error
     assert plan("put the plate on the hob", scene).ok
-
-
-@pytest.mark.parametrize(
-    "said, read",
-    [
-        (
-            "the drawer on the cabinet is open; close it",
-            [("mention", "drawer on cabinet", None, None), ("close", "drawer on cabinet", None, None)],
-        ),
-        ("the hob is off. turn it on", [("mention", "hob", None, None), ("turn_on", "hob", None, None)]),
-        (
-            "the drawer should be open. then put the lime cube in it",
-            [("open", "drawer", None, None), ("put", "lime cube", "in", "drawer")],
-        ),
-    ],
-)
-def test_the_state_a_thing_is_in_before_a_request_describes_it(said, read):
-    assert _read(said) == read
 
 
 def test_a_drawer_worked_by_the_handle_said_and_the_arm_sent_home_names_no_thing():

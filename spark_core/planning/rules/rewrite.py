@@ -465,36 +465,8 @@ def sentences(instruction: str) -> list[str]:
         lambda m: f"{m.group(1)}there is the {m.group(2)}{singular(m.group(3))} {m.group(4)}",
         text,
     )
-    # a goal said as the thing in the state wanted ("a table with no dirt left on it"), dirt got off a thing (a
-    # wipe), a thing up off the table (a lift), a wish closed by how good it would be
-    text = re.sub(
-        r"\b(?:a|the) (table|counter|surface) with no (?:dirt|mess|crumbs|stains?|grime)(?: left)?(?: on it)?\b",
-        r"the \1 clean",
-        text,
-    )
-    text = re.sub(
-        r"\b(?:get|take|remove|clear) (?:the |all the |any )?(?:dirt|mess|crumbs|stains?|grime|dust) "
-        r"(?:off|from) (?:of )?((?:the|a|an) \w+(?: \w+)?)(?:'s (?:surface|top)| (?:surface|top))?\b",
-        r"wipe \1",
-        text,
-    )
-    text = re.sub(
-        r",?\s+(?:would|will|'d) be (?:great|nice|lovely|good|perfect|ideal|appreciated|awesome|fantastic|brilliant)\b",
-        "",
-        text,
-    )
-    # "take hold of the handle": grab it; "straight onto the plate": the place, said directly
-    text = re.sub(r"\b(?:take|get|grab|catch) (?:a )?hold of\b", "grab", text)
-    text = re.sub(r"\b(?:straight|directly|right) (?=(?:onto|into|on top of|on|in|inside)\b)", "", text)
-    # "red on blue, not the other way round": the order said again, no thing
-    text = re.sub(r",?\s*(?:and |but )?not (?:the other way|vice versa)(?: a?round)?(?=\s*(?:[.;!?,]|$))", "", text)
-    # "get them into the bowl by pouring": a pour said by its manner
-    text = re.sub(
-        r"\b(?:get|put|move|transfer|empty|send) ((?:the |them|it)[\w ]*?) (?:into|in|onto|on) ([\w ]+?),? by "
-        r"(?:pouring|tipping|tilting)(?: (?:it|them))?(?: out)?\b",
-        r"pour \1 into \2",
-        text,
-    )
+    for said, plainly in _SAID_PLAINLY:
+        text = re.sub(said, plainly, text)
     # "the bbq sauce into the basket, not the tomato sauce": the thing ruled out is named, and not moved
     text = re.sub(r",\s*(?:and |but )?not (the|that|this) ([\w' ]+?)(?=\s*(?:[.;!?]|$))", r" ; there is \1 \2", text)
     text = re.sub(r",\s*(?=(?:which|who) (?:is|are)\b)", " ", text)  # "the block, which is on the plate," locates it
@@ -519,6 +491,35 @@ def sentences(instruction: str) -> list[str]:
 _DONE_BEFORE = re.compile(
     r"^(?:and )?(?:once|when|after|as soon as) (?:it|that|this|they|those|both) (?:is|are|has been|have been) "
     r"(?:there|done|in place|placed|down|finished|on it|in it|in there|on there|settled)\s*,?\s+(?:then\s+)?"
+)
+
+
+# Wordings said plainly, in order (sentences()): a goal said as the thing in the state wanted ("a table with no dirt
+# left on it"), dirt got off a thing (a wipe), a wish closed by how good it would be, "take hold of" (grab),
+# "straight onto" (onto), the order said again ("not the other way round"), a pour said by its manner ("get them
+# into the bowl by pouring").
+_SAID_PLAINLY: tuple[tuple[str, str], ...] = (
+    (
+        r"\b(?:a|the) (table|counter|surface) with no (?:dirt|mess|crumbs|stains?|grime)(?: left)?(?: on it)?\b",
+        r"the \1 clean",
+    ),
+    (
+        r"\b(?:get|take|remove|clear) (?:the |all the |any )?(?:dirt|mess|crumbs|stains?|grime|dust) "
+        r"(?:off|from) (?:of )?((?:the|a|an) \w+(?: \w+)?)(?:'s (?:surface|top)| (?:surface|top))?\b",
+        r"wipe \1",
+    ),
+    (
+        r",?\s+(?:would|will|'d) be (?:great|nice|lovely|good|perfect|ideal|appreciated|awesome|fantastic|brilliant)\b",
+        "",
+    ),
+    (r"\b(?:take|get|grab|catch) (?:a )?hold of\b", "grab"),
+    (r"\b(?:straight|directly|right) (?=(?:onto|into|on top of|on|in|inside)\b)", ""),
+    (r",?\s*(?:and |but )?not (?:the other way|vice versa)(?: a?round)?(?=\s*(?:[.;!?,]|$))", ""),
+    (
+        r"\b(?:get|put|move|transfer|empty|send) ((?:the |them|it)[\w ]*?) (?:into|in|onto|on) ([\w ]+?),? by "
+        r"(?:pouring|tipping|tilting)(?: (?:it|them))?(?: out)?\b",
+        r"pour \1 into \2",
+    ),
 )
 
 
