@@ -173,16 +173,15 @@ def said_actions(instruction: str) -> set[str]:
     up"), or a one-word verb in any form that is nothing but a verb ("pour", "poured"; not "close", "empty",
     "stack", which also describe or name)."""
     words = re.findall(r"[a-z]+", instruction.lower())
+    lemmas = [getAllLemmas(w) for w in words]
     out: set[str] = set()
     for action, forms in VERBS.items():
-        for form in forms:
-            said = form.split()
+        for said in (form.split() for form in forms):
             for i, w in enumerate(words):
-                lemmas = getAllLemmas(w)
-                if w not in said[:1] and said[0] not in lemmas.get("VERB", ()):
+                if w != said[0] and said[0] not in lemmas[i].get("VERB", ()):
                     continue
                 two_words = len(said) > 1 and words[i + 1 : i + len(said)] == said[1:]
-                if two_words or (len(said) == 1 and set(lemmas) <= {"VERB"}):
+                if two_words or (len(said) == 1 and set(lemmas[i]) <= {"VERB"}):
                     out.add(action)
     return out
 

@@ -314,7 +314,7 @@ def _elided_object(c: Clause, before: list[Clause]) -> Clause:
     if not c.obj or " " in c.obj or c.obj not in _ATTRIBUTE_WORDS:
         return c
     # the head noun before a negation or a relation ('block not blue' is a block)
-    kind = next((_kind(b.obj) for b in reversed(before) if b.obj and not is_pronoun(b.obj)), None)
+    kind = next((head_noun(b.obj) for b in reversed(before) if b.obj and not is_pronoun(b.obj)), None)
     if not kind or kind in _ATTRIBUTE_WORDS:  # "red in the tray and blue in ...": no kind was named
         return c
     return replace(c, obj=f"{c.obj} {kind}")
@@ -368,7 +368,7 @@ def _remaining(c: Clause, before: list[Clause]) -> Clause:
     return replace(c, **updates) if updates else c
 
 
-def _kind(phrase: str) -> str:
+def head_noun(phrase: str) -> str:
     """The head noun of a phrase perception reads: before a negation or a relation ("block not blue" -> block)."""
     head = re.split(r"\s+not\s+", phrase)[0]
     head = split_relation(head)[0] if split_relation(head)[1] else head
@@ -389,7 +389,7 @@ def _other_of(phrase: str, text: str, said: list[str]) -> str | None:
         between = r"(?:(?!(?:in|on|into|onto|inside|to|at|by|with|from|of|the|a|an|and|then|not)\b)\w+ ){0,2}"
         if not re.search(rf"\bthe other {between}{re.escape(kind)}s?\b", text):
             return None
-        found = next((p for p in said if _kind(p) == kind and p != phrase), None)
+        found = next((p for p in said if head_noun(p) == kind and p != phrase), None)
         if found is None:
             return None
         ref = found

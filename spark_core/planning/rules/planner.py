@@ -16,9 +16,9 @@ from .afford import Reading, unplaced_variety
 from .afford import best as afforded
 from .discourse import restructured
 from .kinds import modifier_for_thing, other_contents, other_variety
-from .lexicon import CLEANERS, CONTAINERS, CONTENTS, FIXED, REGIONS, SOLIDS
+from .lexicon import CLEANERS, CONTAINERS, CONTENTS, FIXED, REGIONS, SOLIDS, VERBS
 from .mentions import clause_mentions, foreign_modifiers, read_past, stray_nouns
-from .parse import Clause, ParseError, is_pronoun, parse_instruction
+from .parse import Clause, ParseError, head_noun, is_pronoun, parse_instruction
 from .phrases import singular
 from .qualify import bare_rank
 from .reader import describe, readings, unused_mentions
@@ -727,8 +727,8 @@ def _effect(steps: list[dict], scene) -> tuple:
 FITS_MARGIN = 1.2
 
 
-_CARRY_VERBS = frozenset(["put", "place", "set", "pick", "lift", "move", "carry", "push", "shove", "slide", "stack"])
-_CARRY_VERBS |= {"bring", "take", "grab", "drop", "raise", "hoist", "nudge", "get", "fetch"}
+# The first words of the lexicon's verbs of carrying, pushing and stacking ("pick" of "pick up", "shove", "place").
+_CARRY_VERBS = frozenset(f.split()[0] for a in ("pick", "put", "stack", "push", "sort") for f in VERBS[a])
 
 
 def _carried_as_said(kind: str, instruction: str) -> bool:
@@ -741,10 +741,8 @@ def _carried_as_said(kind: str, instruction: str) -> bool:
 
 
 def _kind(phrase: str) -> str:
-    """The head noun, singular, before any relation or negation: "green block next to bowl" -> "block"."""
-    return singular(
-        re.split(r"\s+(?:not|on|in|inside|next to|beside|near|between|under|at|from)\s+", phrase)[0].split()[-1]
-    )
+    """The head noun, singular ("green blocks next to bowl" -> "block"): what kind of thing a phrase names."""
+    return singular(head_noun(phrase))
 
 
 def _check_fits(text: str, o: str, t: str, scene, tail: str) -> None:
