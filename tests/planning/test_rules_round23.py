@@ -295,3 +295,22 @@ def test_what_an_aside_after_the_request_names_need_not_be_in_the_scene(said):
     clauses = parse_instruction(restructured(said))
     assert read_past(said, clauses) == [] and stray_nouns(said, clauses) == []
     assert read_past("put the apple in the tin with the pantry key", parse_instruction("put the apple in the tin"))
+
+
+class _FavoursThePick:
+    """A stand-in scorer sure of the lime cube's pick: what the gate does with a confident partial reading."""
+
+    def scores(self, instruction, goals):
+        return [10.0 if g == "pick up the lime cube" else -10.0 for g in goals]
+
+
+def test_the_reader_never_plans_a_pick_alone_where_the_sentence_says_to_put(monkeypatch):
+    monkeypatch.setattr(fallback, "load", lambda: _FavoursThePick())
+    from spark_core.planning import PlanRequest
+    from spark_core.planning.rules import RulesPlanner
+
+    scene = view(lime_cube=(0.5, 0.1, 0.02), grey_cube=(0.5, -0.1, 0.02))
+    request = PlanRequest("pick up the lime cube and put it on the other one", scene)
+    assert "puts nothing anywhere" in fallback.read(request, RulesPlanner(fallback=False))
+    request = PlanRequest("pick up the lime cube, the grey cube stays", scene)
+    assert not isinstance(fallback.read(request, RulesPlanner(fallback=False)), str)

@@ -164,6 +164,10 @@ def left_alone(phrase: str, instruction: str) -> bool:
 _CARRY = frozenset(["pick", "put", "stack", "sort"])
 
 
+# Verbs that say a thing goes somewhere: a goal of theirs is more than a pick.
+_PLACED = frozenset(["put", "stack", "sort"])
+
+
 def _kinds(actions: set[str]) -> set[str]:
     return {"carry" if a in _CARRY else a for a in actions}
 
@@ -225,9 +229,11 @@ def read(request: PlanRequest, planner: RulesPlanner) -> tuple[list[dict], list[
     text = goals[k][0].text
     if p < THRESHOLD:
         return f"its best guess, {text!r}, had probability {p:.2f} (below {THRESHOLD})"
-    said = _kinds(said_actions(request.instruction))
-    if said and not said & _kinds({c.action for c in goals[k][0].clauses}):  # "pour the pot into its own handle"
-        return f"its best guess, {text!r}, does not do what the sentence's verbs say ({', '.join(sorted(said))})"
+    verbs, done = said_actions(request.instruction), {c.action for c in goals[k][0].clauses}
+    if verbs and not _kinds(verbs) & _kinds(done):  # "pour the pot into its own handle"
+        return f"its best guess, {text!r}, does not do what the sentence's verbs say ({', '.join(sorted(verbs))})"
+    if verbs & _PLACED and not done - {"pick"}:  # "pick up the cube and put it on the other one": not a pick alone
+        return f"its best guess, {text!r}, puts nothing anywhere, and the sentence says to put something"
     left = _unused(goals[k][0].clauses, list(request.scene.keypoints), request.instruction)
     if left:  # a part of the request no step would carry out: never a partial plan
         return f"its best guess, {text!r}, leaves out {', '.join(map(repr, left))}"
