@@ -250,7 +250,7 @@ def own_noun_prompts(prompt: str, names: list[str]) -> dict[int, str]:
 
 # Words that name anything at all (the kinds table's GENERIC less the class words WordNet can place: "vessel",
 # "receptacle"); a class word among them would cover every object alike, which GENERIC already says.
-_ANYTHING = GENERIC - {"receptacle", "vessel"}
+ANYTHING = GENERIC - {"receptacle", "vessel"}
 
 
 def _noun_of(words: list[str]) -> list[str]:
@@ -270,7 +270,7 @@ def class_members(prompt: str, names: list[str]) -> set[int] | None:
         return None
     lexicon = nouns()
     for noun in _noun_of(words):
-        if word_kind(noun) is not None or noun in _ANYTHING | PARTS | NOT_NOUNS:
+        if word_kind(noun) is not None or noun in ANYTHING | PARTS | NOT_NOUNS:
             return None
         if package_kind(noun) is not None or any(noun in word_forms(n.split()[-1]) for n in names if n):
             return None

@@ -49,7 +49,7 @@ def split_qualifier(prompt: str) -> tuple[str | None, str]:
 
 # Relations to another object ("the bowl next to the plate", "the bowl between the plate and the ramekin"):
 # the chosen instance is the one whose centroid is nearest (in the table plane) to the anchor(s).
-RELATIONS = ("between", "next to", "beside", "near", "by", "on top of", "on", "in", "inside", "at", "from")
+RELATIONS = ("between", "next to", "beside", "near", "by", "on top of", "on", "in", "inside", "at", "from", "under")
 _RELATION = re.compile(
     r"^(.+?)\s+(" + "|".join(re.escape(r) for r in sorted(RELATIONS, key=len, reverse=True)) + r")\s+(.+)$"
 )
@@ -70,6 +70,7 @@ def split_relation(prompt: str) -> tuple[str, str | None, list[str]]:
 
 
 SUPPORT_RELATIONS = ("on top of", "on", "in", "inside", "at", "from")  # the head stands on or in the anchor
+# ("under": the head within the anchor's footprint, as for these, below it)
 NEAR_RELATIONS = ("next to", "beside", "near", "by")
 SUPPORT_MARGIN_M = 0.03  # a bowl's centre may overhang its support's seen footprint by this much
 NEAR_M = 0.2  # "next to": centres at most the anchor's radius plus this apart (table plane)

@@ -11,7 +11,7 @@ import numpy as np
 from .colors import normalise_colours
 from .detection import Detection
 from .frame import CameraFrame
-from .naming import class_members, mismatch, own_noun_prompts
+from .naming import ANYTHING, class_members, mismatch, own_noun_prompts
 from .qualifiers import QUALIFIERS, SIZE_AXIS, split_qualifier, split_relation
 from .text_encoder import SHARED_ENCODER, TextEncoder
 from .variants import (
@@ -94,6 +94,10 @@ class SimSegmenter:
         # a word for a class ("the container", "the dairy product") names each thing WordNet files under it alike
         # and nothing else, however the encoder ranks them (naming.class_members)
         members = class_members(norm, [self._names[label] for label in self._labels])
+        if members is None and norm.strip() in ANYTHING:
+            # "the item closest to you" (its qualifier split off before): a word that names anything names each
+            # thing alike, for the qualifier to choose
+            members = set(range(len(self._labels)))
         out = {}
         for k, (label, c) in enumerate(zip(self._labels, cos.tolist())):
             if head and head == self._names[label].split()[-1]:
@@ -218,11 +222,13 @@ class SimSegmenter:
         assert frame.object_ids is not None  # segment() refuses frames without object ids
         found = []
         for a in anchors:
-            cands = [
-                d
-                for d in self.segment(frame, [a])
-                if d.detail.get("object") not in {x.detail.get("object") for x in dets}
-            ]
+            anchored = self.segment(frame, [a])
+            cands = [d for d in anchored if d.detail.get("object") not in {x.detail.get("object") for x in dets}]
+            if not cands and anchored and len(dets) > 1:
+                # "the cube under the green cube": the anchor is one of the head's kind, and no thing is related to
+                # itself (one thing found for both is left as it was: a part may be named by the thing it is of)
+                cands = [max(anchored, key=lambda d: d.score)]
+                dets = [d for d in dets if d.detail.get("object") != cands[0].detail.get("object")]
             if cands:
                 found.append(_centroid_xy(max(cands, key=lambda d: d.score), frame))
         if len(dets) > 1 and not found and any(w in a for a in anchors for w in ("center", "centre", "middle")):

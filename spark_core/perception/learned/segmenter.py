@@ -470,7 +470,13 @@ class LearnedSegmenter:
         taken = {d.detail["instance"] for d in dets}
         found: list[tuple[np.ndarray, float]] = []
         for a in anchors:
-            cands = [d for d in self.segment(frame, [a]) if d.detail.get("instance") not in taken]
+            anchored = self.segment(frame, [a])
+            cands = [d for d in anchored if d.detail.get("instance") not in taken]
+            if not cands and anchored and len(dets) > 1:
+                # "the cube under the green cube": the anchor is one of the head's kind, and no thing is related to
+                # itself (one thing found for both is left as it was: a part may be named by the thing it is of)
+                cands = [max(anchored, key=lambda d: d.score)]
+                dets = [d for d in dets if d.detail.get("instance") != cands[0].detail.get("instance")]
             if cands:
                 found.append(_footprint_xy(max(cands, key=lambda d: d.score).mask, frame))
         centres = [c for c, _ in found]

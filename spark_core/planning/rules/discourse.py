@@ -170,28 +170,75 @@ def _context(text: str) -> str:
     return f"there is the {m.group(2)}. {m.group(3).strip()}"
 
 
+def _unwanted_now(text: str) -> str:
+    """What the speaker does not want any more, said before the request ("i don't want the green cube on top
+    anymore - the red one goes on top of the green one"): no step, only the thing named ("there is the ...")."""
+    m = re.fullmatch(
+        rf"(?:i|we) (?:do not|don't|dont) (?:want|like|need) {_DET} ({_NP})\b[^,;:.!-]*?"
+        r"\s*(?:[,;:.!]|\s-+\s|\s\u2013\s|\s\u2014\s)\s*(.+)",
+        text,
+    )
+    if not m or not is_thing(m.group(1).split()[-1]):
+        return text
+    rest = m.group(2).strip()
+    if not (_is_step(rest) or " goes " in rest or " go " in rest):
+        return text
+    return f"there is the {m.group(1)}. {rest}"
+
+
 def _contrast(text: str) -> str:
     """What is not meant, said after a complete request ("put the juice in the basket - not the ketchup and not the
     bbq sauce", "tip the beads into the bowl, not back into the mug", "..., rather than the plate"): no step; each
     thing it names is still named (a "there is" sentence before the request, so that it must be in the scene)."""
     m = re.fullmatch(
-        r"(.+?)\s*(?:,|;|\s-+\s|\s\u2013\s|\s\u2014\s)\s*((?:(?:and |but )?(?:not|rather than|instead of) .+?)+)\.?",
+        r"(.+?)\s*(?:,|;|\s-+\s|\s\u2013\s|\s\u2014\s)\s*((?:(?:and |but )?(?:not|rather than|instead of) .+?)+)[.!]*",
         text,
     )
+    if m and _same_request_reversed(m.group(2).removeprefix("but ").removeprefix("not "), m.group(1)):
+        return m.group(1).strip()  # "stack red on green, not green on red": the request said the other way round
     if not m or not _is_step(m.group(1)) and not _GOAL_AS_STATE.match(m.group(1)) and " goes " not in m.group(1):
         return text
+    main = m.group(1).strip()
     parts = re.split(r"\s*(?:,\s*)?(?:and |but )?(?:not|rather than|instead of)\s+", m.group(2))
     things = []
     for part in (p.strip() for p in parts if p.strip()):
         said = re.fullmatch(
             rf"(?:back |again )?(?:(?:in|into|onto|on|to|in front of|on top of|inside|from|out of) )?"
-            rf"(?:the|a|an) ({_NP})",
+            rf"(?:any of )?(?:the|a|an) ({_NP})",
             part,
         )
-        if not said or not is_thing(said.group(1).split()[-1]):
+        thing = said.group(1) if said else ""
+        if thing.split()[-1:] in (["one"], ["ones"]):
+            # "put the nut on the square peg - not the round one": one of the kind the request named last
+            head = _last_thing(main)
+            if head and re.search(rf"\b(?:a|an|any|one) (?:\w+ )?{head}\b", main):
+                return text  # "open a drawer - not the top one": which one it is, the parser's to read
+            thing = " ".join([*thing.split()[:-1], head]) if head else ""
+        if not thing or not is_thing(thing.split()[-1]):
             return text  # a contrast of how or where, not of which thing ("not too fast"): the parser's to read
-        things.append(said.group(1))
-    return "".join(f"there is the {t}. " for t in things) + m.group(1).strip()
+        things.append(_singular_thing(thing) if " any of " in f" {part}" else thing)
+    return "".join(f"there is the {t}. " for t in things) + main
+
+
+def _same_request_reversed(part: str, main: str) -> bool:
+    """ "green on red" after "stack red on green": two things and a relation, each thing named in the request."""
+    said = re.fullmatch(rf"(?:the )?({_NP}) (?:on|onto|on top of|in|into|inside) (?:the )?({_NP})", part)
+    if not said:
+        return False
+    words = set(re.findall(r"[a-z]+", main))
+    return all(set(said.group(g).split()) <= words for g in (1, 2))
+
+
+def _last_thing(text: str) -> str | None:
+    """The last word of `text` that names a thing ("put the nut on the square peg" -> "peg")."""
+    return next((w for w in reversed(re.findall(r"[a-z]+", text)) if is_thing(w) and w not in ("one", "ones")), None)
+
+
+def _singular_thing(phrase: str) -> str:
+    """ "drawers" -> "drawer": one of several, said in a contrast as "any of the drawers"."""
+    *rest, head = phrase.split()
+    lemma = getLemma(head, upos="NOUN")
+    return " ".join([*rest, lemma[0] if lemma else head])
 
 
 def _former_latter(text: str) -> str:
@@ -266,6 +313,6 @@ def restructured(instruction: str) -> str:
     itself when none of these applies."""
     text = re.sub(r"\s+", " ", instruction.strip().lower().replace("\u2019", "'"))
     out = _joined(text)
-    for step in (_header, _former_latter, _cleft, _temporal, _context, _contrast, sequenced):
+    for step in (_header, _former_latter, _cleft, _temporal, _context, _unwanted_now, _contrast, sequenced):
         out = step(out)
     return instruction if out == text else out

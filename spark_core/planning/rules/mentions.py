@@ -204,7 +204,12 @@ def stray_nouns(instruction: str, clauses: list[Clause]) -> list[str]:
 _ASIDE = re.compile(
     r",?\s*(?:(?:since|because) (?:it|they|that|this|i|we|you)\b|(?:i|we) (?:need|want|have) to "
     r"(?:get|reach|see|look|check)\b|(?:carefully|gently|slowly) so\b|"
-    r"so (?:that )?(?:it|they|the [a-z]+) (?:does|do|will|would|is|are|can|could) not\b).*$"
+    r"so (?:that )?(?:it|they|the [a-z]+) (?:does|do|will|would|is|are|can|could) not\b|"
+    # what the speaker will do once it is done ("... so i can see what's inside", "... before we put anything on it")
+    r"(?:so (?:that )?|before |after |until )(?:i|we) (?:can |could |may |might |will |'ll )?[a-z]+\b|"
+    # how not to do it, after the request ("..., don't leave any stains behind"); not a thing left alone
+    r"(?<=[,-]) *(?:and |but )?(?:do not|don't|dont|never) (?!touch|move|take|grab|use|pick|lift|get|put|place|"
+    r"disturb|bother|mess|need)[a-z]+\b).*$"
 )
 _CLOSING_REMARK = re.compile(
     r"(?:\b(?:that|this) (?:is|will be|should be) |(?:,|-)\s*(?:is|are) )(?:the (?:target|goal|aim|idea|plan|"

@@ -462,6 +462,11 @@ def _resolve(c: Clause, before: list[Clause]) -> Clause:
     # "take it out of the drawer": where "it" is only restates where the thing named before is
     if obj and re.fullmatch(r"(?:it|them) (?:in|on|from|inside|at|on top of) .+", obj):
         obj = obj.split(" ", 1)[0]
+    if obj and prev.obj and re.match(r"(?:on|in|inside|on top of|next_to|next to|beside|near|by|under|between) ", obj):
+        # "don't take the bowl from the cabinet. take the one on the stove": "one" is of the kind just named
+        kind = split_relation(prev.obj)[0].split()
+        if kind and names_a_thing(kind[-1]):
+            obj = updates["obj"] = f"{kind[-1]} {obj}"
     if is_pronoun(obj):
         obj = prev.obj
         if c.action in ("open", "close"):  # "put the block in the drawer, you will have to open it": the drawer
@@ -695,6 +700,8 @@ def _elided_noun(target: str, obj: str) -> str:
     """ "one" stands for the noun just named: "put the farther block onto the nearer one" -> "... nearest block";
     "stack the red block on the blue one" -> "blue block"; "onto the one that isn't red" -> "block not red"."""
     head = re.split(r" not ", split_relation(obj)[0])[0].split() if obj else []
+    if head and (head[-1] in BASE_COLOURS or head[-1] in SIZES):
+        return target  # "the red one ... the green one": the kind is the scene's to find, no colour is a noun
     said = re.fullmatch(
         r"(?:the )?one ((?:that|which) .+|(?:on|to|at) (?:the |your )?(?:left|right|back|front)\b.*)", target
     )

@@ -122,6 +122,7 @@ _TRAILING = re.compile(
     # how carefully ("..., carefully so the stack doesn't tip")
     r"(?:since|because|as) (?:it|they|that|this|i|we|you)\b|"
     r"(?:i|we) (?:need|want|have) to (?:get|reach|see|look|check)\b|"
+    r"(?:so (?:that )?|before |after |until )(?:i|we) (?:can |could |may |might |will |'ll )?[a-z]+\b|"
     r"(?:just |simply |only )(?:push|slide|shove|nudge|move) (?:it|them)\b|"
     r"(?:carefully|gently|slowly)\b(?= so\b|\s*$)|"
     # the goal's own name after it ("..., that is the end state i am after", "not the other way round")
@@ -448,6 +449,17 @@ def sentences(instruction: str) -> list[str]:
         r"there is the \2 . \1",
         text,
     )
+    text = _named_after(text)
+    # "the cube at the bottom of the stack", "the cube that's underneath the green one": where it is in a stack
+    text = re.sub(r"\b(\w+) (?:that is |which is )?at the (bottom|top) of the (?:stack|pile|tower)\b", r"\2 \1", text)
+    text = re.sub(r"\b(?:underneath|beneath|below)\b(?= (?:the|a|an|it|that|this)\b)", "under", text)
+    # "there are two black bowls - put the closer one on the plate": which of them, said as "of the two ..."
+    text = re.sub(
+        r"^there(?: are|'re| re) (two|three|2|3) ([a-z ]+?s)\s*[,;:.!]\s*"
+        r"(?=(?:put|place|set|move|take|grab|pick|stack|lift|bring|drop|get)\b)",
+        r"of the \1 \2, ",
+        text,
+    )
     text = qualify(text)
     # "the beads that are (sitting) in the red mug": what a container holds, said by where it is (a relative clause
     # after a destination stays: "on the plate that's on the stove" says which plate, not a second destination)
@@ -513,6 +525,20 @@ _SAID_PLAINLY: tuple[tuple[str, str], ...] = (
         "",
     ),
     (r"\b(?:take|get|grab|catch) (?:a )?hold of\b", "grab"),
+    # "pass the hammer from one gripper to the other": a handover
+    (
+        r"\b(?:pass|hand|move|transfer|switch|shift) ((?:the|that|this) [\w ]+?|it) from one (?:arm|gripper|hand) to "
+        r"the other(?: (?:one|arm|gripper|hand))?\b",
+        r"pick up \1 with one arm and hand it over to the other arm",
+    ),
+    # "pot lifted off the table, held with both arms by its two handles": how it is held, said after the goal
+    (r"^(?=[a-z]+ (?:lifted|raised|held up|picked up)\b)", "the "),
+    (
+        r",\s*(?:and )?held (?:up )?(?:with|by|in) (?:both|two|the two) (?:arms|hands|grippers)"
+        r"(?: (?:by|at|from) (?:its|the) (?:two |both )?handles)?\s*[.!]?$",
+        " with both arms, holding it by its two handles",
+    ),
+    (r"\b(wipe|mop|clean|scrub|sponge) up (?=the|that|this|all|any)\b", r"\1 "),  # "wipe up the dirt": wipe it
     (r"\b(?:straight|directly|right) (?=(?:onto|into|on top of|on|in|inside)\b)", ""),
     (r",?\s*(?:and |but )?not (?:the other way|vice versa)(?: a?round)?(?=\s*(?:[.;!?,]|$))", ""),
     (
@@ -521,6 +547,24 @@ _SAID_PLAINLY: tuple[tuple[str, str], ...] = (
         r"pour \1 into \2",
     ),
 )
+
+
+# A thing said by a word that names anything ("the item closest to you"), then named ("..., that's the milk").
+_ANY_THING = r"(?:item|thing|object|one|product)"
+
+
+def _named_after(text: str) -> str:
+    """A thing said first by a word that names anything and then by its name: the name stands for it ("put the
+    item closest to you in the basket, that's the milk" -> "put the milk in the basket"; "the item furthest to the
+    right, the tomato sauce: put it in the basket" -> "the tomato sauce: put it ...")."""
+    m = re.fullmatch(
+        rf"(.*?)\bthe ([a-z ]*?\b{_ANY_THING}\b[a-z ]*?) ((?:in|into|on|onto|inside|on top of) .+?),?\s*"
+        r"(?:that is|thats|that|which is|i mean|i\.e\.?|ie|namely|meaning) ((?:the|a|an) [a-z ]+?)\s*[.!]?",
+        text,
+    )
+    if m:
+        return f"{m.group(1)}{m.group(4)} {m.group(3)}"
+    return re.sub(rf"^the [a-z ]*?\b{_ANY_THING}\b[a-z ]*?,\s*(?=(?:the|a|an) [a-z ]+?\s*[,:;]\s*\w)", "", text)
 
 
 def _verb_first(phrase: str) -> bool:
@@ -547,6 +591,7 @@ def _part_purpose(m: re.Match) -> str:
 _LEAVE_ALONE = re.compile(
     r"(^|[,;:.?!] |- |\band |\bbut )(?:just |please )?"
     r"(leave|ignore|skip|do not touch|do not move|do not disturb|do not bother with|do not mess with|never mind|"
+    r"do not (?:take|grab|use|pick up|pick|lift|get)|(?<![\w,;:.?!-] )not|"
     r"no need to (?:move|touch)|(?:you )?do not need to (?:move|touch)|"
     r"forget(?: about)?|keep away from|stay away from|avoid) "
     # (not the rest: "... and leave the rest where they are" only closes the request, _TRAILING)
@@ -932,7 +977,7 @@ def _carried_thing(text: str) -> str | None:
     """The first thing named that is no arm, hand or handle ("the hammer's handle" names the hammer)."""
     for m in re.finditer(
         r"\b(?:the|a|an|its) ([\w ]+?)(?:'s\b|(?= (?:by|with|and|to|on|in|from|of|so|then|for|"
-        r"across|over|using|has|is)\b)|\s*$|\s*[,.;:])",
+        r"across|over|using|has|is|lifted|raised|held|picked|up|off)\b)|\s*$|\s*[,.;:])",
         text,
     ):
         words = m.group(1).split()
