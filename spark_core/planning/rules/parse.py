@@ -389,11 +389,16 @@ def _other_of(phrase: str, text: str, said: list[str]) -> str | None:
         between = r"(?:(?!(?:in|on|into|onto|inside|to|at|by|with|from|of|the|a|an|and|then|not)\b)\w+ ){0,2}"
         if not re.search(rf"\bthe other {between}{re.escape(kind)}s?\b", text):
             return None
-        found = next((p for p in said if head_noun(p) == kind and p != phrase), None)
+        found = next((p for p in said if (head_noun(p) == kind or _ELIDED_HEAD.match(p)) and p != phrase), None)
         if found is None:
             return None
-        ref = found
+        # "not the one on the stove: the other black bowl": the one said by where it is was of this kind
+        ref = f"{kind} {found}" if _ELIDED_HEAD.match(found) else found
     return _complement(ref, None if phrase in ("one", "ones") else phrase)
+
+
+# A phrase whose noun went with "one" ("the one on the stove" -> "on stove"): the thing said only by where it is.
+_ELIDED_HEAD = re.compile(r"(?:on|in|inside|on top of|next_to|next to|beside|near|by|under|between) ")
 
 
 def _complement(ref: str, phrase: str | None) -> str | None:

@@ -173,6 +173,8 @@ def sentences(instruction: str) -> list[str]:
     text = instruction.lower().replace("’", "'").strip()
     for short, long in CONTRACTIONS.items():
         text = re.sub(rf"\b{re.escape(short)}", long, text)
+    # what the thing looks like, said after the request about it ("...; it's the flat box"): no step
+    text = re.sub(r"(?<=\S)\s*[;.]\s*(?:it is|it's|its) (?:the|a|an) (?:[a-z]+ ){0,2}[a-z]+\s*[.!]?$", "", text)
     # "the mug's got beads in it": the mug has them, not whose
     text = re.sub(r"(\w)'s got\b|\bhas got\b", lambda m: f"{m.group(1) or ''} has".lstrip(), text)
     # an interjection or a turn-taking word said first ("hey, ...", "um ...", "next: ..."): no part of the request
@@ -470,6 +472,8 @@ def sentences(instruction: str) -> list[str]:
         text,
     )
     text = re.sub(_LEAVE_ALONE, _left_be, text)
+    # "not the one on the stove: the other black bowl, ...": the thing set apart is a sentence of its own
+    text = re.sub(r"(^|[.;!?] )(there is [^:;.!?]+?)\s*:\s*(?=\w)", r"\1\2 . ", text)
     # "one of the black bowls is on the stove": that one, the bowl on the stove, named for what follows
     text = re.sub(
         r"(^|[.;!?] )one of the ((?:\w+ ){0,2})(\w+s) (?:is|sits|rests|stands) (?:up |down |over |now )?"
@@ -479,6 +483,13 @@ def sentences(instruction: str) -> list[str]:
     )
     for said, plainly in _SAID_PLAINLY:
         text = re.sub(said, plainly, text)
+    text = _thing_then_place(text)
+    # "open the drawer, then red block in, that's it": a thing and only "in" after a step, put in what it worked
+    text = re.sub(
+        r"(\bthen |, )((?:the |a )?[a-z]+(?: [a-z]+)?) (?:in|inside|in there)(?=\s*(?:[,.;!]|$))",
+        lambda m: m.group(0) if _verb_first(m.group(2)) else f"{m.group(1)}put {m.group(2)} in it",
+        text,
+    )
     # "the bbq sauce into the basket, not the tomato sauce": the thing ruled out is named, and not moved
     text = re.sub(r",\s*(?:and |but )?not (the|that|this) ([\w' ]+?)(?=\s*(?:[.;!?]|$))", r" ; there is \1 \2", text)
     text = re.sub(r",\s*(?=(?:which|who) (?:is|are)\b)", " ", text)  # "the block, which is on the plate," locates it
@@ -547,6 +558,20 @@ _SAID_PLAINLY: tuple[tuple[str, str], ...] = (
         r"pour \1 into \2",
     ),
 )
+
+
+def _thing_then_place(text: str) -> str:
+    """A thing, then after a comma only where it goes ("black bowl beside the plate, straight onto the plate"): a
+    carry of that thing there. A part that starts with a verb is a step of its own, and "on"/"in" may only say where
+    the thing is, so only the words that say where it goes count."""
+    m = re.fullmatch(
+        r"((?:the |a |an )?[a-z][a-z' ]*?),\s*(?:straight |right |directly )?((?:onto|into|on top of) (?:the|a|an) "
+        r"[a-z ]+?)\s*[.!]?",
+        text,
+    )
+    if not m or _verb_first(m.group(1)) or m.group(1).split()[0] in ("then", "and", "there", "it", "i", "we"):
+        return text
+    return f"put {m.group(1)} {m.group(2)}"
 
 
 # A thing said by a word that names anything ("the item closest to you"), then named ("..., that's the milk").
