@@ -155,3 +155,80 @@ def test_from_one_gripper_to_the_other_is_a_handover():
 def test_held_with_both_arms_by_its_handles_is_a_two_arm_lift():
     said = imperatives("kettle lifted off the table, held with both arms by its two handles")
     assert said == [f"pick up the {side} kettle handle with both arms" for side in ("left", "right")]
+
+
+# From the dev half and the blind probe data/wording/probe26.yaml (after its blind figure was recorded).
+
+
+def test_not_the_one_by_a_place_then_the_other_of_a_kind():
+    said = "not the one on the shelf: the other teacup, onto the saucer"
+    assert _read(said) == [("mention", "on shelf", None, None), ("put", "teacup not on shelf", "on", "saucer")]
+
+
+@pytest.mark.parametrize(
+    "said, read",
+    [
+        ("lime cube next to the tray, straight onto the tray", [("put", "lime cube next to tray", "on", "tray")]),
+        (
+            "open the drawer, then lime cube in, that's it",
+            [("open", "drawer", None, None), ("put", "lime cube", "in", "drawer")],
+        ),
+        (
+            "top drawer open with the lemon inside",
+            [("open", "top drawer", None, None), ("put", "lemon", "in", None)],
+        ),
+    ],
+)
+def test_a_thing_and_only_where_it_goes_is_a_carry(said, read):
+    assert _read(said) == read
+
+
+@pytest.mark.parametrize(
+    "said, read",
+    [
+        ("make sure the hob isn't on", [("turn_off", "hob", None, None)]),
+        ("make sure the drawer is not open", [("close", "drawer", None, None)]),
+        (
+            "the dresser drawer shouldn't be open, close it",
+            [("mention", "dresser drawer", None, None), ("close", "dresser drawer", None, None)],
+        ),
+        ("the hob is not on yet - switch it on", [("mention", "hob", None, None), ("turn_on", "hob", None, None)]),
+    ],
+)
+def test_a_state_said_as_the_others_negation_is_that_state(said, read):
+    assert _read(said) == read
+
+
+def test_counted_from_the_top_of_the_thing_it_is_part_of():
+    assert _read("open the second drawer from the top of the oak dresser") == [
+        ("open", "second top oak dresser drawer", None, None)
+    ]
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "lift the lime cube, just want to see if the grasp holds",
+        "wipe the counter, we have a demo later.",
+        "pour the beads from the teacup into the tureen, try not to spill any",
+        "put the lemon in the crate; it's the yellow one",
+    ],
+)
+def test_a_remark_after_the_request_names_nothing(said):
+    clauses = parse_instruction(restructured(said))
+    assert stray_nouns(said, clauses) == []
+    assert all(c.obj is None or not {"want", "demo", "any", "yellow"} & set(c.obj.split()) for c in clauses)
+
+
+def test_pushing_an_area_or_into_a_solid_thing_is_impossible():
+    from tests.planning.scene_views import plan, view
+
+    scene = view(green_area=(0.6, 0.1, 0.0), lime_block=(0.5, -0.1, 0.02))
+    result = plan("push the green area into the lime block", scene)
+    assert not result.ok and "a place on the table, not a thing to push" in result.error
+    assert plan("push the lime block into the green area", scene).ok
+
+
+def test_held_by_both_handles_with_both_arms_after_up_off_the_table():
+    said = imperatives("kettle up off the table, held by both handles with both arms")
+    assert said == [f"pick up the {side} kettle handle with both arms" for side in ("left", "right")]

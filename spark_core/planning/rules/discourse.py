@@ -161,7 +161,8 @@ def _context(text: str) -> str:
     stove is off, switch it on", "the green cube stays put; put the red cube on it"): no step, only the thing named
     ("there is the drawer"), so that a later "it" finds it and it must be in the scene."""
     m = re.fullmatch(
-        rf"({_DET} )?({_NP}) (?:(?:is|are|'s) (?:currently |still |now |already )?{_STATES}|{_STAYS})\s*"
+        rf"({_DET} )?({_NP}) (?:(?:is|are|'s) (?:currently |still |now |already )?{_STATES}|{_STAYS}|"
+        rf"(?:should not|shouldn't|must not|mustn't|ought not to|is not supposed to|isn't supposed to) be {_STATES})\s*"
         r"(?:[,;:.!]|\s-+\s|\s\u2013\s|\s\u2014\s)\s*(.+)",
         text,
     )
@@ -303,6 +304,19 @@ def _cleft(text: str) -> str:
     return text
 
 
+_OPPOSITE_STATE = {"on": "off", "off": "on", "open": "closed", "closed": "open", "shut": "open"}
+
+
+def _negated_state(text: str) -> str:
+    """A state said as the other one's negation ("make sure the stove isn't on", "the drawer is not closed"): the
+    other state, which the readers know ("... the stove is off")."""
+    return re.sub(
+        r"\b(is|are) ?(?:not|n't) (on|off|open|closed|shut)\b(?: yet\b)?",
+        lambda m: f"{m.group(1)} {_OPPOSITE_STATE[m.group(2)]}",
+        text,
+    )
+
+
 def _joined(text: str) -> str:
     """A superlative of place said with a hyphen as one word: "right-most" is "rightmost"."""
     return re.sub(r"\b(left|right|front|back|top|bottom|upper|lower|rear|fore)[- ]most\b", r"\1most", text)
@@ -312,7 +326,7 @@ def restructured(instruction: str) -> str:
     """The instruction said plainly and in the order its steps happen (see the module's docstring); the instruction
     itself when none of these applies."""
     text = re.sub(r"\s+", " ", instruction.strip().lower().replace("\u2019", "'"))
-    out = _joined(text)
+    out = _negated_state(_joined(text))
     for step in (_header, _former_latter, _cleft, _temporal, _context, _unwanted_now, _contrast, sequenced):
         out = step(out)
     return instruction if out == text else out

@@ -208,8 +208,11 @@ _ASIDE = re.compile(
     # what the speaker will do once it is done ("... so i can see what's inside", "... before we put anything on it")
     r"(?:so (?:that )?|before |after |until )(?:i|we) (?:can |could |may |might |will |'ll )?[a-z]+\b|"
     # how not to do it, after the request ("..., don't leave any stains behind"); not a thing left alone
-    r"(?<=[,-]) *(?:and |but )?(?:do not|don't|dont|never) (?!touch|move|take|grab|use|pick|lift|get|put|place|"
-    r"disturb|bother|mess|need)[a-z]+\b).*$"
+    r"(?<=[,-]) *(?:and |but )?(?:(?:do not|don't|dont|never|try not to|careful not to|be careful not to) "
+    r"(?!touch|move|take|grab|use|pick|lift|get|put|place|disturb|bother|mess|need)[a-z]+\b|"
+    # why, said as the speaker's want or plans ("..., just want to see if the grasp holds", "..., we have a demo")
+    r"(?:i )?(?:just |only )?(?:want|wanna|need|would like) to (?:see|check|test|know|verify|find out)\b|"
+    r"(?:we|i) (?:have|have got) (?:a|an|some|guests|visitors|company)\b)).*$"
 )
 _CLOSING_REMARK = re.compile(
     r"(?:\b(?:that|this) (?:is|will be|should be) |(?:,|-)\s*(?:is|are) )(?:the (?:target|goal|aim|idea|plan|"

@@ -356,6 +356,11 @@ class RulesPlanner:
                 else:
                     out += pick + [_prim("place", target_label=t)]
             elif c.action == "push":
+                tail = f"(understood: {understood}; found in the scene: {seen})"
+                if _is_region(obj):  # "push the green area into the block": an area is where things go, not a thing
+                    raise Impossible(f"{c.text!r}: {obj!r} is a place on the table, not a thing to push {tail}")
+                if target and c.relation == "in" and _kind(target) in SOLIDS:
+                    raise Impossible(f"{c.text!r}: nothing goes into {target!r}: a {_kind(target)} is solid {tail}")
                 o = need(obj, "object", c)
                 if target:
                     need(target, "destination", c)

@@ -122,6 +122,13 @@ def ordinals(text: str) -> str:
         lambda m: f"{m.group(1)} {_RANKED_EXTREME.get(m.group(2), m.group(2))}",
         text,
     )
+    # counted from the top or the bottom of the thing it is part of ("the second drawer from the top of the cabinet"):
+    # the count, then whose part it is
+    text = re.sub(
+        rf"\b({ranks}) (\w+) from the (top|bottom) of (the (?:\w+ ){{0,2}}\w+)",
+        lambda m: f"{counted(m.group(1), m.group(2), 'from', m.group(3))} of {m.group(4)}",
+        text,
+    )
     # counted down from the top or up from the bottom ("the second drawer down", "the third shelf up")
     text = re.sub(
         rf"\b({ranks}) ({NP}) (down|up)\b(?! (?:on|onto|in|into|to)\b(?! the (?:cabinet|shelf|rack)))",

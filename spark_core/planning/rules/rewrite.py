@@ -102,7 +102,7 @@ _TRAILING = re.compile(
     # the request closed ("..., blue block to the yellow tray, done")
     r"(?<=,)\s*(?:and )?(?:done|finished|over|end|fin)\s*$|"
     # the cleaning goal said again ("table clean, no dirt left")
-    r"no (?:dirt|mess|stains?|spills?|crumbs|grime|smudges?|marks?) (?:left|remaining|anywhere)\b|"
+    r"no (?:dirt|mess|stains?|spills?|crumbs|grime|smudges?|marks?) (?:left|remaining|anywhere|on it|on the \w+)\b|"
     # the means, after the step it serves ("switch the stove on by twisting the knob")
     r"by (?:twisting|turning|rotating|flicking|flipping|pressing|pushing|pulling|tugging|using|working|spinning|"
     r"cranking|sliding|lifting|gripping|grabbing|holding|tipping|tilting)\b|"
@@ -123,6 +123,9 @@ _TRAILING = re.compile(
     r"(?:since|because|as) (?:it|they|that|this|i|we|you)\b|"
     r"(?:i|we) (?:need|want|have) to (?:get|reach|see|look|check)\b|"
     r"(?:so (?:that )?|before |after |until )(?:i|we) (?:can |could |may |might |will |'ll )?[a-z]+\b|"
+    # why, said as the speaker's want or plans ("..., just want to see if the grasp holds", "..., we have a demo")
+    r"(?:i )?(?:just |only )?(?:want|wanna|need|would like) to (?:see|check|test|know|verify|find out)\b|"
+    r"(?:we|i) (?:have|have got) (?:a|an|some|guests|visitors|company)\b|"
     r"(?:just |simply |only )(?:push|slide|shove|nudge|move) (?:it|them)\b|"
     r"(?:carefully|gently|slowly)\b(?= so\b|\s*$)|"
     # the goal's own name after it ("..., that is the end state i am after", "not the other way round")
@@ -184,10 +187,18 @@ def sentences(instruction: str) -> list[str]:
         "",
         text,
     )
+    # "pot lifted off the table, held with both arms by its two handles": how it is held, said after the goal
+    text = re.sub(r"^(?=[a-z]+ (?:lifted|raised|held up|picked up|up off|up from)\b)", "the ", text)
+    text = re.sub(
+        r",\s*(?:and )?held (?:up )?(?:(?:with|by|in|at|from) (?:both|two|the two|its two|its|the) (?:its )?"
+        r"(?:arms|hands|grippers|handles)\s*){1,2}[.!]?$",
+        ", holding it by its two handles with both arms",
+        text,
+    )
     # "red cube up off the table, please": a lift said by where the thing ends up
     text = re.sub(
         r"^((?:the |a |an )?[a-z]+(?: [a-z]+){0,2}) up(?: (?:off|from) (?:of )?(?:the )?(?:table|counter|surface))?"
-        r"(?=\s*(?:[.;!?]|,\s*please\b|$))",
+        r"(?=\s*(?:[.;!?]|,\s*(?:please|holding)\b|$))",
         lambda m: m.group(0) if _verb_first(m.group(1)) else f"pick up {m.group(1)}",
         text,
     )
@@ -484,6 +495,13 @@ def sentences(instruction: str) -> list[str]:
     for said, plainly in _SAID_PLAINLY:
         text = re.sub(said, plainly, text)
     text = _thing_then_place(text)
+    # "top drawer open with the cream cheese inside": the drawer opened, then the thing put in it
+    text = re.sub(
+        r"^(?:the )?((?:[a-z]+ ){0,2}(?:drawer|cabinet|box|cupboard|microwave|fridge)) (?:open|opened|pulled out),? "
+        r"with ((?:the|a|an) [a-z ]+?) (?:inside|in it|in there|in)\s*[.!]?$",
+        r"open the \1 and put \2 inside",
+        text,
+    )
     # "open the drawer, then red block in, that's it": a thing and only "in" after a step, put in what it worked
     text = re.sub(
         r"(\bthen |, )((?:the |a )?[a-z]+(?: [a-z]+)?) (?:in|inside|in there)(?=\s*(?:[,.;!]|$))",
@@ -541,13 +559,6 @@ _SAID_PLAINLY: tuple[tuple[str, str], ...] = (
         r"\b(?:pass|hand|move|transfer|switch|shift) ((?:the|that|this) [\w ]+?|it) from one (?:arm|gripper|hand) to "
         r"the other(?: (?:one|arm|gripper|hand))?\b",
         r"pick up \1 with one arm and hand it over to the other arm",
-    ),
-    # "pot lifted off the table, held with both arms by its two handles": how it is held, said after the goal
-    (r"^(?=[a-z]+ (?:lifted|raised|held up|picked up)\b)", "the "),
-    (
-        r",\s*(?:and )?held (?:up )?(?:with|by|in) (?:both|two|the two) (?:arms|hands|grippers)"
-        r"(?: (?:by|at|from) (?:its|the) (?:two |both )?handles)?\s*[.!]?$",
-        " with both arms, holding it by its two handles",
     ),
     (r"\b(wipe|mop|clean|scrub|sponge) up (?=the|that|this|all|any)\b", r"\1 "),  # "wipe up the dirt": wipe it
     (r"\b(?:straight|directly|right) (?=(?:onto|into|on top of|on|in|inside)\b)", ""),
