@@ -176,8 +176,6 @@ def sentences(instruction: str) -> list[str]:
     text = instruction.lower().replace("’", "'").strip()
     for short, long in CONTRACTIONS.items():
         text = re.sub(rf"\b{re.escape(short)}", long, text)
-    # what the thing looks like, said after the request about it ("...; it's the flat box"): no step
-    text = re.sub(r"(?<=\S)\s*[;.]\s*(?:it is|it's|its) (?:the|a|an) (?:[a-z]+ ){0,2}[a-z]+\s*[.!]?$", "", text)
     # "the mug's got beads in it": the mug has them, not whose
     text = re.sub(r"(\w)'s got\b|\bhas got\b", lambda m: f"{m.group(1) or ''} has".lstrip(), text)
     # an interjection or a turn-taking word said first ("hey, ...", "um ...", "next: ..."): no part of the request
@@ -187,14 +185,8 @@ def sentences(instruction: str) -> list[str]:
         "",
         text,
     )
-    # "pot lifted off the table, held with both arms by its two handles": how it is held, said after the goal
-    text = re.sub(r"^(?=[a-z]+ (?:lifted|raised|held up|picked up|up off|up from)\b)", "the ", text)
-    text = re.sub(
-        r",\s*(?:and )?held (?:up )?(?:(?:with|by|in|at|from) (?:both|two|the two|its two|its|the) (?:its )?"
-        r"(?:arms|hands|grippers|handles)\s*){1,2}[.!]?$",
-        ", holding it by its two handles with both arms",
-        text,
-    )
+    for said, plainly in _HOW_PLAINLY:
+        text = re.sub(said, plainly, text)
     # "red cube up off the table, please": a lift said by where the thing ends up
     text = re.sub(
         r"^((?:the |a |an )?[a-z]+(?: [a-z]+){0,2}) up(?: (?:off|from) (?:of )?(?:the )?(?:table|counter|surface))?"
@@ -463,16 +455,8 @@ def sentences(instruction: str) -> list[str]:
         text,
     )
     text = _named_after(text)
-    # "the cube at the bottom of the stack", "the cube that's underneath the green one": where it is in a stack
-    text = re.sub(r"\b(\w+) (?:that is |which is )?at the (bottom|top) of the (?:stack|pile|tower)\b", r"\2 \1", text)
-    text = re.sub(r"\b(?:underneath|beneath|below)\b(?= (?:the|a|an|it|that|this)\b)", "under", text)
-    # "there are two black bowls - put the closer one on the plate": which of them, said as "of the two ..."
-    text = re.sub(
-        r"^there(?: are|'re| re) (two|three|2|3) ([a-z ]+?s)\s*[,;:.!]\s*"
-        r"(?=(?:put|place|set|move|take|grab|pick|stack|lift|bring|drop|get)\b)",
-        r"of the \1 \2, ",
-        text,
-    )
+    for said, plainly in _WHICH_PLAINLY:
+        text = re.sub(said, plainly, text)
     text = qualify(text)
     # "the beads that are (sitting) in the red mug": what a container holds, said by where it is (a relative clause
     # after a destination stays: "on the plate that's on the stove" says which plate, not a second destination)
@@ -539,6 +523,30 @@ _DONE_BEFORE = re.compile(
 # left on it"), dirt got off a thing (a wipe), a wish closed by how good it would be, "take hold of" (grab),
 # "straight onto" (onto), the order said again ("not the other way round"), a pour said by its manner ("get them
 # into the bowl by pouring").
+# What is said after the request about the thing, or how it is held, in the words the readers know.
+_HOW_PLAINLY: tuple[tuple[str, str], ...] = (
+    # what the thing looks like, said after the request about it ("...; it's the flat box"): no step
+    (r"(?<=\S)\s*[;.]\s*(?:it is|it's|its) (?:the|a|an) (?:[a-z]+ ){0,2}[a-z]+\s*[.!]?$", ""),
+    # "pot lifted off the table, held with both arms by its two handles": how it is held, said after the goal
+    (r"^(?=[a-z]+ (?:lifted|raised|held up|picked up|up off|up from)\b)", "the "),
+    (
+        r",\s*(?:and )?held (?:up )?(?:(?:with|by|in|at|from) (?:both|two|the two|its two|its|the) (?:its )?"
+        r"(?:arms|hands|grippers|handles)\s*){1,2}[.!]?$",
+        ", holding it by its two handles with both arms",
+    ),
+)
+# Which thing, said in words the qualifier reader knows (before it runs).
+_WHICH_PLAINLY: tuple[tuple[str, str], ...] = (
+    # "the cube at the bottom of the stack", "the cube that's underneath the green one": where it is in a stack
+    (r"\b(\w+) (?:that is |which is )?at the (bottom|top) of the (?:stack|pile|tower)\b", r"\2 \1"),
+    (r"\b(?:underneath|beneath|below)\b(?= (?:the|a|an|it|that|this)\b)", "under"),
+    # "there are two black bowls - put the closer one on the plate": which of them, said as "of the two ..."
+    (
+        r"^there(?: are|'re| re) (two|three|2|3) ([a-z ]+?s)\s*[,;:.!]\s*"
+        r"(?=(?:put|place|set|move|take|grab|pick|stack|lift|bring|drop|get)\b)",
+        r"of the \1 \2, ",
+    ),
+)
 _SAID_PLAINLY: tuple[tuple[str, str], ...] = (
     (
         r"\b(?:a|the) (table|counter|surface) with no (?:dirt|mess|crumbs|stains?|grime)(?: left)?(?: on it)?\b",
