@@ -232,3 +232,95 @@ def test_pushing_an_area_or_into_a_solid_thing_is_impossible():
 def test_held_by_both_handles_with_both_arms_after_up_off_the_table():
     said = imperatives("kettle up off the table, held by both handles with both arms")
     assert said == [f"pick up the {side} kettle handle with both arms" for side in ("left", "right")]
+
+
+# From the blind probe data/wording/probe27.yaml (after its blind figure was recorded).
+
+
+@pytest.mark.parametrize(
+    "said, read",
+    [
+        ("lift the lime cube. that's it, nothing else for now", [("pick", "lime cube", None, None)]),
+        ("scrub the tray with the rag ok that's all", [("scrub", None, None, "tray")]),
+        ("put the lemon in the crate and then you can stop there", [("put", "lemon", "in", "crate")]),
+        ("when you're done I want the lemon sitting in the crate.", [("put", "lemon", "in", "crate")]),
+        (
+            "of the two teacups, take the closer one, it's sitting on the tray, and put it on the saucer",
+            [("pick", "closest teacup", None, None), ("put", "closest teacup", "on", "saucer")],
+        ),
+        (
+            "i want the teacup that's currently on the tray to end up on the saucer",
+            [("put", "teacup on tray", "on", "saucer")],
+        ),
+    ],
+)
+def test_what_a_speaker_says_around_the_request_is_no_part_of_it(said, read):
+    assert _read(said) == read
+
+
+@pytest.mark.parametrize(
+    "said, read",
+    [
+        ("put the brass nut on the peg on the left, the hex one", [("put", "brass nut", "on", "leftmost hex peg")]),
+        ("pick up the farther of the two cubes, the lime one", [("pick", "farthest lime cube", None, None)]),
+        (
+            "put the smaller of the two cubes (the lime one) on top of the bigger pink one.",
+            [("put", "smallest lime cube", "on", "largest pink cube")],
+        ),
+        (
+            "set the cup on the tray: not the one on the shelf, the other one",
+            [("put", "cup not on shelf", "on", "tray")],
+        ),
+    ],
+)
+def test_what_a_thing_looks_like_said_after_it_goes_before_its_noun(said, read):
+    assert _read(said) == read
+
+
+@pytest.mark.parametrize(
+    "said, read",
+    [
+        (
+            "the lime cube should end up inside the green square, push it in there",
+            [("push", "lime cube", "in", "green square")],
+        ),
+        (
+            "grab the teacup in the drawer, not the one sitting on the shelf, and set it on the saucer",
+            [("pick", "teacup in drawer", None, None), ("put", "teacup in drawer", "on", "saucer")],
+        ),
+        (
+            "put the teacup next to the jug on the saucer, not the one further back.",
+            [("put", "teacup next to jug", "on", "saucer")],
+        ),
+        (
+            "put the tray on top of the dresser, not inside one of its drawers",
+            [("mention", "drawer", None, None), ("put", "tray", "on", "dresser")],
+        ),
+        ("final configuration: lime cube stacked on the pink cube", [("stack", "lime cube", "on", "pink cube")]),
+        (
+            "build a tower with the blue cube at the bottom, green in the middle and red on top",
+            [("stack", "green", "on", "blue cube"), ("stack", "red", "on", "green")],
+        ),
+    ],
+)
+def test_goals_said_with_how_or_what_not(said, read):
+    assert _read(said) == read
+
+
+def test_the_cleaning_goal_said_again_after_a_comma_is_no_step():
+    said = "the counter should end up clean, with none of the brown dirt left on it."
+    assert _read(said) == _read("the counter should end up clean") == [("scrub", None, None, "counter dirt")]
+
+
+def test_a_state_negated_before_a_place_is_where_it_is_not():
+    assert _read("put the teacup that isn't on the shelf on the saucer") == [
+        ("put", "teacup not on shelf", "on", "saucer")
+    ]
+
+
+def test_pouring_into_a_product_is_impossible():
+    from tests.planning.scene_views import plan, view
+
+    scene = view(crate=(0.6, 0.1, 0.05), milk_carton=(0.5, -0.1, 0.07), teacup=(0.5, 0.2, 0.04))
+    result = plan("pour the crate into the milk carton", scene)
+    assert not result.ok and "a product in its package" in result.error

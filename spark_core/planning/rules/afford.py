@@ -358,6 +358,8 @@ def _pour_or_push(instruction: str, distinct: list[Mention], actions: list[str],
     if len(dests) != 1 or len(things) > 1 or len(sources) > 1 or len(things) + len(sources) != len(distinct) - 1:
         return []
     if "pour" in actions and not ({"push", "stack", "pick"} & set(actions)):
+        if not (things or sources):
+            return []  # a pour into the one thing named, with nothing said to pour from: no reading
         obj = (things or sources)[0].phrase
         source = sources[0].phrase if sources else obj
         clause = Clause("pour", obj=obj, target=dests[0].phrase, source=source, text=instruction)

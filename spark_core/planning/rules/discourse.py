@@ -205,7 +205,7 @@ def _contrast(text: str) -> str:
     for part in (p.strip() for p in parts if p.strip()):
         said = re.fullmatch(
             rf"(?:back |again )?(?:(?:in|into|onto|on|to|in front of|on top of|inside|from|out of) )?"
-            rf"(?:any of )?(?:the|a|an) ({_NP})",
+            rf"(?:(?:any|one) of )?(?:the|a|an|its|their) ({_NP})",
             part,
         )
         thing = said.group(1) if said else ""
@@ -217,7 +217,7 @@ def _contrast(text: str) -> str:
             thing = " ".join([*thing.split()[:-1], head]) if head else ""
         if not thing or not is_thing(thing.split()[-1]):
             return text  # a contrast of how or where, not of which thing ("not too fast"): the parser's to read
-        things.append(_singular_thing(thing) if " any of " in f" {part}" else thing)
+        things.append(_singular_thing(thing) if re.search(r"\b(?:any|one) of ", part) else thing)
     return "".join(f"there is the {t}. " for t in things) + main
 
 
@@ -277,6 +277,8 @@ def _header(text: str) -> str:
     # what a request is made of ("two stacking moves: ...", "three steps: ...")
     parts = {"move", "moves", "step", "steps", "job", "jobs", "task", "tasks", "thing", "things", "stage", "stages"}
     parts |= {"stacking", "action", "actions", "sequence", "order"}
+    # what the request describes ("final configuration: ...", "end state: ...", "goal: ...")
+    parts |= {"configuration", "state", "arrangement", "layout", "goal", "target", "result", "final", "end", "setup"}
     if not words or any(is_thing(w) for w in words if w not in numbers and w not in parts):
         return text
     return m.group(2)
@@ -311,7 +313,8 @@ def _negated_state(text: str) -> str:
     """A state said as the other one's negation ("make sure the stove isn't on", "the drawer is not closed"): the
     other state, which the readers know ("... the stove is off")."""
     return re.sub(
-        r"\b(is|are) ?(?:not|n't) (on|off|open|closed|shut)\b(?: yet\b)?",
+        r"\b(is|are) ?(?:not|n't) (on|off|open|closed|shut)\b(?! (?:the|a|an|top|its|your|my|this|that|to|of)\b)"
+        r"(?: yet\b)?",
         lambda m: f"{m.group(1)} {_OPPOSITE_STATE[m.group(2)]}",
         text,
     )
@@ -326,7 +329,13 @@ def restructured(instruction: str) -> str:
     """The instruction said plainly and in the order its steps happen (see the module's docstring); the instruction
     itself when none of these applies."""
     text = re.sub(r"\s+", " ", instruction.strip().lower().replace("\u2019", "'"))
-    out = _negated_state(_joined(text))
+    # a parenthesis that names the thing is an apposition between commas ("the smaller cube (the red one) on ...")
+    out = re.sub(
+        r"\s*\(\s*((?:the|that|i mean) [^()]*?)\s*\)\s*(?=(\w)?)",
+        lambda m: f", {m.group(1)}," + (" " if m.group(2) else ""),
+        text,
+    )
+    out = _negated_state(_joined(out))
     for step in (_header, _former_latter, _cleft, _temporal, _context, _unwanted_now, _contrast, sequenced):
         out = step(out)
     return instruction if out == text else out

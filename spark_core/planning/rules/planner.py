@@ -11,6 +11,7 @@ import numpy as np
 
 from ...grammar import PlanError, check_plan, to_yaml
 from ...perception.qualifiers import split_relation
+from ...perception.variants import CONSUMABLES, PACKAGING
 from ..protocol import PlanRequest, PlanResult
 from .afford import Reading, unplaced_variety
 from .afford import best as afforded
@@ -357,7 +358,7 @@ class RulesPlanner:
                     out += pick + [_prim("place", target_label=t)]
             elif c.action == "push":
                 tail = f"(understood: {understood}; found in the scene: {seen})"
-                if _is_region(obj):  # "push the green area into the block": an area is where things go, not a thing
+                if obj and _kind(obj) in REGIONS:  # "push the green area into the block": an area is no thing
                     raise Impossible(f"{c.text!r}: {obj!r} is a place on the table, not a thing to push {tail}")
                 if target and c.relation == "in" and _kind(target) in SOLIDS:
                     raise Impossible(f"{c.text!r}: nothing goes into {target!r}: a {_kind(target)} is solid {tail}")
@@ -388,6 +389,12 @@ class RulesPlanner:
                 out.append(_prim("turn_knob", keypoint_label=knob, angle=90.0 if c.action == "turn_on" else -90.0))
             elif c.action == "pour":
                 dst = need(target, "container to pour into", c)
+                product = _kind(dst) in CONSUMABLES or _kind(dst) in PACKAGING and set(dst.split()) & CONSUMABLES
+                if product:  # "pour the basket into the milk carton": a product in its package, not a vessel
+                    raise Impossible(
+                        f"{c.text!r}: {dst!r} is a product in its package, not a container to pour into (understood: "
+                        f"{understood}; found in the scene: {seen})"
+                    )
                 src = need(_holder_of(c.source or obj, dst, scene), "container to pour from", c)
                 if held == src and out and out[-1]["primitive"] == "pick":
                     out.pop()  # "pick up the mug and pour it": pouring grasps it from the side itself

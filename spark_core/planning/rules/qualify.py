@@ -444,6 +444,11 @@ def _trailing_not(text: str) -> str:
     head = _singular_phrase(obj.group(2)).split()[-1]
     if set(obj.group(2).split()) & set(_QUALIFIER_WORDS) and _ruled_out(rest or "") in _QUALIFIER_WORDS:
         return main  # "the bottom drawer, not the middle one": the qualifier said already picks it out
+    located = re.match(
+        r"\s+(?:next to|beside|by|near|between|(?:that|which) (?:is|are|sits?|stands?) \w+) ", main[obj.end() :]
+    )
+    if located or obj.group(2).endswith(" next") and main[obj.end() :].startswith(" to "):
+        return main  # "the black bowl next to the ramekin ..., not the one further back": where it is picks it out
     if named is not None:
         said = _singular_phrase(named).split()
         if said[-1] != head:

@@ -21,7 +21,7 @@ from .lexicon import (
 )
 from .phrases import singular
 from .qualify import qualify
-from .things import adverb_only, is_verb
+from .things import adverb_only, is_thing, is_verb
 
 CONTRACTIONS = {
     "there's": "there is",
@@ -174,6 +174,7 @@ def starts_with_verb(text: str) -> bool:
 def sentences(instruction: str) -> list[str]:
     """Lower case, contractions spelled out, fillers gone; one string per sentence."""
     text = instruction.lower().replace("’", "'").strip()
+    text = re.sub(r"\s*[()]\s*", " ", text).strip()  # "(carefully)", "(thanks)": an aside's words, read as said
     for short, long in CONTRACTIONS.items():
         text = re.sub(rf"\b{re.escape(short)}", long, text)
     # "the mug's got beads in it": the mug has them, not whose
@@ -185,8 +186,9 @@ def sentences(instruction: str) -> list[str]:
         "",
         text,
     )
-    for said, plainly in _HOW_PLAINLY:
+    for said, plainly in _SPOKEN_PLAINLY + _HOW_PLAINLY:
         text = re.sub(said, plainly, text)
+    text = _apposed_look(text)
     # "red cube up off the table, please": a lift said by where the thing ends up
     text = re.sub(
         r"^((?:the |a |an )?[a-z]+(?: [a-z]+){0,2}) up(?: (?:off|from) (?:of )?(?:the )?(?:table|counter|surface))?"
@@ -481,8 +483,9 @@ def sentences(instruction: str) -> list[str]:
     text = _thing_then_place(text)
     # "top drawer open with the cream cheese inside": the drawer opened, then the thing put in it
     text = re.sub(
-        r"^(?:the )?((?:[a-z]+ ){0,2}(?:drawer|cabinet|box|cupboard|microwave|fridge)) (?:open|opened|pulled out),? "
-        r"with ((?:the|a|an) [a-z ]+?) (?:inside|in it|in there|in)\s*[.!]?$",
+        r"^(?:the )?((?:[a-z]+ ){0,2}(?:drawer|cabinet|box|cupboard|microwave|fridge)(?: of the [a-z ]+?)?) "
+        r"(?:(?:should|must|needs? to|has to) be |is )?(?:open|opened|pulled out),? "
+        r"with ((?:the|a|an) [a-z ]+?) (?:inside|in it|inside it|in there|in)\s*[.!]?$",
         r"open the \1 and put \2 inside",
         text,
     )
@@ -523,6 +526,75 @@ _DONE_BEFORE = re.compile(
 # left on it"), dirt got off a thing (a wipe), a wish closed by how good it would be, "take hold of" (grab),
 # "straight onto" (onto), the order said again ("not the other way round"), a pour said by its manner ("get them
 # into the bowl by pouring").
+# What a speaker says around the request that is no part of it: a close ("... ok that's all", "uh yeah thats it",
+# "..., then you can stop there"), when it is wanted ("when you're done, ..."), and an aside about where the thing
+# already is ("take the closer one, it's sitting on the ramekin, and ..."); "currently" in where a thing is.
+_SPOKEN_PLAINLY: tuple[tuple[str, str], ...] = (
+    (
+        r"(?:[,.;!:-]\s*|\s+)(?:(?:ok|okay|uh|um|erm|yeah|yep|yes|right|alright|so|and)[,.]?\s+)*"
+        r"(?:that is|thats|that|this is) (?:it|all|everything)\b"
+        r"(?:[,.;!]?\s*(?:nothing else|that is all|thanks?|thank you|cheers|for now|done))*\s*[.!]*$",
+        "",
+    ),
+    (r"(?:,\s*|\s+)(?:and )?(?:then )?you can stop(?: there| after that| then| now| here)?\s*[.!]*$", ""),
+    (r"^(?:when|once|after) (?:you are|you have) (?:done|finished|through)(?: with (?:that|this|it))?,?\s*", ""),
+    (
+        r",\s*(?:it is|that is|which is) (?:sitting |resting |standing |lying |located |placed )?"
+        r"(?:on|in|inside|next to|by|beside|near|on top of) (?:the|a|an) [a-z ]+?,\s*(?=and\b|then\b)",
+        ", ",
+    ),
+    (
+        r"\b((?:that|which) (?:is|are)) (?:currently|now|still|right now) "
+        r"(?=(?:on|in|inside|next to|by|beside|near)\b)",
+        r"\1 ",
+    ),
+    # "the red block should end up inside the green square, push it in there": the goal, then how to get it there
+    (
+        r"^((?:the |a |an )?[a-z ]+?) (?:should|must|needs? to|has to|is to) (?:end up|go|be|sit) "
+        r"((?:in|inside|into|on|onto|on top of|in front of|next to|at) [a-z ]+?),?\s*"
+        r"(push|slide|shove|nudge) it(?: (?:in|over|on|up))? "
+        r"(?:there|in there|over there)\s*[.!]?$",
+        r"\3 \1 \2",
+    ),
+    (r"^((?:push|slide|shove|nudge) [a-z ]+?) (?:inside|in) (?=(?:the|a|an) )", r"\1 into "),
+    # what is not meant, between two steps ("grab the bowl in the drawer, not the one on the cabinet, and set it ...")
+    (r",\s*not (?:the|that|this) (?:one|ones?|[a-z]+)(?: [a-z]+){0,6}?,\s*(?=(?:and|then)\b)", ", "),
+    # "the table should end up clean, with none of the brown dirt left on it": the cleaning goal said again
+    (
+        r",\s*with (?:no|none of the) (?:[a-z]+ )?(?:dirt|mess|stains?|spills?|crumbs|grime|smudges?|marks?) "
+        r"(?:left|remaining)(?: on it| on the [a-z]+)?\s*[.!]?$",
+        "",
+    ),
+)
+
+
+# Words before "one" that say which of several, not what it looks like.
+_NOT_A_LOOK = frozenset(
+    ["other", "same", "next", "last", "first", "second", "third", "only", "right", "left", "correct"]
+)
+
+
+def _apposed_look(text: str) -> str:
+    """What a thing looks like, said after it as "the <word> one" ("the farther block, the red one", "the smaller of
+    the two cubes (the red one)", "the peg on the left, the square one"): the word before its noun."""
+
+    def merged(m: re.Match) -> str:
+        before, noun, look = m.group(1), m.group(2), m.group(3)
+        if look in _NOT_A_LOOK or re.search(r"\bones?\b", before) or not is_thing(noun):
+            return m.group(0)  # "the one on the shelf, the other one": which one, not what it looks like
+        return f"the {before}{look} {noun} "
+
+    text = re.sub(
+        r"\bthe ([a-z]+)( (?:on|to|at) the (?:left|right|front|back)(?: side)?)\s*,\s*the ([a-z]+) one\b",
+        lambda m: f"the {m.group(3)} {m.group(1)}{m.group(2)}" if is_thing(m.group(1)) else m.group(0),
+        text,
+    )
+    text = re.sub(
+        r"\bthe ((?:[a-z]+ ){0,4}?)([a-z]+)\s*(?:,\s*|\(\s*)the ([a-z]+) one\s*(?:\)\s*|,\s*|$)", merged, text
+    )
+    return text.strip()
+
+
 # What is said after the request about the thing, or how it is held, in the words the readers know.
 _HOW_PLAINLY: tuple[tuple[str, str], ...] = (
     # what the thing looks like, said after the request about it ("...; it's the flat box"): no step
@@ -804,7 +876,7 @@ _TOWER_PLACES = (
 
 _TOWER_HEADER = re.compile(
     r"^(?:build|make|form|create|assemble|put together|stack up)(?: me)? (?:a|the|one) (?:tower|stack|pile)"
-    r"(?: of (?:the )?(?:blocks|cubes|three))?\s*[-:]?\s*"
+    r"(?: of (?:the )?(?:blocks|cubes|three))?(?:\s*[-:]\s*|\s+(?:with|where|that has)\s+|\s*)"
 )
 # A word that makes a clause of a noun phrase ("the red block should end up in the air"): a goal said in words.
 _SAYS_GOAL = r"\b(?:should|must|will|would|could|can|needs?|has|have|is|are|be|ends?|gets?|goes|go|wants?|ought)\b"
