@@ -63,6 +63,10 @@ EXEC_PER_TASK = 4
 EXEC_SEEDS = 10
 
 
+# What a refusal entry expects, by why the instruction cannot be planned.
+REFUSALS = ("refuse:absent", "refuse:nonsense", "refuse:ambiguous")
+
+
 def load(half: str) -> list[dict[str, Any]]:
     if half not in HALVES:
         raise ValueError(f"unknown corpus half {half!r}: {', '.join(HALVES)}")
@@ -76,6 +80,10 @@ def load_file(path: str | Path, half: str = "dev") -> list[dict[str, Any]]:
     for e in entries:
         if e["task"] not in SUITES[e["suite"]]:
             raise ValueError(f"{path.name} {e['id']}: no task {e['task']!r} in suite {e['suite']!r}")
+        if e["expect"] != "goal" and e["expect"] not in REFUSALS:
+            raise ValueError(
+                f"{path.name} {e['id']}: expect {e['expect']!r} is neither 'goal' nor one of {', '.join(REFUSALS)}"
+            )
     return [dict(e, half=half) for e in entries]
 
 

@@ -251,3 +251,18 @@ def test_a_blind_run_prints_counts_and_figures_but_no_entry_id_style_or_failure_
     assert "secret" not in out and "[2/2] planned" in out
     assert "50.0 %" in blind  # the aggregate planning figure is still reported
     assert "zzstyle" in blind  # per-style rows are aggregates (counts), kept
+
+
+def test_every_probe_file_loads_and_a_refusal_says_why(tmp_path):
+    import yaml
+
+    files = sorted(wording.CORPUS_DIR.glob("probe*.yaml"))
+    assert len(files) >= 9
+    for path in files:
+        entries = wording.load_file(path)
+        assert all(e["expect"] == "goal" or e["expect"] == f"refuse:{e['style']}" for e in entries), path.name
+    bad = tmp_path / "probe.yaml"
+    row = {"id": "a", "style": "absent", "suite": "builtin", "task": "block_on_plate", "expect": "refuse"}
+    bad.write_text(yaml.safe_dump([dict(row, instruction="put the banana on the plate")]))
+    with pytest.raises(ValueError, match="probe.yaml a: expect 'refuse' is neither 'goal' nor one of refuse:absent"):
+        wording.load_file(bad)
