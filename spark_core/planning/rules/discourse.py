@@ -331,7 +331,7 @@ def restructured(instruction: str) -> str:
     text = re.sub(r"\s+", " ", instruction.strip().lower().replace("\u2019", "'"))
     # a parenthesis that names the thing is an apposition between commas ("the smaller cube (the red one) on ...")
     out = re.sub(
-        r"\s*\(\s*((?:the|that|i mean) [^()]*?)\s*\)\s*(?=(\w)?)",
+        r"\s*\(\s*(the [a-z]+ ones?)\s*\)\s*(?=(\w)?)",
         lambda m: f", {m.group(1)}," + (" " if m.group(2) else ""),
         text,
     )
