@@ -23,6 +23,7 @@ from .parse import Clause, ParseError, head_noun, is_pronoun, parse_instruction
 from .phrases import singular
 from .qualify import bare_rank
 from .reader import describe, readings, unused_mentions
+from .remarks import names_absent, remarks
 from .spelling import corrected
 from .stepwise import steps
 
@@ -69,6 +70,8 @@ class RulesPlanner:
         # steps said out of order, context and contrast, headers, back-references: said plainly (rules/discourse.py)
         request = replace(request, instruction=restructured(request.instruction))
         read = self._read(request, t0, stepwise=True)
+        if isinstance(read, PlanResult):
+            read = self._without_remarks(request, t0) or read
         if isinstance(read, PlanResult) and self.fallback:
             read = self._learned(read, request)
         if isinstance(read, PlanResult):
@@ -94,6 +97,19 @@ class RulesPlanner:
         return PlanResult(
             self.name, to_yaml(plan), plan, latency_s=time.perf_counter() - t0, detail={"understood": understood}
         )
+
+    def _without_remarks(self, request: PlanRequest, t0: float) -> tuple[list[dict], list[str]] | None:
+        """The request read without the remark sentences after it (rules/remarks.py), when every reading of the
+        whole refused: None when there are none, one names a thing the scene lacks, or the rest does not plan."""
+        kept, said = remarks(request.instruction)
+        found = [*request.scene.keypoints, *request.scene.inventory]
+        if not said or any(names_absent(s, found) for s in said):
+            return None
+        read = self._read(replace(request, instruction=kept), t0, stepwise=True)
+        if isinstance(read, PlanResult):
+            return None
+        children, understood = read
+        return children, [*understood, *(f"set aside as a remark: {s!r}" for s in said)]
 
     def _learned(self, refusal: PlanResult, request: PlanRequest) -> tuple[list[dict], list[str]] | PlanResult:
         """The learned reader's reading (planning/learned_reader) of what every rule reading refused; the refusal,
