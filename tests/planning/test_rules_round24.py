@@ -372,3 +372,42 @@ def test_a_remark_naming_a_thing_the_scene_lacks_keeps_the_refusal():
     assert "set aside as a remark" in ok.detail["understood"][-1]
     refused = plan("put the lime cube on the tray. just don't knock the banana over, nothing else after that", scene)
     assert not refused.ok
+
+
+@pytest.mark.parametrize(
+    "said, read",
+    [
+        (
+            "pull the dresser drawer open, and once it's open put the lemon inside it.",
+            [("open", "dresser drawer", None, None), ("put", "lemon", "in", "dresser drawer")],
+        ),
+        (
+            "one of the teacups is sitting on the tray. take it and put it on the saucer.",
+            [("mention", "teacup on tray", None, None), ("pick", "teacup on tray", None, None)]
+            + [("put", "teacup on tray", "on", "saucer")],
+        ),
+        (
+            "get the lime cube into the blue square marked on the table by pushing it forward.",
+            [("push", "lime cube", "in", "blue square")],
+        ),
+        ("turn the hob's knob to switch the hob on.", [("turn_on", "hob knob", None, None)]),
+        (
+            "the item closest to you is the lemon. pick that one up and put it in the crate.",
+            [("mention", "lemon", None, None), ("pick", "lemon", None, None), ("put", "lemon", "in", "crate")],
+        ),
+        ("final state i'm after: the jug sitting on the tray.", [("put", "jug", "on", "tray")]),
+    ],
+)
+def test_links_means_purposes_and_headers_said_plainly(said, read):
+    assert _read(said) == read
+
+
+def test_turning_on_what_does_not_switch_is_impossible():
+    from tests.planning.scene_views import plan, view
+
+    scene = view(wine_rack=(0.6, 0.1, 0.1), hob=(0.5, -0.1, 0.01))
+    scene.keypoints["wine rack knob"] = scene.keypoints["wine rack"]
+    scene.keypoints["hob knob"] = scene.keypoints["hob"]
+    result = plan("turn on the wine rack so it warms up", scene)
+    assert not result.ok and "a rack is not something that switches on or off" in result.error
+    assert plan("turn on the hob", scene).ok

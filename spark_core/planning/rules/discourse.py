@@ -277,8 +277,9 @@ def _header(text: str) -> str:
     # what a request is made of ("two stacking moves: ...", "three steps: ...")
     parts = {"move", "moves", "step", "steps", "job", "jobs", "task", "tasks", "thing", "things", "stage", "stages"}
     parts |= {"stacking", "action", "actions", "sequence", "order"}
-    # what the request describes ("final configuration: ...", "end state: ...", "goal: ...")
+    # what the request describes ("final configuration: ...", "end state: ...", "final state i'm after: ...")
     parts |= {"configuration", "state", "arrangement", "layout", "goal", "target", "result", "final", "end", "setup"}
+    parts |= {"i", "am", "m", "we", "are", "re", "after", "want", "what", "looking", "for", "desired", "wanted"}
     if not words or any(is_thing(w) for w in words if w not in numbers and w not in parts):
         return text
     return m.group(2)

@@ -11,7 +11,7 @@ import numpy as np
 
 from ...grammar import PlanError, check_plan, to_yaml
 from ...perception.qualifiers import split_relation
-from ...perception.variants import CONSUMABLES, PACKAGING
+from ...perception.variants import CONSUMABLES, KIND_OF, PACKAGING
 from ..protocol import PlanRequest, PlanResult
 from .afford import Reading, unplaced_variety
 from .afford import best as afforded
@@ -34,6 +34,10 @@ DIR_VECTORS = {"forward": (1.0, 0.0), "backward": (-1.0, 0.0), "left": (0.0, 1.0
 
 class CannotPlan(ValueError):
     pass
+
+
+# Kinds of things that switch on and off (by a knob, dial or switch of their own), as the kinds table names them.
+SWITCHED = frozenset(["stove", "oven", "microwave", "fridge", "toaster", "kettle", "blender", "lamp", "knob", "dial"])
 
 
 class Impossible(CannotPlan):
@@ -391,16 +395,22 @@ class RulesPlanner:
                     opened.add(o)
             elif c.action in ("turn_on", "turn_off"):
                 obj = need(obj, "appliance", c)
+                if _kind(obj) in SOLIDS:  # "turn on the red block": solid through, nothing on it turns
+                    raise Impossible(
+                        f"cannot turn {obj!r} {c.action[5:]}: a {_kind(obj)} has no knob or switch (understood: "
+                        f"{understood}; found in the scene: {seen})"
+                    )
+                kind = _kind(obj)
+                if kind in KIND_OF and not KIND_OF[kind] & SWITCHED:  # "turn on the wine rack": no appliance
+                    raise Impossible(
+                        f"cannot turn {obj!r} {c.action[5:]}: a {kind} is not something that switches on or off "
+                        f"(understood: {understood}; found in the scene: {seen})"
+                    )
                 knob = obj if obj.split()[-1] in ("knob", "dial") else f"{obj} knob"  # "the stove's dial" is its knob
                 if knob not in scene:
                     raise CannotPlan(
                         f"cannot turn {obj!r} {c.action[5:]}: perception did not find it with a knob "
                         f"(looked for {obj!r} and {knob!r}; found: {seen})"
-                    )
-                if _kind(obj) in SOLIDS:  # "turn on the red block": solid through, nothing on it turns
-                    raise Impossible(
-                        f"cannot turn {obj!r} {c.action[5:]}: a {_kind(obj)} has no knob or switch (understood: "
-                        f"{understood}; found in the scene: {seen})"
                     )
                 out.append(_prim("turn_knob", keypoint_label=knob, angle=90.0 if c.action == "turn_on" else -90.0))
             elif c.action == "pour":

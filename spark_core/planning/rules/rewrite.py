@@ -122,7 +122,8 @@ _TRAILING = re.compile(
     # how carefully ("..., carefully so the stack doesn't tip")
     r"(?:since|because|as) (?:it|they|that|this|i|we|you)\b|"
     r"(?:i|we) (?:need|want|have) to (?:get|reach|see|look|check)\b|"
-    r"(?:so (?:that )?|before |after |until )(?:i|we) (?:can |could |may |might |will |'ll )?[a-z]+\b|"
+    r"(?:so (?:that )?|before |after |until )(?:(?:this|that|it),? )?(?:i|we) (?:can |could |may |might |will |'ll )?"
+    r"[a-z]+\b|"
     # why, said as the speaker's want or plans ("..., just want to see if the grasp holds", "..., we have a demo")
     r"(?:i )?(?:just |only )?(?:want|wanna|need|would like) to (?:see|check|test|know|verify|find out)\b|"
     r"(?:we|i) (?:have|have got) (?:a|an|some|guests|visitors|company)\b|"
@@ -473,7 +474,8 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(r"(^|[.;!?] )(there is [^:;.!?]+?)\s*:\s*(?=\w)", r"\1\2 . ", text)
     # "one of the black bowls is on the stove": that one, the bowl on the stove, named for what follows
     text = re.sub(
-        r"(^|[.;!?] )one of the ((?:\w+ ){0,2})(\w+s) (?:is|sits|rests|stands) (?:up |down |over |now )?"
+        r"(^|[.;!?] )one of the ((?:\w+ ){0,2})(\w+s) (?:is|sits|rests|stands)(?: sitting| resting| standing| lying)? "
+        r"(?:up |down |over |now )?"
         r"((?:on top of|on|in|inside|next to|beside|near|by) (?:the|a|an) [\w ]+?)(?=\s*(?:[.;!?]|$))",
         lambda m: f"{m.group(1)}there is the {m.group(2)}{singular(m.group(3))} {m.group(4)}",
         text,
@@ -512,14 +514,18 @@ def sentences(instruction: str) -> list[str]:
         for s in out
     ]
     # "once it is there, put ...": a step done before, said again only to link the next to it
-    out = [re.sub(_DONE_BEFORE, "", s) for s in out]
+    out = [re.sub(_DONE_BEFORE_AFTER_STEP, r"\1", re.sub(_DONE_BEFORE, "", s)) for s in out]
     return [s for s in out if not _CLOSING.fullmatch(s)]
 
 
-_DONE_BEFORE = re.compile(
-    r"^(?:and )?(?:once|when|after|as soon as) (?:it|that|this|they|those|both) (?:is|are|has been|have been) "
-    r"(?:there|done|in place|placed|down|finished|on it|in it|in there|on there|settled)\s*,?\s+(?:then\s+)?"
+_DONE = (
+    r"(?:once|when|after|as soon as) (?:it|that|this|they|those|both) (?:is|are|has been|have been) "
+    r"(?:there|done|in place|placed|down|finished|on it|in it|in there|on there|settled|open|opened|closed|shut|on|"
+    r"off)\s*,?\s+(?:then\s+)?"
 )
+_DONE_BEFORE = re.compile(rf"^(?:and )?{_DONE}")
+# "pull the drawer open, and once it's open put the block inside": the same link after a step in one sentence
+_DONE_BEFORE_AFTER_STEP = re.compile(rf"(,\s*(?:and )?|\band ){_DONE}")
 
 
 # Wordings said plainly, in order (sentences()): a goal said as the thing in the state wanted ("a table with no dirt
@@ -557,11 +563,29 @@ _SPOKEN_PLAINLY: tuple[tuple[str, str], ...] = (
         r"\3 \1 \2",
     ),
     (r"^((?:push|slide|shove|nudge) [a-z ]+?) (?:inside|in) (?=(?:the|a|an) )", r"\1 into "),
+    # "get the red block into the green square by pushing it forward": the means is the verb
+    (
+        r"^(?:get|move|bring|put) ((?:the|a|an) [a-z ]+?) (into|onto|in|to|in front of|to the front of) ([a-z ]+?),? "
+        r"by (?:pushing|sliding|shoving|nudging) (?:it|them)( forward| forwards| back| left| right)?\s*[.!]?$",
+        r"push \1\4 \2 \3",
+    ),
+    (r"\b(?:marked|drawn|painted|printed|taped|outlined) on the (?:table|tabletop|floor|counter)\b", ""),
+    # "turn the stove's knob to switch the stove on": the knob's purpose says which way
+    (
+        r"^(?:turn|twist|rotate) ((?:the|its) [a-z' ]+?) to (?:switch|turn) (?:the [a-z ]+?|it) (on|off)\s*[.!]?$",
+        r"turn \2 \1",
+    ),
+    # "the item closest to you is the bbq sauce. pick that one up ...": the thing named, for what follows
+    (
+        r"^the [a-z ]*?\b(?:item|thing|object|one|product)\b[a-z ]*? is ((?:the|a|an) [a-z ]+?)\s*(?=[.;:]|$)",
+        r"there is \1",
+    ),
     # what is not meant, between two steps ("grab the bowl in the drawer, not the one on the cabinet, and set it ...")
     (r",\s*not (?:the|that|this) (?:one|ones?|[a-z]+)(?: [a-z]+){0,6}?,\s*(?=(?:and|then)\b)", ", "),
     # "the table should end up clean, with none of the brown dirt left on it": the cleaning goal said again
     (
-        r",\s*with (?:no|none of the) (?:[a-z]+ )?(?:dirt|mess|stains?|spills?|crumbs|grime|smudges?|marks?) "
+        r",\s*with (?:no|none of (?:the|those|these|that|any)) (?:[a-z]+ ){0,2}(?:dirt|mess|stains?|spills?|crumbs|grime|"
+        r"smudges?|marks?) "
         r"(?:left|remaining)(?: on it| on the [a-z]+)?\s*[.!]?$",
         "",
     ),
