@@ -208,7 +208,8 @@ _ASIDE = re.compile(
     # what the speaker will do once it is done ("... so i can see what's inside", "... before we put anything on it")
     r"(?:so (?:that )?|before |after |until )(?:i|we) (?:can |could |may |might |will |'ll )?[a-z]+\b|"
     # how not to do it, after the request ("..., don't leave any stains behind"); not a thing left alone
-    r"(?:(?<=[,-]) *(?:and |but )?|\s+and\s+)(?:(?:do not|don't|dont|never|try not to|careful not to|be careful not to) "
+    r"(?:(?<=[,-]) *(?:and |but )?|\s+and\s+)"
+    r"(?:(?:do not|don't|dont|never|try not to|careful not to|be careful not to) "
     r"(?!touch|move|take|grab|use|pick|lift|get|put|place|disturb|bother|mess|need)[a-z]+\b|"
     # why, said as the speaker's want or plans ("..., just want to see if the grasp holds", "..., we have a demo")
     r"(?:i )?(?:just |only )?(?:want|wanna|need|would like) to (?:see|check|test|know|verify|find out)\b|"

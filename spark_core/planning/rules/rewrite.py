@@ -584,9 +584,9 @@ _SPOKEN_PLAINLY: tuple[tuple[str, str], ...] = (
     (r",\s*not (?:the|that|this) (?:one|ones?|[a-z]+)(?: [a-z]+){0,6}?,\s*(?=(?:and|then)\b)", ", "),
     # "the table should end up clean, with none of the brown dirt left on it": the cleaning goal said again
     (
-        r",\s*with (?:no|none of (?:the|those|these|that|any)) (?:[a-z]+ ){0,2}(?:dirt|mess|stains?|spills?|crumbs|grime|"
-        r"smudges?|marks?) "
-        r"(?:left|remaining)(?: on it| on the [a-z]+)?\s*[.!]?$",
+        r",\s*with (?:no|none of (?:the|those|these|that|any)) (?:[a-z]+ ){0,2}"
+        r"(?:dirt|mess|stains?|spills?|crumbs|grime|smudges?|marks?) (?:left|remaining)"
+        r"(?: on it| on the [a-z]+)?\s*[.!]?$",
         "",
     ),
 )
