@@ -411,3 +411,17 @@ def test_turning_on_what_does_not_switch_is_impossible():
     result = plan("turn on the wine rack so it warms up", scene)
     assert not result.ok and "a rack is not something that switches on or off" in result.error
     assert plan("turn on the hob", scene).ok
+
+
+def test_its_part_after_the_thing_was_named_is_that_things_part():
+    said = "See the oak dresser in front of you? Its drawer is closed. Open it."
+    assert _read(said)[-1] == ("open", "dresser drawer", None, None)
+
+
+def test_a_courtesy_before_the_request_still_leaves_the_remark_after_it():
+    from spark_core.planning.rules.remarks import remarks
+
+    assert remarks("please turn on the hob. i do the rest myself") == (
+        "please turn on the hob.",
+        ["i do the rest myself"],
+    )

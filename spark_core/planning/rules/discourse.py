@@ -321,6 +321,23 @@ def _negated_state(text: str) -> str:
     )
 
 
+def _its_part(text: str) -> str:
+    """ "see the brown cabinet? its drawer is closed. open it.": a part said as "its" after a sentence that named the
+    thing is that thing's part ("the cabinet drawer")."""
+    m = re.search(r"(?:^|[.?!;]\s*)its (drawer|handle|knob|door|lid|dial)\b", text)
+    if not m:
+        return text
+    before = text[: m.start() + 1]
+    ends = r"(?=\s+(?:in|on|at|of|by|next|near|with|to|from|that|which|and|is|are)\b|\s*[?.!,;]|$)"
+    named = [
+        n.group(1).split()[-1] for n in re.finditer(rf"\b(?:the|a|an|that|this) ((?:\w+ ){{0,2}}?\w+){ends}", before)
+    ]
+    owner = next((w for w in reversed(named) if is_thing(w)), None)
+    if owner is None:
+        return text
+    return text[: m.start()] + re.sub(r"its (\w+)", rf"the {owner} \1", text[m.start() :], count=1)
+
+
 def _joined(text: str) -> str:
     """A superlative of place said with a hyphen as one word: "right-most" is "rightmost"."""
     return re.sub(r"\b(left|right|front|back|top|bottom|upper|lower|rear|fore)[- ]most\b", r"\1most", text)
@@ -336,7 +353,7 @@ def restructured(instruction: str) -> str:
         lambda m: f", {m.group(1)}," + (" " if m.group(2) else ""),
         text,
     )
-    out = _negated_state(_joined(out))
+    out = _its_part(_negated_state(_joined(out)))
     for step in (_header, _former_latter, _cleft, _temporal, _context, _unwanted_now, _contrast, sequenced):
         out = step(out)
     return instruction if out == text else out

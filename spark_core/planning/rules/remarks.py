@@ -68,4 +68,6 @@ def names_absent(sentence: str, found: list[str]) -> str | None:
 
 
 def _plain(sentence: str) -> str:
-    return sentence.lower().replace("\u2019", "'").strip()
+    """Lower case, and a courtesy before the verb gone ("please turn on the stove": a request said with a verb)."""
+    text = sentence.lower().replace("\u2019", "'").strip()
+    return re.sub(r"^(?:(?:please|kindly|ok|okay|now|so|and|then|robot),?\s+)+", "", text)
