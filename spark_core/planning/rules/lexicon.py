@@ -125,6 +125,17 @@ DIRECTIONS: dict[str, tuple[str, ...]] = {
 }
 DETERMINERS = ("the", "a", "an", "this", "that", "these", "those", "some", "all", "both")
 PRONOUNS = ("it", "them", "there", "that one", "this one")
+# The speaker's own plans, said after the request (a pattern part, no step): what they will do once it is done
+# ("... so i can see what's inside", "... before we put anything on it", "..., after this i do the rest").
+SPEAKERS_PLANS = (
+    r"(?:so (?:that )?|before |after |until )(?:(?:this|that|it),? )?(?:i|we) (?:can |could |may |might |will |'ll )?"
+    r"[a-z]+\b"
+)
+# Why, or what is coming, said after a comma ("..., just want to see if the grasp holds", "..., we have a demo").
+SPEAKERS_REASON = (
+    r"(?:i )?(?:just |only )?(?:want|wanna|need|would like) to (?:see|check|test|know|verify|find out)\b|"
+    r"(?:we|i) (?:have|have got) (?:a|an|some|guests|visitors|company)\b"
+)
 # Words and phrases that carry no action. ("then" is not one: it separates clauses.)
 FILLERS = (
     "please",

@@ -13,7 +13,7 @@ from ...perception.colors import SYNONYMS as COLOUR_SYNONYMS
 from ...perception.qualifiers import QUALIFIERS, split_relation
 from ...perception.variants import MATERIALS, SHAPES, SIZES
 from .frames import said_again
-from .lexicon import CONTAINERS, CONTENTS, DETERMINERS, PRONOUNS, REGIONS, TABLE
+from .lexicon import CONTAINERS, CONTENTS, DETERMINERS, PRONOUNS, REGIONS, SPEAKERS_PLANS, SPEAKERS_REASON, TABLE
 from .parse import Clause, is_pronoun
 from .phrases import singular
 from .rewrite import sentences
@@ -205,15 +205,12 @@ _ASIDE = re.compile(
     r",?\s*(?:(?:since|because) (?:it|they|that|this|i|we|you)\b|(?:i|we) (?:need|want|have) to "
     r"(?:get|reach|see|look|check)\b|(?:carefully|gently|slowly) so\b|"
     r"so (?:that )?(?:it|they|the [a-z]+) (?:does|do|will|would|is|are|can|could) not\b|"
-    # what the speaker will do once it is done ("... so i can see what's inside", "... before we put anything on it")
-    r"(?:so (?:that )?|before |after |until )(?:i|we) (?:can |could |may |might |will |'ll )?[a-z]+\b|"
+    rf"{SPEAKERS_PLANS}|"
     # how not to do it, after the request ("..., don't leave any stains behind"); not a thing left alone
     r"(?:(?<=[,-]) *(?:and |but )?|\s+and\s+)"
     r"(?:(?:do not|don't|dont|never|try not to|careful not to|be careful not to) "
     r"(?!touch|move|take|grab|use|pick|lift|get|put|place|disturb|bother|mess|need)[a-z]+\b|"
-    # why, said as the speaker's want or plans ("..., just want to see if the grasp holds", "..., we have a demo")
-    r"(?:i )?(?:just |only )?(?:want|wanna|need|would like) to (?:see|check|test|know|verify|find out)\b|"
-    r"(?:we|i) (?:have|have got) (?:a|an|some|guests|visitors|company)\b)).*$"
+    rf"{SPEAKERS_REASON})).*$"
 )
 _CLOSING_REMARK = re.compile(
     r"(?:\b(?:that|this) (?:is|will be|should be) |(?:,|-)\s*(?:is|are) )(?:the (?:target|goal|aim|idea|plan|"

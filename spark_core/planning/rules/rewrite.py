@@ -15,6 +15,8 @@ from .lexicon import (
     HOLDS,
     MODALS,
     PARTICIPLES,
+    SPEAKERS_PLANS,
+    SPEAKERS_REASON,
     STATE_ACTIONS,
     SUBSTANCES,
     VERBS,
@@ -122,11 +124,7 @@ _TRAILING = re.compile(
     # how carefully ("..., carefully so the stack doesn't tip")
     r"(?:since|because|as) (?:it|they|that|this|i|we|you)\b|"
     r"(?:i|we) (?:need|want|have) to (?:get|reach|see|look|check)\b|"
-    r"(?:so (?:that )?|before |after |until )(?:(?:this|that|it),? )?(?:i|we) (?:can |could |may |might |will |'ll )?"
-    r"[a-z]+\b|"
-    # why, said as the speaker's want or plans ("..., just want to see if the grasp holds", "..., we have a demo")
-    r"(?:i )?(?:just |only )?(?:want|wanna|need|would like) to (?:see|check|test|know|verify|find out)\b|"
-    r"(?:we|i) (?:have|have got) (?:a|an|some|guests|visitors|company)\b|"
+    rf"{SPEAKERS_PLANS}|{SPEAKERS_REASON}|"
     r"(?:just |simply |only )(?:push|slide|shove|nudge|move) (?:it|them)\b|"
     r"(?:carefully|gently|slowly)\b(?= so\b|\s*$)|"
     # the goal's own name after it ("..., that is the end state i am after", "not the other way round")
