@@ -6,6 +6,8 @@ import re
 
 import numpy as np
 
+from .detection import Detection
+
 # qualifier -> (world axis index, sign): the chosen instance maximises sign * coordinate.
 # World frame: x forward (away from the robot), y left (robot's view).
 QUALIFIERS: dict[str, tuple[int, float]] = {
@@ -91,3 +93,19 @@ def relation_holds(relation: str, head_xy_m: np.ndarray, anchors: list[tuple[np.
         (c, r), reach = anchors[0], NEAR_M if rel in NEAR_RELATIONS else SUPPORT_MARGIN_M
         holds = float(np.linalg.norm(head_xy_m - np.asarray(c, float))) <= r + reach
     return holds != negated
+
+
+def anchor_apart(
+    heads: list[Detection], anchored: list[Detection], key: str
+) -> tuple[list[Detection], list[Detection]]:
+    """The anchor detections that are not one of the head's, and the heads left once none is related to itself.
+    `key` names the detail that tells things apart ("object" for the sim oracle, "instance" for the camera's own).
+    "the cube under the green cube": the anchor is one of the head's kind, so when the head matched several the
+    best anchor is taken out of them; one thing found for both is left as it was (a part may be named by the thing
+    it is of)."""
+    taken = {d.detail.get(key) for d in heads}
+    cands = [d for d in anchored if d.detail.get(key) not in taken]
+    if not cands and anchored and len(heads) > 1:
+        cands = [max(anchored, key=lambda d: d.score)]
+        heads = [d for d in heads if d.detail.get(key) != cands[0].detail.get(key)]
+    return cands, heads

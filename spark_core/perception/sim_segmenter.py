@@ -12,7 +12,7 @@ from .colors import normalise_colours
 from .detection import Detection
 from .frame import CameraFrame
 from .naming import ANYTHING, class_members, mismatch, own_noun_prompts
-from .qualifiers import QUALIFIERS, SIZE_AXIS, split_qualifier, split_relation
+from .qualifiers import QUALIFIERS, SIZE_AXIS, anchor_apart, split_qualifier, split_relation
 from .text_encoder import SHARED_ENCODER, TextEncoder
 from .variants import (
     SPELLINGS,
@@ -222,13 +222,7 @@ class SimSegmenter:
         assert frame.object_ids is not None  # segment() refuses frames without object ids
         found = []
         for a in anchors:
-            anchored = self.segment(frame, [a])
-            cands = [d for d in anchored if d.detail.get("object") not in {x.detail.get("object") for x in dets}]
-            if not cands and anchored and len(dets) > 1:
-                # "the cube under the green cube": the anchor is one of the head's kind, and no thing is related to
-                # itself (one thing found for both is left as it was: a part may be named by the thing it is of)
-                cands = [max(anchored, key=lambda d: d.score)]
-                dets = [d for d in dets if d.detail.get("object") != cands[0].detail.get("object")]
+            cands, dets = anchor_apart(dets, self.segment(frame, [a]), "object")
             if cands:
                 found.append(_centroid_xy(max(cands, key=lambda d: d.score), frame))
         if len(dets) > 1 and not found and any(w in a for a in anchors for w in ("center", "centre", "middle")):

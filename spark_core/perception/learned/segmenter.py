@@ -26,7 +26,7 @@ from ..detection import Detection
 from ..frame import CameraFrame
 from ..naming import class_members, own_noun_prompts
 from ..pixels import mask_pixels
-from ..qualifiers import relation_holds, split_qualifier, split_relation
+from ..qualifiers import anchor_apart, relation_holds, split_qualifier, split_relation
 from ..quantiles import percentile, percentiles, percentiles_of_sorted
 from ..sim_segmenter import calibrated_score, pick_by_qualifier
 from ..text_encoder import SHARED_ENCODER, TextEncoder
@@ -467,16 +467,9 @@ class LearnedSegmenter:
         when the view saw no anchor): a view that sees only the wrong bowl must not outvote one that sees both."""
         negated = relation.startswith("not ")
         dets = self.segment(frame, [head])
-        taken = {d.detail["instance"] for d in dets}
         found: list[tuple[np.ndarray, float]] = []
         for a in anchors:
-            anchored = self.segment(frame, [a])
-            cands = [d for d in anchored if d.detail.get("instance") not in taken]
-            if not cands and anchored and len(dets) > 1:
-                # "the cube under the green cube": the anchor is one of the head's kind, and no thing is related to
-                # itself (one thing found for both is left as it was: a part may be named by the thing it is of)
-                cands = [max(anchored, key=lambda d: d.score)]
-                dets = [d for d in dets if d.detail.get("instance") != cands[0].detail.get("instance")]
+            cands, dets = anchor_apart(dets, self.segment(frame, [a]), "instance")
             if cands:
                 found.append(_footprint_xy(max(cands, key=lambda d: d.score).mask, frame))
         centres = [c for c, _ in found]
