@@ -110,7 +110,7 @@ KINDS: tuple[frozenset[str], ...] = tuple(
         "apple",
         "banana",
         "lemon",
-        "wine",
+        "wine vino",
         "egg",
         # things a scene may lack that an encoder puts near what it holds ("mustard" next to the ketchup, "ball"
         # next to a block): naming them is naming another kind

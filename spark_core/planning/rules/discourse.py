@@ -269,7 +269,7 @@ def _former_latter(text: str) -> str:
 def _header(text: str) -> str:
     """A header before a colon that names no thing and asks nothing ("two jobs: ...", "here's the plan: ..."):
     what follows is the request."""
-    m = re.fullmatch(r"([a-z' ]{1,40}?)\s*:\s*(.+)", text)
+    m = re.fullmatch(r"([a-z' ]{1,40}?)\s*[:=]\s*(.+)", text)  # "goal = ...": a header too
     if not m or _starts_with_verb(m.group(1)):
         return text
     words = re.findall(r"[a-z]+", m.group(1))

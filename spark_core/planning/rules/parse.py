@@ -12,7 +12,7 @@ from ...perception.colors import BASE_COLOURS
 from ...perception.qualifiers import split_relation
 from ...perception.variants import SIZES
 from .lexicon import CONTAINERS, CONTENTS, DIRECTIONS, FROM, IN, ON, PARTICLE_VERBS, PRONOUNS, TABLE, VERBS, WITH
-from .phrases import noun_phrase, object_phrase
+from .phrases import BESIDE, noun_phrase, object_phrase
 from .rewrite import bare_goal, goal_to_action, imperatives
 from .things import is_verb, names_a_thing
 
@@ -676,8 +676,11 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
         # "on top of that (one)": a pronoun, for the clause before to resolve
         target = "it" if target in ("that", "this", "that one", "this one") else _elided_noun(target, kind)
         # "the plate that sits on the cookie box": a destination located by what it rests on reads as an object does
-        located = _PLACED.search(target) or (
-            is_pronoun(said) and re.search(r"\s(?:on top of|on|in|inside|next to|beside|near|by)\s", target)
+        # "onto the peg to the left of the round peg" too: where it stands, not "of" a part
+        located = (
+            _PLACED.search(target)
+            or BESIDE.search(target)
+            or (is_pronoun(said) and re.search(r"\s(?:on top of|on|in|inside|next to|beside|near|by)\s", target))
         )
         return Clause(
             action,

@@ -37,7 +37,7 @@ _PARTICIPLE = re.compile(
 # "up on the cabinet", "down in the drawer", "over by the box": the particle adds nothing to where it is
 _PARTICLE = re.compile(r"\b(?:up|down|over|back) (?=(?:on|onto|in|inside|on top of|at|by|near|next to|beside)\b)")
 # where one thing stands relative to another, as the relation perception measures ("in front of the box": near it)
-_BESIDE = re.compile(
+BESIDE = re.compile(
     r"\b(?:in front of|behind|to (?:the )?(?:left|right) of|on (?:the )?(?:left|right)(?: hand)? side of|alongside)\b"
 )
 # "is not sitting on": the participle adds nothing to the negated place
@@ -117,7 +117,7 @@ def locator(text: str) -> str:
     text = re.sub(
         r"\b(?:was|were|used to be) (?=(?:on|in|inside|on top of|at|by|near|next to|beside|between)\b)", "", text
     )
-    text = _BESIDE.sub("near", _PARTICLE.sub("", _NOT_PARTICIPLE.sub("not ", text)))
+    text = BESIDE.sub("near", _PARTICLE.sub("", _NOT_PARTICIPLE.sub("not ", text)))
     text = _PARTICIPLE.sub("", text)
     # on the table is the lowest place a thing can be: "the bowl not on the table" is any bowl but the lowest, "the
     # bowl on the table" (another is up on something) the lowest; "off"/"from" the table only says where it is

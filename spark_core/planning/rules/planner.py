@@ -23,7 +23,7 @@ from .parse import Clause, ParseError, head_noun, is_pronoun, parse_instruction
 from .phrases import singular
 from .qualify import bare_rank
 from .reader import describe, readings, unused_mentions
-from .remarks import names_absent, remarks
+from .remarks import names_absent, remarks, trailing_remarks
 from .spelling import corrected
 from .stepwise import steps
 
@@ -103,17 +103,19 @@ class RulesPlanner:
         )
 
     def _without_remarks(self, request: PlanRequest, t0: float) -> tuple[list[dict], list[str]] | None:
-        """The request read without the remark sentences after it (rules/remarks.py), when every reading of the
-        whole refused: None when there are none, one names a thing the scene lacks, or the rest does not plan."""
+        """The request read without the remark sentences after it, or else without the trailing clauses that only
+        remark (rules/remarks.py), when every reading of the whole refused: None when there are none, one names a
+        thing the scene lacks, or the rest does not plan."""
         kept, said = remarks(request.instruction)
         found = [*request.scene.keypoints, *request.scene.inventory]
-        if not said or any(names_absent(s, found) for s in said):
-            return None
-        read = self._read(replace(request, instruction=kept), t0, stepwise=True)
-        if isinstance(read, PlanResult):
-            return None
-        children, understood = read
-        return children, [*understood, *(f"set aside as a remark: {s!r}" for s in said)]
+        tries = [] if not said or any(names_absent(s, found) for s in said) else [(kept, said)]
+        tries += [(k, [tail]) for k, tail in trailing_remarks(request.instruction, found)]
+        for kept, said in tries:
+            read = self._read(replace(request, instruction=kept), t0, stepwise=True)
+            if not isinstance(read, PlanResult):
+                children, understood = read
+                return children, [*understood, *(f"set aside as a remark: {s!r}" for s in said)]
+        return None
 
     def _learned(self, refusal: PlanResult, request: PlanRequest) -> tuple[list[dict], list[str]] | PlanResult:
         """The learned reader's reading (planning/learned_reader) of what every rule reading refused; the refusal,

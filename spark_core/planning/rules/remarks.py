@@ -1,8 +1,9 @@
 """Remarks: whole sentences after the request that say nothing to do ("lift the red cube. just want to see the grasp
 work", "put the block on the plate. don't just set it down next to it", "take the bowl on the stove. the other bowl
-can stay where it is"). When every reading of the whole instruction refuses, the planner reads it again without
-them (planner._without_remarks): the request must then plan on its own, and a remark may name no kind of thing the
-scene lacks, so an absent thing is still refused."""
+can stay where it is"), and trailing clauses that name nothing of the scene ("put the bowl on the stove, we're
+going to warm something up in it", "..., tipping it slowly so none of them spill"). When every reading of the whole
+instruction refuses, the planner reads it again without them (planner._without_remarks): the request must then plan
+on its own, and a remark may name no kind of thing the scene lacks, so an absent thing is still refused."""
 
 from __future__ import annotations
 
@@ -10,8 +11,9 @@ import re
 
 from lemminflect import getAllLemmas
 
+from ...perception.colors import BASE_COLOURS
 from ...perception.variants import KIND_OF
-from .lexicon import DETERMINERS
+from .lexicon import DETERMINERS, STATE_ACTIONS, VERBS
 from .phrases import singular
 from .rewrite import starts_with_verb
 from .things import names_a_thing
@@ -21,6 +23,22 @@ _SELVES = frozenset(
     ["myself", "yourself", "itself", "ourselves", "themselves", "himself", "herself", "other", "others"]
 )
 _SELVES |= {"nothing", "something", "anything", "everything", "stuff"}
+_SELVES |= {
+    "none",
+    "its",
+    "his",
+    "her",
+    "their",
+    "our",
+    "your",
+    "my",
+    "mine",
+    "each",
+    "either",
+    "neither",
+    "lot",
+    "lots",
+}
 
 # What makes a sentence after the request a remark: a negation (how not to do it), the speaker's own say ("just want
 # to see ...", "i do the rest myself"), or a thing left as it is ("the other bowl can stay where it is", "fyi").
@@ -45,16 +63,59 @@ def remarks(instruction: str) -> tuple[str, list[str]]:
     return " ".join(s for i, s in enumerate(said) if i not in aside), [said[i] for i in aside]
 
 
+# Words after which a word that may be a verb is one ("none of them spill", "it squishes", "we warm it").
+_SUBJECTS = frozenset(["i", "we", "you", "they", "them", "it", "he", "she", "to", "will", "would", "might", "could"])
+# Where a trailing clause may start: a comma, a dash, a semicolon or a sentence's end, or a word that joins a reason
+# or a result ("... so none of them spill", "... because it's soft").
+_CLAUSE = re.compile(r"\s*(?:[,;:]|\s-+\s|(?<=[.!?])\s)\s*|\s+(?=(?:so|because|since|as|cause|cuz)\s)")
+# Words a clause that only remarks never says: a verb of the planner's own (a step), a colour, "one" (which thing).
+_ASKS = frozenset(
+    [f.split()[0] for forms in VERBS.values() for f in forms]
+    + [s.split()[0] for s, _ in STATE_ACTIONS]
+    + list(BASE_COLOURS)
+    + ["one", "ones", "then", "also", "first", "next", "after", "before", "once"]
+)
+# A purpose said as "for" and a noun with no article ("we need it for dinner"): no thing of any scene.
+_PURPOSE = re.compile(r"\bfor (?:the )?(?:dinner|lunch|breakfast|later|now|tonight|today|tomorrow|safety|science)\b")
+# How many trailing clauses, at most, are tried: each try is a reading of its own.
+_MAX_TAILS = 4
+
+
+def trailing_remarks(instruction: str, found: list[str]) -> list[tuple[str, str]]:
+    """(the instruction up to a clause boundary, the clauses after it) for each boundary whose clauses after it are
+    remarks: they name none of `found` (perception's phrases and inventory) and no thing the scene lacks, and say no
+    step, colour or "one". Longest kept first; at most `_MAX_TAILS`."""
+    known = {w for p in found for w in re.findall(r"[a-z]+", p.lower())}
+    known |= {singular(w) for w in known}
+    text = instruction.strip()
+    out: list[tuple[str, str]] = []
+    cuts = [m for m in _CLAUSE.finditer(text) if m.start() > 0 and m.end() < len(text)]
+    for m in reversed(cuts):
+        kept, tail = text[: m.start()].strip(), text[m.end() :].strip()
+        words = re.findall(r"[a-z]+", _plain(tail))
+        if not words or not re.search(r"[a-z]", kept.lower()):
+            continue
+        if any(w in _ASKS or w in known or singular(w) in known for w in words):
+            break  # a longer tail holds this one: it names the scene or asks too
+        if names_absent(_PURPOSE.sub(" ", _plain(tail)), found):
+            break
+        out.append((kept, tail))
+        if len(out) == _MAX_TAILS:
+            break
+    return out
+
+
 def names_absent(sentence: str, found: list[str]) -> str | None:
     """A word of `sentence` that names a kind of thing none of `found` (perception's phrases and inventory) is of,
     or a noun-only word none of them holds ("don't touch the banana" in a scene without one); None when it names
     no such thing."""
     known = {w for p in found for w in re.findall(r"[a-z]+", p.lower())}
     kinds = set().union(*(KIND_OF.get(w, frozenset()) | KIND_OF.get(singular(w), frozenset()) for w in known))
-    for w in re.findall(r"[a-z]+", _plain(sentence)):
+    words = re.findall(r"[a-z]+", _plain(sentence))
+    for before, w in zip(["", *words], words):
         forms = {w, singular(w)}
-        if forms & known:
-            continue
+        if forms & known or (before in _SUBJECTS and "VERB" in getAllLemmas(w)):
+            continue  # said of the scene, or a verb after its subject ("so none of them spill")
         kind = next((KIND_OF[f] for f in forms if f in KIND_OF), None)
         if kind is not None:
             if not kind & (known | kinds):

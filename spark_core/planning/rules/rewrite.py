@@ -269,6 +269,12 @@ def sentences(instruction: str) -> list[str]:
     )
     # an arrow pointing back: "plate <- black bowl" is "black bowl -> plate"
     text = re.sub(r"^([^<]+?)\s*(?:<-|<=|\u2190|<--)\s*(.+)$", r"\2 -> \1", text)
+    # "red block table -> bowl": the table said bare before the arrow is where the thing is now
+    text = re.sub(
+        r"\b(?!(?:the|a|an|from|on|off|of|at)\b)(\w+) (?:table|tabletop|counter)(?=\s*(?:->|=>|\u2192|-->))",
+        r"\1 from the table",
+        text,
+    )
     # an arrow between a thing and a place: "green block -> basket" carries it there (a preposition after the
     # arrow says which way itself: "-> onto the plate")
     text = re.sub(
@@ -541,6 +547,9 @@ _SPOKEN_PLAINLY: tuple[tuple[str, str], ...] = (
         "",
     ),
     (r"(?:,\s*|\s+)(?:and )?(?:then )?you can stop(?: there| after that| then| now| here)?\s*[.!]*$", ""),
+    # "take it out and stack it on ...": out from where it is, which the pick says already (a drawer pulled out is
+    # opened, so only takes)
+    (r"\b(take|get|lift) (it|them) out\b(?! of)", r"\1 \2"),
     (r"^(?:when|once|after) (?:you are|you have) (?:done|finished|through)(?: with (?:that|this|it))?,?\s*", ""),
     (
         r",\s*(?:it is|that is|which is) (?:sitting |resting |standing |lying |located |placed )?"
@@ -548,8 +557,9 @@ _SPOKEN_PLAINLY: tuple[tuple[str, str], ...] = (
         ", ",
     ),
     (
-        r"\b((?:that|which) (?:is|are)) (?:currently|now|still|right now) "
-        r"(?=(?:on|in|inside|next to|by|beside|near)\b)",
+        r"\b((?:that|which) (?:is|are)) (?:currently|presently|now|still|right now) "
+        r"(?=(?:(?:sitting|resting|standing|lying|perched|located|placed|kept|parked) )?"
+        r"(?:on|in|inside|next to|by|beside|near)\b)",
         r"\1 ",
     ),
     # "the red block should end up inside the green square, push it in there": the goal, then how to get it there
@@ -1138,7 +1148,8 @@ def imperatives(instruction: str) -> list[str]:
         if i < len(said) - 1:
             s = re.sub(
                 r"^((?:the|a|an) [\w ]+?) (?:is|are) (?:sitting|resting|standing|lying|located|kept|parked|perched|"
-                r"waiting) ((?:on|in|inside|on top of|at|by|near|next to|beside|between|under) [\w ]+?)"
+                r"waiting) ((?:on|in|inside|on top of|at|by|near|next to|beside|between|under|underneath|beneath) "
+                r"[\w ]+?)"
                 r"(?: (?:at the moment|right now|right|currently|for now|now))?$",
                 r"there is \1 \2",
                 s,
@@ -1154,7 +1165,8 @@ def imperatives(instruction: str) -> list[str]:
             # "the beads are in the mug. pour them into the bowl": said as it is now, then acted on by a pronoun
             if re.search(r"\b(?:it|them)\b", said[i + 1]) and starts_with_verb(said[i + 1]):
                 s = re.sub(
-                    r"^((?:the|a|an) [\w ]+?) (?:is|are) ((?:on|in|inside|on top of|at|by|near|next to|beside) "
+                    r"^((?:the|a|an) [\w ]+?) (?:is|are) ((?:on|in|inside|on top of|at|by|near|next to|beside|under|"
+                    r"underneath|beneath) "
                     r"(?:the|a|an) [\w ]+?)(?: (?:at the moment|right now|right|currently|for now|now))?$",
                     r"there is \1 \2",
                     s,

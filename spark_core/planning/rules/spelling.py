@@ -111,6 +111,9 @@ def corrected(instruction: str, inventory: tuple[str, ...] = ()) -> str:
     """`instruction` with each slip read as the word it misses (accents dropped first); unchanged when it has
     none."""
     instruction = plain_letters(instruction)
+    # chat shorthand between two words: "pick it up n put it ...", "cube & bowl", "w/ the sponge"
+    instruction = re.sub(r"(?<=\w) (?:n|&|'n'?) (?=\w)", " and ", instruction)
+    instruction = re.sub(r"(?<![\w/])w/ ?(?=\w)", "with ", instruction, flags=re.IGNORECASE)
     scene = _scene_words(inventory)
     known = _planner_words() | scene
 
