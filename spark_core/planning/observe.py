@@ -20,13 +20,16 @@ from .rules.parse import Clause, ParseError, is_pronoun, parse_instruction
 from .rules.qualify import bare_rank
 from .rules.reader import phrases as order_free_phrases
 from .rules.reader import readings as order_free_readings
+from .rules.remarks import trailing_remarks
 from .rules.spelling import corrected
 
 PART_OF_ACTION = {"open": "handle", "close": "handle", "turn_on": "knob", "turn_off": "knob"}
 
 
-def phrases_for(instruction: str) -> list[str]:
-    """Noun phrases to look for: objects, targets, tools, sources, plus the part an action grips."""
+def phrases_for(instruction: str, remarks: bool = True) -> list[str]:
+    """Noun phrases to look for: objects, targets, tools, sources, plus the part an action grips; with `remarks`,
+    also those of the instruction read without the trailing clauses that may only remark (rules/remarks.py: the
+    planner reads it so when the whole refuses)."""
     # what an order-free reading needs (rules/reader.py): the planner's fallback when the rule parse refuses; with
     # the part an action of it grips ("open the drawer that is neither the top one nor the middle one")
     after = order_free_phrases(instruction)
@@ -65,6 +68,9 @@ def phrases_for(instruction: str) -> list[str]:
         kind = bare_rank(p)
         if kind:
             out.setdefault(kind, None)
+    for kept, _ in trailing_remarks(instruction, [])[:2] if remarks else []:
+        for p in phrases_for(kept, remarks=False):
+            out.setdefault(p, None)
     return list(out)
 
 

@@ -10,6 +10,16 @@ its blind figure was recorded.
 - "onto the peg to the left of the round peg": where the destination stands, not "of" a part;
 - chat shorthand: "n" and "&" for "and", "w/" for "with"; "vino" is wine; "<thing> table -> <place>".
 
+And by the blind probe data/wording/probe31.yaml (a third negation), after its blind figure was recorded:
+- a contraction typed without its apostrophe ("once thats done"); a courtesy after a list ("..., thanks");
+- "sort these? <list>": what "these" are, said next;
+- a thing ruled out between the thing and the rest of its clause ("the tomato sauce, not the bbq sauce, goes in
+  the basket"), or in parentheses ("the top drawer (not the middle one)"); a last sentence that rules one out and
+  names the request's thing again ("... . not the bbq sauce, the ketchup");
+- "the one that isn't green" after "the tray that isn't yellow": of the tray's kind;
+- "leave the far black bowl and move the other one": the far one's kind without its place word; "there are two
+  black bowls. leave the far one ...": each "one" is of the counted kind.
+
 Each test fails without the mechanism it names. (Examples are written for these tests; none comes from
 data/wording/.)"""
 
@@ -86,3 +96,41 @@ def test_chat_shorthand_and_wine_and_a_bare_table_before_an_arrow():
     assert corrected("mug & saucer, scrub w/ the sponge") == "mug and saucer, scrub with the sponge"
     assert "wine" in KIND_OF["vino"]
     assert imperatives(restructured("lime cube table -> crate")) == ["lime cube from the table into the crate"]
+
+
+def test_an_unmarked_contraction_and_a_courtesy_after_a_list():
+    assert corrected("once thats done, dont drop it") == "once that's done, don't drop it"
+    assert trailing_remarks("lime cube into the crate and teacup onto the saucer, thanks", []) == [
+        ("lime cube into the crate and teacup onto the saucer", "thanks")
+    ]
+
+
+@pytest.mark.parametrize(
+    "said, plainly",
+    [
+        ("could you sort these? lime cube into the crate", "could you sort these: lime cube into the crate"),
+        ("put the teacup, not the mug, on the saucer", "there is the mug. put the teacup on the saucer"),
+        ("the teacup, not the mug, goes on the saucer.", "there is the mug. the teacup goes on the saucer"),
+        ("teacup on the saucer. not the mug, the teacup", "teacup on the saucer."),
+        (
+            "open the lower drawer (not the upper one) and close it",
+            "open the lower drawer, not the upper one, and close it",
+        ),
+        ("there are two mugs. leave the left one and lift the other one", "leave the left mug and lift the other mug"),
+        # a step after the contrast keeps it; a last sentence naming another thing is no repeat
+        ("open the lower drawer, not the upper one, and close it", None),
+        ("teacup on the saucer. not the mug, the crate", None),
+    ],
+)
+def test_contrasts_and_counts_said_plainly(said, plainly):
+    assert restructured(said) == (plainly or said)
+
+
+def test_one_after_a_destination_ruled_out_by_colour_is_of_its_kind():
+    said = "put the lime cube in the crate that isn't yellow, and the teacup in the one that isn't green"
+    assert [c[3] for c in _read(said)] == ["crate not yellow", "crate not green"]
+
+
+def test_the_one_left_alone_keeps_its_kind_and_loses_its_place_word():
+    assert _read("leave the far black mug and lift the other one") == [("pick", "black mug not far", None, None)]
+    assert _read("ignore the left block and lift the other one") == [("pick", "block not leftmost", None, None)]

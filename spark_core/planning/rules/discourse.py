@@ -23,6 +23,7 @@ from functools import lru_cache
 from lemminflect import getLemma
 
 from .lexicon import VERBS
+from .phrases import singular
 from .steps import sequenced
 from .things import is_thing
 
@@ -185,6 +186,39 @@ def _unwanted_now(text: str) -> str:
     if not (_is_step(rest) or " goes " in rest or " go " in rest):
         return text
     return f"there is the {m.group(1)}. {rest}"
+
+
+def _counted_kind(text: str) -> str:
+    """ "there are two black bowls. leave the far one and move the other one onto the plate": each "one" after a
+    count of a kind is of that kind, and the count goes."""
+    m = re.fullmatch(r"there(?: are|'re| re|'s| is) (?:two|three|2|3) ([a-z ]+?)\s*(?:[,;:.!]|\s-+)\s*(.+)", text)
+    if not m or not m.group(1).endswith("s"):
+        return text
+    kind = " ".join([*m.group(1).split()[:-1], singular(m.group(1).split()[-1])])
+    rest = re.sub(r"\b(the|that|this) ((?:\w+ )?)one\b", rf"\1 \2{kind}", m.group(2))
+    return rest if rest != m.group(2) else text
+
+
+def _said_again(text: str) -> str:
+    """ "ketchup in the basket. not the bbq sauce, the ketchup": a last sentence that rules a thing out and names
+    again a thing the request named only says the request again; it goes."""
+    m = re.search(rf"(?<=[.!?;])\s*not {_DET} {_NP},?\s*(?:but |i mean |just |only )?{_DET} ({_NP})\s*[.!]*$", text)
+    if not m or not re.search(rf"\b{re.escape(m.group(1))}\b", text[: m.start()]):
+        return text
+    return text[: m.start()].strip()
+
+
+def _apposed_contrast(text: str) -> str:
+    """ "put the tomato sauce, not the bbq sauce, in the basket", "the red cup, not the blue one, goes on the tray":
+    a thing ruled out between the thing and the rest of its clause is said after the clause, as a contrast is; a
+    step after it ("..., and put ...") keeps it where it is."""
+    return re.sub(
+        rf"^(.*?\b{_DET} {_NP}),\s*(not {_DET} {_NP}),\s*"
+        r"((?:in|into|on|onto|to|inside|on top of|next to|goes|go|belongs?|should|needs? to|must|has to|is to|"
+        r"ends? up)\b[^,.;]*?)([.!]?)$",
+        r"\1 \3, \2\4",
+        text,
+    )
 
 
 def _contrast(text: str) -> str:
@@ -353,7 +387,25 @@ def restructured(instruction: str) -> str:
         lambda m: f", {m.group(1)}," + (" " if m.group(2) else ""),
         text,
     )
+    # a parenthesis that rules a thing out is a contrast between commas ("the top drawer (not the middle one)")
+    out = re.sub(
+        r"\s*\(\s*(not [a-z ]+?)\s*\)\s*(?=(\w)?)", lambda m: f", {m.group(1)}," + (" " if m.group(2) else ""), out
+    )
+    # "would you mind sorting these? red block into ...": what "these" are, said next
+    out = re.sub(r"\b(these|those|the following)\s*\?\s+(?=\S)", r"\1: ", out)
     out = _its_part(_negated_state(_joined(out)))
-    for step in (_header, _former_latter, _cleft, _temporal, _context, _unwanted_now, _contrast, sequenced):
+    for step in (
+        _header,
+        _former_latter,
+        _cleft,
+        _temporal,
+        _context,
+        _unwanted_now,
+        _counted_kind,
+        _said_again,
+        _apposed_contrast,
+        _contrast,
+        sequenced,
+    ):
         out = step(out)
     return instruction if out == text else out

@@ -671,7 +671,9 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
         kind = antecedent if is_pronoun(said) and antecedent else said
         # "the red block in the green tray and the blue block in the yellow one": in parallel with the last
         # destination said by its colour or size, "one" is of that destination's kind
-        if last_target and not is_pronoun(last_target) and set(last_target.split()[:-1]) & _ATTRIBUTE_WORDS:
+        # ("... in the tray that isn't yellow, and the blue block in the one that isn't green": the tray's too)
+        said_as = last_target.split() if last_target and not is_pronoun(last_target) else []
+        if len(said_as) > 1 and set(said_as) & _ATTRIBUTE_WORDS:
             kind = last_target
         # "on top of that (one)": a pronoun, for the clause before to resolve
         target = "it" if target in ("that", "this", "that one", "this one") else _elided_noun(target, kind)

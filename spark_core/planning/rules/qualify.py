@@ -398,13 +398,26 @@ def _contrasts(text: str) -> str:
     )
 
 
+# Words that say where a thing is ("on the cabinet", "that sits by the box", "closest to the plate").
+_WHERE_WORDS = (
+    r"\b(?:on|in|inside|near|next|by|beside|under|underneath|at|from|between|behind|to|of|that|which|sitting|"
+    r"standing|resting|lying|closest|nearest|farthest|furthest)\b"
+)
+
+
 def _left_alone(m: re.Match) -> str:
     """ "leave the <kind> <where> alone; the other <kind> goes ...": the other is the kind, not where the one left
     alone is (or not its own words: "the centre bowl" -> "bowl not centre")."""
     left, where, verb, other = m.group(1).split(), (m.group(2) or "").strip(), m.group(3), m.group(4)
-    kind = " ".join(left[-1:]) if other == "one" else other
+    where = re.sub(r"(?:^|\s+)(?:and|but|then)$", "", where).strip()  # the join to the request, not where
+    if where and not re.search(_WHERE_WORDS, where):  # "leave the far black bowl and ...": all of it its name
+        left, where = [*left, *where.split()], ""
     # a side or the centre as perception's qualifier word ("left" -> "leftmost", "centre" -> "middle")
     words = {**SIDES, "centre": "middle", "center": "middle", "central": "middle"}
+    placed = [w for w in left[:-1] if w in words or w in _QUALIFIER_WORDS or w in ("far", "near")]
+    # "the far black bowl ... the other one": the other black bowl, not the far one
+    kind = " ".join([w for w in left if w not in placed] if placed and not where else left[-1:])
+    kind = kind if other == "one" else other
     ruled = _ruled_out(where) if where else " ".join(words.get(w, w) for w in left[:-1] if w not in kind.split())
     if not ruled:
         return m.group(0)

@@ -21,24 +21,10 @@ from .things import names_a_thing
 # Words that name no thing of the scene, whatever the lexicon says.
 _SELVES = frozenset(
     ["myself", "yourself", "itself", "ourselves", "themselves", "himself", "herself", "other", "others"]
+    + ["nothing", "something", "anything", "everything", "stuff", "none", "each", "either", "neither", "lot", "lots"]
+    + ["its", "his", "her", "their", "our", "your", "my", "mine"]
+    + ["thanks", "thank", "thx", "ty", "cheers", "please", "pls", "mate", "buddy"]  # a courtesy
 )
-_SELVES |= {"nothing", "something", "anything", "everything", "stuff"}
-_SELVES |= {
-    "none",
-    "its",
-    "his",
-    "her",
-    "their",
-    "our",
-    "your",
-    "my",
-    "mine",
-    "each",
-    "either",
-    "neither",
-    "lot",
-    "lots",
-}
 
 # What makes a sentence after the request a remark: a negation (how not to do it), the speaker's own say ("just want
 # to see ...", "i do the rest myself"), or a thing left as it is ("the other bowl can stay where it is", "fyi").

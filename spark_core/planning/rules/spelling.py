@@ -24,6 +24,12 @@ from .mentions import ABSTRACT, _closed_words
 from .things import NOT_THINGS
 
 _MIN = 3  # shorter words are too close to too many others
+# Contractions typed without the apostrophe that spell no other word ("its", "were", "lets", "id" do).
+_UNMARKED = {
+    w.replace("'", ""): w
+    for w in ["don't", "doesn't", "didn't", "isn't", "aren't", "wasn't", "can't", "won't", "shouldn't", "wouldn't"]
+    + ["couldn't", "that's", "there's", "what's", "here's", "you're", "they're", "i've", "i'm", "we've", "you've"]
+}
 
 
 def _one_slip(a: str, b: str) -> bool:
@@ -114,6 +120,13 @@ def corrected(instruction: str, inventory: tuple[str, ...] = ()) -> str:
     # chat shorthand between two words: "pick it up n put it ...", "cube & bowl", "w/ the sponge"
     instruction = re.sub(r"(?<=\w) (?:n|&|'n'?) (?=\w)", " and ", instruction)
     instruction = re.sub(r"(?<![\w/])w/ ?(?=\w)", "with ", instruction, flags=re.IGNORECASE)
+    # a contraction typed without its apostrophe ("once thats done", "dont"): one no other word is spelled as
+    instruction = re.sub(
+        rf"\b({'|'.join(_UNMARKED)})\b",
+        lambda m: _UNMARKED[m.group(1).lower()],
+        instruction,
+        flags=re.IGNORECASE,
+    )
     scene = _scene_words(inventory)
     known = _planner_words() | scene
 
