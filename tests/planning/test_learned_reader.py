@@ -128,3 +128,21 @@ def test_training_reads_dev_files_only():
     names = {Path(p).name for p in DEV_FILES}
     assert "dev.yaml" in names
     assert not any(n.startswith("test") or n == "probe22.yaml" for n in names)
+
+
+def test_fit_keeps_examples_apart_when_two_dev_files_share_an_id(tmp_path):
+    """Each dev file counts its own ids ("lift_block.ordinal.v1" may be in two): the trainer's cache must not
+    give one example the other's goals (it raised an IndexError on the goal counts)."""
+    from spark_core.planning.learned_reader.train import fit
+
+    same = "lift_block.ordinal.v1"
+    examples = [
+        {
+            "id": same,
+            "instruction": "lift the far cube",
+            "goals": [{"text": f"lift the cube {k}", "good": k == 3} for k in range(5)],
+        },
+        {"id": same, "instruction": "lift the near cube", "goals": [{"text": "lift the cube 0", "good": True}]},
+    ]
+    report = fit(examples, tmp_path / "reader.pt", log=lambda _: None)
+    assert (tmp_path / "reader.pt").exists() and report["held_out"] == 0  # both trained on (not held out)

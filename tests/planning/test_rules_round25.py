@@ -20,6 +20,16 @@ And by the blind probe data/wording/probe31.yaml (a third negation), after its b
 - "leave the far black bowl and move the other one": the far one's kind without its place word; "there are two
   black bowls. leave the far one ...": each "one" is of the counted kind.
 
+And by the blind probe data/wording/probe32.yaml (pronoun, ordinal, multistep, goal_state), after its blind figure:
+- "one of the two black bowls is sitting on the stove. pick that one up ...", "there are two black bowls here. i want
+  the one up on top of the cabinet - take it ...": the thing chosen, not wished somewhere;
+- a trailing clause saying how a thing stands ("..., it should sit flat on it"), a step verb only where it leads;
+- "pick the flattest item, the butter, and ...", "nearest bottle to the robot is the bbq sauce, pick that ...";
+- "start by putting green on blue", "open top drawer -> put cream cheese in it" (an arrow before a step is "then");
+- a goal as the thing and where it ends up ("the black bowl that is on the stove, sitting on the plate"), or how it
+  got there ("i'd like the red block in the green area, pushed forward"); "..., not the one on X, the other one";
+- "the table top free of all that dirt".
+
 Each test fails without the mechanism it names. (Examples are written for these tests; none comes from
 data/wording/.)"""
 
@@ -134,3 +144,54 @@ def test_one_after_a_destination_ruled_out_by_colour_is_of_its_kind():
 def test_the_one_left_alone_keeps_its_kind_and_loses_its_place_word():
     assert _read("leave the far black mug and lift the other one") == [("pick", "black mug not far", None, None)]
     assert _read("ignore the left block and lift the other one") == [("pick", "block not leftmost", None, None)]
+
+
+@pytest.mark.parametrize(
+    "said, plainly",
+    [
+        (
+            "one of the two black mugs is sitting on the shelf. lift that one",
+            "the black mug is sitting on the shelf. lift that one",
+        ),
+        (
+            "there are two mugs here. i want the one on the shelf - take it and set it on the tray",
+            "there is the mug on the shelf. take it and set it on the tray",
+        ),
+        (
+            "the teacup that is currently on the shelf, sitting on the tray.",
+            "put the teacup that is currently on the shelf on the tray",
+        ),
+        (
+            "i'd like the lime cube in the blue square, pushed forward",
+            "push the lime cube forward into the blue square",
+        ),
+        (
+            "put a mug on the tray - not the one on the shelf, the other one.",
+            "put a mug on the tray - not the one on the shelf.",
+        ),
+    ],
+)
+def test_which_thing_and_what_becomes_of_it_said_plainly(said, plainly):
+    assert restructured(said) == plainly
+
+
+def test_a_trailing_state_is_a_remark_and_a_step_verb_only_where_it_leads():
+    found = ["lime cube", "tray", "flat"]
+    assert trailing_remarks("put the lime cube on the tray, it should sit flat on it", found) == [
+        ("put the lime cube on the tray", "it should sit flat on it")
+    ]
+    assert trailing_remarks("put the lime cube on the tray, and put it back after", found) == []
+
+
+@pytest.mark.parametrize(
+    "said, steps",
+    [
+        ("pick the roundest item, the lemon, and place it in the crate", ["pick the lemon and place it in the crate"]),
+        ("nearest jar to the robot is the jam, grab that", ["there is the jam, grab that"]),
+        ("start by putting lime on teal. then put red on lime", ["put lime on teal", "put red on lime"]),
+        ("open the lid -> put the lemon in it", ["open the lid, then put the lemon in it"]),
+        ("the counter top free of all that dirt, please", ["scrub the counter"]),
+    ],
+)
+def test_descriptions_named_orders_and_cleaning_said_plainly(said, steps):
+    assert imperatives(restructured(said)) == steps

@@ -51,11 +51,16 @@ def fit(examples: list[dict], out: Path, log=print) -> dict:
     torch.manual_seed(SEED)
     rng = random.Random(SEED)
     model = CrossEncoder()
-    kept = [_kept(e, rng) for e in examples if e["goals"] and (e.get("refuse") or any(g["good"] for g in e["goals"]))]
+    # keyed by position too: an id may recur across the dev files (each file counts its own ids)
+    kept = [
+        {**_kept(e, rng), "key": f"{n}|{e['id']}"}
+        for n, e in enumerate(examples)
+        if e["goals"] and (e.get("refuse") or any(g["good"] for g in e["goals"]))
+    ]
     train = [e for e in kept if not held_out(e["id"])]
     val = [e for e in kept if held_out(e["id"])]
     t0 = time.time()
-    cache = {e["id"]: _states(model, e["instruction"], [g["text"] for g in e["goals"]]) for e in kept}
+    cache = {e["key"]: _states(model, e["instruction"], [g["text"] for g in e["goals"]]) for e in kept}
     log(f"frozen states of {sum(len(e['goals']) for e in kept)} pairs in {time.time() - t0:.0f} s")
     trained = model.trained_parameters()
     head = set(model.head.parameters())
@@ -68,7 +73,7 @@ def fit(examples: list[dict], out: Path, log=print) -> dict:
         rng.shuffle(train)
         total = 0.0
         for n, e in enumerate(train):
-            h, mask = cache[e["id"]]
+            h, mask = cache[e["key"]]
             scores = torch.cat([model.score_states(h.float(), mask), torch.tensor([NONE_SCORE])])
             good = [i for i, g in enumerate(e["goals"]) if g["good"]] or [len(e["goals"])]  # else: none of these
             loss = -(torch.logsumexp(scores[good], 0) - torch.logsumexp(scores, 0))
@@ -101,7 +106,7 @@ def evaluate(model: CrossEncoder, val: list[dict], cache: dict) -> dict:
     out: dict = {"held_out": len(val)}
     tops: list[tuple[float, bool, bool]] = []  # (top goal's probability, it is good, the entry wants a refusal)
     for e in val:
-        h, mask = cache[e["id"]]
+        h, mask = cache[e["key"]]
         scores = torch.cat([model.score_states(h.float(), mask), torch.tensor([NONE_SCORE])])
         p = torch.softmax(scores, 0)[:-1]
         k = int(p.argmax())

@@ -191,12 +191,63 @@ def _unwanted_now(text: str) -> str:
 def _counted_kind(text: str) -> str:
     """ "there are two black bowls. leave the far one and move the other one onto the plate": each "one" after a
     count of a kind is of that kind, and the count goes."""
-    m = re.fullmatch(r"there(?: are|'re| re|'s| is) (?:two|three|2|3) ([a-z ]+?)\s*(?:[,;:.!]|\s-+)\s*(.+)", text)
+    m = re.fullmatch(
+        r"there(?: are|'re| re|'s| is) (?:two|three|2|3) ([a-z ]+?)(?: here| there| on the table| in front of you)?"
+        r"\s*(?:[,;:.!]|\s-+)\s*(.+)",
+        text,
+    )
     if not m or not m.group(1).endswith("s"):
         return text
     kind = " ".join([*m.group(1).split()[:-1], singular(m.group(1).split()[-1])])
     rest = re.sub(r"\b(the|that|this) ((?:\w+ )?)one\b", rf"\1 \2{kind}", m.group(2))
     return rest if rest != m.group(2) else text
+
+
+def _one_of_count(text: str) -> str:
+    """ "one of the two black bowls is sitting on the stove. pick that one up ...": the one of them said so is "the
+    black bowl" (where it is says which)."""
+    return re.sub(
+        r"\bone of the (?:two|three|2|3) ([a-z]+(?: [a-z]+)?)s\b(?= (?:is|that is|which is|sitting|standing|on|in)\b)",
+        r"the \1",
+        text,
+    )
+
+
+def _chosen(text: str) -> str:
+    """ "i want the black bowl up on top of the cabinet - take it and set it on the plate": the thing wanted, then
+    acted on by "it", is chosen, not wished somewhere."""
+    return re.sub(
+        r"^(?:i want|i need|i would like|i'd like|i mean|i'm after|i am after) ((?:the|that) [a-z' ]+?)"
+        r"\s*(?:[-:;,.]+)\s*"
+        r"(?=(?:now )?(?:take|pick|grab|get|lift|move|put|set|place|bring) (?:it|that)\b)",
+        r"there is \1. ",
+        text,
+    )
+
+
+def _state_after(text: str) -> str:
+    """A goal said as the thing (picked out by where it is now) and then where it ends up, or how it got there:
+    "the black bowl that is on the stove, sitting on the plate" (a put); "i'd like the red block in the green area,
+    pushed forward along the table" (a push); "put a black bowl on the plate - not the one on the cabinet, the other
+    one" (the contrast says which; "the other one" adds nothing)."""
+    text = re.sub(
+        r"^((?:the|a|an) [a-z ]+? (?:that|which) (?:is|are) (?:currently |now |still |presently )?"
+        r"(?:on|in|inside|on top of|next to|near|by) [a-z ]+?),\s*"
+        r"(?:sitting|resting|standing|placed|lying|now) (on|in|inside|on top of|onto|into) ([a-z ]+?)\s*[.!]?$",
+        r"put \1 \2 \3",
+        text,
+    )
+    text = re.sub(
+        r"^(?:i'd like|i would like|i want|i need) ((?:the|a|an) [a-z ]+?) (?:in|into|inside) ((?:the|a|an) [a-z ]+?),?"
+        r"\s*(?:pushed|slid|shoved|nudged)( forward| forwards| ahead)?(?: along the table| across the table)?\s*[.!]?$",
+        r"push \1\3 into \2",
+        text,
+    )
+    return re.sub(
+        r"(\bnot (?:the|that) (?:one|[a-z]+) [^,;.]+?),\s*(?:but |just )?the other (?:one|[a-z]+)\s*([.!]?)$",
+        r"\1\2",
+        text,
+    )
 
 
 def _said_again(text: str) -> str:
@@ -402,6 +453,9 @@ def restructured(instruction: str) -> str:
         _context,
         _unwanted_now,
         _counted_kind,
+        _one_of_count,
+        _chosen,
+        _state_after,
         _said_again,
         _apposed_contrast,
         _contrast,

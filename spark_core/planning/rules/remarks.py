@@ -54,13 +54,17 @@ _SUBJECTS = frozenset(["i", "we", "you", "they", "them", "it", "he", "she", "to"
 # Where a trailing clause may start: a comma, a dash, a semicolon or a sentence's end, or a word that joins a reason
 # or a result ("... so none of them spill", "... because it's soft").
 _CLAUSE = re.compile(r"\s*(?:[,;:]|\s-+\s|(?<=[.!?])\s)\s*|\s+(?=(?:so|because|since|as|cause|cuz)\s)")
-# Words a clause that only remarks never says: a verb of the planner's own (a step), a colour, "one" (which thing).
-_ASKS = frozenset(
+# Words a clause that only remarks never says: a colour, "one" (which thing), a word that orders steps.
+_ASKS = frozenset([*BASE_COLOURS, "one", "ones", "then", "also", "first", "next", "after", "before", "once"])
+# A verb of the planner's own says a step where it leads the clause or follows a word that leads one ("..., then
+# open the drawer", "..., and to close it"); after its subject it says how things are ("it should sit flat").
+_STEP_VERBS = frozenset(
     [f.split()[0] for forms in VERBS.values() for f in forms]
-    + [s.split()[0] for s, _ in STATE_ACTIONS]
-    + list(BASE_COLOURS)
-    + ["one", "ones", "then", "also", "first", "next", "after", "before", "once"]
+    + [s.split()[0] for s, _ in STATE_ACTIONS if s.split()[0] not in ("on", "off", "in", "out", "up", "down")]
 )
+_LEADS = frozenset(["", "and", "then", "also", "please", "to", "just", "now", "so", "pls"])
+# Verbs after which a word says how a thing stands ("sit flat", "stay upright", "be level").
+_POSTURES = frozenset(["sit", "sits", "stand", "stands", "stay", "stays", "be", "remain", "remains", "lie", "lies"])
 # A purpose said as "for" and a noun with no article ("we need it for dinner"): no thing of any scene.
 _PURPOSE = re.compile(r"\bfor (?:the )?(?:dinner|lunch|breakfast|later|now|tonight|today|tomorrow|safety|science)\b")
 # How many trailing clauses, at most, are tried: each try is a reading of its own.
@@ -81,6 +85,11 @@ def trailing_remarks(instruction: str, found: list[str]) -> list[tuple[str, str]
         words = re.findall(r"[a-z]+", _plain(tail))
         if not words or not re.search(r"[a-z]", kept.lower()):
             continue
+        pairs = list(zip(["", *words], words))
+        if any(w in _STEP_VERBS and before in _LEADS for before, w in pairs):
+            break  # a step of its own
+        # how it stands ("it should sit flat on it"): a state, not a thing
+        words = [w for before, w in pairs if before not in _POSTURES]
         if any(w in _ASKS or w in known or singular(w) in known for w in words):
             break  # a longer tail holds this one: it names the scene or asks too
         if names_absent(_PURPOSE.sub(" ", _plain(tail)), found):

@@ -269,6 +269,13 @@ def sentences(instruction: str) -> list[str]:
     )
     # an arrow pointing back: "plate <- black bowl" is "black bowl -> plate"
     text = re.sub(r"^([^<]+?)\s*(?:<-|<=|\u2190|<--)\s*(.+)$", r"\2 -> \1", text)
+    # "open the top drawer -> put the cheese in it": an arrow before a step is "then"
+    text = re.sub(
+        r"\s*(?:->|=>|\u2192|-->)\s*(?=(?:put|place|set|move|take|grab|pick|open|close|turn|push|stack|"
+        r"lift|pour|wipe|scrub|drop|shut)\b)",
+        ", then ",
+        text,
+    )
     # "red block table -> bowl": the table said bare before the arrow is where the thing is now
     text = re.sub(
         r"\b(?!(?:the|a|an|from|on|off|of|at)\b)(\w+) (?:table|tabletop|counter)(?=\s*(?:->|=>|\u2192|-->))",
@@ -282,6 +289,9 @@ def sentences(instruction: str) -> list[str]:
         lambda m: f" {_arrow_prep(m.group(1), m.group(2))} the {m.group(2)}",
         text,
     )
+    # "start by putting green on blue": the step itself
+    text = re.sub(r"^(?:start|begin)(?: off)? by (?=\w+ing\b)", "", text)
+    text = _gerund(text)
     # "pick-and-place the cube onto ...": one carry
     text = re.sub(r"^pick[- ](?:and|&|n)[- ](?:place|drop|put)\b", "put", text)
     # "from the robot's point of view, ...": whose left and right, said first
@@ -585,7 +595,8 @@ _SPOKEN_PLAINLY: tuple[tuple[str, str], ...] = (
     ),
     # "the item closest to you is the bbq sauce. pick that one up ...": the thing named, for what follows
     (
-        r"^the [a-z ]*?\b(?:item|thing|object|one|product)\b[a-z ]*? is ((?:the|a|an) [a-z ]+?)\s*(?=[.;:]|$)",
+        r"^(?:the )?[a-z ]*?\b(?:item|thing|object|one|product|bottle|box|jar|can|carton|tin|packet|package|container)"
+        r"\b[a-z ]*? is ((?:the|a|an) [a-z ]+?)\s*(?=[.;:]|,\s*(?:pick|grab|take|get|put|move|lift)\b|$)",
         r"there is \1",
     ),
     # what is not meant, between two steps ("grab the bowl in the drawer, not the one on the cabinet, and set it ...")
@@ -656,6 +667,12 @@ _SAID_PLAINLY: tuple[tuple[str, str], ...] = (
         r"\b(?:a|the) (table|counter|surface) with no (?:dirt|mess|crumbs|stains?|grime)(?: left)?(?: on it)?\b",
         r"the \1 clean",
     ),
+    # "the table top free of all that dirt": clean
+    (
+        r"\b(?:a|the) (table|counter|surface)(?: ?top)? (?:free|clear) of (?:all |any )?(?:the |that |this )?"
+        r"(?:dirt|mess|crumbs|stains?|grime|dust)\b",
+        r"the \1 clean",
+    ),
     (
         r"\b(?:get|take|remove|clear) (?:the |all the |any )?(?:dirt|mess|crumbs|stains?|grime|dust) "
         r"(?:off|from) (?:of )?((?:the|a|an) \w+(?: \w+)?)(?:'s (?:surface|top)| (?:surface|top))?\b",
@@ -712,7 +729,9 @@ def _named_after(text: str) -> str:
     )
     if m:
         return f"{m.group(1)}{m.group(4)} {m.group(3)}"
-    return re.sub(rf"^the [a-z ]*?\b{_ANY_THING}\b[a-z ]*?,\s*(?=(?:the|a|an) [a-z ]+?\s*[,:;]\s*\w)", "", text)
+    text = re.sub(rf"^the [a-z ]*?\b{_ANY_THING}\b[a-z ]*?,\s*(?=(?:the|a|an) [a-z ]+?\s*[,:;]\s*\w)", "", text)
+    # "pick the flattest item, the butter, and place it ...": the name between commas stands for the description
+    return re.sub(rf"\bthe [a-z]+ {_ANY_THING},\s*((?:the|a|an) [a-z ]+?),", r"\1", text)
 
 
 def _verb_first(phrase: str) -> bool:
