@@ -244,7 +244,7 @@ def _state_after(text: str) -> str:
         text,
     )
     return re.sub(
-        r"(\bnot (?:the|that) (?:one|[a-z]+) [^,;.]+?),\s*(?:but |just )?the other (?:one|[a-z]+)\s*([.!]?)$",
+        r"(\s-+\s*not (?:the|that) (?:one|[a-z]+) [^,;.]+?),\s*(?:but |just )?the other (?:one|[a-z]+)\s*([.!]?)$",
         r"\1\2",
         text,
     )
