@@ -674,7 +674,7 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
         # ("... in the tray that isn't yellow, and the blue block in the one that isn't green": the tray's too)
         said_as = last_target.split() if last_target and not is_pronoun(last_target) else []
         if len(said_as) > 1 and set(said_as) & _ATTRIBUTE_WORDS:
-            kind = last_target
+            kind = " ".join(said_as)
         # "on top of that (one)": a pronoun, for the clause before to resolve
         target = "it" if target in ("that", "this", "that one", "this one") else _elided_noun(target, kind)
         # "the plate that sits on the cookie box": a destination located by what it rests on reads as an object does
