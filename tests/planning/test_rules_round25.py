@@ -195,3 +195,19 @@ def test_a_trailing_state_is_a_remark_and_a_step_verb_only_where_it_leads():
 )
 def test_descriptions_named_orders_and_cleaning_said_plainly(said, steps):
     assert imperatives(restructured(said)) == steps
+
+
+def test_a_step_verb_leading_a_trailing_clause_keeps_it():
+    found = ["lime cube", "tray"]
+    assert trailing_remarks("put the lime cube on the tray, and put it back", found) == []
+    assert trailing_remarks("put the lime cube on the tray, it will sit there", found) == [
+        ("put the lime cube on the tray", "it will sit there")
+    ]
+
+
+def test_observe_looks_for_what_the_request_without_its_trailing_remarks_names():
+    from spark_core.planning.observe import phrases_for
+
+    said = "lime cube into the crate and teacup onto the saucer, thanks"
+    assert {"lime cube", "crate", "teacup", "saucer"} <= set(phrases_for(said))
+    assert not {"lime cube", "crate"} <= set(phrases_for(said, remarks=False))

@@ -228,8 +228,7 @@ def _chosen(text: str) -> str:
 def _state_after(text: str) -> str:
     """A goal said as the thing (picked out by where it is now) and then where it ends up, or how it got there:
     "the black bowl that is on the stove, sitting on the plate" (a put); "i'd like the red block in the green area,
-    pushed forward along the table" (a push); "put a black bowl on the plate - not the one on the cabinet, the other
-    one" (the contrast says which; "the other one" adds nothing)."""
+    pushed forward along the table" (a push)."""
     text = re.sub(
         r"^((?:the|a|an) [a-z ]+? (?:that|which) (?:is|are) (?:currently |now |still |presently )?"
         r"(?:on|in|inside|on top of|next to|near|by) [a-z ]+?),\s*"
@@ -243,6 +242,12 @@ def _state_after(text: str) -> str:
         r"push \1\3 into \2",
         text,
     )
+    return text
+
+
+def _other_after_contrast(text: str) -> str:
+    """ "put a black bowl on the plate - not the one on the cabinet, the other one": the contrast says which; "the
+    other one" after it adds nothing."""
     return re.sub(
         r"(\s-+\s*not (?:the|that) (?:one|[a-z]+) [^,;.]+?),\s*(?:but |just )?the other (?:one|[a-z]+)\s*([.!]?)$",
         r"\1\2",
@@ -456,6 +461,7 @@ def restructured(instruction: str) -> str:
         _one_of_count,
         _chosen,
         _state_after,
+        _other_after_contrast,
         _said_again,
         _apposed_contrast,
         _contrast,
