@@ -5,6 +5,7 @@ makes it true, and a purpose that names the destination ("... so that it sits in
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 
 from .lexicon import (
     CONTAINERS,
@@ -174,6 +175,7 @@ def sentences(instruction: str) -> list[str]:
     """Lower case, contractions spelled out, fillers gone; one string per sentence."""
     text = instruction.lower().replace("’", "'").strip()
     text = re.sub(r"\s*[()]\s*", " ", text).strip()  # "(carefully)", "(thanks)": an aside's words, read as said
+    text = re.sub(r"[!?]+(?=\s*,)", "", text)  # "the wine bottle, not the bowl!, should go ...": one sentence
     for short, long in CONTRACTIONS.items():
         text = re.sub(rf"\b{re.escape(short)}", long, text)
     # "the mug's got beads in it": the mug has them, not whose
@@ -472,8 +474,8 @@ def sentences(instruction: str) -> list[str]:
         text,
     )
     text = _named_after(text)
-    for said, plainly in _WHICH_PLAINLY:
-        text = re.sub(said, plainly, text)
+    for which, said_plainly in _WHICH_PLAINLY:
+        text = re.sub(which, said_plainly, text)
     text = qualify(text)
     # "the beads that are (sitting) in the red mug": what a container holds, said by where it is (a relative clause
     # after a destination stays: "on the plate that's on the stove" says which plate, not a second destination)
@@ -483,6 +485,18 @@ def sentences(instruction: str) -> list[str]:
         r"\1 ",
         text,
     )
+    # "pick up the juice instead of the ketchup and put it ...": the thing set apart mid-sentence is named, no step
+    text = re.sub(
+        r"^(.*?\S) (?:instead of|rather than) ((?:the|that|this) [\w' ]+?)(?= and | then |,\s*(?:and |then )?\w)",
+        r"there is \2 . \1",
+        text,
+    )
+    # "put the bowl on the plate and not on the stove": the place set apart, as after a comma (discourse._contrast)
+    text = re.sub(
+        r" and not (?=(?:on|in|into|onto|inside|on top of|next to|beside|by|near|under) (?:the|a|an) )", ", not ", text
+    )
+    # "leave the bbq sauce and the salad dressing alone": each is left alone
+    text = re.sub(_TWO_LEFT_ALONE, r"\1 \2 \4 and \1 \3 \4", text)
     text = re.sub(_LEAVE_ALONE, _left_be, text)
     # "not the one on the stove: the other black bowl, ...": the thing set apart is a sentence of its own
     text = re.sub(r"(^|[.;!?] )(there is [^:;.!?]+?)\s*:\s*(?=\w)", r"\1\2 . ", text)
@@ -651,10 +665,30 @@ _HOW_PLAINLY: tuple[tuple[str, str], ...] = (
     ),
 )
 # Which thing, said in words the qualifier reader knows (before it runs).
-_WHICH_PLAINLY: tuple[tuple[str, str], ...] = (
+_WHICH_PLAINLY: tuple[tuple[str, str | Callable[[re.Match], str]], ...] = (
     # "the cube at the bottom of the stack", "the cube that's underneath the green one": where it is in a stack
     (r"\b(\w+) (?:that is |which is )?at the (bottom|top) of the (?:stack|pile|tower)\b", r"\2 \1"),
     (r"\b(?:underneath|beneath|below)\b(?= (?:the|a|an|it|that|this)\b)", "under"),
+    # "anything but the bowl in the middle - put the other black bowl ...": the one left alone, said first
+    (r"^(?:anything|everything|any|all) but (the [\w' ]+?)\s*(?=[-,:;] )", r"leave \1 alone"),
+    # "except for the bowl on the cookie box there's one more black bowl, put that one ...": the other one
+    (
+        r"^(?:except(?: for)?|apart from|besides|other than|aside from) (the [\w' ]+?),? there is (?:one more|another|"
+        r"one other|also (?:a|another)|a second) ([\w' ]+?)\s*[,;.:-]\s*(\w+(?: up)?) (?:that one|that|it)\b",
+        r"leave \1 alone, \3 the other \2",
+    ),
+    # "the bowl sitting on the table? no, not that one, the other black bowl. put it on the plate": corrected
+    (
+        r"^(the [\w' ]+?)\s*\?\s*no\b[,.!]?\s*(?:not (?:that one|that|it)[,.!]?\s*)?(the other [\w' ]+?)\s*[,;.:-]\s*"
+        r"(\w+(?: up)?) (?:it|that one|that)\b",
+        r"leave \1 alone, \3 \2",
+    ),
+    # "the cube that's not on top (at the moment)": of a stack of two, the bottom one (and the other way round)
+    (
+        r"\b(\w+) (?:that is |which is )?not (?:on top|at the top|on the top|(at|on) the bottom)"
+        r"(?: of the (?:stack|pile|tower))?(?: (?:at the moment|right now|currently|now))?\b",
+        lambda m: f"{'top' if m.group(2) else 'bottom'} {m.group(1)}",
+    ),
     # "there are two black bowls - put the closer one on the plate": which of them, said as "of the two ..."
     (
         r"^there(?: are|'re| re) (two|three|2|3) ([a-z ]+?s)\s*[,;:.!]\s*"
@@ -666,6 +700,24 @@ _SAID_PLAINLY: tuple[tuple[str, str], ...] = (
     (
         r"\b(?:a|the) (table|counter|surface) with no (?:dirt|mess|crumbs|stains?|grime)(?: left)?(?: on it)?\b",
         r"the \1 clean",
+    ),
+    # "i'd rather have the bottle on the cabinet than on the rack": the goal, and the place it is not
+    (
+        r"\b(?:i|we) would rather (?:have|see|keep|put) (.+?) than (?=(?:on|in|at|inside|on top of|in front of) )",
+        r"put \1, not ",
+    ),
+    # "i want a spotless table": the table clean
+    (
+        r"\b(?:i|we) (?:want|would like|need) (?:a|the) (?:spotless|clean|cleaned|tidy|dirt free|dirt-free) "
+        r"(table|counter|surface)(?: ?top)?\b",
+        r"the \1 clean",
+    ),
+    # "..., all that brown dirt wiped away": the cleaning goal said again after it
+    (
+        r",\s*(?:and |with )?(?:all |any )?(?:of )?(?:that |the |this )?(?:\w+ )?"
+        r"(?:dirt|mess|crumbs|stains?|grime|dust) "
+        r"(?:wiped|gone|cleaned|removed|cleared|scrubbed)(?: away| off| up| out)?(?=\s*(?:[.;!?]|$))",
+        "",
     ),
     # "the table top free of all that dirt": clean
     (
@@ -764,7 +816,12 @@ _LEAVE_ALONE = re.compile(
     # (not the rest: "... and leave the rest where they are" only closes the request, _TRAILING)
     r"((?:the|that|this|those|these) (?!(?:rest|others?|other ones?|remaining ones?)\b)[\w' ]+?)"
     r"( (?:alone|where it is|where they are|as it is|as they are|as is|in place|untouched|be|where it stands|"
-    r"where it sits|in peace))?(?=\s*(?:[,;:.!?]|- |$| and\b| but\b| then\b| just\b))"
+    r"where it sits|in peace|completely|entirely|totally|for now))?"
+    r"(?=\s*(?:[,;:.!?]|- |$| and\b| but\b| then\b| just\b))"
+)
+_TWO_LEFT_ALONE = re.compile(
+    r"\b(leave|ignore|do not touch|do not move|skip) ((?:the|that|this) [\w' ]+?) and ((?:the|that|this) [\w' ]+?) "
+    r"(alone|be|untouched|where they are|as they are|in place)\b"
 )
 # Where "leave" puts a thing or the state it leaves it in ("leave the bowl on the plate", "leave the drawer open"):
 # a step, not a thing left alone.
