@@ -48,6 +48,8 @@ def test_each_thing_set_apart_is_still_named():
 def test_not_on_top_of_a_stack_is_the_bottom_one():
     said = "the cube that's NOT on top at the moment - put it on top of the other one"
     assert _read(said)[-1] == ("put", "bottom cube", "on", "cube not bottom")
+    # on top of something else: where it is not, a relation
+    assert _read("take the mug that isn't on top of the shelf and put it on the tray")[-1][1] == "mug not on top of shelf"
 
 
 @pytest.mark.parametrize(

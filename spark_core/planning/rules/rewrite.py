@@ -686,7 +686,7 @@ _WHICH_PLAINLY: tuple[tuple[str, str | Callable[[re.Match], str]], ...] = (
     # "the cube that's not on top (at the moment)": of a stack of two, the bottom one (and the other way round)
     (
         r"\b(\w+) (?:that is |which is )?not (?:on top|at the top|on the top|(at|on) the bottom)"
-        r"(?: of the (?:stack|pile|tower))?(?: (?:at the moment|right now|currently|now))?\b",
+        r"(?! of (?!the (?:stack|pile|tower)\b))(?: of the (?:stack|pile|tower))?(?: (?:at the moment|right now|currently|now))?\b",
         lambda m: f"{'top' if m.group(2) else 'bottom'} {m.group(1)}",
     ),
     # "there are two black bowls - put the closer one on the plate": which of them, said as "of the two ..."
