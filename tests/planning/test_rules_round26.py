@@ -49,7 +49,9 @@ def test_not_on_top_of_a_stack_is_the_bottom_one():
     said = "the cube that's NOT on top at the moment - put it on top of the other one"
     assert _read(said)[-1] == ("put", "bottom cube", "on", "cube not bottom")
     # on top of something else: where it is not, a relation
-    assert _read("take the mug that isn't on top of the shelf and put it on the tray")[-1][1] == "mug not on top of shelf"
+    assert (
+        _read("take the mug that isn't on top of the shelf and put it on the tray")[-1][1] == "mug not on top of shelf"
+    )
 
 
 @pytest.mark.parametrize(
@@ -68,3 +70,15 @@ def test_rather_than_a_place_and_a_clean_table_wished_for():
     said = "i'd rather have the jam on top of the shelf than on the tray"
     assert _read(said) == [("put", "jam", "on", "shelf")]
     assert sentences("I want a spotless counter, all that brown dirt wiped away") == ["the counter clean"]
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "the plate gets a black mug: the one that is not on the shelf",
+        # which one, said after the whole request (read before as the mug on the tray, moved onto the shelf)
+        "put a black mug on the plate: the one not on the shelf",
+    ],
+)
+def test_which_one_said_after_a_thing_named_by_its_kind(said):
+    assert _read(said) == [("put", "black mug not on shelf", "on", "plate")]

@@ -683,10 +683,25 @@ _WHICH_PLAINLY: tuple[tuple[str, str | Callable[[re.Match], str]], ...] = (
         r"(\w+(?: up)?) (?:it|that one|that)\b",
         r"leave \1 alone, \3 \2",
     ),
+    # "the plate gets a black bowl: the one that is not on the cabinet": which one, said after the kind
+    (
+        r"\b(?:a|an|one) ((?:\w+ ){0,2}\w+)\s*(?::|,|-+)\s*the one (?:that |which )?(?:is |sits |stands )?"
+        r"(?=(?:not|on|in|inside|next to|near|by|beside|under|on top of|closest|nearest|farthest|furthest)\b[^,;.:]*$)",
+        r"the \1 that is ",
+    ),
+    # "put a black bowl on the plate: the one on the stove": which one, said after the request
+    (
+        r"^((?:\w+ )+?)(?:a|an) ((?:\w+ ){0,2}?\w+) ((?:on|in|into|onto|inside|on top of) (?:the|a|an) [\w ]+?)"
+        r"\s*(?::|,|-+)\s*the one (?:that is |which is |sitting |that sits )?"
+        r"((?:not )?(?:on|in|inside|next to|near|by|beside|under|on top of|closest to|nearest to) (?:the|a|an) "
+        r"[^,;.:!?]+?)\s*[.!]?$",
+        r"\1the \2 \4 \3",
+    ),
     # "the cube that's not on top (at the moment)": of a stack of two, the bottom one (and the other way round)
     (
         r"\b(\w+) (?:that is |which is )?not (?:on top|at the top|on the top|(at|on) the bottom)"
-        r"(?! of (?!the (?:stack|pile|tower)\b))(?: of the (?:stack|pile|tower))?(?: (?:at the moment|right now|currently|now))?\b",
+        r"(?! of (?!the (?:stack|pile|tower)\b))(?: of the (?:stack|pile|tower))?"
+        r"(?: (?:at the moment|right now|currently|now))?\b",
         lambda m: f"{'top' if m.group(2) else 'bottom'} {m.group(1)}",
     ),
     # "there are two black bowls - put the closer one on the plate": which of them, said as "of the two ..."
