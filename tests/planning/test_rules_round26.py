@@ -9,13 +9,25 @@ thirds negation) after its blind figure was recorded.
 - "anything but the X - put the other Y ...", "except for the X there's one more Y, put that one ...", "the X? no,
   not that one, the other Y. put it ...": the one left alone, then the other;
 - "i'd rather have X on Y than on Z": the goal and the place it is not;
-- "i want a spotless table, all that dirt wiped away": clean, the goal said twice.
+- "i want a spotless table, all that dirt wiped away": clean, the goal said twice;
+- "the plate gets a black bowl: the one that is not on X", "put a black bowl on the plate: the one on the stove":
+  which one, said after a thing named by its kind.
+
+And by the blind probe data/wording/probe35.yaml (pronoun, ordinal, goal_state, located), after its blind figure:
+- a tool named by where it lies ("use the sponge lying to the right of the plate to scrub ...");
+- "one of the black bowls is up on the cabinet, bring it down and set it ...": the comma before the step;
+- "then do the same with the blue block, but that one goes in the yellow tray": a carry of its own;
+- "two black bowls near the cabinet - i need the one sitting lower ...": the count without "there are";
+- "the grey stove sitting on the table in front of you": neither the table nor "you" says which;
+- "..., since the carton might tip over": a worry, no step.
 
 Each test fails without the mechanism it names. (Examples are written for these tests; none comes from
 data/wording/.)"""
 
 import pytest
 
+from spark_core.planning.rules.discourse import restructured
+from spark_core.planning.rules.parse import parse_instruction
 from spark_core.planning.rules.rewrite import sentences
 from tests.planning.test_rules_round24 import _read
 
@@ -82,3 +94,34 @@ def test_rather_than_a_place_and_a_clean_table_wished_for():
 )
 def test_which_one_said_after_a_thing_named_by_its_kind(said):
     assert _read(said) == [("put", "black mug not on shelf", "on", "plate")]
+
+
+def test_a_tool_named_by_where_it_lies():
+    said = "use the scourer lying to the left of the saucer to scrub the saucer"
+    assert [(c.action, c.target, c.tool) for c in parse_instruction(restructured(said))] == [
+        ("scrub", "saucer", "scourer near saucer")
+    ]
+
+
+@pytest.mark.parametrize(
+    "said, read",
+    [
+        (
+            "one of the black mugs is up on the shelf, bring it down and set it on the tray",
+            [("pick", "black mug on shelf", None, None), ("put", "black mug on shelf", "on", "tray")],
+        ),
+        (
+            "pick up the lime cube and put it in the crate, then do the same with the teal cube, but that one goes "
+            "in the box",
+            [("pick", "lime cube", None, None), ("put", "lime cube", "in", "crate"), ("put", "teal cube", "in", "box")],
+        ),
+        (
+            "two black mugs near the shelf - i need the one sitting lower moved onto the tray",
+            [("put", "lower black mug", "on", "tray")],
+        ),
+        ("turn on the grey lamp sitting on the table in front of you", [("turn_on", "grey lamp", None, None)]),
+        ("put the jam in the crate, gently, since the jar might tip over", [("put", "jam", "in", "crate")]),
+    ],
+)
+def test_pronouns_counts_and_asides_of_probe35(said, read):
+    assert [r for r in _read(said) if r[0] != "mention"] == read

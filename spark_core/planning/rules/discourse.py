@@ -189,10 +189,12 @@ def _unwanted_now(text: str) -> str:
 
 
 def _counted_kind(text: str) -> str:
-    """ "there are two black bowls. leave the far one and move the other one onto the plate": each "one" after a
-    count of a kind is of that kind, and the count goes."""
+    """ "there are two black bowls. leave the far one and move the other one onto the plate", "two black bowls near
+    the cabinet - i need the lower one ...": each "one" after a count of a kind is of that kind, and the count
+    goes."""
     m = re.fullmatch(
-        r"there(?: are|'re| re|'s| is) (?:two|three|2|3) ([a-z ]+?)(?: here| there| on the table| in front of you)?"
+        r"(?:there(?: are|'re| re|'s| is) )?(?:two|three|2|3) ([a-z ]+?)"
+        r"(?: here| there| on the table| in front of you| (?:near|by|next to|beside|around) the [a-z ]+?)?"
         r"\s*(?:[,;:.!]|\s-+)\s*(.+)",
         text,
     )

@@ -134,7 +134,9 @@ SPEAKERS_PLANS = (
 # Why, or what is coming, said after a comma ("..., just want to see if the grasp holds", "..., we have a demo").
 SPEAKERS_REASON = (
     r"(?:i )?(?:just |only )?(?:want|wanna|need|would like) to (?:see|check|test|know|verify|find out)\b|"
-    r"(?:we|i) (?:have|have got) (?:a|an|some|guests|visitors|company)\b"
+    r"(?:we|i) (?:have|have got) (?:a|an|some|guests|visitors|company)\b|"
+    # a worry about the thing ("..., since the carton might tip over")
+    r"(?:since|because|as) the \w+(?: \w+)? (?:might|could|may|can|tends to|is likely to|will probably)\b"
 )
 # Words and phrases that carry no action. ("then" is not one: it separates clauses.)
 FILLERS = (

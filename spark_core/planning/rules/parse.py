@@ -151,7 +151,10 @@ def parse_instruction(instruction: str) -> list[Clause]:
             # "there is a bowl in the drawer, black one": what the thing just named looks like
             clauses[-1] = replace(clauses[-1], obj=f"{said.group(1)} {clauses[-1].obj}")
             continue
-        part = re.sub(r"^use (.+?) to (\w+) (.+)$", r"\2 \3 with \1", part)  # "use the sponge to scrub the plate"
+        # "use the sponge (lying to the right of the plate) to scrub the plate": "to" before a verb, not a place
+        part = re.sub(
+            r"^use (.+?) to (?!(?:the|a|an|its|my|your|his|her|their|our)\b)(\w+) (.+)$", r"\2 \3 with \1", part
+        )
         part = re.sub(
             r"^slide (.+) (?:over(?! to\b)|onto|on to|on top of) ", r"put \1 on ", part
         )  # slid on top: a carry
@@ -607,7 +610,8 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
         obj = re.sub(r"\s+(?:clean|down)$", "", off[0] if off else obj)  # "wipe the dirt off the table": the dirt
         if not split and obj.removeprefix("the ") in TABLE:  # "wipe the table", "table clean": the dirt on it
             obj = f"dirt on {obj.removeprefix('the ')}"
-        return Clause(action, target=noun_phrase(obj), tool=noun_phrase(tool) if tool else None, text=text)
+        # the tool may be named by where it is ("with the sponge lying to the right of the plate")
+        return Clause(action, target=noun_phrase(obj), tool=object_phrase(tool) if tool else None, text=text)
     if action == "pour":
         into = _split_on(rest, IN) or _split_on(rest, ON)
         later = [m for m in re.finditer(r"(?:^|\s)in(?:to|side)?(?=\s)", rest)][1:]

@@ -32,7 +32,8 @@ LOCATORS = ("between", "next to", "beside", "near", "by", "on top of", "on", "in
 _PARTICIPLE = re.compile(
     r"\b(?:(?:(?:that|which) )?(?:is|are|sits|rests|stands|lies|sit|rest|stand|lie)|sitting|resting|standing|lying|"
     r"located|placed|found|kept|stacked|perched|set|sat|parked|left|waiting|put|stored|positioned)\s+"
-    r"(?=(?:not\s+)?(?:" + "|".join(re.escape(x) for x in LOCATORS) + r")\b)"
+    r"(?=(?:not\s+)?(?:" + "|".join(re.escape(x) for x in LOCATORS) + r"|to (?:the )?(?:left|right) of|in front of|"
+    r"behind)\b)"
 )
 # "up on the cabinet", "down in the drawer", "over by the box": the particle adds nothing to where it is
 _PARTICLE = re.compile(r"\b(?:up|down|over|back) (?=(?:on|onto|in|inside|on top of|at|by|near|next to|beside)\b)")

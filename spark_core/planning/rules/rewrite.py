@@ -504,8 +504,13 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(
         r"(^|[.;!?] )one of the ((?:\w+ ){0,2})(\w+s) (?:is|sits|rests|stands)(?: sitting| resting| standing| lying)? "
         r"(?:up |down |over |now )?"
-        r"((?:on top of|on|in|inside|next to|beside|near|by) (?:the|a|an) [\w ]+?)(?=\s*(?:[.;!?]|$))",
-        lambda m: f"{m.group(1)}there is the {m.group(2)}{singular(m.group(3))} {m.group(4)}",
+        r"((?:on top of|on|in|inside|next to|beside|near|by) (?:the|a|an) [\w ]+?)"
+        # (or a comma before the step that acts on it: "..., bring it down and set it on the plate")
+        r"(\s*,\s*(?=(?:and |then )*(?:bring|take|grab|pick|move|put|place|set|get|lift|carry)\b)|(?=\s*(?:[.;!?]|$)))",
+        lambda m: (
+            f"{m.group(1)}there is the {m.group(2)}{singular(m.group(3))} {m.group(4)}"
+            + (". " if m.group(5).strip() else "")
+        ),
         text,
     )
     for said, plainly in _SAID_PLAINLY:
@@ -697,6 +702,26 @@ _WHICH_PLAINLY: tuple[tuple[str, str | Callable[[re.Match], str]], ...] = (
         r"[^,;.:!?]+?)\s*[.!]?$",
         r"\1the \2 \4 \3",
     ),
+    # "then do the same with the blue block, but that one goes in the yellow tray": a carry of its own
+    (
+        r"\bdo the same (?:with|for|to) ((?:the|that|this) [\w ]+?),? (?:but|only|except|though) "
+        r"(?:that one|this one|that|it|this) (?:goes|should go|belongs|needs to go|has to go|must go|is to go) "
+        r"(in|into|on|onto|inside|on top of) ",
+        r"put \1 \2 ",
+    ),
+    # "the one sitting lower", "the bowl placed higher": the lower one
+    (
+        r"\bthe (one|\w+) (?:that is |which is )?(?:sitting|placed|resting|standing|lying|set|located) "
+        r"(lower|higher|further|farther|closer|nearer)(?: down| up)?\b",
+        r"the \2 \1",
+    ),
+    # "the grey stove sitting on the table in front of you": the table is where everything stands, and "you" the
+    # robot: neither says which
+    (
+        r"\s*\b(?:that is |which is )?(?:sitting|standing|lying|resting|placed) on the (?:table|counter|tabletop)"
+        r"(?: (?:right )?in front of (?:you|me|the robot))?(?=\s*(?:[,;.!?]|$))",
+        "",
+    ),
     # "the cube that's not on top (at the moment)": of a stack of two, the bottom one (and the other way round)
     (
         r"\b(\w+) (?:that is |which is )?not (?:on top|at the top|on the top|(at|on) the bottom)"
@@ -750,6 +775,8 @@ _SAID_PLAINLY: tuple[tuple[str, str], ...] = (
         "",
     ),
     (r"\b(?:take|get|grab|catch) (?:a )?hold of\b", "grab"),
+    # "bring it down and set it on the plate": taken down from where it is, then carried
+    (r"\b(?:bring|get|lift) (it|them|that one) down\b(?= and\b| then\b|\s*,)", r"take \1 down"),
     # "pass the hammer from one gripper to the other": a handover
     (
         r"\b(?:pass|hand|move|transfer|switch|shift) ((?:the|that|this) [\w ]+?|it) from one (?:arm|gripper|hand) to "
