@@ -32,6 +32,7 @@ from ..grammar import plan_to_dict
 from ..perception.factory import make_resolver
 from ..perception.lifting import FOOTPRINT_CELL_M
 from ..planning import PlanRequest, SceneView
+from ..planning.learned_reader.recipe import described
 from ..planning.observe import arm_bases, arm_tools, observe
 from ..planning.rules import RulesPlanner
 from ..sim.tasks import SUITES
@@ -428,7 +429,7 @@ def section(
             command,
             f"planner: rules (offline, deterministic), with the learned reader as its fallback where every rule "
             f"reading refuses and nothing said is absent or ambiguous (planning/learned_reader: a MiniLM "
-            f"cross-encoder trained on the dev half and probes 14, 19 and 21, never on the test half), on the "
+            f"cross-encoder trained on {described()}, never on the test half), on the "
             f"hand-written wording corpus data/wording/ (dev and "
             f"test halves apart; the test half frozen before the parser changed, never tuned on); perception: "
             f"{perception_note(segmenter)}, the task's scene at seed 0; planning success: the plan's steps match "

@@ -8,7 +8,7 @@ import torch
 from spark_core.planning import PlanRequest
 from spark_core.planning.learned_reader import fallback, scorer
 from spark_core.planning.learned_reader.candidates import options, pairs, singles
-from spark_core.planning.learned_reader.train import DEV_FILES
+from spark_core.planning.learned_reader.recipe import DEV_FILES, described
 from spark_core.planning.rules import RulesPlanner
 from spark_core.planning.rules.planner import composer
 from tests.planning.scene_views import leaves, view
@@ -128,6 +128,7 @@ def test_training_reads_dev_files_only():
     names = {Path(p).name for p in DEV_FILES}
     assert "dev.yaml" in names
     assert not any(n.startswith("test") or n == "probe22.yaml" for n in names)
+    assert described() == "the dev half and probes 14, 19 and 21"  # as the bench's protocol line names them
 
 
 def test_fit_keeps_examples_apart_when_two_dev_files_share_an_id(tmp_path):

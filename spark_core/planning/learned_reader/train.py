@@ -4,7 +4,7 @@
     python -m spark_core.planning.learned_reader.train fit var/reader/examples.json \\
         spark_core/planning/learned_reader/weights/reader.pt
 
-`collect` plans every entry of the dev files (`DEV_FILES`: the dev half and the probe files already
+`collect` plans every entry of the dev files (`recipe.DEV_FILES`: the dev half and the probe files already
 tuned on; never the test half, never `probe22.yaml`, kept as the reader's unseen check) in its task's scene at seed
 0 (sim segmenter) and labels each goal its view affords (`examples.py`); an entry that expects a refusal has no
 good goal. `fit` trains the last two MiniLM layers and the head with a listwise loss (softmax over an
@@ -24,14 +24,9 @@ from pathlib import Path
 import torch
 import yaml
 
+from .recipe import DEV_FILES
 from .scorer import NONE_SCORE, CrossEncoder
 
-DEV_FILES = (
-    "data/wording/dev.yaml",
-    "data/wording/probe14.yaml",
-    "data/wording/probe19.yaml",
-    "data/wording/probe21.yaml",
-)
 NEGATIVES = 40  # wrong goals kept per instruction (seeded)
 EPOCHS = 7
 SEED = 0
