@@ -83,6 +83,8 @@ def _gripped(clauses: list[Clause]) -> list[str]:
             out.setdefault(f"{c.obj} {part}", None)
             if "drawer" in c.obj:
                 out.setdefault(f"drawer {part}", None)
+            elif part == "knob" and len(c.obj.split()) > 1:  # "the grey stove": its knob is not grey
+                out.setdefault(f"{c.obj.split()[-1]} {part}", None)
     return list(out)
 
 

@@ -19,16 +19,19 @@ And by the blind probe data/wording/probe35.yaml (pronoun, ordinal, goal_state, 
 - "then do the same with the blue block, but that one goes in the yellow tray": a carry of its own;
 - "two black bowls near the cabinet - i need the one sitting lower ...": the count without "there are";
 - "the grey stove sitting on the table in front of you": neither the table nor "you" says which;
-- "..., since the carton might tip over": a worry, no step.
+- "..., since the carton might tip over": a worry, no step;
+- "turn on the grey stove": when perception finds "grey stove knob" as the stove itself, the stove's knob is turned.
 
 Each test fails without the mechanism it names. (Examples are written for these tests; none comes from
 data/wording/.)"""
 
 import pytest
 
+from spark_core.planning.observe import phrases_for
 from spark_core.planning.rules.discourse import restructured
 from spark_core.planning.rules.parse import parse_instruction
 from spark_core.planning.rules.rewrite import sentences
+from tests.planning.scene_views import leaves, plan, view
 from tests.planning.test_rules_round24 import _read
 
 
@@ -125,3 +128,13 @@ def test_a_tool_named_by_where_it_lies():
 )
 def test_pronouns_counts_and_asides_of_probe35(said, read):
     assert [r for r in _read(said) if r[0] != "mention"] == read
+
+
+def test_the_knob_of_a_stove_named_by_its_colour():
+    assert "stove knob" in phrases_for("turn on the grey stove")
+    # perception found "grey stove knob" as the stove (the same detection): the stove's own knob is turned
+    same = view(grey_stove=(0.6, 0.0, 0.02), grey_stove_knob=(0.6, 0.0, 0.02), stove_knob=(0.51, 0.0, 0.06))
+    assert leaves(plan("turn on the grey stove", same))[0] == ("turn_knob", "stove knob")
+    # found apart: the knob said with the colour stays
+    apart = view(grey_stove=(0.6, 0.0, 0.02), grey_stove_knob=(0.51, 0.0, 0.06), stove_knob=(0.51, 0.0, 0.06))
+    assert leaves(plan("turn on the grey stove", apart))[0] == ("turn_knob", "grey stove knob")

@@ -409,6 +409,15 @@ class RulesPlanner:
                         f"(understood: {understood}; found in the scene: {seen})"
                     )
                 knob = obj if obj.split()[-1] in ("knob", "dial") else f"{obj} knob"  # "the stove's dial" is its knob
+                plain = f"{obj.split()[-1]} knob"
+                if (
+                    knob in scene
+                    and obj in scene
+                    and plain in scene
+                    and _same_detection(scene[knob], scene[obj])
+                    and not _same_detection(scene[plain], scene[obj])
+                ):
+                    knob = plain  # "the grey stove": grey is the stove's colour, not its knob's (found as the stove)
                 if knob not in scene:
                     raise CannotPlan(
                         f"cannot turn {obj!r} {c.action[5:]}: perception did not find it with a knob "
