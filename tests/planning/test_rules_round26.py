@@ -130,6 +130,10 @@ def test_pronouns_counts_and_asides_of_probe35(said, read):
     assert [r for r in _read(said) if r[0] != "mention"] == read
 
 
+def test_on_the_table_without_in_front_of_you_still_says_which():
+    assert _read("the cube sitting on the table, put it on the other one")[-1][1] == "bottom cube"
+
+
 def test_the_knob_of_a_stove_named_by_its_colour():
     assert "stove knob" in phrases_for("turn on the grey stove")
     # perception found "grey stove knob" as the stove (the same detection): the stove's own knob is turned

@@ -715,11 +715,11 @@ _WHICH_PLAINLY: tuple[tuple[str, str | Callable[[re.Match], str]], ...] = (
         r"(lower|higher|further|farther|closer|nearer)(?: down| up)?\b",
         r"the \2 \1",
     ),
-    # "the grey stove sitting on the table in front of you": the table is where everything stands, and "you" the
-    # robot: neither says which
+    # "the grey stove sitting on the table in front of you": the table in front of the robot is where everything
+    # stands (without "in front of you" it stays: "the cube sitting on the table" is the bottom one of a stack)
     (
         r"\s*\b(?:that is |which is )?(?:sitting|standing|lying|resting|placed) on the (?:table|counter|tabletop)"
-        r"(?: (?:right )?in front of (?:you|me|the robot))?(?=\s*(?:[,;.!?]|$))",
+        r" (?:right )?in front of (?:you|me|the robot)(?=\s*(?:[,;.!?]|$))",
         "",
     ),
     # "the cube that's not on top (at the moment)": of a stack of two, the bottom one (and the other way round)
