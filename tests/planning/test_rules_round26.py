@@ -58,6 +58,8 @@ def test_each_thing_set_apart_is_still_named():
         r[1] for r in _read("put the jam into the crate, leave the honey and the mustard alone") if r[0] == "mention"
     ] == ["honey", "mustard"]
     assert ("mention", "honey", None, None) in _read("grab the jam instead of the honey and put it in the crate")
+    # "completely" says how it is left alone, not which thing (it was read as part of the name)
+    assert ("mention", "teal", None, None) in _read("lift the lime cube, ignore the teal one completely")
 
 
 def test_not_on_top_of_a_stack_is_the_bottom_one():
