@@ -13,6 +13,7 @@ from ..perception import Keypoint, LabelNotFound
 from ..perception.resolver_protocol import Resolver
 from ..perception.summary import summarise
 from .protocol import SceneView
+from .rules.chunks import noun_chunks
 from .rules.discourse import restructured
 from .rules.lexicon import CLEANERS, CONTAINERS, CONTENTS
 from .rules.mentions import clause_mentions, read_past, stray_nouns
@@ -37,7 +38,8 @@ def phrases_for(instruction: str, remarks: bool = True) -> list[str]:
     try:
         clauses = parse_instruction(instruction)
     except ParseError:
-        return after
+        # no reading gives anything to look for: the sentence's noun phrases, for the learned reader to rank goals over
+        return after or noun_chunks(instruction)
     out: dict[str, None] = {}
     for c in clauses:
         for p in (c.obj, c.target, c.tool, c.source):

@@ -84,6 +84,17 @@ def test_a_phrase_that_names_nothing_of_its_own_is_a_misreading_not_an_absent_th
     assert not fallback.may_read("could not find 'banana' in the scene: perception found nothing", request)
 
 
+@pytest.mark.parametrize(
+    "phrase", ["table in front of you grey stove sitting", "i want spotless table", "but one goes", "bowl lying"]
+)
+def test_words_that_only_place_a_thing_name_nothing_to_look_for(phrase):
+    # a phrase the rules kept extra words in: where a thing lies, the table, the speaker, "one" doing something
+    known = {"grey", "stove", "bowl"}
+    assert fallback.misread(phrase, known)
+    for absent in ("since carton might tip", "bowl on the shelf", "table lamp"):
+        assert not fallback.misread(absent, known), absent
+
+
 def test_two_phrases_perception_found_as_one_thing_make_no_goal():
     scene = view(smaller_cube=(0.5, 0.0, 0.02), bigger_cube=(0.5, 0.0, 0.02))
     request = PlanRequest("x", scene)

@@ -18,6 +18,7 @@ from lemminflect import getAllLemmas
 from ..protocol import PlanRequest
 from ..rules.framing import verb_words
 from ..rules.lexicon import PARTICIPLES, STATE_ACTIONS, VERBS
+from ..rules.mentions import PLACE_WORDS
 from ..rules.parse import Clause
 from ..rules.planner import RulesPlanner, composer
 from ..rules.things import is_verb
@@ -56,6 +57,7 @@ def _may_be_thing(word: str) -> bool:
 _VERB_BEFORE = frozenset(
     ["not", "never", "dont", "don't", "doesnt", "doesn't", "do", "does", "did", "to", "it", "they", "i", "you", "we"]
     + ["will", "would", "can", "could", "should", "must", "shall", "may", "might"]
+    + ["one"]  # "(but that) one goes in the tray": a thing said as "one" does what follows
 )
 
 
@@ -64,14 +66,16 @@ def misread(phrase: str, known: set[str]) -> bool:
     perception found, a word that names nothing, no noun, or a word that may be a verb said right after a word
     that only a verb follows ("do not touch red block", "dont touch"). A phrase with a
     noun perception found nothing for ("banana", "red ball", "pot handle", "the box") is not misread: that thing
-    is absent."""
+    is absent. Words that only place a thing ("table", "front", "you", `mentions.PLACE_WORDS`) and the participles
+    that say where it lies ("sitting", "lying") name nothing to look for either: "table in front of you grey stove
+    sitting" is a misreading of a found "grey stove"."""
     words = phrase.split()
     # a phrase ending in a word of description, not a thing ("look nicer"): its words before may be verbs
     described = words[-1] not in _NAMES_NOTHING and not _may_be_thing(words[-1])
 
     def placed(i: int) -> bool:
         w = words[i]
-        if w in known or w in _NAMES_NOTHING or not _may_be_thing(w):
+        if w in known or w in _NAMES_NOTHING or w in PLACE_WORDS or w in PARTICIPLES or not _may_be_thing(w):
             return True
         return is_verb(w) and (described or (bool(i) and words[i - 1] in _VERB_BEFORE))
 
