@@ -158,3 +158,19 @@ def test_fit_keeps_examples_apart_when_two_dev_files_share_an_id(tmp_path):
     ]
     report = fit(examples, tmp_path / "reader.pt", log=lambda _: None)
     assert (tmp_path / "reader.pt").exists() and report["held_out"] == 0  # both trained on (not held out)
+
+
+def test_a_misreading_that_holds_a_thing_perception_did_not_find_is_not_read_past():
+    # "move the bowl on the cookie box to the plate but ...": "plate but" found nothing, and the plate is in the
+    # scene but not in the view, so no goal the reader ranks could use it
+    found = {"bowl_on_cookie_box": (0.5, 0.1, 0.05), "cookie_box": (0.5, 0.1, 0.02)}
+    request = PlanRequest("x", view(inventory=("plate", "cookie box"), unresolved={"plate but": "none found"}, **found))
+    assert not fallback.may_read("could not find 'plate but' in the scene: perception found nothing", request)
+    seen = PlanRequest("x", view(unresolved={"plate but": "none found"}, plate=(0.6, 0.0, 0.01), **found))
+    assert fallback.may_read("could not find 'plate but' in the scene: perception found nothing", seen)
+
+
+def test_no_goal_puts_a_thing_back_on_what_its_own_phrase_says_it_stands_on():
+    texts = {g.text for g in singles(["bowl on cookie box", "cookie box", "plate"])}
+    assert "put the bowl on cookie box on the plate" in texts
+    assert not any(t.startswith("put the bowl on cookie box") and t.endswith("the cookie box") for t in texts)

@@ -10,6 +10,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from itertools import permutations
 
+from ...perception.qualifiers import SUPPORT_RELATIONS, split_relation
 from ..rules.parse import Clause
 
 _FIXTURE = ("open", "close", "turn_on", "turn_off")
@@ -43,6 +44,12 @@ def _say(c: Clause) -> str:
     return f"put the {c.obj} {c.relation} the {c.target}"
 
 
+def _stands_on(phrase: str) -> list[str]:
+    """What the phrase says its thing stands on or in ("cookie box" of "bowl on cookie box")."""
+    _, relation, anchors = split_relation(phrase)
+    return anchors if relation in SUPPORT_RELATIONS else []
+
+
 def singles(phrases: list[str]) -> list[Candidate]:
     """One goal over the found phrases: a pick, a fixture's action, a move onto or into another, a push, a pour,
     a scrub, a two-armed lift or a handover."""
@@ -52,7 +59,8 @@ def singles(phrases: list[str]) -> list[Candidate]:
         out += [(Clause(action, obj=a),) for action in _FIXTURE]
         out += [(Clause("pick", obj=a, arm="one", to_arm="other"),)]
     for a, b in permutations(phrases, 2):
-        out += [(Clause("put", obj=a, target=b, relation="in"),), (Clause("put", obj=a, target=b, relation="on"),)]
+        if b not in _stands_on(a):  # "the bowl on the cookie box" put on the cookie box: where it already is
+            out += [(Clause("put", obj=a, target=b, relation="in"),), (Clause("put", obj=a, target=b, relation="on"),)]
         out += [(Clause("push", obj=a, target=b, relation="in", direction="forward"),)]
         out += [(Clause("push", obj=a, target=b, relation="near"),)]
         out += [(Clause("pour", obj=a, target=b),), (Clause("scrub", target=b, tool=a),)]

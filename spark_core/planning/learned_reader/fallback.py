@@ -111,7 +111,9 @@ def may_read(error: str | None, request: PlanRequest) -> bool:
         return False
     scene = request.scene
     found = list(scene.keypoints)
-    known = {w for p in [*found, *scene.inventory] for w in re.findall(r"[a-z]+", p.lower())}
+    # words of what perception found for the sentence, not of all the scene holds: the reader ranks goals over the
+    # found phrases only, so a thing said in a misreading ("plate but") that was not found would be planned around
+    known = {w for p in found for w in re.findall(r"[a-z]+", p.lower())}
     for phrase, why in scene.unresolved.items():
         if not (_named_precisely(phrase, found) if why.startswith("several") else misread(phrase, known)):
             return False

@@ -23,9 +23,10 @@ from functools import lru_cache
 from lemminflect import getLemma
 
 from .lexicon import VERBS
+from .mentions import ATTRIBUTES
 from .phrases import singular
 from .steps import sequenced
-from .things import is_thing
+from .things import adverb_only, is_thing, is_verb
 
 # A short noun phrase after its determiner: up to four words, none of them a preposition, conjunction or verb of
 # state (what a back-reference can stand for).
@@ -430,6 +431,23 @@ def _its_part(text: str) -> str:
     return text[: m.start()] + re.sub(r"its (\w+)", rf"the {owner} \1", text[m.start() :], count=1)
 
 
+# Words after "but" that start a clause of their own: a negation, a verb or an adverb ("... on the plate but don't
+# touch the bowl", "... but be gentle", "... but slowly"); a thing or a colour after it is what "but" sets apart
+# ("all the blocks but the red one", "anything but blue").
+_CLAUSE_AFTER_BUT = frozenset(["don't", "dont", "do", "never", "please", "just", "also", "then", "make", "try"])
+
+
+def _but_clause(text: str) -> str:
+    """ "A but B" where B starts a clause, said as after a comma ("A, but B"), as the clause splitter reads it."""
+
+    def comma(m: re.Match) -> str:
+        word = m.group(1)
+        starts = word in _CLAUSE_AFTER_BUT or adverb_only(word) or (is_verb(word) and word not in ATTRIBUTES)
+        return f", but {word}" if starts else m.group(0)
+
+    return re.sub(r"(?<=[a-z]) but ([a-z']+)", comma, text)
+
+
 def _joined(text: str) -> str:
     """A superlative of place said with a hyphen as one word: "right-most" is "rightmost"."""
     return re.sub(r"\b(left|right|front|back|top|bottom|upper|lower|rear|fore)[- ]most\b", r"\1most", text)
@@ -451,7 +469,7 @@ def restructured(instruction: str) -> str:
     )
     # "would you mind sorting these? red block into ...": what "these" are, said next
     out = re.sub(r"\b(these|those|the following)\s*\?\s+(?=\S)", r"\1: ", out)
-    out = _its_part(_negated_state(_joined(out)))
+    out = _its_part(_negated_state(_joined(_but_clause(out))))
     for step in (
         _header,
         _former_latter,

@@ -476,6 +476,7 @@ def sentences(instruction: str) -> list[str]:
     text = _named_after(text)
     for which, said_plainly in _WHICH_PLAINLY:
         text = re.sub(which, said_plainly, text)
+    text = _SAME_AGAIN.sub(lambda m: _same_again(m, text), text)
     text = qualify(text)
     # "the beads that are (sitting) in the red mug": what a container holds, said by where it is (a relative clause
     # after a destination stays: "on the plate that's on the stove" says which plate, not a second destination)
@@ -670,6 +671,49 @@ _HOW_PLAINLY: tuple[tuple[str, str], ...] = (
     ),
 )
 # Which thing, said in words the qualifier reader knows (before it runs).
+# "..., then do the same with the blue block (and the yellow tray)", "do likewise for the bowl": the step before,
+# said again of another thing (and another place)
+_SAME_AGAIN = re.compile(
+    r"(?:do|repeat) (?:the same(?: thing)?|likewise|that|this|it)(?: again)? (?:with|for|to|using) "
+    r"((?:the|that|this) [\w ]+?)"
+    r"(?:,?\s+(and|with|into|in|onto|on|to|for)\s+((?:the|that|this) [\w ]+?))?(?=\s*(?:[,;.!?]|$))"
+)
+_PLACE_WORD = re.compile(r"\b(into|inside|in|onto|on top of|on)\s+(?:the|a|an)\s")
+
+
+def _same_again(m: re.Match, text: str) -> str:
+    """The step before `m`, said again of the thing `m` names (and the place it names): "put the blue block in the
+    yellow tray" for "do the same with the blue block and the yellow tray" after a carry into a tray; with two things
+    of one kind ("... with the blue block and the green block"), once for each. Unchanged when no step before says
+    what to do."""
+    thing, joiner, place = m.group(1), m.group(2), m.group(3)
+    before = text[: m.start()]
+    if joiner == "and" and place and _head(place) == _head(thing):
+        steps = [_again(before, t, None) for t in (thing, place)]
+        return ", ".join(x for x in steps if x) if all(steps) else m.group(0)
+    return _again(before, thing, place) or m.group(0)
+
+
+def _again(before: str, thing: str, place: str | None) -> str | None:
+    """The last step said in `before`, done to `thing` (and carried to `place`); None when there is none."""
+    parts = re.split(r"[,;.]\s*|\s+then\s+|\s+and\s+(?=(?:then\s+)?\w+ (?:it|them|the|a|an)\b)", before)
+    step = next((b.strip() for b in reversed(parts) if starts_with_verb(b.strip())), None)
+    if step is None:
+        return None
+    if place:
+        rel = [p.group(1) for p in _PLACE_WORD.finditer(before)]
+        into = not rel or rel[-1] in ("into", "inside", "in")
+        return f"put {thing} {'in' if into else 'on'} {place}"
+    again = re.sub(
+        r"^(\w+(?: up| down| out)?) (?:(?:the|a|an|that|this) [\w ]+?|it|them)"
+        r"(?= (?:in|into|inside|on|onto|to|from|off|and|on top of)\b|$)",
+        lambda s: f"{s.group(1)} {thing}",
+        step,
+        count=1,
+    )
+    return again if again != step else None
+
+
 _WHICH_PLAINLY: tuple[tuple[str, str | Callable[[re.Match], str]], ...] = (
     # "the cube at the bottom of the stack", "the cube that's underneath the green one": where it is in a stack
     (r"\b(\w+) (?:that is |which is )?at the (bottom|top) of the (?:stack|pile|tower)\b", r"\2 \1"),
@@ -1140,9 +1184,11 @@ def goal_to_action(text: str) -> str | None:
         # "i want red in the green tray and blue in the yellow tray": one carry per goal
         steps = [goal_to_action(f"i want {b}") for b in both]
         return ", ".join(x for x in steps if x) if all(steps) else None
-    if not wish and len(both) > 1:
-        # "the green tray holds the red block and the yellow tray holds the blue one": one carry per goal
-        steps = [goal_to_action(b) for b in both]
+    listed = re.split(r"\s*[,;]\s*(?:and\s+)?|\s+and\s+", body)
+    if not wish and len(listed) > 1:
+        # "the green tray holds the red block and the yellow tray holds the blue one" (or ", the yellow tray ..."):
+        # one carry per goal, when every part states one
+        steps = [goal_to_action(b) for b in listed]
         if all(steps):
             return ", ".join(x for x in steps if x)
     held = _holds(body)
@@ -1375,7 +1421,11 @@ def imperatives(instruction: str) -> list[str]:
         if pair and (pair.group(2) in dict(STATE_ACTIONS) or pair.group(2) in HELD):
             out += _colon(pair.group(1), pair.group(2))  # "cabinet drawer, opened": the thing, then its state
             continue
-        if pair and not any(starts_with_verb(x) or _DESTINATION.search(x) for x in pair.groups()):
+        if (
+            pair
+            and not any(starts_with_verb(x) or _DESTINATION.search(x) for x in pair.groups())
+            and not all(goal_to_action(x) for x in pair.groups())  # "the green tray gets X, the yellow tray Y"
+        ):
             out += _colon(pair.group(2), pair.group(1))  # "green block, basket"
             continue
         # "the bowl sitting on the box, put it on the plate": a thing named first, then acted on through a pronoun

@@ -1,0 +1,82 @@
+"""Round 27: general mechanisms, not wording of a probe ("A but B" said without a comma)."""
+
+import pytest
+
+from spark_core.planning.rules.discourse import restructured
+from tests.planning.scene_views import leaves, plan, view
+
+SCENE = view(red_block=(0.5, 0.1, 0.02), bowl=(0.5, -0.1, 0.03), plate=(0.6, 0.0, 0.01))
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "put the red block in the bowl but don't touch the plate",
+        "put the red block in the bowl but be gentle",
+        "put the red block in the bowl but leave the plate alone",
+        "put the red block in the bowl but slowly",
+    ],
+)
+def test_a_clause_after_but_is_read_as_after_a_comma(text):
+    result = plan(text, SCENE)
+    assert result.ok, result.error
+    assert leaves(result)[:2] == [("pick", "red block"), ("place_in", "bowl")]
+
+
+@pytest.mark.parametrize("text", ["put all the blocks but the red one in the tray", "anything but blue, put it away"])
+def test_but_before_a_thing_or_a_colour_still_sets_it_apart(text):
+    assert restructured(text) == text
+
+
+TRAYS = view(
+    red_block=(0.5, 0.1, 0.02),
+    blue_block=(0.5, -0.1, 0.02),
+    green_tray=(0.6, 0.2, 0.01),
+    yellow_tray=(0.6, -0.2, 0.01),
+)
+BOTH = [("pick", "red block"), ("place_in", "green tray"), ("pick", "blue block"), ("place_in", "yellow tray")]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "the green tray gets the red block, the yellow tray gets the blue block",
+        "green tray gets the red block, yellow tray gets the blue block",
+        "the green tray needs the red block; the yellow tray needs the blue block",
+    ],
+)
+def test_goals_listed_with_commas_are_one_carry_each(text):
+    result = plan(text, TRAYS)
+    assert result.ok, result.error
+    assert [x for x in leaves(result) if x[0] != "go_home"] == BOTH
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "take the red block and drop it into the green tray, then do likewise with the blue block and the yellow tray",
+        "put the red block in the green tray, then repeat that with the blue block in the yellow tray",
+    ],
+)
+def test_the_same_again_with_another_thing_and_place(text):
+    result = plan(text, TRAYS)
+    assert result.ok, result.error
+    assert [x for x in leaves(result) if x[0] != "go_home"] == BOTH
+
+
+def test_the_same_again_with_two_things_of_one_kind_is_done_to_each():
+    scene = view(
+        red_block=(0.5, 0.1, 0.02),
+        blue_block=(0.5, -0.1, 0.02),
+        green_block=(0.4, 0.0, 0.02),
+        green_tray=(0.6, 0.2, 0.01),
+    )
+    text = "put the red block in the green tray, then do the same with the blue block and the green block"
+    result = plan(text, scene)
+    assert result.ok, result.error
+    assert [x for x in leaves(result) if x[0] == "pick"] == [
+        ("pick", "red block"),
+        ("pick", "blue block"),
+        ("pick", "green block"),
+    ]
+    assert {x for x in leaves(result) if x[0] == "place_in"} == {("place_in", "green tray")}
