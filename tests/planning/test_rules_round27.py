@@ -2,6 +2,7 @@
 
 import pytest
 
+from spark_core.grammar import plan_to_dict
 from spark_core.planning.rules.discourse import restructured
 from tests.planning.scene_views import leaves, plan, view
 
@@ -80,3 +81,46 @@ def test_the_same_again_with_two_things_of_one_kind_is_done_to_each():
         ("pick", "green block"),
     ]
     assert {x for x in leaves(result) if x[0] == "place_in"} == {("place_in", "green tray")}
+
+
+RAMEKIN = view(
+    bowl_near_ramekin=(0.5, 0.1, 0.03),
+    black_bowl_near_ramekin=(0.5, 0.1, 0.03),
+    bowl_next_to_ramekin=(0.5, 0.1, 0.03),
+    ramekin=(0.5, 0.2, 0.02),
+    plate=(0.6, -0.1, 0.01),
+)
+
+
+@pytest.mark.parametrize(
+    ("text", "bowl"),
+    [
+        ("the black bowl adjacent to the ramekin, onto the plate please", "black bowl near ramekin"),
+        ("put the bowl close to the ramekin on the plate", "bowl near ramekin"),
+        ("the bowl near the ramekin is the one i want on the plate", "bowl near ramekin"),
+        ("the bowl near the ramekin is what we need on the plate", "bowl near ramekin"),
+        ("the ramekin has a bowl next to it - put that bowl on the plate", "bowl next to ramekin"),
+    ],
+)
+def test_a_thing_named_by_where_it_stands_in_other_words(text, bowl):
+    result = plan(text, RAMEKIN)
+    assert result.ok, result.error
+    assert leaves(result)[:2] == [("pick", bowl), ("place", "plate")]
+
+
+BLOCKS = view(red=(0.5, 0.1, 0.02), green=(0.5, 0.0, 0.02), blue=(0.5, -0.1, 0.02))
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I want a stack with blue at the base, then green, then red",
+        "make a tower, blue at the bottom, then green, red last",
+        "i'd like a three-block tower with blue at the bottom, green in the middle and red on top",
+    ],
+)
+def test_a_tower_said_as_a_wish_or_before_a_comma_is_stacked_from_the_bottom(text):
+    result = plan(text, BLOCKS)
+    assert result.ok, result.error
+    stacks = [c["params"] for c in plan_to_dict(result.plan)["tree"]["children"] if c["type"] == "stack"]
+    assert [(p["keypoint_label"], p["target_label"]) for p in stacks] == [("green", "blue"), ("red", "green")]

@@ -39,7 +39,8 @@ _PARTICIPLE = re.compile(
 _PARTICLE = re.compile(r"\b(?:up|down|over|back) (?=(?:on|onto|in|inside|on top of|at|by|near|next to|beside)\b)")
 # where one thing stands relative to another, as the relation perception measures ("in front of the box": near it)
 BESIDE = re.compile(
-    r"\b(?:in front of|behind|to (?:the )?(?:left|right) of|on (?:the )?(?:left|right)(?: hand)? side of|alongside)\b"
+    r"\b(?:in front of|behind|to (?:the )?(?:left|right) of|on (?:the )?(?:left|right)(?: hand)? side of|alongside|"
+    r"adjacent to|close to)\b"
 )
 # "is not sitting on": the participle adds nothing to the negated place
 _NOT_PARTICIPLE = re.compile(

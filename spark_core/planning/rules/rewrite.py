@@ -321,8 +321,13 @@ def sentences(instruction: str) -> list[str]:
         r"put \2 to \1",
         text,
     )
+    # ("the one near the ramekin is the one i want on the plate", "... is what we need in the basket")
     text = re.sub(
-        r"^((?:the|a|an) .+?) is the one (?:for|to go (?:on|in|into|onto|to)) (the .+)$", r"put \1 to \2", text
+        r"^((?:the|a|an) .+?) is (?:(?:the one|what|the \w+(?: \w+)?) (?:that |which )?(?:i|we) (?:want|need|"
+        r"would like|'d like)(?: to go| moved| put| placed| set)? (?:on|in|into|onto|to|on top of)|"
+        r"the one (?:for|to go (?:on|in|into|onto|to))) (the .+)$",
+        r"put \1 to \2",
+        text,
     )
     # "could the green block go into the basket?": a question whose subject is the thing moved
     text = re.sub(
@@ -781,6 +786,12 @@ _WHICH_PLAINLY: tuple[tuple[str, str | Callable[[re.Match], str]], ...] = (
     ),
 )
 _SAID_PLAINLY: tuple[tuple[str, str], ...] = (
+    # "the ramekin has a bowl next to it - put that bowl ...": the thing named by where it is, then acted on
+    (
+        r"(^|[.;!?] )(the [\w ]+?) (?:has|had) (?:a|an|one|some) ([\w ]+?) "
+        r"(next to|beside|near|by|behind|in front of|on top of|on|in|inside|under) (?:it|them)\b",
+        r"\1there is the \3 \4 \2",
+    ),
     (
         r"\b(?:a|the) (table|counter|surface) with no (?:dirt|mess|crumbs|stains?|grime)(?: left)?(?: on it)?\b",
         r"the \1 clean",
@@ -1062,14 +1073,18 @@ def _colon(left: str, right: str) -> list[str]:
 
 
 _TOWER_PLACES = (
-    ("top", r"on top|at the top|on the top|uppermost|up top"),
+    ("top", r"on top|at the top|on the top|uppermost|up top|last|at the end"),
     ("middle", r"in the middle|in between"),
-    ("bottom", r"underneath|beneath|below|under(?: it| them)?|at the bottom|on the bottom|at the base|lowest"),
+    (
+        "bottom",
+        r"underneath|beneath|below|under(?: it| them)?|at the bottom|on the bottom|at the base|lowest",
+    ),
 )
 
 
 _TOWER_HEADER = re.compile(
-    r"^(?:build|make|form|create|assemble|put together|stack up)(?: me)? (?:a|the|one) (?:tower|stack|pile)"
+    r"^(?:build|make|form|create|assemble|put together|stack up|i want|i'd like|i need|we want|we need)(?: me)? "
+    r"(?:a|the|one) (?:[\w-]+ )?(?:tower|stack|pile)"
     r"(?: of (?:the )?(?:blocks|cubes|three))?(?:\s*[-:]\s*|\s+(?:with|where|that has)\s+|\s*)"
 )
 # A word that makes a clause of a noun phrase ("the red block should end up in the air"): a goal said in words.
@@ -1083,6 +1098,7 @@ def _tower(items: list[str]) -> list[str] | None:
     items = [re.sub(r"^(?:and )?(?:then|next|after that)\s+", "", i.strip()) for i in items if i.strip()]
     if items:  # "build a tower - blue on the bottom, ...": the stack named first, its order after
         items[0] = _TOWER_HEADER.sub("", items[0])
+        items = [i for i in items if i] if len(items) > 1 else items  # "make a tower, blue first, ..."
     for item in items:
         for where, words in _TOWER_PLACES:
             m = re.fullmatch(rf"((?:the |a |an )?[\w ]+?) (?:(?:is|sits|goes|should be|should go) )?(?:{words})", item)
