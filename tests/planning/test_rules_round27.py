@@ -124,3 +124,43 @@ def test_a_tower_said_as_a_wish_or_before_a_comma_is_stacked_from_the_bottom(tex
     assert result.ok, result.error
     stacks = [c["params"] for c in plan_to_dict(result.plan)["tree"]["children"] if c["type"] == "stack"]
     assert [(p["keypoint_label"], p["target_label"]) for p in stacks] == [("green", "blue"), ("red", "green")]
+
+
+DRAWER = view(drawer=(0.6, 0.0, 0.1), drawer_handle=(0.5, 0.0, 0.1), red_block=(0.4, 0.1, 0.02))
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "get the drawer open and the red block in it",
+        "have the drawer open and the red block inside it",
+        "could you open up the drawer and stash the red block inside",
+    ],
+)
+def test_a_drawer_opened_and_filled_in_one_breath(text):
+    result = plan(text, DRAWER)
+    assert result.ok, result.error
+    assert [x for x in leaves(result) if x[0] != "go_home"][:3] == [
+        ("open_drawer", "drawer handle"),
+        ("pick", "red block"),
+        ("place_in", "drawer"),
+    ]
+
+
+MUG = view(mug=(0.5, 0.1, 0.05), bowl=(0.5, -0.1, 0.03))
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "take the mug and pour what's in it into the bowl",
+        "pour what is in the mug into the bowl",
+        "get all the beads out of the mug and into the bowl",
+        "take the beads from the mug into the bowl",
+        "decant the beads into the bowl",
+    ],
+)
+def test_what_a_container_holds_carried_elsewhere_is_poured(text):
+    result = plan(text, MUG)
+    assert result.ok, result.error
+    assert ("pour", "bowl") in leaves(result)

@@ -97,7 +97,7 @@ VERBS: dict[str, tuple[str, ...]] = {
     "close": ("close", "shut", "push closed", "push shut", "slam", "slam shut"),
     "turn_on": ("turn on", "switch on", "ignite", "start", "light", "fire up", "power on", "activate", "heat up"),
     "turn_off": ("turn off", "switch off", "power off", "shut off", "deactivate", "extinguish", "shut down", "kill"),
-    "pour": ("pour", "empty", "tip", "dump", "tilt"),
+    "pour": ("pour", "empty", "tip", "dump", "tilt", "decant"),
     "scrub": ("scrub", "wipe", "clean", "scour", "wash", "rub", "polish", "buff", "mop"),
     "sort": ("sort",),
 }

@@ -590,7 +590,10 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
     direction = None
     if action == "push":  # elsewhere "left" and "closer" pick out an object, not a way to move it
         direction, rest = _direction(rest)
-    if action == "put" and re.match(rf"(?:the |some |all (?:the )?)?(?:{'|'.join(CONTENTS)})\b", rest):
+    carried = action == "put" or (
+        action == "pick" and re.search(r"\b(?:into|in|onto|on|over)\s+(?:the|a|an)\b", rest) is not None
+    )  # ("take the beads from the mug into the bowl": a pick verb with a destination)
+    if carried and re.match(rf"(?:the |some |all (?:the )?)?(?:{'|'.join(CONTENTS)})\b", rest):
         action = "pour"  # "beads -> bowl": what a container holds goes in by pouring it out of the container
     if action == "mention":
         # "there's a drawer sticking out": how it stands is no part of its name

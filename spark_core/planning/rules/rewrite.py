@@ -213,6 +213,14 @@ def sentences(instruction: str) -> list[str]:
         r"\1turn \3 \2",
         text,
     )
+    # "get the drawer open and the red block in it": the verb said once for a state and a carry
+    text = re.sub(
+        r"\b(get|have) ((?:the|a|an) [\w ]+?) (open|opened|closed|shut|switched on|switched off|turned on|turned off) "
+        r"and ((?:the|a|an) [\w ]+?) "
+        r"(?=(?:in|into|inside|on|onto|on top of) (?:it|the|a|an)\b)",
+        r"\1 \2 \3 and put \4 ",
+        text,
+    )
     # a state brought about ("get the drawer open and ...", "have the stove switched on"): the action that makes it
     text = re.sub(
         r"(^|, |\band |\bthen )(?:get|have|make) ((?:the|a|an) [\w ]+?) "
@@ -786,6 +794,16 @@ _WHICH_PLAINLY: tuple[tuple[str, str | Callable[[re.Match], str]], ...] = (
     ),
 )
 _SAID_PLAINLY: tuple[tuple[str, str], ...] = (
+    # "pour what's in it into the bowl": what a container holds, said as its contents
+    (r"\bwhat(?:'s| is) (?:in|inside) it\b", "its contents"),
+    (
+        r"\bwhat(?:'s| is) (?:in|inside) ((?:the|that|this) [\w ]+?)(?= (?:into|in|onto|on|over|to)\b)",
+        r"the contents of \1",
+    ),
+    # "get the beads out of the mug and into the bowl": a source and a destination in one breath
+    (r"\bout of ((?:the|a|an) [\w ]+?),? and (into|in|onto|on|to|over) (?=(?:the|a|an) )", r"from \1 \2 "),
+    # "open up the drawer": the particle adds nothing
+    (r"\bopen up (?=(?:the|a|an|that|this) )", "open "),
     # "the ramekin has a bowl next to it - put that bowl ...": the thing named by where it is, then acted on
     (
         r"(^|[.;!?] )(the [\w ]+?) (?:has|had) (?:a|an|one|some) ([\w ]+?) "
