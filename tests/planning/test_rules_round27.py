@@ -164,3 +164,30 @@ def test_what_a_container_holds_carried_elsewhere_is_poured(text):
     result = plan(text, MUG)
     assert result.ok, result.error
     assert ("pour", "bowl") in leaves(result)
+
+
+ZONE = view(red_block=(0.5, 0.0, 0.02), green_area=(0.65, 0.0, 0.0))
+STOVE = view(stove=(0.6, 0.0, 0.05), stove_knob=(0.5, 0.0, 0.05))
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["give the red block a push forward, into the green area", "push the red block forward, into the green area"],
+)
+def test_a_push_said_as_a_noun_or_with_its_place_after_a_comma(text):
+    result = plan(text, ZONE)
+    assert result.ok, result.error
+    assert leaves(result)[0] == ("push_object", "red block")
+    assert len([x for x in leaves(result) if x[0] == "push_object"]) == 1
+
+
+def test_get_the_stove_going_after_a_polite_opening():
+    result = plan("could you get the stove going", STOVE)
+    assert result.ok, result.error
+    assert leaves(result)[0] == ("turn_knob", "stove knob")
+
+
+def test_the_thing_said_again_after_its_place_is_no_part_of_the_place():
+    result = plan("pick up the red block, into the bowl with it", SCENE)
+    assert result.ok, result.error
+    assert leaves(result)[:2] == [("pick", "red block"), ("place_in", "bowl")]

@@ -373,7 +373,10 @@ def sentences(instruction: str) -> list[str]:
     # about ("get the hob going"): switching it on
     text = re.sub(r"^(fire|heat|power|switch|turn) ((?:the|a|an) [\w ]+?) (up|on)\b", r"\1 \3 \2", text)
     text = re.sub(
-        r"^get ((?:the|a|an) [\w ]+?) (?:going|started|running|lit|fired up|heated up)\b", r"turn on \1", text
+        r"(?:^|(?<=\byou )|(?<=\bplease ))get ((?:the|a|an) [\w ]+?) "
+        r"(?:going|started|running|lit|fired up|heated up)\b",
+        r"turn on \1",
+        text,
     )
     # "the bowl on the burner goes to the plate": a goal verb after a thing named without its article
     text = re.sub(
@@ -529,6 +532,10 @@ def sentences(instruction: str) -> list[str]:
     )
     for said, plainly in _SAID_PLAINLY:
         text = re.sub(said, plainly, text)
+    if starts_with_verb(text):  # "push the red block forward, into the green area": where it goes, after a comma
+        text = re.sub(
+            r"(?<=[a-z]),\s*(?=(?:straight |right |directly )?(?:into|onto|on top of) (?:the|a|an) )", " ", text
+        )
     text = _thing_then_place(text)
     # "top drawer open with the cream cheese inside": the drawer opened, then the thing put in it
     text = re.sub(
@@ -794,6 +801,14 @@ _WHICH_PLAINLY: tuple[tuple[str, str | Callable[[re.Match], str]], ...] = (
     ),
 )
 _SAID_PLAINLY: tuple[tuple[str, str], ...] = (
+    # "up on the cabinet with it", "into the bowl with them": the thing carried, said again after its place
+    (r"\b((?:into|onto|in|on|on top of|inside) (?:the|a|an) [\w ]+?) with (?:it|them)\b", r"\1"),
+    # "give the red block a push forward", "give the plate a good scrub": the noun is the verb
+    (
+        r"\bgive ((?:the|a|an|that|this) [\w ]+?) (?:a|one) (?:good |quick |little |small |gentle |firm |light )?"
+        r"(push|nudge|shove|scrub|wipe|clean|rub|polish)\b,?",
+        r"\2 \1",
+    ),
     # "pour what's in it into the bowl": what a container holds, said as its contents
     (r"\bwhat(?:'s| is) (?:in|inside) it\b", "its contents"),
     (
