@@ -249,6 +249,8 @@ PARTICIPLES: dict[str, str] = {
     "moved": "put",
     "dropped": "put",
     "stored": "put",
+    "relocated": "put",
+    "transferred": "put",
     # how a thing ends up seated on or in another ("the nut seated on the peg", "the lid fitted on the pot")
     "seated": "put",
     "sat": "put",

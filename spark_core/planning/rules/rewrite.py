@@ -801,6 +801,8 @@ _WHICH_PLAINLY: tuple[tuple[str, str | Callable[[re.Match], str]], ...] = (
     ),
 )
 _SAID_PLAINLY: tuple[tuple[str, str], ...] = (
+    # "the drawer at the top": the top drawer (not "at the top of the cabinet", a place)
+    (r"\bthe ([a-z]+) at the (top|bottom|middle)\b(?! of\b)", r"the \2 \1"),
     # "up on the cabinet with it", "into the bowl with them": the thing carried, said again after its place
     (r"\b((?:into|onto|in|on|on top of|inside) (?:the|a|an) [\w ]+?) with (?:it|them)\b", r"\1"),
     # "give the red block a push forward", "give the plate a good scrub": the noun is the verb
