@@ -191,13 +191,15 @@ def test_the_thing_said_again_after_its_place_is_no_part_of_the_place():
     result = plan("pick up the red block, into the bowl with it", SCENE)
     assert result.ok, result.error
     assert leaves(result)[:2] == [("pick", "red block"), ("place_in", "bowl")]
+    assert result.detail["understood"] == ["put obj=red block relation=in target=bowl"]  # the rule parse, as said
 
 
 DRAWERS = view(top_drawer=(0.6, 0.0, 0.3), top_drawer_handle=(0.5, 0.0, 0.3), bowl=(0.4, 0.1, 0.03))
 
 
 @pytest.mark.parametrize(
-    "text", ["I'd like the bowl tucked in the uppermost drawer", "open the drawer at the top, then drop the bowl in"]
+    "text",
+    ["I'd like the bowl relocated into the uppermost drawer", "open the drawer at the top, then drop the bowl in"],
 )
 def test_the_top_drawer_in_other_words(text):
     result = plan(text, DRAWERS)
