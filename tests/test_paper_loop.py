@@ -110,8 +110,8 @@ def test_a_failed_synthesis_call_is_recorded_and_perception_falls_back_to_its_ta
 def test_an_instruction_the_rules_parser_cannot_read_still_gives_the_llm_detections():
     from spark_core.planning.observe import phrases_for
 
-    instruction = "make the red block fly"
-    assert phrases_for(instruction) == []  # nothing for perception without the synthesis call
+    instruction = "make it fly"
+    assert phrases_for(instruction) == []  # nothing for perception without the synthesis call (no noun either)
     with FakeOpenAI() as fake:
         fake.script = [("ok", json.dumps(SYNTHESIS)), ("ok", json.dumps(PLAN))]
         out = run_trial(_config(fake, instruction=instruction))

@@ -15,6 +15,7 @@ from spark_core.planning.rules.chunks import noun_chunks
         ("alphabet soup and tomato sauce into the basket", ["alphabet soup", "tomato sauce", "basket"]),
         ("the akita black bowl: plate, now", ["akita black bowl", "plate"]),
         ("the wine bottle's spot is the cabinet top", ["wine bottle", "cabinet"]),
+        ("make the red block fly", ["red block"]),  # the request's verb is no thing, though the lexicon lists it
     ],
 )
 def test_each_thing_is_named_with_the_words_before_it_in_the_singular(text, chunks):

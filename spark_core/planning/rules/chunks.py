@@ -21,8 +21,9 @@ _NOUN_BEFORE = frozenset(
     ["the", "a", "an", "my", "your", "his", "her", "its", "their", "our", "this", "that", "these", "those", "some"]
     + ["any", "each", "every", "another", "other", "both", "all"]
 )
-# Where a sentence or a list item starts: a word that may also be a verb is a noun right after ("bowl: plate").
-_BREAKS = frozenset(["", ",", ":", ";", "-"])
+# Where a list item starts: a word that may also be a verb is a noun right after ("the bowl: plate"). Not the
+# sentence's start, where it is the request's verb ("make the red block fly").
+_BREAKS = frozenset([",", ":", ";", "-"])
 # Words of grammar the lexicon also lists as nouns ("and", "what", "my"): never part of a thing's name.
 _FUNCTION = frozenset(
     [*_NOUN_BEFORE, "and", "or", "but", "nor", "so", "then", "than", "what", "which", "who", "whom", "whose", "where"]
