@@ -5,18 +5,28 @@ from __future__ import annotations
 
 import re
 
-# The dev half and probe files already tuned on when the shipped weights were trained; never a test half, never
-# `probe22.yaml` (the reader's unseen check then) nor a probe written after it.
+# The dev half and probe files already tuned on when the shipped weights were trained (round 28: every probe read
+# by then); never a test half, never a probe kept unseen.
 DEV_FILES = (
     "data/wording/dev.yaml",
-    *(f"data/wording/probe{n}.yaml" for n in (14, 19, 21)),
+    *(f"data/wording/probe{n}.yaml" for n in (14, 19, *range(21, 36))),
 )
 
 
 def described() -> str:
-    """The training files in words, e.g. "the dev half and probes 14, 19 and 21"."""
-    probes = [m.group(1) for p in DEV_FILES if (m := re.search(r"probe(\d+)\.yaml$", p))]
+    """The training files in words, e.g. "the dev half and probes 14, 19 and 21-35" (a run of three or more probes
+    is a range)."""
+    probes = [int(m.group(1)) for p in DEV_FILES if (m := re.search(r"probe(\d+)\.yaml$", p))]
     if not probes:
         return "the dev half"
-    listed = probes[0] if len(probes) == 1 else f"{', '.join(probes[:-1])} and {probes[-1]}"
-    return f"the dev half and probe{'s' if len(probes) > 1 else ''} {listed}"
+    runs: list[list[int]] = []
+    for n in probes:
+        if runs and n == runs[-1][-1] + 1:
+            runs[-1].append(n)
+        else:
+            runs.append([n])
+    parts = [f"{r[0]}-{r[-1]}" if len(r) >= 3 else ", ".join(map(str, r)) for r in runs]
+    words = ", ".join(parts).split(", ")
+    listed = words[0] if len(words) == 1 else f"{', '.join(words[:-1])} and {words[-1]}"
+    plural = len(probes) > 1
+    return f"the dev half and probe{'s' if plural else ''} {listed}"

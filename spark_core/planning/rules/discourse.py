@@ -25,6 +25,7 @@ from lemminflect import getLemma
 from .lexicon import VERBS
 from .mentions import ATTRIBUTES
 from .phrases import singular
+from .rewrite import starts_with_verb
 from .steps import sequenced
 from .things import adverb_only, is_thing, is_verb
 
@@ -251,9 +252,18 @@ def _state_after(text: str) -> str:
 def _other_after_contrast(text: str) -> str:
     """ "put a black bowl on the plate - not the one on the cabinet, the other one": the contrast says which; "the
     other one" after it adds nothing."""
-    return re.sub(
+    text = re.sub(
         r"(\s-+\s*not (?:the|that) (?:one|[a-z]+) [^,;.]+?),\s*(?:but |just )?the other (?:one|[a-z]+)\s*([.!]?)$",
         r"\1\2",
+        text,
+    )
+    # ... and as a sentence of its own after the request ("put the black bowl on the plate. not the one up on the
+    # cabinet, the other one"): the contrast after a comma, which the parser reads as the thing's qualifier
+    return re.sub(
+        r"(?<=\S)\s*[.;!]\s+(not (?:the|that) (?:one|[a-z]+) (?:up |down |over )?"
+        r"(?:on|in|inside|on top of|next to|near|by|beside|at) [^,;.]+?),\s*(?:but |just |i mean )?"
+        r"the other (?:one|[a-z]+)\s*([.!]?)$",
+        r", \1\2",
         text,
     )
 
@@ -415,12 +425,19 @@ def _negated_state(text: str) -> str:
 
 
 def _its_part(text: str) -> str:
-    """ "see the brown cabinet? its drawer is closed. open it.": a part said as "its" after a sentence that named the
-    thing is that thing's part ("the cabinet drawer")."""
-    m = re.search(r"(?:^|[.?!;]\s*)its (drawer|handle|knob|door|lid|dial)\b", text)
+    """ "see the brown cabinet? its drawer is closed. open it.": a part said as "its" after a sentence or clause that
+    named the thing is that thing's part ("the cabinet drawer")."""
+    # (or after a verb in a later sentence: "see the cabinet? close its drawer", the owner said in a sentence before;
+    # never where to grip it: "by its handle")
+    m = re.search(r"(?:^|[.?!;]\s*|(?<!\bby )(?<=\s))its (drawer|handle|knob|door|lid|dial)\b", text)
     if not m:
         return text
     before = text[: m.start() + 1]
+    if m.start() > 0 and m.group(0)[0] not in ".?!;":
+        ends = [b.end() for b in re.finditer(r"[.?!;]", before)]
+        if not ends:
+            return text
+        before = before[: ends[-1]]
     ends = r"(?=\s+(?:in|on|at|of|by|next|near|with|to|from|that|which|and|is|are)\b|\s*[?.!,;]|$)"
     named = [
         n.group(1).split()[-1] for n in re.finditer(rf"\b(?:the|a|an|that|this) ((?:\w+ ){{0,2}}?\w+){ends}", before)
@@ -448,6 +465,33 @@ def _but_clause(text: str) -> str:
     return re.sub(r"(?<=[a-z]) but ([a-z']+)", comma, text)
 
 
+def _named_in_apposition(text: str) -> str:
+    """ "grab the item closest to the robot - the milk - and put it ...": a thing said only as an item, then named
+    between dashes or commas, is the thing named."""
+    return re.sub(
+        r"\b(?:the|a|an) (?:[a-z]+ )?(?:item|thing|object|product|one)\b[^,;:()-]*?\s*(?:,|\s-+|\()\s*"
+        r"((?:the|a|an) (?!(?:[a-z]+ )?ones?\b)[a-z ]+?)\s*(?:,|\s-+|\))\s*(?=(?:and|then)\b)",
+        r"\1 ",
+        text,
+    )
+
+
+def _restated_one(text: str) -> str:
+    """ "take the stove's bowl, the black one sitting on top of it, and ...": an apposition said of a thing already
+    picked out (by whose it is or where it is) only says it again; "take the bowl, the black one, and ...": its
+    attribute joins the thing."""
+
+    def said(m: re.Match) -> str:
+        det, thing, attribute, rest = m.group(1), m.group(2), m.group(3).strip(), m.group(4).strip()
+        if "'s " in thing or re.search(r"\b(?:on|in|inside|next to|near|by|beside|from|under)\b", thing):
+            return f"{det} {thing} "
+        if attribute and not rest and len(thing.split()) == 1:
+            return f"{det} {attribute} {thing} "
+        return m.group(0)
+
+    return re.sub(r"\b(the|a|an) ([a-z' ]+?)\s*,\s*the ((?:[a-z]+ )?)one\b([^,;]*),\s*(?=(?:and|then)\b)", said, text)
+
+
 def _joined(text: str) -> str:
     """A superlative of place said with a hyphen as one word: "right-most" is "rightmost"."""
     return re.sub(r"\b(left|right|front|back|top|bottom|upper|lower|rear|fore)[- ]most\b", r"\1most", text)
@@ -467,9 +511,16 @@ def restructured(instruction: str) -> str:
     out = re.sub(
         r"\s*\(\s*(not [a-z ]+?)\s*\)\s*(?=(\w)?)", lambda m: f", {m.group(1)}," + (" " if m.group(2) else ""), out
     )
+    # a pause said with dots ("bbq sauce... pick it up and ..."): a sentence's end before a request said with a verb,
+    # else only a pause ("put it... in the basket")
+    out = re.sub(
+        r"\s*(?:\.{2,}|\u2026)\s*(?=(\S[^.!?;]*)?)",
+        lambda m: ". " if m.group(1) and starts_with_verb(m.group(1)) else " " if m.group(1) else "",
+        out,
+    ).strip()
     # "would you mind sorting these? red block into ...": what "these" are, said next
     out = re.sub(r"\b(these|those|the following)\s*\?\s+(?=\S)", r"\1: ", out)
-    out = _its_part(_negated_state(_joined(_but_clause(out))))
+    out = _its_part(_negated_state(_joined(_but_clause(_restated_one(_named_in_apposition(out))))))
     for step in (
         _header,
         _former_latter,

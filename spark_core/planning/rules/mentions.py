@@ -115,7 +115,8 @@ def read_past(instruction: str, clauses: list[Clause]) -> list[str]:
     for sentence in (_ASIDE.sub("", _CLOSING_REMARK.sub("", s)) for s in sentences(instruction)):
         for m in _DET.finditer(sentence):
             words: list[str] = []
-            for w in sentence[m.end() :].replace(",", " , ").split():
+            # (a comma, colon or dash ends the phrase: "the little ramekin: place it ...")
+            for w in re.sub(r"([,:;]|\s-+\s)", " , ", sentence[m.end() :]).split():
                 if w in _NP_STOP or w == "," or not re.fullmatch(r"[a-z][a-z'-]*", w) or len(words) == 3:
                     break
                 if w not in DETERMINERS:

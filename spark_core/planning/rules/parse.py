@@ -230,7 +230,7 @@ def parse_instruction(instruction: str) -> list[Clause]:
         previous = clause.action
         clauses.append(clause)
     clauses = [_remaining(c, clauses[:i]) for i, c in enumerate(clauses)]
-    clauses = _open_before_filling(_grip_then_act(clauses))
+    clauses = _said_once(_open_before_filling(_grip_then_act(clauses)))
     if all(c.action == "mention" for c in clauses):
         raise ParseError(f"{instruction.strip()!r} names {', '.join(c.obj or '?' for c in clauses)} but no action")
     for remark in remarks:
@@ -238,6 +238,17 @@ def parse_instruction(instruction: str) -> list[Clause]:
         if at is not None and not _remark_used(clauses[at], clauses[at + 1 :]):
             clauses[at] = replace(clauses[at], unread=True)  # "into the green bin with the lime. the pear ..."
     return clauses
+
+
+def _said_once(clauses: list[Clause]) -> list[Clause]:
+    """A fixture worked twice in a row is one step said twice ("the drawer should be open, can you open it?")."""
+    out: list[Clause] = []
+    for c in clauses:
+        prev = out[-1] if out else None
+        if prev and c.action in _FIXTURE_ACTIONS and (c.action, c.obj) == (prev.action, prev.obj):
+            continue
+        out.append(c)
+    return out
 
 
 # Words said before a part's verb that only soften or time it ("just put ...", "simply drop ...", "now open ...").
@@ -499,7 +510,10 @@ def _resolve(c: Clause, before: list[Clause]) -> Clause:
             if c.relation is None and c.target:
                 updates["relation"] = "on"
     if is_pronoun(c.target) or c.target in ("that", "this"):  # "... then the red block on top of that"
-        for cand in (prev.obj, prev.target, _anchor(prev.obj)):
+        # (the clause before only picked the thing up: a clause before it named the place, "grab the green block and
+        # put it on the blue one, then take the red one and put it on top of that")
+        cands = [p for b in reversed(before) for p in (b.obj, b.target, _anchor(b.obj))]
+        for cand in cands:
             if cand and cand != obj and not is_pronoun(cand):
                 updates["target"] = cand
                 break
@@ -572,6 +586,14 @@ def _destination(rest: str) -> tuple[str, str, str] | None:
     if prep == "to":
         return obj, ("in" if noun_phrase(target).split()[-1:] in ([c] for c in CONTAINERS) else "on"), target
     return obj, ("in" if prep in IN else _RELATION_OF.get(prep, "on")), target
+
+
+# "the red block (sitting) to the right of the blue block": where the thing is, not where it goes ("lift the red block
+# to the right of the blue block" lifts it; "take ... to the right of ..." without a participle carries it)
+_SIDE_OF_THING = re.compile(
+    r"\b(?:(?:sitting|resting|standing|lying|located|placed|kept|(?:that|which) (?:is|sits|stands|rests|lies)|is) )"
+    r"(?:just |right |directly )?to (?:the )?(?:left|right)(?:[- ]hand)?(?: side)? of\b"
+)
 
 
 def _clause(action: str, rest: str, text: str, antecedent: str | None = None, last_target: str | None = None) -> Clause:
@@ -650,7 +672,7 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
         # it is picks out which bowl, and stays in the phrase
         # "get it on top of the green cube": a pronoun is located by nothing, so a place after it is where it goes
         placed = re.match(r"(?:it|them) (?:on top of|on|in|inside)\s", rest)
-        if not placed and not re.search(r"(?<!next )(?<!close )\b(into|onto|to)\b", rest):
+        if not placed and not re.search(r"(?<!next )(?<!close )\b(into|onto|to)\b", _SIDE_OF_THING.sub("", rest)):
             return Clause(action, obj=object_phrase(rest) or None, direction=direction, distance_m=distance, text=text)
         action = "put"
     if action in ("open", "close", "turn_on", "turn_off"):

@@ -31,7 +31,9 @@ COMPARATIVES = {
 LOCATORS = ("between", "next to", "beside", "near", "by", "on top of", "on", "in", "inside", "at", "from", "under")
 _PARTICIPLE = re.compile(
     r"\b(?:(?:(?:that|which) )?(?:is|are|sits|rests|stands|lies|sit|rest|stand|lie)|sitting|resting|standing|lying|"
-    r"located|placed|found|kept|stacked|perched|set|sat|parked|left|waiting|put|stored|positioned)\s+"
+    r"located|placed|found|kept|stacked|perched|set|sat|parked|left|waiting|put|stored|positioned)"
+    # (when it is there: "that is currently on the cabinet")
+    r"(?:\s+(?:currently|now|still|presently|already|right now))?\s+"
     r"(?=(?:not\s+)?(?:" + "|".join(re.escape(x) for x in LOCATORS) + r"|to (?:the )?(?:left|right) of|in front of|"
     r"behind)\b)"
 )

@@ -276,7 +276,7 @@ def negations(text: str) -> str:
         text,
     )
     # "..., but not the one in the middle": a correction of the clause's object, as "..., not the one ..."
-    text = re.sub(r",\s*but not (?=(?:the|that|this) ones? [^,;:.]*$)", ", not ", text)
+    text = re.sub(r",\s*but not ((?:the|that|this) ones? [^,;:.!]*)[.!]?$", r", not \1", text)
     # "leave the centre bowl alone; the other bowl goes ...", "ignore the bowl on the stove and put the other one
     # ...": the one left alone is ruled out, by where it is or by its own words
     text = re.sub(

@@ -16,14 +16,22 @@ from ...perception.variants import KIND_OF
 from .lexicon import DETERMINERS, STATE_ACTIONS, VERBS
 from .phrases import singular
 from .rewrite import starts_with_verb
-from .things import names_a_thing
+from .things import NOT_THINGS, names_a_thing
 
+# An occasion or a run of the robot, not a thing ("so it can warm up before dinner", "for the next trial").
+_OCCASIONS = frozenset(
+    ["dinner", "lunch", "breakfast", "supper", "meal", "party", "guests", "test", "trial", "experiment", "demo"]
+    + ["episode", "session", "shift", "day", "night", "morning", "evening", "week", "weekend", "tonight", "later"]
+)
 # Words that name no thing of the scene, whatever the lexicon says.
 _SELVES = frozenset(
     ["myself", "yourself", "itself", "ourselves", "themselves", "himself", "herself", "other", "others"]
     + ["nothing", "something", "anything", "everything", "stuff", "none", "each", "either", "neither", "lot", "lots"]
     + ["its", "his", "her", "their", "our", "your", "my", "mine"]
     + ["thanks", "thank", "thx", "ty", "cheers", "please", "pls", "mate", "buddy"]  # a courtesy
+    # the scene's things all together ("we're packing the groceries away"), never one thing perception looks for
+    + ["groceries", "grocery", "items", "objects", "belongings"]
+    + list(_OCCASIONS)
 )
 
 # What makes a sentence after the request a remark: a negation (how not to do it), the speaker's own say ("just want
@@ -75,7 +83,10 @@ def trailing_remarks(instruction: str, found: list[str]) -> list[tuple[str, str]
     """(the instruction up to a clause boundary, the clauses after it) for each boundary whose clauses after it are
     remarks: they name none of `found` (perception's phrases and inventory) and no thing the scene lacks, and say no
     step, colour or "one". Longest kept first; at most `_MAX_TAILS`."""
-    known = {w for p in found for w in re.findall(r"[a-z]+", p.lower())}
+    # a phrase perception was asked for that starts with who does something ("we packing groceries away") names
+    # no thing, whatever perception made of it
+    named = [p for p in found if p.lower().split()[:1] not in (["we"], ["i"], ["they"], ["you"])]
+    known = {w for p in named for w in re.findall(r"[a-z]+", p.lower())}
     known |= {singular(w) for w in known}
     text = instruction.strip()
     out: list[tuple[str, str]] = []
@@ -89,7 +100,11 @@ def trailing_remarks(instruction: str, found: list[str]) -> list[tuple[str, str]
         if any(w in _STEP_VERBS and before in _LEADS for before, w in pairs):
             break  # a step of its own
         # how it stands ("it should sit flat on it"): a state, not a thing
-        words = [w for before, w in pairs if before not in _POSTURES]
+        # ... and "the next <noun>", "before dinner" say an occasion ("for the next trial"), not the next step
+        after = [*words[1:], ""]
+        words = [
+            w for (before, w), then in zip(pairs, after) if before not in _POSTURES and not _occasion(before, w, then)
+        ]
         if any(w in _ASKS or w in known or singular(w) in known for w in words):
             break  # a longer tail holds this one: it names the scene or asks too
         if names_absent(_PURPOSE.sub(" ", _plain(tail)), found):
@@ -98,6 +113,11 @@ def trailing_remarks(instruction: str, found: list[str]) -> list[tuple[str, str]
         if len(out) == _MAX_TAILS:
             break
     return out
+
+
+def _occasion(before: str, word: str, after: str) -> bool:
+    """An ordering word said of an occasion, not of a step: "the next trial", "before dinner"."""
+    return (word == "next" and before in ("the", "a")) or (word in ("before", "after") and after in _OCCASIONS)
 
 
 def names_absent(sentence: str, found: list[str]) -> str | None:
@@ -112,7 +132,7 @@ def names_absent(sentence: str, found: list[str]) -> str | None:
         if forms & known or (before in _SUBJECTS and "VERB" in getAllLemmas(w)):
             continue  # said of the scene, or a verb after its subject ("so none of them spill")
         kind = next((KIND_OF[f] for f in forms if f in KIND_OF), None)
-        if kind is not None:
+        if kind is not None and not forms & NOT_THINGS:  # a place word ("an odd spot") says where, not what
             if not kind & (known | kinds):
                 return w
             continue

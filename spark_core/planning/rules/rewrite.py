@@ -178,6 +178,26 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(r"[!?]+(?=\s*,)", "", text)  # "the wine bottle, not the bowl!, should go ...": one sentence
     for short, long in CONTRACTIONS.items():
         text = re.sub(rf"\b{re.escape(short)}", long, text)
+    # the speaker's hedge before what they want ("i think the drawer should be open, can you ..."): the wish itself
+    text = re.sub(
+        r"(^|[.;!?]\s+)i (?:think|guess|believe|reckon|suppose|feel like)(?: that)?,?\s+"
+        r"(?=(?:the|a|an|it|this|that|you|we|both|all)\b)",
+        r"\1",
+        text,
+    )
+    # "straight ahead", "from where it sits": how and whence it moves, no word of the thing or the place
+    text = re.sub(r"\bstraight (?=(?:ahead|forwards?|backwards?|back|away|into|onto|toward|towards)\b)", "", text)
+    text = re.sub(r"\s*\bfrom where (?:it|they) (?:is|are|sits?|stands?|lies|lie|rests?)(?: now)?\b", "", text)
+    # a clean surface wished for without a verb ("a clean table, no dirt left on it"): the wish, said
+    text = re.sub(r"^(?:a|an) (?=(?:clean|spotless|tidy|dirt-free|dust-free) \w)", "i want a ", text)
+    # ... and no dirt left on it: the wish on its own, or said again after it
+    dirt = r"no (?:dirt|dust|mess|crumbs|stains?|smudges?|grime)(?: at all)? (?:left )?on"
+    text = re.sub(rf"^{dirt} (the \w+)(?=\s*[.!]?$)", r"wipe \1", text)
+    text = re.sub(rf",\s*{dirt} (?:it|the \w+)\s*(?=[.!]?$)", "", text)
+    # when, said of this request only ("don't touch the soup this time, ..."): no thing's word and no step
+    text = re.sub(r",?\s*\b(?:this time|for once|for today|this once|(?:just )?for the moment)\b", "", text)
+    # thanks as it is texted ("... in the basket thx"): a courtesy, said plainly so that it closes the request
+    text = re.sub(r"\b(?:thx|thnx|thnks|thanx|thks|tyvm)\b", "thanks", text)
     # "the mug's got beads in it": the mug has them, not whose
     text = re.sub(r"(\w)'s got\b|\bhas got\b", lambda m: f"{m.group(1) or ''} has".lstrip(), text)
     # an interjection or a turn-taking word said first ("hey, ...", "um ...", "next: ..."): no part of the request
@@ -463,6 +483,13 @@ def sentences(instruction: str) -> list[str]:
         "",
         text,
     )
+    # ... or said to be the goal ("end state should be the bowl ... resting on the plate")
+    text = re.sub(
+        r"^(?:the |my |our |your )?(?:end state|final state|end result|desired state|end goal|final goal|goal state|"
+        r"target state)\s+(?:(?:should|must|will|would|needs? to|has to|is going to) be|is)\s+(?=(?:the|a|an) )",
+        "",
+        text,
+    )
     # a sentence adverb said first ("ideally the cup ...", "hopefully ..."): a comment on the goal, not a word of it
     text = re.sub(r"^(\w+ly)\b,?\s*", lambda m: "" if adverb_only(m.group(1)) else m.group(0), text)
     # "right next to", "just by": the adverb adds nothing to the relation (and "right" is no side here)
@@ -522,8 +549,10 @@ def sentences(instruction: str) -> list[str]:
         r"(^|[.;!?] )one of the ((?:\w+ ){0,2})(\w+s) (?:is|sits|rests|stands)(?: sitting| resting| standing| lying)? "
         r"(?:up |down |over |now )?"
         r"((?:on top of|on|in|inside|next to|beside|near|by) (?:the|a|an) [\w ]+?)"
-        # (or a comma before the step that acts on it: "..., bring it down and set it on the plate")
-        r"(\s*,\s*(?=(?:and |then )*(?:bring|take|grab|pick|move|put|place|set|get|lift|carry)\b)|(?=\s*(?:[.;!?]|$)))",
+        # (or a comma before the step that acts on it: "..., bring it down and set it on the plate"; "- that one,
+        # put it ...")
+        r"(\s*(?:,|\s-+|:)\s*(?:(?:that|this) one\s*[,:-]?\s*)?"
+        r"(?=(?:and |then )*(?:bring|take|grab|pick|move|put|place|set|get|lift|carry)\b)|(?=\s*(?:[.;!?]|$)))",
         lambda m: (
             f"{m.group(1)}there is the {m.group(2)}{singular(m.group(3))} {m.group(4)}"
             + (". " if m.group(5).strip() else "")
