@@ -146,3 +146,67 @@ def test_a_phrase_before_a_colon_is_no_thing_read_past():
     result = plan("the mug next to the little box: put it on the tray.", scene)
     assert result.ok, result.error
     assert leaves(result)[:2] == [("pick", "mug next to little box"), ("place", "tray")]
+
+
+@pytest.mark.parametrize(
+    ("text", "clauses"),
+    [
+        # counted from the robot: from the front
+        (
+            "the second mug, counting from the robot, goes in the box",
+            ["put obj=second nearest mug relation=in target=box"],
+        ),
+        ("the first cup from you onto the tray", ["put obj=nearest cup relation=on target=tray"]),
+        # near and far as adjectives; the contrast's "one" is of the kind said with the opposite word
+        (
+            "put the far mug in the box, not the near one",
+            ["put obj=farthest mug relation=in target=box", "mention obj=nearest mug"],
+        ),
+        (
+            "put the left cup on the tray - not the right one",
+            ["mention obj=right cup", "put obj=left cup relation=on target=tray"],
+        ),
+        # less and more elevated, more to a side
+        (
+            "pick up the more elevated cup and put it in the box",
+            ["pick obj=top cup", "put obj=top cup relation=in target=box"],
+        ),
+        ("the cup more to the left goes in the box", ["put obj=leftmost cup relation=in target=box"]),
+        # up high and down low
+        ("the mug that is up high goes in the box", ["put obj=top mug relation=in target=box"]),
+        (
+            "grab the cup that's not down low and put it on the tray",
+            ["pick obj=cup not bottom", "put obj=cup not bottom relation=on target=tray"],
+        ),
+        # a side of the table, a side as an adjective, "the one in front"
+        ("put the mug at the back of the table in the box", ["put obj=farthest mug relation=in target=box"]),
+        (
+            "put the cup that's further back on the one in front",
+            ["put obj=farthest cup relation=on target=nearest cup"],
+        ),
+        # the thing said to stay, and "the front one" of its kind
+        (
+            "the white mug at the back is staying; put the front one in the box",
+            ["mention obj=farthest white mug", "put obj=nearest white mug relation=in target=box"],
+        ),
+        # the thing put down last
+        (
+            "put the cup on the box, then the mug on the one you just placed",
+            ["put obj=cup relation=on target=box", "put obj=mug relation=on target=cup"],
+        ),
+    ],
+)
+def test_round28_which_one_reads_as_its_plain_form(text, clauses):
+    assert read(text) == clauses
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "push the plate to the front of the stove",
+        "put the cup on the back burner",
+        "put the cup at the front of the box",
+    ],
+)
+def test_a_side_of_another_thing_stays_a_place(text):
+    assert not any("nearest" in c or "farthest cup" in c for c in read(text))

@@ -313,8 +313,9 @@ def _contrast(text: str) -> str:
         )
         thing = said.group(1) if said else ""
         if thing.split()[-1:] in (["one"], ["ones"]):
-            # "put the nut on the square peg - not the round one": one of the kind the request named last
-            head = _last_thing(main)
+            # "put the nut on the square peg - not the round one": one of the kind the request named last; "put the
+            # near bowl on the plate, not the far one": of the kind said with the opposite word
+            head = _opposed_thing(thing.split()[0], main) or _last_thing(main)
             if head and re.search(rf"\b(?:a|an|any|one) (?:\w+ )?{head}\b", main):
                 return text  # "open a drawer - not the top one": which one it is, the parser's to read
             thing = " ".join([*thing.split()[:-1], head]) if head else ""
@@ -331,6 +332,25 @@ def _same_request_reversed(part: str, main: str) -> bool:
         return False
     words = set(re.findall(r"[a-z]+", main))
     return all(set(said.group(g).split()) <= words for g in (1, 2))
+
+
+# Words said of one of two things, and the word said of the other.
+_OPPOSED = {"near": "far", "nearer": "farther", "left": "right", "top": "bottom", "upper": "lower", "front": "back"}
+_OPPOSED |= {"big": "small", "bigger": "smaller", "large": "little", "larger": "tinier"}
+_OPPOSED |= {v: k for k, v in _OPPOSED.items()}
+
+
+def _opposed_thing(word: str, text: str) -> str | None:
+    """The thing `text` names with the word opposed to `word` ("far" -> "bowl" in "put the near black bowl on the
+    plate")."""
+    other = _OPPOSED.get(word)
+    said = re.search(rf"\b{other} ((?:\w+ ){{0,2}}\w+)", text) if other else None
+    head = None
+    for w in said.group(1).split() if said else []:  # the last word of the run of nouns ("black bowl" -> "bowl")
+        if not is_thing(w):
+            break
+        head = w
+    return head
 
 
 def _last_thing(text: str) -> str | None:

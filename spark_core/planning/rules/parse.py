@@ -486,6 +486,11 @@ def _resolve(c: Clause, before: list[Clause]) -> Clause:
         kind = split_relation(prev.obj)[0].split()
         if kind and names_a_thing(kind[-1]):
             obj = updates["obj"] = f"{kind[-1]} {obj}"
+    elif obj in _BARE_QUALIFIERS and prev.obj and not is_pronoun(prev.obj):
+        # "leave the black bowl in the back alone, put the front one on the plate": "one" is of the kind just named
+        kind = [w for w in split_relation(prev.obj)[0].split() if w not in _BARE_QUALIFIERS]
+        if kind and names_a_thing(kind[-1]):
+            obj = updates["obj"] = f"{obj} {' '.join(kind)}"
     if is_pronoun(obj):
         obj = prev.obj
         if c.action in ("open", "close"):  # "put the block in the drawer, you will have to open it": the drawer
@@ -527,6 +532,11 @@ def _resolve(c: Clause, before: list[Clause]) -> Clause:
     return replace(c, **updates) if updates else c
 
 
+# What is left of "the front one" once "one" is read: a qualifier perception reads, no kind of thing.
+_BARE_QUALIFIERS = frozenset(
+    ["nearest", "farthest", "closest", "leftmost", "rightmost", "top", "bottom", "upper", "lower", "middle"]
+    + ["largest", "smallest"]
+)
 _WHERE_PARTICIPLES = "sitting|resting|standing|lying|perched|located|parked|kept|stacked|seated|sat|placed"
 # What is switched on and off: "turn it on" after a carry onto one of these is switching it.
 _SWITCHED = re.compile(r"\b(?:stove|burner|hob|cooktop|cooker|oven|lamp|light|tap|faucet|knob|dial)\b")

@@ -114,6 +114,8 @@ def ordinals(text: str) -> str:
         return f"{RANK_WORDS[RANKS[rank_word]]}{_COUNT_SIDES[side]} {noun}"
 
     ranks = "|".join([*RANKS, "last"])
+    # counted from the robot ("the first bowl, counting from the robot,", "the second cup from you"): from the front
+    text = re.sub(rf"\b(({ranks}) {NP}),? (?:counting |counted |starting )?from {_ME}\b,?", r"\1 from the front", text)
     # a rank and an extreme said as one word ("the second-highest drawer", "the second leftmost bowl"): counted
     # from that extreme
     text = re.sub(
@@ -161,6 +163,22 @@ def extremes(text: str, push: bool = False) -> str:
     plate" -> "the bowl near the plate" (the one by another object)."""
     # "the more distant of the two": the farther
     text = re.sub(rf"\b({DET}) (?:more|most) (?:distant|remote)\b", r"\1 farthest", text)
+    # "the near black bowl, not the far one": near and far said as adjectives ("the far left" is a side)
+    text = re.sub(
+        rf"\b({DET}) (near|far)(?= (?!(?:left|right|end|side|corner|edge|back|front|away|from|of)\b)[a-z])",
+        lambda m: f"{m.group(1)} {'nearest' if m.group(2) == 'near' else 'farthest'}",
+        text,
+    )
+    # "the less elevated bowl", "the more raised one": lower and higher
+    text = re.sub(rf"\b({DET}) less (?:elevated|raised|high)\b", r"\1 lower", text)
+    text = re.sub(rf"\b({DET}) more (?:elevated|raised)\b", r"\1 higher", text)
+    if not push:
+        # "the black bowl more to the right": the one furthest that way
+        text = re.sub(
+            rf"\b({DET}) ({NP}) (?:(?:a bit|a little|slightly) )?(?:more|further|farther) to the (left|right)\b",
+            r"\1 \3most \2",
+            text,
+        )
     # "the block further from the robot on top of the one closer to it": "it" is the robot the comparison was
     # said against before
     if re.search(r"\b(?:farther|further|closer|nearer) (?:away )?(?:from|to) the robot\b", text):
@@ -245,6 +263,24 @@ def extremes(text: str, push: bool = False) -> str:
 def _sides(text: str) -> str:
     """ "the bowl on the left" / "at the back" -> "the leftmost bowl" / "the farthest bowl"; an extreme before the
     noun as perception's word ("the farther block", "the lower bowl", "the nearer one")."""
+    # "the front one", "the back bowl": a side said as an adjective ("the front of the stove" is a place)
+    text = re.sub(
+        rf"\b({DET}) (front|back|rear)"
+        rf"(?= (?:ones?\b|(?!{_STOP}\b)(?!(?:side|end|edge|left|right|corner|part|half)\b)[a-z]))",
+        lambda m: f"{m.group(1)} {SIDES[m.group(2)]}",
+        text,
+    )
+    # "the one up high", "the bowl that is not down low": the top or the bottom one
+    text = re.sub(
+        rf"\b({DET}) ({NP}) (?:(?:that|which) (?:is|are) |(?:sitting|standing|resting|lying) )?(not )?"
+        r"(up high|high up|down low|low down)\b",
+        lambda m: (
+            f"{m.group(1)} {m.group(2)} {m.group(3) or ''}{'top' if 'high' in m.group(4) else 'bottom'}"
+            if m.group(3)
+            else f"{m.group(1)} {'top' if 'high' in m.group(4) else 'bottom'} {m.group(2)}"
+        ),
+        text,
+    )
     # the robot's own left is the left perception counts in ("on the robot's left", "on your right", "on its left")
     text = re.sub(r"\b(on|at|to) (?:the robot's|the robot|your|its|my) (left|right)\b", r"\1 the \2", text)
     text = re.sub(
@@ -254,6 +290,9 @@ def _sides(text: str) -> str:
         text,
     )
     text = re.sub(rf"\b({DET}) ({NP}) (?:(?:that|which) (?:is|are) )?in front{_NP_END}", r"\1 nearest \2", text)
+    # "the one in front", "the one at the back": "one" stands for the kind named before (parse.py)
+    text = re.sub(r"\bthe one (?:that is )?in front\b(?! of)", "the nearest one", text)
+    text = re.sub(r"\bthe one (?:that is )?(?:at|in) the (?:back|rear)\b(?! of)", "the farthest one", text)
     # after a determiner or a possessive ("the cabinet's lowest drawer")
     return re.sub(rf"\b({DET}|\w+'s?) ({_EXTREME}) ", lambda m: f"{m.group(1)} {EXTREMES[m.group(2)]} ", text)
 

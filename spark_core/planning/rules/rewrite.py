@@ -271,6 +271,27 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(r"\byou (?:will |would |are going to )?(?:need|have|got|must) to\b", "", text)
     # "only the cheese goes in the basket": the one thing the goal names
     text = re.sub(r"^only (?=(?:the|a|an) )", "", text)
+    # "then red on the one you just placed": the thing put down last, as "that"
+    text = re.sub(
+        r"\bthe (?:one|block|cube|thing) (?:that )?(?:you|we|i)(?: have| 've)? (?:just |already )?"
+        r"(?:placed|put down|put there|stacked|moved|set down|put)\b",
+        "that",
+        text,
+    )
+    # "the black bowl in the back is staying; put the front one ...": the thing said to stay is left alone
+    text = re.sub(
+        r"^((?:the|that|this) [a-z ]+?) (?:is|are) (?:staying|to stay|stays|remaining|to remain)"
+        r"(?: (?:put|there|here|where (?:it is|they are)))?\s*(?=[;,.:]\s*\w)",
+        r"leave \1 alone",
+        text,
+    )
+    # a side of the table is the side ("the bowl at the front of the table"): the table is where everything is
+    text = re.sub(
+        r"\b(on|at|in) the (far |very )?(left|right|front|back|rear)(?: side| hand side| end| edge)? of the "
+        r"(?:table|counter|workspace)\b",
+        r"\1 the \2\3",
+        text,
+    )
     # "at the front of the stove" is "in front of" it
     text = re.sub(r"\bat the front of\b(?= (?:the|a|an) )", "in front of", text)
     # "the plate's sitting on the stove": "'s" before a participle of where a thing is, is "is"
