@@ -210,3 +210,31 @@ def test_round28_which_one_reads_as_its_plain_form(text, clauses):
 )
 def test_a_side_of_another_thing_stays_a_place(text):
     assert not any("nearest" in c or "farthest cup" in c for c in read(text))
+
+
+@pytest.mark.parametrize(
+    ("text", "clauses"),
+    [
+        # a state said negated, with a modal or "anymore"
+        ("make sure the lamp isn't on anymore", ["turn off obj=lamp"]),
+        ("the box shouldn't be open", ["close obj=box"]),
+        ("the oven must not be closed", ["open obj=oven"]),
+        # the one thing excepted, its goal in a relative clause
+        (
+            "everything stays where it is except the pear, which goes in the bowl",
+            ["put obj=pear relation=in target=bowl"],
+        ),
+        ("the pear, which goes in the bowl", ["put obj=pear relation=in target=bowl"]),
+        # nothing else, though, and the others of the kind left as they are
+        ("put the pear in the bowl and nothing else", ["put obj=pear relation=in target=bowl"]),
+        ("the pear goes in the bowl though", ["put obj=pear relation=in target=bowl"]),
+        ("open the bottom drawer - leave the top and middle ones shut", ["open obj=bottom drawer"]),
+        ("open the top drawer, leave the others closed", ["open obj=top drawer"]),
+    ],
+)
+def test_round28_negation_and_goal_wording_reads_as_its_plain_form(text, clauses):
+    assert read(text) == clauses
+
+
+def test_a_state_said_plainly_keeps_its_state():
+    assert read("the box should be open") == ["open obj=box"]

@@ -437,11 +437,21 @@ def _negated_state(text: str) -> str:
     """A state said as the other one's negation ("make sure the stove isn't on", "the drawer is not closed"): the
     other state, which the readers know ("... the stove is off")."""
     return re.sub(
-        r"\b(is|are) ?(?:not|n't) (on|off|open|closed|shut)\b(?! (?:the|a|an|top|its|your|my|this|that|to|of)\b)"
-        r"(?: yet\b)?",
-        lambda m: f"{m.group(1)} {_OPPOSITE_STATE[m.group(2)]}",
+        r"\b(is|are|(?:should|must|would|will|shall|can|needs? to|has to) ?(?:not|n't) be) ?"
+        r"(?:not|n't)? ?(on|off|open|closed|shut)\b(?! (?:the|a|an|top|its|your|my|this|that|to|of)\b)"
+        r"(?: (?:yet|anymore|any more|any longer|now)\b)?",
+        _state_said,
         text,
     )
+
+
+def _state_said(m: re.Match) -> str:
+    """ "is not on" -> "is off"; "should not be open" -> "should be closed"; "is on" as it was said."""
+    said = m.group(0)
+    if not re.search(r"\b(?:not|n't)\b|n't", said):
+        return said
+    verb = "is" if m.group(1) in ("is", "are") else re.sub(r" ?(?:not|n't) be$", " be", m.group(1))
+    return f"{verb} {_OPPOSITE_STATE[m.group(2)]}"
 
 
 def _its_part(text: str) -> str:

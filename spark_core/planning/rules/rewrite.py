@@ -271,6 +271,30 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(r"\byou (?:will |would |are going to )?(?:need|have|got|must) to\b", "", text)
     # "only the cheese goes in the basket": the one thing the goal names
     text = re.sub(r"^only (?=(?:the|a|an) )", "", text)
+    # "everything stays where it is except the ketchup, which goes in the basket": the one thing and its goal
+    text = re.sub(
+        r"^(?:everything|all|the rest)(?: else)? (?:stays?|remains?|is staying)(?: where it is| put| as it is)?,? "
+        r"(?:except|but|apart from|other than) (?:for )?((?:the|a|an) [a-z ]+?),? which ",
+        r"\1 ",
+        text,
+    )
+    # "the bowl, which goes on the plate": a goal said in a relative clause
+    text = re.sub(
+        r"^((?:the|a|an) [a-z ]+?),? which (?=(?:goes|should go|needs to go|has to go|belongs|must go) [^,]*$)",
+        r"\1 ",
+        text,
+    )
+    # "open the middle drawer - leave the top and bottom ones shut": the others of its kind left as they are
+    text = re.sub(
+        r"(?<=\w)\s*(?:,|;|\s-+)\s*(?:and |but )?(?:leave|keep) the (?:other |rest of the )?(?:[a-z]+ and [a-z]+ )?"
+        r"(?:ones|one|others|drawers|drawer) "
+        r"(?:shut|closed|alone|as (?:they|it) (?:are|is)|where (?:they|it) (?:are|is))\s*(?=[.!]?$)",
+        "",
+        text,
+    )
+    # "... and nothing else", "... though": the request is all there is
+    text = re.sub(r",?\s*\b(?:and|but) nothing else\b", "", text)
+    text = re.sub(r",?\s*\bthough\s*(?=[.!;]|$)", "", text)
     # "then red on the one you just placed": the thing put down last, as "that"
     text = re.sub(
         r"\bthe (?:one|block|cube|thing) (?:that )?(?:you|we|i)(?: have| 've)? (?:just |already )?"
