@@ -238,3 +238,27 @@ def test_round28_negation_and_goal_wording_reads_as_its_plain_form(text, clauses
 
 def test_a_state_said_plainly_keeps_its_state():
     assert read("the box should be open") == ["open obj=box"]
+
+
+@pytest.mark.parametrize(
+    ("text", "clauses"),
+    [
+        # the thing that must not move, or is not to be disturbed, is left alone (and must be there)
+        (
+            "only put the pear in the bowl, the apple must not move",
+            ["put obj=pear relation=in target=bowl", "mention obj=apple"],
+        ),
+        (
+            "put the pear in the bowl but make sure the apple isn't touched",
+            ["put obj=pear relation=in target=bowl", "mention obj=apple"],
+        ),
+        # the step said as what the thing needs
+        ("forget the apple, the pear needs lifting", ["mention obj=apple", "pick obj=pear"]),
+        ("the box wants closing", ["close obj=box"]),
+        # "anything but X - <verb> that"; "just not the X one" after the clause
+        ("anything but the green cup - lift that", ["pick obj=cup not green"]),
+        ("lift a cup, just not the green one", ["pick obj=cup not green"]),
+    ],
+)
+def test_round28_left_alone_and_needs_wording_reads_as_its_plain_form(text, clauses):
+    assert read(text) == clauses

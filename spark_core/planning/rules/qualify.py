@@ -485,7 +485,9 @@ def _trailing_not(text: str) -> str:
     correction after the clause rules out one of the kind of the clause's object ("the black bowl not on the
     cabinet"). (A correction of the place, "..., not on the stove", is dropped as a trailing clause.)"""
     m = re.fullmatch(
-        rf"(.+?),? (?:and |but )?not (?:the|a|an|that|this) (?:({_WORD}) ones?|ones?|({NP}))(?: ([^,;:]+))?", text
+        rf"(.+?),? (?:and |but )?(?:just |only |simply )?not (?:the|a|an|that|this) (?:({_WORD}) ones?|ones?|({NP}))"
+        rf"(?: ([^,;:]+))?",
+        text,
     )
     if not m:
         return text

@@ -7,6 +7,8 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
+from lemminflect import getLemma
+
 from .lexicon import (
     CONTAINERS,
     CONTENTS,
@@ -271,6 +273,32 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(r"\byou (?:will |would |are going to )?(?:need|have|got|must) to\b", "", text)
     # "only the cheese goes in the basket": the one thing the goal names
     text = re.sub(r"^only (?=(?:the|a|an) )", "", text)
+    # "..., the blue one must not move", "make sure the bowl isn't disturbed": the thing is left alone
+    text = re.sub(
+        r"(^|[,;.] |- |\bbut )(?:(?:make sure|ensure|check) (?:that )?)?((?:the|that|this) [a-z ]+?) "
+        r"(?:(?:must|should|may|can|is to|are to)(?: not|n't)|(?:is|are)(?: not|n't)(?: to be)?)"
+        r"(?: be)? (?:move|moved|touched|touch|disturbed|disturb|knocked over|bumped)\b(?: at all)?",
+        r"\1leave \2 alone",
+        text,
+    )
+    # "the red one needs lifting", "the drawer wants closing": the step said as what the thing needs
+    text = re.sub(
+        r"(^|[,;] |- )((?:the|that|this) [a-z ]+?) (?:needs|wants|could do with|requires) ([a-z]+ing)"
+        r"( up| down| over| out)?\b",
+        lambda m: (
+            f"{m.group(1)}{getLemma(m.group(3), 'VERB')[0]}{m.group(4) or ''} {m.group(2)}"
+            if m.group(3) not in ("nothing", "something", "thing", "everything")
+            else m.group(0)
+        ),
+        text,
+    )
+    # "anything but the blue block - lift that": what "that" stands for is said first
+    text = re.sub(
+        r"^((?:anything|any one|any of them|whichever one|whatever)(?: one)? (?:but|except(?: for)?|other than) "
+        r"(?:the|that) [a-z ]+?)\s*(?:-+|,|:)\s*(\w+(?: up)?) (?:that|it|that one|this one)\b",
+        r"\2 \1",
+        text,
+    )
     # "everything stays where it is except the ketchup, which goes in the basket": the one thing and its goal
     text = re.sub(
         r"^(?:everything|all|the rest)(?: else)? (?:stays?|remains?|is staying)(?: where it is| put| as it is)?,? "
