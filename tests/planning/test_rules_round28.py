@@ -262,3 +262,28 @@ def test_a_state_said_plainly_keeps_its_state():
 )
 def test_round28_left_alone_and_needs_wording_reads_as_its_plain_form(text, clauses):
     assert read(text) == clauses
+
+
+@pytest.mark.parametrize(
+    ("text", "clauses"),
+    [
+        # a wish said around the goal, or by "we"
+        ("I'd love it if the pear ended up in the bowl", ["put obj=pear relation=in target=bowl"]),
+        ("it would be great to have the pear in the bowl", ["put obj=pear relation=in target=bowl"]),
+        ("it would be nice if you could put the pear in the bowl", ["put obj=pear relation=in target=bowl"]),
+        ("we need the pear in the bowl, can you do that", ["put obj=pear relation=in target=bowl"]),
+        ("we need to get the pear into the bowl", ["put obj=pear relation=in target=bowl"]),
+        ("we should put the pear in the bowl", ["put obj=pear relation=in target=bowl"]),
+        # a step suggested
+        ("how about putting the pear in the bowl?", ["put obj=pear relation=in target=bowl"]),
+        # where the thing just named goes, said after it
+        ("grab the pear. the bowl is where it should go", ["pick obj=pear", "put obj=pear relation=in target=bowl"]),
+        # filled with a thing
+        ("fill the bowl with the pear", ["put obj=pear relation=in target=bowl"]),
+        # telegraphic
+        ("pear goes bowl", ["put obj=pear relation=in target=bowl"]),
+        ("pear into bowl, go", ["put obj=pear relation=in target=bowl"]),
+    ],
+)
+def test_round28_wishes_and_suggestions_read_as_their_plain_form(text, clauses):
+    assert read(text) == clauses

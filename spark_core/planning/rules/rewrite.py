@@ -255,6 +255,10 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(r"\bontop\b", "on top", text)
     text = re.sub(r"^id (like|love|want)\b", r"i would \1", text)
     text = re.sub(r"\bi would (like|love)\b(?! you to)", r"i want", text)
+    # the speaker as "we" ("we need the ketchup in the basket"): the same wish
+    text = re.sub(
+        r"\bwe (?:want|need|would like|would love)\b(?= (?:the|a|an|it|them|both|all|every|each)\b)", "i want", text
+    )
     # apostrophes left out ("dont touch", "isnt", "youll need to")
     text = re.sub(r"\b(do|does|is|are|was|should|must)nt\b", r"\1 not", text)
     text = re.sub(r"\b(can)t\b|\bwont\b", lambda m: "cannot" if m.group(1) else "will not", text)
@@ -273,6 +277,48 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(r"\byou (?:will |would |are going to )?(?:need|have|got|must) to\b", "", text)
     # "only the cheese goes in the basket": the one thing the goal names
     text = re.sub(r"^only (?=(?:the|a|an) )", "", text)
+    # a wish said around the goal ("i'd love it if the ketchup ended up in the basket", "it would be great to have
+    # the cup on the saucer"): the wish
+    text = re.sub(
+        r"\bi (?:would (?:love|like|prefer|appreciate)|want) it if ((?:the|a|an) [a-z ]+?) "
+        r"(?:ended up|was|were|is|got|went|could go|could end up|would end up) "
+        r"(?=(?:in|on|inside|into|onto|on top of|next to|in front of) )",
+        r"i want \1 ",
+        text,
+    )
+    text = re.sub(
+        r"^it (?:would|will|might) be (?:great|nice|good|lovely|ideal|perfect|awesome|helpful|brilliant|cool) "
+        r"(?:to (?:have|see|get) (?=(?:the|a|an) [a-z ]+? (?:in|on|inside|into|onto|on top of|next to) )|"
+        r"if you (?:could |would |can )?(?=\w))",
+        lambda m: "i want " if "to " in m.group(0) else "",
+        text,
+    )
+    # "how about putting the ketchup in the basket?": the step suggested
+    text = re.sub(
+        r"^(?:how about|what about|why not try|maybe try|try) ([a-z]+ing)\b",
+        lambda m: getLemma(m.group(1), "VERB")[0],
+        text,
+    )
+    # "grab the bowl. the stove is where it should go": where the thing just named goes
+    text = re.sub(
+        r"(?<=[.;,] )((?:the|a|an) [a-z ]+?) is where (it|they) (?:should go|goes|go|belongs?|needs to go|has to go)\b",
+        r"\2 goes to \1",
+        text,
+    )
+    # "the rack is empty - fill it with the wine bottle": the thing it is filled with goes in it
+    text = re.sub(r"\bfill (it|them|(?:the|a|an) [a-z ]+?) (?:up )?with ((?:the|a|an) [a-z ]+)", r"put \2 to \1", text)
+    # "ketchup goes basket": the destination said without its preposition
+    text = re.sub(
+        r"^((?:the )?[a-z]+(?: [a-z]+)?) goes (?!(?:to|in|into|on|onto|inside|back|up|down|there|here|over|away)\b)"
+        r"((?:the )?[a-z]+)\s*[.!]?$",
+        r"\1 goes to \2",
+        text,
+    )
+    # "..., can you do that", "..., go": the request is closed
+    text = re.sub(
+        r",?\s*(?:can|could|would|will) you (?:do|manage|handle) (?:that|this|it)(?: for me)?\s*\??$", "", text
+    )
+    text = re.sub(r",\s*go\s*[.!]*$", "", text)
     # "..., the blue one must not move", "make sure the bowl isn't disturbed": the thing is left alone
     text = re.sub(
         r"(^|[,;.] |- |\bbut )(?:(?:make sure|ensure|check) (?:that )?)?((?:the|that|this) [a-z ]+?) "
@@ -1330,7 +1376,7 @@ def goal_to_action(text: str) -> str | None:
     )
     if said:  # "it should be red on top of green": the goal is the thing and place after it
         return bare_goal(said.group(1))
-    wish = re.fullmatch(r"i (?:want|need)\s+(.+)", text)
+    wish = re.fullmatch(r"(?:i|we) (?:want|need)\s+(.+)", text)
     body = wish.group(1) if wish else text
     both = body.split(" and ")
     if wish and len(both) > 1 and all(_DESTINATION.search(b) for b in both):
