@@ -287,3 +287,26 @@ def test_round28_left_alone_and_needs_wording_reads_as_its_plain_form(text, clau
 )
 def test_round28_wishes_and_suggestions_read_as_their_plain_form(text, clauses):
     assert read(text) == clauses
+
+
+@pytest.mark.parametrize(
+    ("text", "clauses"),
+    [
+        # a thing by what stands beside it, the preposition said last
+        ("the mug the box is next to should go on the tray", ["put obj=mug next to box relation=on target=tray"]),
+        # a thing named by the fixture it stands on
+        ("move the shelf mug to the tray", ["put obj=mug on shelf relation=in target=tray"]),
+        ("put the cabinet-top cup in the box", ["put obj=cup on cabinet top relation=in target=box"]),
+        # removed from where it is: taken
+        (
+            "remove the mug from the shelf and put it on the tray",
+            ["pick obj=mug on shelf", "put obj=mug on shelf relation=on target=tray"],
+        ),
+    ],
+)
+def test_round28_located_wording_reads_as_its_plain_form(text, clauses):
+    assert read(text) == clauses
+
+
+def test_a_part_of_a_fixture_keeps_its_name():
+    assert read("turn on the stove burner") == ["turn on obj=stove burner"]

@@ -29,6 +29,8 @@ VERBS: dict[str, tuple[str, ...]] = {
         "pluck",
         "scoop up",
         "clutch",
+        # taking it away from where it is ("remove the bowl from the cabinet top and put it on the plate")
+        "remove",
     ),
     "put": (
         "put",

@@ -319,6 +319,20 @@ def sentences(instruction: str) -> list[str]:
         r",?\s*(?:can|could|would|will) you (?:do|manage|handle) (?:that|this|it)(?: for me)?\s*\??$", "", text
     )
     text = re.sub(r",\s*go\s*[.!]*$", "", text)
+    # "the bowl the cookies are next to": a thing by what stands beside it, the preposition left at the end
+    text = re.sub(
+        r"\b((?:the|a|an) [a-z]+(?: [a-z]+)?) (?:that |which )?(the [a-z]+(?: [a-z]+)?) (?:is|are|sits?|stands?) "
+        r"(next to|beside|near|by)(?= (?:goes|go|should|needs|belongs|must|has|[,.;:-]|$)|[,.;:-]|$)",
+        r"\1 \3 \2",
+        text,
+    )
+    # "the stove bowl", "the cabinet-top bowl": a thing named by the fixture it stands on
+    text = re.sub(
+        r"\bthe (stove|cabinet[- ]top|counter|shelf|rack|burner|hob) "
+        r"(bowl|plate|mug|cup|pot|pan|bottle|box|block|cube)\b",
+        lambda m: f"the {m.group(2)} on the {m.group(1).replace('-', ' ')}",
+        text,
+    )
     # "..., the blue one must not move", "make sure the bowl isn't disturbed": the thing is left alone
     text = re.sub(
         r"(^|[,;.] |- |\bbut )(?:(?:make sure|ensure|check) (?:that )?)?((?:the|that|this) [a-z ]+?) "
