@@ -310,3 +310,20 @@ def test_round28_located_wording_reads_as_its_plain_form(text, clauses):
 
 def test_a_part_of_a_fixture_keeps_its_name():
     assert read("turn on the stove burner") == ["turn on obj=stove burner"]
+
+
+@pytest.mark.parametrize(
+    ("text", "clauses"),
+    [
+        # whatever the verb, the state after a drawer or door says the step
+        ("yank the door open", ["open obj=door"]),
+        ("nudge the lid shut", ["close obj=lid"]),
+        # a drawer or door given a pull opens, a push closes
+        ("give the door a pull", ["open obj=door"]),
+        ("give the drawer a firm push", ["close obj=drawer"]),
+        # "there" after a header is the place the header named
+        ("the box: park the pear there", ["put obj=pear relation=in target=box"]),
+    ],
+)
+def test_round28_synonym_wording_reads_as_its_plain_form(text, clauses):
+    assert read(text) == clauses

@@ -584,6 +584,27 @@ def sentences(instruction: str) -> list[str]:
         r"\1 \2 not \3 \4",
         text,
     )
+    # "give the drawer a pull" / "a push": a drawer or a door pulled opens, pushed closes
+    text = re.sub(
+        r"\bgive ((?:the|this|that) [\w ]*?(?:drawer|door)) an? (?:(?:good|quick|firm|little|gentle|light) )?"
+        r"(pull|tug|yank|push|shove)\b",
+        lambda m: f"{'open' if m.group(2) in ('pull', 'tug', 'yank') else 'close'} {m.group(1)}",
+        text,
+    )
+    # "yank the drawer open", "nudge the door shut": whatever the verb, the state after it says the step
+    text = re.sub(
+        r"^(?!(?:open|close|shut|pull|push|leave|keep|get|make|have|want)\b)[a-z]+ "
+        r"((?:the|a|an) (?:(?!and |then )[a-z]+ ){0,2}(?:drawer|door|cabinet|lid|fridge|microwave|oven|cupboard)) "
+        r"(open|shut|closed)\s*[.!]?$",
+        lambda m: f"{'open' if m.group(2) == 'open' else 'close'} {m.group(1)}",
+        text,
+    )
+    # "the tray: park the cube there": "there" is the place named first
+    text = re.sub(
+        r"^((?:the|a|an) [a-z ]+?)\s*:\s*([a-z]+) ((?:the|a|an) [a-z ]+?) (?:in |on )?there\s*[.!]?$",
+        r"\2 \3 to \1",
+        text,
+    )
     # "give the plate a scrub": the action is the noun after the object
     text = re.sub(
         r"\bgive ((?:the|this|that|my) [\w ]+?) an? (?:(?:good|quick|proper|thorough|little|light) )?(\w+)\b",
