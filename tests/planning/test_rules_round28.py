@@ -327,3 +327,19 @@ def test_a_part_of_a_fixture_keeps_its_name():
 )
 def test_round28_synonym_wording_reads_as_its_plain_form(text, clauses):
     assert read(text) == clauses
+
+
+@pytest.mark.parametrize(
+    ("text", "clauses"),
+    [
+        # "after that" said after the step it orders
+        (
+            "the pear on the plate first. the apple goes on the pear after that",
+            ["put obj=pear relation=on target=plate", "put obj=apple relation=on target=pear"],
+        ),
+        # a thing said with "inside" alone goes into what was just opened
+        ("step 1: open box. step 2: pear inside", ["open obj=box", "put obj=pear relation=in"]),
+    ],
+)
+def test_round28_multistep_wording_reads_as_its_plain_form(text, clauses):
+    assert read(text) == clauses

@@ -314,6 +314,16 @@ def sentences(instruction: str) -> list[str]:
         r"\1 goes to \2",
         text,
     )
+    # "red goes on green after that": when, said after the step, is the order the steps are said in
+    text = re.sub(
+        r",?\s*\b(?:after that|afterwards|after this|once that is done|when that is done)\s*(?=[.!]?$)", "", text
+    )
+    # "step 2: red block inside": a thing said with "inside" alone goes into what was just opened
+    text = re.sub(
+        r"(^|[.;!?] )((?:the )?[a-z]+(?: [a-z]+)?) (?:goes |should go )?(?:inside|in there|in it)\s*(?=[.!;]|$)",
+        lambda m: m.group(0) if starts_with_verb(m.group(2)) else f"{m.group(1)}put {m.group(2)} inside",
+        text,
+    )
     # "..., can you do that", "..., go": the request is closed
     text = re.sub(
         r",?\s*(?:can|could|would|will) you (?:do|manage|handle) (?:that|this|it)(?: for me)?\s*\??$", "", text
