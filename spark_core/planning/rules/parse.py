@@ -486,9 +486,10 @@ def _resolve(c: Clause, before: list[Clause]) -> Clause:
         kind = split_relation(prev.obj)[0].split()
         if kind and names_a_thing(kind[-1]):
             obj = updates["obj"] = f"{kind[-1]} {obj}"
-    elif obj in _BARE_QUALIFIERS and prev.action == "mention" and prev.obj and not is_pronoun(prev.obj):
+    elif obj in _BARE_QUALIFIERS and "mention" in (prev.action, c.action) and prev.obj and not is_pronoun(prev.obj):
         # "leave the black bowl in the back alone, put the front one on the plate": "one" is of the kind just named
-        # (only after a thing named, not after a step: "open one of the drawers - ..., the bottom one" says which)
+        # (only after a thing named or for one named, not a step after a step: "open one of the drawers - ..., the
+        # bottom one" says which)
         kind = [w for w in split_relation(prev.obj)[0].split() if w not in _BARE_QUALIFIERS]
         if kind and names_a_thing(kind[-1]):
             obj = updates["obj"] = f"{obj} {' '.join(kind)}"
