@@ -318,10 +318,14 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(
         r",?\s*\b(?:after that|afterwards|after this|once that is done|when that is done)\s*(?=[.!]?$)", "", text
     )
-    # "step 2: red block inside": a thing said with "inside" alone goes into what was just opened
+    # "step 2: red block inside": a thing said with "inside" alone, after an opening, goes into what was opened
     text = re.sub(
-        r"(^|[.;!?] )((?:the )?[a-z]+(?: [a-z]+)?) (?:goes |should go )?(?:inside|in there|in it)\s*(?=[.!;]|$)",
-        lambda m: m.group(0) if starts_with_verb(m.group(2)) else f"{m.group(1)}put {m.group(2)} inside",
+        r"(?<=[.;!?] )((?:the )?[a-z]+(?: [a-z]+)?) (?:goes |should go )?inside\s*(?=[.!;]|$)",
+        lambda m: (
+            m.group(0)
+            if starts_with_verb(m.group(1)) or not re.search(r"\bopen\b", text[: m.start()])
+            else f"put {m.group(1)} inside"
+        ),
         text,
     )
     # "..., can you do that", "..., go": the request is closed
