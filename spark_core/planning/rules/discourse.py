@@ -464,10 +464,10 @@ def _its_part(text: str) -> str:
         return text
     before = text[: m.start() + 1]
     if m.start() > 0 and m.group(0)[0] not in ".?!;":
-        ends = [b.end() for b in re.finditer(r"[.?!;]", before)]
-        if not ends:
+        stops = [b.end() for b in re.finditer(r"[.?!;]", before)]
+        if not stops:
             return text
-        before = before[: ends[-1]]
+        before = before[: stops[-1]]
     ends = r"(?=\s+(?:in|on|at|of|by|next|near|with|to|from|that|which|and|is|are)\b|\s*[?.!,;]|$)"
     named = [
         n.group(1).split()[-1] for n in re.finditer(rf"\b(?:the|a|an|that|this) ((?:\w+ ){{0,2}}?\w+){ends}", before)
