@@ -13,6 +13,7 @@ from ...perception.qualifiers import split_relation
 from ...perception.variants import SIZES
 from .lexicon import CONTAINERS, CONTENTS, DIRECTIONS, FROM, IN, ON, PARTICLE_VERBS, PRONOUNS, TABLE, VERBS, WITH
 from .phrases import BESIDE, noun_phrase, object_phrase
+from .qualify import EXTREMES
 from .rewrite import bare_goal, goal_to_action, imperatives
 from .things import is_verb, names_a_thing
 
@@ -535,10 +536,7 @@ def _resolve(c: Clause, before: list[Clause]) -> Clause:
 
 
 # What is left of "the front one" once "one" is read: a qualifier perception reads, no kind of thing.
-_BARE_QUALIFIERS = frozenset(
-    ["nearest", "farthest", "closest", "leftmost", "rightmost", "top", "bottom", "upper", "lower", "middle"]
-    + ["largest", "smallest"]
-)
+_BARE_QUALIFIERS = frozenset([*EXTREMES.values(), "middle"])
 _WHERE_PARTICIPLES = "sitting|resting|standing|lying|perched|located|parked|kept|stacked|seated|sat|placed"
 # What is switched on and off: "turn it on" after a carry onto one of these is switching it.
 _SWITCHED = re.compile(r"\b(?:stove|burner|hob|cooktop|cooker|oven|lamp|light|tap|faucet|knob|dial)\b")

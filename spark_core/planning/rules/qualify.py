@@ -274,11 +274,7 @@ def _sides(text: str) -> str:
     text = re.sub(
         rf"\b({DET}) ({NP}) (?:(?:that|which) (?:is|are) |(?:sitting|standing|resting|lying) )?(not )?"
         r"(up high|high up|down low|low down)\b",
-        lambda m: (
-            f"{m.group(1)} {m.group(2)} {m.group(3) or ''}{'top' if 'high' in m.group(4) else 'bottom'}"
-            if m.group(3)
-            else f"{m.group(1)} {'top' if 'high' in m.group(4) else 'bottom'} {m.group(2)}"
-        ),
+        lambda m: _up_or_down(m.group(1), m.group(2), bool(m.group(3)), "high" in m.group(4)),
         text,
     )
     # the robot's own left is the left perception counts in ("on the robot's left", "on your right", "on its left")
@@ -295,6 +291,12 @@ def _sides(text: str) -> str:
     text = re.sub(r"\bthe one (?:that is )?(?:at|in) the (?:back|rear)\b(?! of)", "the farthest one", text)
     # after a determiner or a possessive ("the cabinet's lowest drawer")
     return re.sub(rf"\b({DET}|\w+'s?) ({_EXTREME}) ", lambda m: f"{m.group(1)} {EXTREMES[m.group(2)]} ", text)
+
+
+def _up_or_down(det: str, noun: str, ruled_out: bool, high: bool) -> str:
+    """ "the bowl up high" -> "the top bowl"; "the bowl not down low" -> "the bowl not bottom"."""
+    where = "top" if high else "bottom"
+    return f"{det} {noun} not {where}" if ruled_out else f"{det} {where} {noun}"
 
 
 def negations(text: str) -> str:
