@@ -500,7 +500,7 @@ def _named_in_apposition(text: str) -> str:
     between dashes or commas, is the thing named."""
     return re.sub(
         r"\b(?:the|a|an) (?:[a-z]+ )?(?:item|thing|object|product|one)\b[^,;:()-]*?\s*(?:,|\s-+|\()\s*"
-        r"((?:the|a|an) (?!(?:[a-z]+ )?ones?\b)[a-z ]+?)\s*(?:,|\s-+|\))\s*(?=(?:and|then)\b)",
+        rf"((?:the|a|an) (?!(?:[a-z]+ )?ones?\b)[a-z ]+?)\s*(?:,|\s-+|\))\s*(?=(?:and|then|{_PLACE_PREPS})\b)",
         r"\1 ",
         text,
     )
@@ -517,9 +517,27 @@ def _restated_one(text: str) -> str:
             return f"{det} {thing} "
         if attribute and not rest and len(thing.split()) == 1:
             return f"{det} {attribute} {thing} "
+        if not attribute and re.fullmatch(_SAID_OF_PLACE, rest):  # "the milk, the carton closest to you, in ..."
+            return f"{det} {thing} {rest} "
         return m.group(0)
 
-    return re.sub(r"\b(the|a|an) ([a-z' ]+?)\s*,\s*the ((?:[a-z]+ )?)one\b([^,;]*),\s*(?=(?:and|then)\b)", said, text)
+    return re.sub(
+        rf"\b(the|a|an) ([a-z' ]+?)\s*,\s*the ((?:[a-z]+ )?)(?:one|{'|'.join(_GENERAL_NOUNS)})\b([^,;]*),\s*"
+        rf"(?=(?:and|then|{_PLACE_PREPS})\b)",
+        said,
+        text,
+    )
+
+
+# Where a thing goes, after it is named: an apposition before it ends at it.
+_PLACE_PREPS = r"in|into|onto|on|inside|on top of|to|over to"
+# Nouns that name a thing by what it is sold or kept in, or by nothing at all ("the milk, the carton nearest you").
+_GENERAL_NOUNS = ("item", "thing", "object", "product", "carton", "box", "bottle", "jar", "can", "tin", "package")
+# An apposition's words after its noun that only say where the thing is ("closest to you", "on the left").
+_SAID_OF_PLACE = (
+    r"(?:closest|nearest|furthest|farthest|leftmost|rightmost|frontmost|backmost)(?: (?:to )?(?:you|me|the robot|us))?"
+    r"|on the (?:left|right)|in (?:the )?(?:front|back)"
+)
 
 
 def _joined(text: str) -> str:

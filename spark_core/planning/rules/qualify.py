@@ -234,7 +234,9 @@ def extremes(text: str, push: bool = False) -> str:
     text = re.sub(
         rf"\b({DET}) ({NP}) (?:{relative}(?:the )?(?:farther|further|farthest|furthest)(?: away| back| out)?"
         rf"(?: from {_ME}\b)?(?=$|[\s,.])(?! from\b)|(?:the )?(?:(?:farther|further)(?: away| back| out)? from {_ME}\b|"
-        rf"(?:farthest|furthest)(?: away| back| out)?(?: from {_ME}\b)?(?=$|[\s,.])(?! from\b)))",
+        rf"(?:farthest|furthest)(?: away| back| out)?(?: from {_ME}\b)?(?=$|[\s,.])(?! from\b)|"
+        # "the one further back goes on the plate": the comparison with its direction, after the noun
+        rf"(?:farther|further) (?:back|away|out)(?=$|[\s,.])(?! from\b)))",
         lambda m: f"{m.group(1)} farthest {m.group(2)}",
         text,
     )
@@ -340,6 +342,14 @@ def negations(text: str) -> str:
     text = re.sub(
         rf"^not the ({_WORD}) ones?\s*[,:;]?\s*(?:but |rather )?((?:\w+(?: up)? )?)the other ({NP})\b",
         r"\2the \3 not \1",
+        text,
+    )
+    # "not the bowl in the middle, the other one by the plate": the other one picked out by where it is, which says
+    # which on its own
+    text = re.sub(
+        rf"^not the ({NP})(?: [^,:;]+?)?(?: ones?)?\s*[,:;]\s*(?:but |rather )?the other (?:one|{NP}) "
+        rf"((?:by|near|next to|beside|on|in|at|under|behind|in front of) (?:the|a|an) [^,:;.!]+)",
+        r"the \1 \2",
         text,
     )
     # "not the bowl on the burner, the other one goes ..." / "not the blue block but the other one"

@@ -74,7 +74,16 @@ _LEADS = frozenset(["", "and", "then", "also", "please", "to", "just", "now", "s
 # Verbs after which a word says how a thing stands ("sit flat", "stay upright", "be level").
 _POSTURES = frozenset(["sit", "sits", "stand", "stands", "stay", "stays", "be", "remain", "remains", "lie", "lies"])
 # A purpose said as "for" and a noun with no article ("we need it for dinner"): no thing of any scene.
-_PURPOSE = re.compile(r"\bfor (?:the )?(?:dinner|lunch|breakfast|later|now|tonight|today|tomorrow|safety|science)\b")
+_PURPOSE = re.compile(
+    r"\bfor (?:the )?(?:dinner|lunch|breakfast|later|now|tonight|today|tomorrow|safety|science)\b"
+    # what the thing is wanted for ("we'll need it for pasta tonight", "it's for the soup"): the dish, not a thing here
+    r"|\b(?:need|use|want|keep|save) (?:it|them|this|that) for (?:the |a |an |some |my |our )?\w+"
+    # ... or said of it with a time ("it's for the pasta tonight"; "it's for the banana" may ask for a banana)
+    r"|\b(?:it is|it's|they are|they're|that is|that's) for (?:the |a |an |some |my |our )?\w+"
+    r"(?= (?:tonight|later|today|tomorrow|this (?:evening|morning|afternoon|weekend)))"
+)
+# The speaker's own doing said after the request ("i need to put something in it later", "we're going to ...").
+_SPEAKER_DOES = re.compile(r"(?:i|we)(?: will| would| am| are| ll| re| m| d)? (?:need|want|have|going|plan|hope) to\b")
 # How many trailing clauses, at most, are tried: each try is a reading of its own.
 _MAX_TAILS = 4
 
@@ -97,7 +106,9 @@ def trailing_remarks(instruction: str, found: list[str]) -> list[tuple[str, str]
         if not words or not re.search(r"[a-z]", kept.lower()):
             continue
         pairs = list(zip(["", *words], words))
-        if any(w in _STEP_VERBS and before in _LEADS for before, w in pairs):
+        # the speaker's own doing ("i need to put something in it later"): a verb after it is no step of the robot's
+        speaker = _SPEAKER_DOES.match(" ".join(words))
+        if not speaker and any(w in _STEP_VERBS and before in _LEADS for before, w in pairs):
             break  # a step of its own
         # how it stands ("it should sit flat on it"): a state, not a thing
         # ... and "the next <noun>", "before dinner" say an occasion ("for the next trial"), not the next step

@@ -176,10 +176,19 @@ def starts_with_verb(text: str) -> bool:
 def sentences(instruction: str) -> list[str]:
     """Lower case, contractions spelled out, fillers gone; one string per sentence."""
     text = instruction.lower().replace("’", "'").strip()
+    # "the blue block is first (the base)": in a stack, the first one is the bottom, the base only says so again
+    text = re.sub(r"\bfirst,? \(?(?:as |at )?the (?:base|bottom|foundation)\)?", "at the bottom", text)
     text = re.sub(r"\s*[()]\s*", " ", text).strip()  # "(carefully)", "(thanks)": an aside's words, read as said
     text = re.sub(r"[!?]+(?=\s*,)", "", text)  # "the wine bottle, not the bowl!, should go ...": one sentence
     for short, long in CONTRACTIONS.items():
         text = re.sub(rf"\b{re.escape(short)}", long, text)
+    # a cleft ("it's the butter that goes in the basket"): the thing it singles out, then its goal
+    text = re.sub(
+        r"\bit is ((?:the|a|an) [\w ]+?) (?:that|which) (?=(?:goes|belongs|should go|needs to go|has to go|must go|"
+        r"gets put|is going)\b)",
+        r"\1 ",
+        text,
+    )
     # the speaker's hedge before what they want ("i think the drawer should be open, can you ..."): the wish itself
     text = re.sub(
         r"(^|[.;!?]\s+)i (?:think|guess|believe|reckon|suppose|feel like)(?: that)?,?\s+"
@@ -237,7 +246,7 @@ def sentences(instruction: str) -> list[str]:
     )
     # "get the drawer open and the red block in it": the verb said once for a state and a carry
     text = re.sub(
-        r"\b(get|have) ((?:the|a|an) [\w ]+?) (open|opened|closed|shut|switched on|switched off|turned on|turned off) "
+        r"\b(get|have) ((?:the|a|an) [\w' ]+?) (open|opened|closed|shut|switched on|switched off|turned on|turned off) "
         r"and ((?:the|a|an) [\w ]+?) "
         r"(?=(?:in|into|inside|on|onto|on top of) (?:it|the|a|an)\b)",
         r"\1 \2 \3 and put \4 ",
@@ -245,7 +254,7 @@ def sentences(instruction: str) -> list[str]:
     )
     # a state brought about ("get the drawer open and ...", "have the stove switched on"): the action that makes it
     text = re.sub(
-        r"(^|, |\band |\bthen )(?:get|have|make) ((?:the|a|an) [\w ]+?) "
+        r"(^|, |\band |\bthen )(?:get|have|make) ((?:the|a|an) [\w' ]+?) "
         r"(open|opened|closed|shut|switched on|switched off|turned on|turned off)(?=\s*(?:$|[,.;!?]|\band\b|\bthen\b))",
         lambda m: f"{m.group(1)}{ACTION_WORDS[dict(STATE_ACTIONS)[m.group(3)]]} {m.group(2)}",
         text,
@@ -1331,6 +1340,9 @@ def _tower(items: list[str]) -> list[str] | None:
     if items:  # "build a tower - blue on the bottom, ...": the stack named first, its order after
         items[0] = _TOWER_HEADER.sub("", items[0])
         items = [i for i in items if i] if len(items) > 1 else items  # "make a tower, blue first, ..."
+    counted = _tower_by_ordinals(items)
+    if counted:  # "blue first, green second, red third"
+        return counted
     for item in items:
         for where, words in _TOWER_PLACES:
             m = re.fullmatch(rf"((?:the |a |an )?[\w ]+?) (?:(?:is|sits|goes|should be|should go) )?(?:{words})", item)
@@ -1346,6 +1358,46 @@ def _tower(items: list[str]) -> list[str] | None:
     order = [x for k in ("bottom", "middle", "top") for x in placed[k]]
     if len(order) < 2 or len(placed["top"]) > 1 or len(placed["bottom"]) > 1 or not (placed["top"] or placed["bottom"]):
         return None
+    return [f"stack {a} on {b}" for b, a in zip(order, order[1:])]
+
+
+_ORDINALS = ("first", "second", "third", "fourth")
+_PLACE_ONLY = re.compile(
+    r"(?:(?:at|on|as|in) )?(?:the )?(?:very )?(?:top|bottom|base|middle|foundation)(?: (?:one|layer|level))?"
+)
+_BOTTOM = r"(?:(?:at|on|as) )?the (?:base|bottom|foundation)"
+_TOP = r"(?:(?:at|on) )?the (?:very )?top"
+
+
+def _tower_by_ordinals(items: list[str]) -> list[str] | None:
+    """ "the blue block is first (the base), the green block is second, and the red block goes third, at the very
+    top": a stack counted from the bottom up ("first" itself is gone by now, a filler: the first item, or the one
+    said to be the base, is the bottom); an item that only restates a place ("at the very top") is dropped. None
+    unless some item says "second" and every other item is a thing with its own rank."""
+    said: list[tuple[str, str | None]] = []  # (thing, its ordinal, "bottom", "top" or None)
+    for n, item in enumerate(re.sub(r"^and ", "", i) for i in items):
+        m = re.fullmatch(
+            rf"((?:the |a |an )?[\w ]+?)(?: (?:(?:is|goes|sits|comes|should be|should go) )?"
+            rf"({'|'.join(_ORDINALS)}|{_BOTTOM}|{_TOP})(?: (?:{_PLACE_ONLY.pattern}))?)?",
+            item,
+        )
+        if m and _is_noun_phrase(m.group(1)) and (m.group(2) or n == 0):
+            said.append((m.group(1), m.group(2)))
+        elif not _PLACE_ONLY.fullmatch(item):
+            return None
+    if not any(rank == "second" for _, rank in said):
+        return None
+    ranks = [
+        0
+        if rank is None or re.fullmatch(_BOTTOM, rank)
+        else len(said) - 1
+        if re.fullmatch(_TOP, rank)
+        else _ORDINALS.index(rank)
+        for _, rank in said
+    ]
+    if sorted(ranks) != list(range(len(said))):
+        return None
+    order = [thing for _, (thing, _) in sorted(zip(ranks, said))]
     return [f"stack {a} on {b}" for b, a in zip(order, order[1:])]
 
 
