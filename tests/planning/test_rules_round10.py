@@ -110,7 +110,7 @@ def test_several_readings_that_ground_differently_are_refused_as_ambiguous():
 
 
 def test_a_thing_the_rule_parse_leaves_unused_is_read_without_word_order():
-    text = "the mug needs to be up on top of the shelf"
+    text = "the mug needs to be lifted up on top of the shelf"
     assert unused_mentions(text, parse_instruction(text)) == ["shelf"]  # read as a lift: the shelf unused
     view = _view(("mug", "shelf"), mug=(0.5, 0.1, 0.05), shelf=(0.6, -0.2, 0.3))
     result = RulesPlanner().plan(PlanRequest(text, view))

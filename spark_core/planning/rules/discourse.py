@@ -410,7 +410,8 @@ def _header(text: str) -> str:
 
 def _cleft(text: str) -> str:
     """A goal said as a cleft ("the orange juice is what should go into the basket", "the red block is the one that
-    goes on the plate"), or as the holder with what it should hold ("bowl with the red block in it, that's what I
+    goes on the plate", "it's the butter that goes ..."), the goal and then that it is wanted ("ketchup in the basket
+    is what i'm after"), or as the holder with what it should hold ("bowl with the red block in it, that's what I
     want"): said plainly."""
     text = re.sub(
         r"\s*[,;-]?\s*(?:that's|that is|this is|thats) (?:what|all) (?:i|we) (?:want|need|would like|'d like|am after"
@@ -422,6 +423,21 @@ def _cleft(text: str) -> str:
         rf"^((?:{_DET} )?{_NP}) (?:is|are) (?:what|the (?:one|ones|thing|things)(?: that)?) "
         r"(?=(?:should|must|needs? to|has to|have to|goes|go|belongs?|is to|are to|ought to)\b)",
         r"\1 ",
+        text,
+    )
+    # "it's the butter that goes in the basket": the thing it singles out, then its goal
+    text = re.sub(
+        rf"\bit(?:'s| is) ((?:{_DET} )?{_NP}) (?:that|which) "
+        r"(?=(?:goes|belongs|should go|needs to go|has to go|must go|gets put|is going)\b)",
+        r"\1 ",
+        text,
+    )
+    # "ketchup in the basket is what i'm after": the goal, then that it is what is wanted
+    text = re.sub(
+        r"^([a-z][a-z' ]+?) (?:is|are) (?:what (?:i|we)(?: am|'m| are|'re) after|"
+        r"what (?:i|we) (?:want|need|would like)|"
+        r"the (?:goal|idea|plan|aim))\s*(?=[.!]?$)",
+        r"i want \1",
         text,
     )
     m = re.fullmatch(rf"(?:{_DET} )?({_NP}) with (?:the|a|an) ({_NP}) (in|on|inside|on top of) (?:it|them)\.?", text)
@@ -454,11 +470,100 @@ def _state_said(m: re.Match) -> str:
     return f"{verb} {_OPPOSITE_STATE[m.group(2)]}"
 
 
+def _of_all_the_things(text: str) -> str:
+    """ "of all the groceries on the table, grab the one nearest to you": "the one" of things said only as a class
+    is the item the qualifier picks out of everything there."""
+    m = re.match(
+        r"(?:out )?of all (?:the |these |those )?(?:groceries|items|things|objects|products|stuff|goods)"
+        r"(?: (?:on the table|here|there|in front of you|you can see))?\s*[,:;-]\s*",
+        text,
+    )
+    if not m:
+        return text
+    return re.sub(r"\bthe one\b", "the item", text[m.end() :], count=1)
+
+
+def _restack(text: str) -> str:
+    """ "take the green cube off (the red one), then put the red cube on top of it": the thing on top comes off so that
+    the one under it goes on top: one step, the second ("it" is the thing taken off); the first is how it is done."""
+    return re.sub(
+        r"\b(?:take|lift|get|pull|move|pick) ((?:the|that) [a-z ]+?) off(?: (?:of )?(?:the|that) [a-z ]+?)?\s*[,;.]?\s*"
+        r"(?:and )?(?:then )?((?:put|place|set|stack|pop) (?:the|that) [a-z ]+? (?:on top of|onto|on)) "
+        r"(?:it|that one)\b",
+        r"\2 \1",
+        text,
+    )
+
+
+def _not_there_but(text: str) -> str:
+    """ "don't put the wine bottle in the rack, it goes up on top of the cabinet": a place ruled out for a thing,
+    then where "it" goes: the thing goes there (the place ruled out is no thing to act on)."""
+    return re.sub(
+        r"^(?:do not|don't|dont|never) (?:put|place|set|stick|leave|move) ((?:the|a|an) [a-z' ]+?) "
+        r"(?:in|into|on|onto|inside|on top of|next to|by|back in|back on) (?:the|a|an) [a-z' ]+?\s*[,;.:-]+\s*"
+        r"(?:but |instead |rather )?(?:it|they) "
+        r"(?=(?:goes|go|belongs|belong|should go|needs to go|has to go|must go)\b)",
+        r"\1 ",
+        text,
+    )
+
+
+def _on_top_of_last(text: str) -> str:
+    """ "put the green block on the blue one, then add the red block on top (to finish the stack)": "on top" alone,
+    after a step that put a thing on another, is on top of that thing."""
+    text = re.sub(
+        r"\s*\bto (?:finish|complete|top off|end|cap) (?:the |your |this |our )?(?:stack|tower|pile)\b", "", text
+    )
+    m = re.search(
+        r"\b(?:put|place|set|add|stack|pop|drop|lay|goes|go|sits|belongs)\b[^.;,]*? on top"
+        r"(?= *(?:$|[.,;!]|and\b|then\b))",
+        text,
+    )
+    if not m or not re.search(r"\b(?:on|onto|on top of) (?:the|a|an)\b", text[: m.start()]):
+        return text
+    return f"{text[: m.end()]} of it{text[m.end() :]}"
+
+
+def _first_said_last(text: str) -> str:
+    """ "It's the cream cheese that goes in the drawer. Open the drawer first.": a later sentence that asks for a step
+    "first" happens before the ones said before it."""
+    said = [x.strip() for x in re.split(r"(?<=[.!?;])\s+", text) if x.strip()]
+    for n, sentence in enumerate(said[1:], 1):
+        m = re.fullmatch(
+            r"(?:and |but |oh,? |oh and )?(.+?),?\s+(?:first|beforehand|before that|before anything else)"
+            r"\s*([.!]?)",
+            sentence,
+        )
+        if m and starts_with_verb(m.group(1)):
+            rest = " ".join([*said[:n], *said[n + 1 :]])
+            first = f"{_named_later(m.group(1), rest)}{m.group(2) or '.'}"
+            return f"{first} {rest}"
+    return text
+
+
+def _named_later(sentence: str, rest: str) -> str:
+    """ "open the drawer" moved before "... goes in the top drawer": the thing said by its kind alone is the one the
+    later sentences name with words of its own, when they name exactly one of that kind (and not as ruled out)."""
+
+    def named(m: re.Match) -> str:
+        head = m.group(1)
+        said = {
+            n.group(1)
+            for n in re.finditer(rf"(?<!\bnot )\bthe ((?:[a-z]+ ){{1,2}}){head}\b", rest)
+            if not re.search(r"\b(?:other|same|one)\b", n.group(1))
+        }
+        return f"the {said.pop()}{head}" if len(said) == 1 else m.group(0)
+
+    return re.sub(r"\bthe ([a-z]+)\b(?=\s*$|\s*[,.;!?]|\s+(?:and|then)\b)", named, sentence)
+
+
 def _its_part(text: str) -> str:
     """ "see the brown cabinet? its drawer is closed. open it.": a part said as "its" after a sentence or clause that
     named the thing is that thing's part ("the cabinet drawer")."""
     # (or after a verb in a later sentence: "see the cabinet? close its drawer", the owner said in a sentence before;
     # never where to grip it: "by its handle")
+    # "open the drawer on it": the same part, said after it
+    text = re.sub(r"\bthe (drawer|handle|knob|door|lid|dial) (?:on|of) it\b(?! (?:and|too|as well))", r"its \1", text)
     m = re.search(r"(?:^|[.?!;]\s*|(?<!\bby )(?<=\s))its (drawer|handle|knob|door|lid|dial)\b", text)
     if not m:
         return text
@@ -496,10 +601,11 @@ def _but_clause(text: str) -> str:
 
 
 def _named_in_apposition(text: str) -> str:
-    """ "grab the item closest to the robot - the milk - and put it ...": a thing said only as an item, then named
-    between dashes or commas, is the thing named."""
+    """ "grab the item closest to the robot - the milk - and put it ...", "take whatever's nearest, the soup, and
+    ...": a thing said only as an item, then named between dashes or commas, is the thing named."""
     return re.sub(
-        r"\b(?:the|a|an) (?:[a-z]+ )?(?:item|thing|object|product|one)\b[^,;:()-]*?\s*(?:,|\s-+|\()\s*"
+        r"(?:\b(?:the|a|an) (?:[a-z]+ )?(?:item|thing|object|product|one)\b|\bwhatever(?:'s| is)?)[^,;:()-]*?"
+        r"\s*(?:,|\s-+|\()\s*"
         rf"((?:the|a|an) (?!(?:[a-z]+ )?ones?\b)[a-z ]+?)\s*(?:,|\s-+|\))\s*(?=(?:and|then|{_PLACE_PREPS})\b)",
         r"\1 ",
         text,
@@ -581,6 +687,11 @@ def restructured(instruction: str) -> str:
         _chosen,
         _state_after,
         _other_after_contrast,
+        _of_all_the_things,
+        _not_there_but,
+        _restack,
+        _first_said_last,
+        _on_top_of_last,
         _said_again,
         _apposed_contrast,
         _contrast,

@@ -210,6 +210,12 @@ TABLE = ("table", "tabletop", "table top", "counter", "where it is", "where it s
 SELF_PARTS = ("centre", "center", "middle", "surface", "top face", "top side", "top surface", "inside", "interior")
 # What a container holds: "the mug's beads", "the mug's contents" pour from the mug.
 CONTENTS = ("contents", "content", "beads", "liquid", "water")
+# What may come before the contents' noun: a quantifier and up to three words of their own ("all those little yellow
+# beads"), never a preposition (not "the cube in the water").
+CONTENTS_SAID = (
+    r"(?:(?:the|some|all|all the|all those|all these|all of the|those|these) )?"
+    r"(?:(?!(?:in|on|into|onto|from|of|to|with|and|the|a|an|out)\b)[a-z]+ ){0,3}?"
+)
 # Contents that are a substance, not rigid things: a scene shows none, so saying a container holds one is a claim
 # the scene must bear out (rules/kinds.py), never read past.
 SUBSTANCES = ("water",)

@@ -11,7 +11,20 @@ from dataclasses import dataclass, field, replace
 from ...perception.colors import BASE_COLOURS
 from ...perception.qualifiers import split_relation
 from ...perception.variants import SIZES
-from .lexicon import CONTAINERS, CONTENTS, DIRECTIONS, FROM, IN, ON, PARTICLE_VERBS, PRONOUNS, TABLE, VERBS, WITH
+from .lexicon import (
+    CONTAINERS,
+    CONTENTS,
+    CONTENTS_SAID,
+    DIRECTIONS,
+    FROM,
+    IN,
+    ON,
+    PARTICLE_VERBS,
+    PRONOUNS,
+    TABLE,
+    VERBS,
+    WITH,
+)
 from .phrases import BESIDE, noun_phrase, object_phrase
 from .qualify import EXTREMES
 from .rewrite import bare_goal, goal_to_action, imperatives
@@ -625,7 +638,7 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
     carried = action == "put" or (
         action == "pick" and re.search(r"\b(?:into|in|onto|on|over)\s+(?:the|a|an)\b", rest) is not None
     )  # ("take the beads from the mug into the bowl": a pick verb with a destination)
-    if carried and re.match(rf"(?:the |some |all (?:the )?)?(?:{'|'.join(CONTENTS)})\b", rest):
+    if carried and re.match(rf"{CONTENTS_SAID}(?:{'|'.join(CONTENTS)})\b", rest):
         action = "pour"  # "beads -> bowl": what a container holds goes in by pouring it out of the container
     if action == "mention":
         # "there's a drawer sticking out": how it stands is no part of its name

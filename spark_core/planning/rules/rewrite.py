@@ -12,6 +12,7 @@ from lemminflect import getLemma
 from .lexicon import (
     CONTAINERS,
     CONTENTS,
+    CONTENTS_SAID,
     COPULAS,
     FILLERS,
     HELD,
@@ -182,11 +183,42 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(r"[!?]+(?=\s*,)", "", text)  # "the wine bottle, not the bowl!, should go ...": one sentence
     for short, long in CONTRACTIONS.items():
         text = re.sub(rf"\b{re.escape(short)}", long, text)
-    # a cleft ("it's the butter that goes in the basket"): the thing it singles out, then its goal
+    # "... in the white bowl instead": the goal replaces how things are, no word of it
+    text = re.sub(r",?\s+instead\s*(?=[.!]?$)", "", text)
+    # "goes up on top of the cabinet", "ought to be up on the shelf": "up" says only that the place is high
+    text = re.sub(r"\b(goes|go|be|is|are|sits|sit|belongs|belong) up (?=(?:on top of|onto|on to|on)\b)", r"\1 ", text)
+    # a wish said as a condition ("it would be great if the stove were on"): the state wished for
     text = re.sub(
-        r"\bit is ((?:the|a|an) [\w ]+?) (?:that|which) (?=(?:goes|belongs|should go|needs to go|has to go|must go|"
-        r"gets put|is going)\b)",
+        r"^it (?:would|will|'d) be (?:great|nice|good|lovely|ideal|perfect|awesome|brilliant|helpful) if "
+        r"((?:the|a|an|both|all) [a-z' ]+?) (?:were|was|is|are|could be|would be|got|ended up|end up) ",
+        r"\1 should be ",
+        text,
+    )
+    # how a thing is set down, said between it and the place ("lay it flat on top of the cabinet"): no word of either
+    text = re.sub(
+        r"\b(it|them) (?:flat|upright|level|straight|down|gently|carefully|softly|neatly) "
+        r"(?=(?:on|in|onto|into|on top of|inside|down on|down in)\b)",
         r"\1 ",
+        text,
+    )
+    # "the black bowl just to the right of the box": "just" only says how near
+    text = re.sub(
+        r"(?<=[a-z]) just "
+        r"(?=(?:to the (?:left|right) of|next to|beside|behind|in front of|by|near|above|below|under)\b)",
+        " ",
+        text,
+    )
+    # a place, then the thing said as "with it" ("onto the plate with it"): the thing put there
+    text = re.sub(
+        r"(^|[.;!?]\s+)(onto|into|on to|on top of|in|on|inside) ((?:the|a|an) [a-z' ]+?) with (it|them|that)\b",
+        r"\1put \4 \2 \3",
+        text,
+    )
+    # a warning before the goal's list ("don't mix them up: the red block goes ..."): no part of the request
+    text = re.sub(
+        r"^(?:do not|don't|dont) (?:mix|get|muddle|jumble) (?:them|these|those|it|the two|things) "
+        r"(?:up|wrong|confused|around)\s*[:,;-]+\s*",
+        "",
         text,
     )
     # the speaker's hedge before what they want ("i think the drawer should be open, can you ..."): the wish itself
@@ -1326,7 +1358,8 @@ _TOWER_PLACES = (
 _TOWER_HEADER = re.compile(
     r"^(?:build|make|form|create|assemble|put together|stack up|i want|i'd like|i need|we want|we need)(?: me)? "
     r"(?:a|the|one) (?:[\w-]+ )?(?:tower|stack|pile)"
-    r"(?: of (?:the )?(?:blocks|cubes|three))?(?:\s*[-:]\s*|\s+(?:with|where|that has)\s+|\s*)"
+    r"(?: (?:out )?of (?:the |all )?(?:three |two |all )?(?:blocks|cubes|three|them|these))?"
+    r"(?:\s*[-:]\s*|\s+(?:with|where|that has)\s+|\s*)"
 )
 # A word that makes a clause of a noun phrase ("the red block should end up in the air"): a goal said in words.
 _SAYS_GOAL = r"\b(?:should|must|will|would|could|can|needs?|has|have|is|are|be|ends?|gets?|goes|go|wants?|ought)\b"
@@ -1365,8 +1398,8 @@ _ORDINALS = ("first", "second", "third", "fourth")
 _PLACE_ONLY = re.compile(
     r"(?:(?:at|on|as|in) )?(?:the )?(?:very )?(?:top|bottom|base|middle|foundation)(?: (?:one|layer|level))?"
 )
-_BOTTOM = r"(?:(?:at|on|as) )?the (?:base|bottom|foundation)"
-_TOP = r"(?:(?:at|on) )?the (?:very )?top"
+_BOTTOM = r"(?:(?:at|on|as) )?the (?:base|bottom|foundation)|(?:at the )?bottom"
+_TOP = r"(?:(?:at|on) )?the (?:very )?top|on top|(?:at the )?top|last"
 
 
 def _tower_by_ordinals(items: list[str]) -> list[str] | None:
@@ -1540,7 +1573,7 @@ def _predicate(subject: str, predicate: str) -> str | None:
     if action == "put" and (
         _head(subject) in CONTENTS
         or re.search(r"'s? (?:contents?|beads)$", subject)
-        or re.match(r"(?:all )?(?:the )?(?:contents?|beads|liquid|water) (?:from|in|of|out of) ", subject)
+        or re.match(rf"{CONTENTS_SAID}(?:contents?|beads|liquid|water) (?:from|in|of|out of) ", subject)
     ):
         action = "pour"
     if not predicate or not _DESTINATION.match(predicate) and action in ("put", "stack", "pour"):
