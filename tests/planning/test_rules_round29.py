@@ -166,3 +166,36 @@ def test_a_step_said_first_keeps_a_kind_named_twice_unresolved():
 def test_a_place_ruled_out_with_no_goal_after_it_is_no_goal():
     with pytest.raises(ParseError):
         read("don't put the book on the shelf, it is heavy")
+
+
+@pytest.mark.parametrize(
+    ("text", "clauses"),
+    [
+        # a thing said again after a correction replaces the one it corrects: the same kind, else the one just said
+        ("put the apple, no, the pear, in the pot", ["put obj=pear relation=in target=pot"]),
+        ("put the mug on the tray, sorry, I mean the shelf", ["put obj=mug relation=on target=shelf"]),
+        ("put the pear in the red box, no wait, the green box", ["put obj=pear relation=in target=green box"]),
+        # "the right one": the qualifier corrected, the kind kept (a colour for a colour, a side for a side)
+        ("put the left mug on the tray, oops, the right one", ["put obj=right mug relation=on target=tray"]),
+        ("lift the yellow cube - actually, the green one", ["pick obj=green cube"]),
+        # the object said again as an apposition, then corrected
+        (
+            "put the white mug on the tray - the back one, no wait, the front one",
+            ["put obj=nearest white mug relation=on target=tray"],
+        ),
+    ],
+)
+def test_a_self_correction_replaces_what_it_corrects(text, clauses):
+    assert read(text) == clauses
+
+
+def test_no_before_a_request_is_no_correction():
+    # "no, ..." that starts a request names no thing to replace
+    assert "pear" in " ".join(read("no, put the pear in the pot"))
+
+
+def test_a_thing_ruled_out_before_a_dash_is_no_apposition():
+    # "not the one on the shelf - the mug by the kettle, onto the tray": the one ruled out is not renamed
+    assert read("not the one on the shelf - the mug by the kettle, onto the tray") == [
+        "put obj=mug by kettle relation=on target=tray"
+    ]

@@ -22,6 +22,7 @@ from functools import lru_cache
 
 from lemminflect import getLemma
 
+from ...perception.colors import BASE_COLOURS
 from .lexicon import VERBS
 from .mentions import ATTRIBUTES
 from .phrases import singular
@@ -604,7 +605,8 @@ def _named_in_apposition(text: str) -> str:
     """ "grab the item closest to the robot - the milk - and put it ...", "take whatever's nearest, the soup, and
     ...": a thing said only as an item, then named between dashes or commas, is the thing named."""
     return re.sub(
-        r"(?:\b(?:the|a|an) (?:[a-z]+ )?(?:item|thing|object|product|one)\b|\bwhatever(?:'s| is)?)[^,;:()-]*?"
+        r"(?:(?<!\bnot )\b(?:the|a|an) (?:[a-z]+ )?(?:item|thing|object|product|one)\b|\bwhatever(?:'s| is)?)"
+        r"[^,;:()-]*?"
         r"\s*(?:,|\s-+|\()\s*"
         rf"((?:the|a|an) (?!(?:[a-z]+ )?ones?\b)[a-z ]+?)\s*(?:,|\s-+|\))\s*(?=(?:and|then|{_PLACE_PREPS})\b)",
         r"\1 ",
@@ -646,6 +648,70 @@ _SAID_OF_PLACE = (
 )
 
 
+# Words a speaker corrects what they just said with ("no wait", "sorry, i mean").
+_CORRECTION = (
+    r"(?:no,? wait|wait,? no|no,? no|no|sorry|oops|actually|make that|or rather|correction|scratch that|i mean|"
+    r"i meant|er|erm|uh|um)"
+)
+
+
+# Words of one sort, one of which a correction swaps for another ("the left one, no, the right one").
+_KINDS_OF_WORD = (
+    frozenset(BASE_COLOURS),
+    frozenset(["left", "right", "leftmost", "rightmost", "front", "back", "near", "far", "nearest", "farthest"])
+    | frozenset(["top", "bottom", "middle", "upper", "lower", "first", "second", "third", "last", "closer", "further"]),
+)
+
+
+def _self_corrected(text: str) -> str:
+    """ "put the red block in the bowl, sorry, i mean the blue block", "the left bowl ..., no wait, the right one",
+    "put the red block, no, the blue block, in the bowl": the thing said after the correction replaces the one it
+    corrects: the last one named of the same kind, else the last one named ("the right one" keeps its kind)."""
+    m = re.search(
+        rf"\s*(?:,|;|-+|\.\.\.)\s*(?:{_CORRECTION}\b\s*[,.]*\s*)+(?:the|a|an) ((?:[a-z]+ ){{0,2}})([a-z]+)"
+        r"(?=\s*(?:$|[,.;!?]|\s(?:in|into|on|onto|to|and|then|from|off|please)\b))",
+        text,
+    )
+    if not m:
+        return text
+    said, kind = m.group(1), m.group(2)
+    before = text[: m.start()]
+    named = [
+        n
+        for n in re.finditer(
+            r"\b(?:the|a|an) ((?:[a-z]+ ){0,2})([a-z]+)(?=\s*(?:$|[,.;!?-]|\s(?:in|into|on|onto|to|and|then|from|off|"
+            r"of|with|at|by|near|next|beside|please)\b))",
+            before,
+        )
+        if n.group(2) == "one" or is_thing(n.group(2))
+    ]
+    if not named:
+        return text
+    if kind in ("one", "ones"):  # "the right one": the qualifier corrected, the kind kept
+        words = set(said.split())
+        kin = next((k for k in _KINDS_OF_WORD if words & k), frozenset())
+        corrected = next(
+            (n for n in reversed(named) if set(n.group(1).split()) & kin),
+            next((n for n in reversed(named) if n.group(1)), named[0]),
+        )
+        new = f"the {said}{corrected.group(2)}"
+    else:
+        corrected = next((n for n in reversed(named) if n.group(2) == kind), named[-1])
+        new = f"the {said}{kind}"
+    after = text[m.end() :]
+    if corrected.end() == len(before.rstrip()):  # "the red block, no, the blue block, in the bowl": one phrase
+        after = re.sub(r"^\s*,\s*", " ", after)
+        # "put the black bowl on the plate - the back one, no wait, the front one": the object said again, corrected
+        said_of = re.fullmatch(
+            r"(\w+(?: up)?) (?:the|a|an) ([a-z ]+?) ((?:in|into|on|onto|on top of|next to) (?:the|a|an) [a-z ]+?)"
+            r"\s*(?:-+|,)\s*",
+            before[: corrected.start()],
+        )
+        if corrected.group(2) == "one" and said_of and not after.strip(" .!"):
+            return f"{said_of.group(1)} the {said}{said_of.group(2)} {said_of.group(3)}"
+    return (before[: corrected.start()] + new + before[corrected.end() :] + after).strip()
+
+
 def _joined(text: str) -> str:
     """A superlative of place said with a hyphen as one word: "right-most" is "rightmost"."""
     return re.sub(r"\b(left|right|front|back|top|bottom|upper|lower|rear|fore)[- ]most\b", r"\1most", text)
@@ -674,6 +740,7 @@ def restructured(instruction: str) -> str:
     ).strip()
     # "would you mind sorting these? red block into ...": what "these" are, said next
     out = re.sub(r"\b(these|those|the following)\s*\?\s+(?=\S)", r"\1: ", out)
+    out = _self_corrected(out)
     out = _its_part(_negated_state(_joined(_but_clause(_restated_one(_named_in_apposition(out))))))
     for step in (
         _header,
