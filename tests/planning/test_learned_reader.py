@@ -190,3 +190,11 @@ def test_no_goal_puts_a_thing_back_on_what_its_own_phrase_says_it_stands_on():
     texts = {g.text for g in singles(["bowl on cookie box", "cookie box", "plate"])}
     assert "put the bowl on cookie box on the plate" in texts
     assert not any(t.startswith("put the bowl on cookie box") and t.endswith("the cookie box") for t in texts)
+
+
+def test_a_goal_on_a_counted_phrase_is_declined():
+    # "the two cubes" is several things: a pick of it (the reader's only goal here) would act on one keypoint
+    scene = view(unresolved={"lower": "none found", "top": "none found"}, two_cubes=(0.5, 0.0, 0.04))
+    result = RulesPlanner().plan(PlanRequest("swap the two cubes around so the lower one ends up on top", scene))
+    assert not result.ok
+    assert "'two cubes' as if it were one thing" in result.error

@@ -166,6 +166,9 @@ def left_alone(phrase: str, instruction: str) -> bool:
     return False
 
 
+# A phrase that counts several things ("two cubes", "both blocks"): no one keypoint stands for it.
+_COUNTED = re.compile(r"(?:the )?(?:two|three|four|five|both|all|several|many|some|each|every)\b")
+
 # Kinds of carrying, one kind of doing to `said_actions`: "pick up X and drop it in Y" is a put.
 _CARRY = frozenset(["pick", "put", "stack", "sort"])
 
@@ -240,6 +243,9 @@ def read(request: PlanRequest, planner: RulesPlanner) -> tuple[list[dict], list[
         return f"its best guess, {text!r}, does not do what the sentence's verbs say ({', '.join(sorted(verbs))})"
     if verbs & _PLACED and not done - {"pick"}:  # "pick up the cube and put it on the other one": not a pick alone
         return f"its best guess, {text!r}, puts nothing anywhere, and the sentence says to put something"
+    counted = [p for c in goals[k][0].clauses for p in (c.obj, c.target, c.source) if p and _COUNTED.match(p)]
+    if counted:  # "swap the two cubes around ...": a step on one thing cannot act on a count of them
+        return f"its best guess, {text!r}, acts on {counted[0]!r} as if it were one thing"
     left = _unused(goals[k][0].clauses, list(request.scene.keypoints), request.instruction)
     if left:  # a part of the request no step would carry out: never a partial plan
         return f"its best guess, {text!r}, leaves out {', '.join(map(repr, left))}"
