@@ -199,3 +199,82 @@ def test_a_thing_ruled_out_before_a_dash_is_no_apposition():
     assert read("not the one on the shelf - the mug by the kettle, onto the tray") == [
         "put obj=mug by kettle relation=on target=tray"
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "clauses"),
+    [
+        # "(hmm) ok, so" before the request; the place it is now, ruled out with "instead of"
+        (
+            "hmm ok, so all those little yellow beads should end up in the bowl instead of the mug",
+            ["pour obj=little yellow beads target=bowl source=little yellow beads"],
+        ),
+        # a holder wished open with a thing lying in it
+        (
+            "when you're done the box should be open with the pear sitting in it",
+            ["open obj=box", "put obj=pear relation=in"],
+        ),
+        ("i'd like the fridge open with the milk inside it", ["open obj=fridge", "put obj=milk relation=in"]),
+        # "when that's stable, ..." is "then"; "on top" before "so"
+        (
+            "put the green cube on the yellow cube. when that's stable, add the blue cube on top so it makes a tower",
+            ["put obj=green cube relation=on target=yellow cube", "put obj=blue cube relation=on target=green cube"],
+        ),
+        # ruled out by an extreme; the one meant said by where it is; the verb left out before the place
+        (
+            "not the mug furthest from you, the other one, move it onto the tray",
+            ["mention obj=mug not farthest", "put obj=mug not farthest relation=on target=tray"],
+        ),
+        (
+            "not the mug over by the kettle, the one on the shelf, put it on the tray",
+            ["mention obj=mug on shelf", "put obj=mug on shelf relation=on target=tray"],
+        ),
+        (
+            "not the mug on the shelf, the other one, onto the tray please",
+            ["mention obj=mug on shelf", "put obj=mug not on shelf relation=on target=tray"],
+        ),
+        # "already"; "the one resting on ..."
+        (
+            "the mug that is not already on the shelf, put that one on the tray",
+            ["mention obj=mug not on shelf", "put obj=mug not on shelf relation=on target=tray"],
+        ),
+        (
+            "leave the mug on the shelf alone; move the one resting on the box onto the tray",
+            ["mention obj=mug on shelf", "put obj=mug on box relation=on target=tray"],
+        ),
+        # a thing left where it is, then "the one" of its kind
+        (
+            "leave the mug on the shelf; take the one in the box and put it on the tray",
+            ["mention obj=mug on shelf", "pick obj=mug in box", "put obj=mug in box relation=on target=tray"],
+        ),
+        # "only the ..."; everything else left; a cleft with the wish
+        (
+            "leave the cup alone; only the mug goes on the tray",
+            ["mention obj=cup", "put obj=mug relation=on target=tray"],
+        ),
+        (
+            "leave everything else on the table and put only the pear in the pot",
+            ["put obj=pear relation=in target=pot"],
+        ),
+        (
+            "leave the apple, it's the pear i want in the pot",
+            ["mention obj=apple", "put obj=pear relation=in target=pot"],
+        ),
+    ],
+)
+def test_round29_read_probe38_wording_reads_as_its_plain_form(text, clauses):
+    assert read(text) == clauses
+
+
+def test_instead_of_before_more_steps_keeps_them():
+    assert (
+        read("grab the jam instead of the honey and put it in the crate")[-1] == "put obj=jam relation=in target=crate"
+    )
+
+
+@pytest.mark.parametrize("text", ["put the green cube on the yellow cube, then add the blue cube on top"])
+def test_a_remark_of_an_occasion_includes_a_run(text):
+    # "the next run" is an occasion like "the next trial"
+    kept = [k for k, _ in trailing_remarks("slide the cube into the square, for the next run", ["cube", "square"])]
+    assert "slide the cube into the square" in kept
+    assert read(text)[-1] == "put obj=blue cube relation=on target=green cube"

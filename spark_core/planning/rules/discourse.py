@@ -433,6 +433,19 @@ def _cleft(text: str) -> str:
         r"\1 ",
         text,
     )
+    # "it's the salad dressing i want in the basket": the wish itself
+    text = re.sub(
+        rf"\bit(?:'s| is) ((?:{_DET} )?{_NP}) (?:that |which )?(i|we) (want|need|would like|'d like) ",
+        r"\2 \3 \1 ",
+        text,
+    )
+    # "not the bowl in the middle, the other one, onto the plate please": the verb left out before the place
+    text = re.sub(
+        r"^(not (?:the|a|an) [^,]+),\s*(the other (?:one|[a-z]+)),\s*"
+        r"(?=(?:onto|into|on to|on top of|in|on) (?:the|a|an)\b)",
+        r"\1, put \2 ",
+        text,
+    )
     # "ketchup in the basket is what i'm after": the goal, then that it is what is wanted
     text = re.sub(
         r"^([a-z][a-z' ]+?) (?:is|are) (?:what (?:i|we)(?: am|'m| are|'re) after|"
@@ -517,7 +530,7 @@ def _on_top_of_last(text: str) -> str:
     )
     m = re.search(
         r"\b(?:put|place|set|add|stack|pop|drop|lay|goes|go|sits|belongs)\b[^.;,]*? on top"
-        r"(?= *(?:$|[.,;!]|and\b|then\b))",
+        r"(?= *(?:$|[.,;!]|and\b|then\b|so\b))",
         text,
     )
     if not m or not re.search(r"\b(?:on|onto|on top of) (?:the|a|an)\b", text[: m.start()]):
@@ -630,7 +643,7 @@ def _restated_one(text: str) -> str:
         return m.group(0)
 
     return re.sub(
-        rf"\b(the|a|an) ([a-z' ]+?)\s*,\s*the ((?:[a-z]+ )?)(?:one|{'|'.join(_GENERAL_NOUNS)})\b([^,;]*),\s*"
+        rf"\b(the|a|an) ([a-z' ]+?)\s*,\s*the (?!other\b)((?:[a-z]+ )?)(?:one|{'|'.join(_GENERAL_NOUNS)})\b([^,;]*),\s*"
         rf"(?=(?:and|then|{_PLACE_PREPS})\b)",
         said,
         text,

@@ -307,6 +307,8 @@ def negations(text: str) -> str:
     "the non-blue block" / "the block that is not the blue one" / "leave the bowl on the cabinet alone and put the
     other bowl on the plate"; then a side or an extreme after "not" as its qualifier ("not on the left" -> "not
     leftmost")."""
+    # "the bowl over by the cookies": "over" only says it is some way off
+    text = re.sub(r"\b(?:over|up|down|back) (?=(?:by|near|next to|beside)\b)", "", text)
     text = _corrections(text)
     # "all but the blue block", "everything except the bowl on the stove": a quantifier with its exception names the
     # rest of the exception's kind, ruled out by the exception's own words (or where it is, when a destination
@@ -330,6 +332,15 @@ def negations(text: str) -> str:
         _left_alone,
         text,
     )
+    # "leave the bowl on top of the cabinet; take the one in the top drawer ...": the one left where it is, only
+    # said (not put there), and "the one" after it is of its kind
+    text = re.sub(
+        rf"^(?:leave|ignore|skip|forget) (the {NP} (?:on|in|inside|on top of|next to|by|near|beside|at) [^,;.]+?)"
+        rf"(?: alone| be| where it is| in place| as it is)?\s*[;.]\s*(?=(?:and |but |then )?(?:just |only )?"
+        rf"(?:\w+(?: up)? )?the one\b)",
+        r"there is \1. ",
+        text,
+    )
     # "leave the bowl on the cabinet alone and put the other bowl ...": the one left alone is ruled out
     text = re.sub(
         rf"^(?:leave|ignore|skip|do not touch|do not move|forget|never mind) the ({NP}) ([^,;.]+?)"
@@ -347,7 +358,7 @@ def negations(text: str) -> str:
     # "not the bowl in the middle, the other one by the plate": the other one picked out by where it is, which says
     # which on its own
     text = re.sub(
-        rf"^not the ({NP})(?: [^,:;]+?)?(?: ones?)?\s*[,:;]\s*(?:but |rather )?the other (?:one|{NP}) "
+        rf"^not the ({NP})(?: [^,:;]+?)?(?: ones?)?\s*[,:;]\s*(?:but |rather )?the (?:other )?(?:one|{NP}) (?:over )?"
         rf"((?:by|near|next to|beside|on|in|at|under|behind|in front of) (?:the|a|an) [^,:;.!]+)",
         r"the \1 \2",
         text,
@@ -545,9 +556,12 @@ def _ruled_out(what: str) -> str:
 
 def _ruled_out_noun(noun: str, rest: str) -> str:
     """ "not the blue block" -> "the block not blue"; "not the bowl on the stove" -> "the bowl not on the stove"."""
+    words = noun.split()
+    if len(words) > 1 and words[-1] in EXTREMES:  # "not the black bowl closest to you": the extreme rules it out
+        noun, rest = " ".join(words[:-1]), f"{words[-1]} {rest}".strip()
+        words = words[:-1]
     if rest:
         return f"the {noun} not {_ruled_out(rest)}"
-    words = noun.split()
     if len(words) > 1:
         return f"the {words[-1]} not {' '.join(words[:-1])}"
     return f"the other {noun}"  # "not the bowl, the other one": nothing rules it out

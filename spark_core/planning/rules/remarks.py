@@ -22,6 +22,7 @@ from .things import NOT_THINGS, names_a_thing
 _OCCASIONS = frozenset(
     ["dinner", "lunch", "breakfast", "supper", "meal", "party", "guests", "test", "trial", "experiment", "demo"]
     + ["episode", "session", "shift", "day", "night", "morning", "evening", "week", "weekend", "tonight", "later"]
+    + ["run", "attempt", "batch", "rollout"]
 )
 # Words that name no thing of the scene, whatever the lexicon says.
 _SELVES = frozenset(

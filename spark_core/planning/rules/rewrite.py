@@ -187,6 +187,41 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(r",?\s+instead\s*(?=[.!]?$)", "", text)
     # "goes up on top of the cabinet", "ought to be up on the shelf": "up" says only that the place is high
     text = re.sub(r"\b(goes|go|be|is|are|sits|sit|belongs|belong) up (?=(?:on top of|onto|on to|on)\b)", r"\1 ", text)
+    # "... in the bowl instead of the mug": the place it is now, ruled out, no place of the goal's
+    text = re.sub(
+        r",?\s+(?:instead of|rather than) (?:the|a|an|that) (?:(?!(?:and|then|in|on|into|onto|to|it)\b)[a-z]+ ?){1,3}"
+        r"\s*(?=[.!]?$)",
+        "",
+        text,
+    )
+    # "when that's steady, add ...": the step before is done, then the next
+    text = re.sub(
+        r"(^|[.;]\s+)(?:when|once|after) (?:that|it|this|they)(?: is| has| are|'s)? "
+        r"(?:steady|stable|done|finished|in place|settled|there|placed|down|balanced|secure)\s*,?\s*",
+        r"\1then ",
+        text,
+    )
+    # "the bowl that is not already beside the plate": "already" says it is so now, no word of where
+    text = re.sub(
+        r"\balready (?=(?:on|in|inside|beside|next to|by|near|at|sitting|resting|on top of|there)\b)", "", text
+    )
+    # "the one resting on the cookies": where "one" is, said by how it lies
+    text = re.sub(
+        r"\b(one|ones) (?:that is |which is |that's )?(?:resting|sitting|lying|standing|placed|perched|parked) "
+        r"(?=(?:on|in|at|by|near|next to|beside|inside|on top of)\b)",
+        r"\1 ",
+        text,
+    )
+    # "only the plate goes ...", "put only the butter in ...": "only" says nothing else goes
+    text = re.sub(r"\bonly (?=(?:the|a|an)\b)", "", text)
+    # "leave everything else on the table and ...": the rest stays, no step
+    text = re.sub(
+        r"(^|[.;]\s+)(?:leave|keep) (?:everything|anything|all|the rest)(?: else)?"
+        r"(?: (?:on the table|where it is|where they are|alone|as it is|as they are|in place|untouched|be))?"
+        r"\s*(?:,|;|\.|\band\b)\s*",
+        r"\1",
+        text,
+    )
     # a wish said as a condition ("it would be great if the stove were on"): the state wished for
     text = re.sub(
         r"^it (?:would|will|'d) be (?:great|nice|good|lovely|ideal|perfect|awesome|brilliant|helpful) if "
@@ -250,6 +285,8 @@ def sentences(instruction: str) -> list[str]:
         "",
         text,
     )
+    # "(hmm) ok, so the beads should ...": a turn-taking "ok, so" before the request
+    text = re.sub(r"^(?:ok|okay|alright|right)(?:,)? so\b,?\s*", "", text)
     for said, plainly in _SPOKEN_PLAINLY + _HOW_PLAINLY:
         text = re.sub(said, plainly, text)
     text = _apposed_look(text)
@@ -777,9 +814,11 @@ def sentences(instruction: str) -> list[str]:
     text = _thing_then_place(text)
     # "top drawer open with the cream cheese inside": the drawer opened, then the thing put in it
     text = re.sub(
-        r"^(?:the )?((?:[a-z]+ ){0,2}(?:drawer|cabinet|box|cupboard|microwave|fridge)(?: of the [a-z ]+?)?) "
-        r"(?:(?:should|must|needs? to|has to) be |is )?(?:open|opened|pulled out),? "
-        r"with ((?:the|a|an) [a-z ]+?) (?:inside|in it|inside it|in there|in)\s*[.!]?$",
+        r"^(?:(?:i want|i need|i would like|we want|we need) )?(?:the )?"
+        r"((?:[a-z]+ ){0,2}(?:drawer|cabinet|box|cupboard|microwave|fridge)(?: of the [a-z ]+?)?) "
+        r"(?:(?:should|must|needs? to|has to) be |is |to be )?(?:open|opened|pulled out),? "
+        r"with ((?:the|a|an) [a-z ]+?) (?:(?:sitting|resting|lying|placed|put|stowed|tucked) )?"
+        r"(?:inside|in it|inside it|in there|in)\s*[.!]?$",
         r"open the \1 and put \2 inside",
         text,
     )
