@@ -278,3 +278,14 @@ def test_a_remark_of_an_occasion_includes_a_run(text):
     kept = [k for k, _ in trailing_remarks("slide the cube into the square, for the next run", ["cube", "square"])]
     assert "slide the cube into the square" in kept
     assert read(text)[-1] == "put obj=blue cube relation=on target=green cube"
+
+
+def test_the_one_sitting_on_after_a_thing_said_to_be_it_keeps_its_words():
+    # "the tray's the one sitting on the box" says which tray, not where a "one" rests: left as the dev corpus read it
+    from spark_core.planning.rules.rewrite import imperatives
+
+    assert (
+        "the one sitting on the box"
+        in imperatives("put the mug onto the tray (the tray's the one sitting on the box)")[0]
+    )
+    assert "the one on the box" in imperatives("move the one resting on the box onto the tray")[0]

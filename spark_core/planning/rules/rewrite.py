@@ -207,7 +207,9 @@ def sentences(instruction: str) -> list[str]:
     )
     # "the one resting on the cookies": where "one" is, said by how it lies
     text = re.sub(
-        r"\b(one|ones) (?:that is |which is |that's )?(?:resting|sitting|lying|standing|placed|perched|parked) "
+        # (not "the plate's the one sitting on the box", which says which plate)
+        r"(?<!\bis the )(?<!'s the )\b(one|ones) (?:that is |which is |that's )?"
+        r"(?:resting|sitting|lying|standing|placed|perched|parked) "
         r"(?=(?:on|in|at|by|near|next to|beside|inside|on top of)\b)",
         r"\1 ",
         text,
