@@ -566,7 +566,6 @@ def sentences(instruction: str) -> list[str]:
     )
     # a remark that opens a turn in a conversation ("ok next one:", "alright,", "right then:")
     text = re.sub(r"^(?:ok|okay|alright|all right|right|so|now)(?: then)?(?:,? next(?: one)?)?\s*[:,]\s*", "", text)
-    text = re.sub(r"^(?:ok|okay|alright|right)(?:,)? so\b,?\s*", "", text)  # "ok so there's a bowl ..."
     # the goal said by what is wanted at the end ("what i want at the end: ...")
     text = re.sub(r"^(?:what|all) (?:i|we) (?:want|need)(?: at the end| in the end| to see)?\s*[:,]\s*", "", text)
     # "the cabinet top is where the plate goes", "the bowl closer to you is the one for the plate": a place named
@@ -1614,7 +1613,7 @@ def _predicate(subject: str, predicate: str) -> str | None:
     if action == "put" and (
         _head(subject) in CONTENTS
         or re.search(r"'s? (?:contents?|beads)$", subject)
-        or re.match(rf"{CONTENTS_SAID}(?:contents?|beads|liquid|water) (?:from|in|of|out of) ", subject)
+        or re.match(rf"{CONTENTS_SAID}(?:{'|'.join(CONTENTS)}) (?:from|in|of|out of) ", subject)
     ):
         action = "pour"
     if not predicate or not _DESTINATION.match(predicate) and action in ("put", "stack", "pour"):
