@@ -97,7 +97,9 @@ def observe(instruction: str, resolver: Resolver, extra: Sequence[str] = ()) -> 
     inventory = tuple(listing()) if listing else ()
     # slips of the keyboard ("the stvoe") read as the words they miss, as the rules planner reads them
     instruction = restructured(corrected(instruction, inventory))  # as the rules planner reads it
-    for phrase in dict.fromkeys([*phrases_for(instruction), *extra]):
+    # and every thing the sentence names by a noun, read by its words alone (rules/chunks.py): when the rules'
+    # phrases are misread ("red block goes in green tray"), the learned reader ranks goals over these
+    for phrase in dict.fromkeys([*phrases_for(instruction), *extra, *noun_chunks(instruction)]):
         try:
             keypoints[phrase] = resolver.resolve(phrase)
         except LabelNotFound:

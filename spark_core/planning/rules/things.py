@@ -29,12 +29,19 @@ NOT_THINGS = frozenset(
 )
 
 
+# Things the lexicon knows only as another part of speech ("pan" only as a verb): without this, "put the bowl on
+# the pan" would read "pan" as a word that names nothing, not as a thing the scene lacks.
+NOUNS_IT_MISSES = frozenset(["pan", "pans"])
+
+
 @lru_cache(maxsize=4096)
 def is_thing(word: str) -> bool:
     """True unless `word` is a place/manner noun or, by the lexicon, no noun at all."""
     w = word.lower().strip()
     if not w.isalpha() or w in NOT_THINGS:
         return False
+    if w in NOUNS_IT_MISSES:
+        return True
     pos = getAllLemmas(w)
     if not pos:
         return True  # unknown to the lexicon: a name, refuse rather than ignore it
