@@ -97,13 +97,21 @@ def observe(instruction: str, resolver: Resolver, extra: Sequence[str] = ()) -> 
     inventory = tuple(listing()) if listing else ()
     # slips of the keyboard ("the stvoe") read as the words they miss, as the rules planner reads them
     instruction = restructured(corrected(instruction, inventory))  # as the rules planner reads it
-    # and every thing the sentence names by a noun, read by its words alone (rules/chunks.py): when the rules'
-    # phrases are misread ("red block goes in green tray"), the learned reader ranks goals over these
-    for phrase in dict.fromkeys([*phrases_for(instruction), *extra, *noun_chunks(instruction)]):
+    looked_for = dict.fromkeys([*phrases_for(instruction), *extra])
+    for phrase in looked_for:
         try:
             keypoints[phrase] = resolver.resolve(phrase)
         except LabelNotFound:
             unresolved[phrase] = _why_unresolved(resolver, phrase)
+    # every thing the sentence names by a noun, read by its words alone (rules/chunks.py), kept when found: when the
+    # rules' phrases are misread ("red block goes in green tray"), the learned reader ranks goals over these. One
+    # not found adds nothing: the rules' own phrases hold its words, and those already say what is missing.
+    for phrase in noun_chunks(instruction):
+        if phrase not in looked_for:
+            try:
+                keypoints[phrase] = resolver.resolve(phrase)
+            except LabelNotFound:
+                pass
     summary = summarise(keypoints) if keypoints else "perception found none of the objects mentioned"
     return SceneView(keypoints, summary, unresolved=unresolved, inventory=inventory)
 
