@@ -7,6 +7,7 @@ action needs, e.g. a drawer's handle) is handed to perception, and only what per
 from __future__ import annotations
 
 from collections.abc import Sequence
+from contextlib import suppress
 from typing import Any
 
 from ..perception import Keypoint, LabelNotFound
@@ -108,10 +109,8 @@ def observe(instruction: str, resolver: Resolver, extra: Sequence[str] = ()) -> 
     # not found adds nothing: the rules' own phrases hold its words, and those already say what is missing.
     for phrase in noun_chunks(instruction):
         if phrase not in looked_for:
-            try:
+            with suppress(LabelNotFound):
                 keypoints[phrase] = resolver.resolve(phrase)
-            except LabelNotFound:
-                pass
     summary = summarise(keypoints) if keypoints else "perception found none of the objects mentioned"
     return SceneView(keypoints, summary, unresolved=unresolved, inventory=inventory)
 
