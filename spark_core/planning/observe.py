@@ -7,7 +7,6 @@ action needs, e.g. a drawer's handle) is handed to perception, and only what per
 from __future__ import annotations
 
 from collections.abc import Sequence
-from contextlib import suppress
 from typing import Any
 
 from ..perception import Keypoint, LabelNotFound
@@ -98,19 +97,11 @@ def observe(instruction: str, resolver: Resolver, extra: Sequence[str] = ()) -> 
     inventory = tuple(listing()) if listing else ()
     # slips of the keyboard ("the stvoe") read as the words they miss, as the rules planner reads them
     instruction = restructured(corrected(instruction, inventory))  # as the rules planner reads it
-    looked_for = dict.fromkeys([*phrases_for(instruction), *extra])
-    for phrase in looked_for:
+    for phrase in dict.fromkeys([*phrases_for(instruction), *extra]):
         try:
             keypoints[phrase] = resolver.resolve(phrase)
         except LabelNotFound:
             unresolved[phrase] = _why_unresolved(resolver, phrase)
-    # every thing the sentence names by a noun, read by its words alone (rules/chunks.py), kept when found: when the
-    # rules' phrases are misread ("red block goes in green tray"), the learned reader ranks goals over these. One
-    # not found adds nothing: the rules' own phrases hold its words, and those already say what is missing.
-    for phrase in noun_chunks(instruction):
-        if phrase not in looked_for:
-            with suppress(LabelNotFound):
-                keypoints[phrase] = resolver.resolve(phrase)
     summary = summarise(keypoints) if keypoints else "perception found none of the objects mentioned"
     return SceneView(keypoints, summary, unresolved=unresolved, inventory=inventory)
 

@@ -1,10 +1,8 @@
 """Noun phrases by their words alone: what observe looks for when no reading of a sentence gives it anything."""
 
-import numpy as np
 import pytest
 
-from spark_core.perception import Keypoint, LabelNotFound
-from spark_core.planning.observe import observe, phrases_for
+from spark_core.planning.observe import phrases_for
 from spark_core.planning.rules.chunks import noun_chunks
 
 
@@ -26,25 +24,3 @@ def test_each_thing_is_named_with_the_words_before_it_in_the_singular(text, chun
 
 def test_a_sentence_no_reading_looks_into_has_its_noun_phrases_looked_for():
     assert phrases_for("what about the bowl on the plate") == ["bowl", "plate"]
-
-
-class _Finder:
-    """A resolver that finds a thing by its exact name and remembers what it was asked for."""
-
-    def __init__(self, names: set[str]):
-        self.names = names
-        self.asked: list[str] = []
-
-    def resolve(self, label: str) -> Keypoint:
-        self.asked.append(label)
-        if label not in self.names:
-            raise LabelNotFound(label)
-        return Keypoint(label, np.zeros(3), np.full(3, 0.05))
-
-
-def test_observe_also_looks_for_every_thing_the_sentence_names_by_a_noun():
-    # the rules read "bowl time" as one phrase; the bowl is still looked for, on its own
-    finder = _Finder({"red block", "bowl"})
-    seen = observe("grab red block, bowl time", finder)
-    assert "bowl" in finder.asked and "bowl" in seen.keypoints and "bowl time" in seen.unresolved
-    assert len(finder.asked) == len(set(finder.asked))  # each phrase once

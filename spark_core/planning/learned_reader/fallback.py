@@ -61,15 +61,14 @@ _VERB_BEFORE = frozenset(
 )
 
 
-def misread(phrase: str, known: set[str], heads: frozenset[str] = frozenset()) -> bool:
+def misread(phrase: str, known: set[str]) -> bool:
     """A phrase perception found nothing for that names no thing of its own: every word is a word of what
     perception found, a word that names nothing, no noun, or a word that may be a verb said right after a word
     that only a verb follows ("do not touch red block", "dont touch"). A phrase with a
     noun perception found nothing for ("banana", "red ball", "pot handle", "the box") is not misread: that thing
     is absent. Words that only place a thing ("table", "front", "you", `mentions.PLACE_WORDS`) and the participles
     that say where it lies ("sitting", "lying") name nothing to look for either: "table in front of you grey stove
-    sitting" is a misreading of a found "grey stove". A word that may be a verb right after `heads` (the names of
-    things perception found: "block" of "red block") is that thing's verb: "red block goes in green tray"."""
+    sitting" is a misreading of a found "grey stove"."""
     words = phrase.split()
     # a phrase ending in a word of description, not a thing ("look nicer"): its words before may be verbs
     described = words[-1] not in _NAMES_NOTHING and not _may_be_thing(words[-1])
@@ -78,7 +77,7 @@ def misread(phrase: str, known: set[str], heads: frozenset[str] = frozenset()) -
         w = words[i]
         if w in known or w in _NAMES_NOTHING or w in PLACE_WORDS or w in PARTICIPLES or not _may_be_thing(w):
             return True
-        return is_verb(w) and (described or (bool(i) and (words[i - 1] in _VERB_BEFORE or words[i - 1] in heads)))
+        return is_verb(w) and (described or (bool(i) and words[i - 1] in _VERB_BEFORE))
 
     return all(placed(i) for i in range(len(words)))
 
@@ -115,9 +114,8 @@ def may_read(error: str | None, request: PlanRequest) -> bool:
     # words of what perception found for the sentence, not of all the scene holds: the reader ranks goals over the
     # found phrases only, so a thing said in a misreading ("plate but") that was not found would be planned around
     known = {w for p in found for w in re.findall(r"[a-z]+", p.lower())}
-    heads = frozenset(p.split()[-1] for p in found)
     for phrase, why in scene.unresolved.items():
-        if not (_named_precisely(phrase, found) if why.startswith("several") else misread(phrase, known, heads)):
+        if not (_named_precisely(phrase, found) if why.startswith("several") else misread(phrase, known)):
             return False
     if which is not None and not _named_precisely(which.group(1) or which.group(2), found):
         return False
