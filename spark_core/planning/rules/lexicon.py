@@ -138,7 +138,13 @@ SPEAKERS_REASON = (
     r"(?:i )?(?:just |only )?(?:want|wanna|need|would like) to (?:see|check|test|know|verify|find out)\b|"
     r"(?:we|i) (?:have|have got) (?:a|an|some|guests|visitors|company)\b|"
     # a worry about the thing ("..., since the carton might tip over")
-    r"(?:since|because|as) the \w+(?: \w+)? (?:might|could|may|can|tends to|is likely to|will probably)\b"
+    r"(?:since|because|as) the \w+(?: \w+)? (?:might|could|may|can|tends to|is likely to|will probably)\b|"
+    # what the speakers are up to, or what happens if it is not done ("..., we're packing for a picnic",
+    # "..., otherwise somebody will knock it over")
+    # (not when a step may follow: "..., we are packing for lunch and the banana too" still asks for the banana)
+    r"(?:we|i) (?:are|am) (?:[a-z]+ing) (?:for|to|out|away|up|later|tonight|tomorrow|soon|now|a|an|some)\b"
+    r"(?![^,]*\b(?:and|then|also|too|plus)\b)|"
+    r"otherwise\b|or else\b"
 )
 # Words and phrases that carry no action. ("then" is not one: it separates clauses.)
 FILLERS = (
@@ -167,6 +173,8 @@ FILLERS = (
     "will you be able to",
     "would you",
     "will you",
+    # asking leave to ask ("could I trouble you to switch the stove on")
+    *(f"{m} i {v} you to" for m in ("could", "can", "may", "might") for v in ("trouble", "bother", "ask", "get")),
     "i want you to",
     "i need you to",
     "i would like you to",

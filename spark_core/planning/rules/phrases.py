@@ -73,10 +73,12 @@ def strip_determiners(words: str) -> str:
 
 def possessive(text: str) -> str:
     """ "cabinet's top drawer" -> "cabinet top drawer"; "plate's centre" -> "plate"; "mug's beads" -> "mug"; "its
-    beads" -> "it" (the thing named before)."""
-    own = re.fullmatch(r"(?:its|their) (.+)", text)
-    if own and (own.group(1) in SELF_PARTS or own.group(1) in CONTENTS):
+    beads" -> "it" (the thing named before); "its rack" -> "rack" (a thing of its own, not a part of it)."""
+    own = re.fullmatch(r"(its|their|his|her|our) (.+)", text)
+    if own and (own.group(2) in SELF_PARTS or own.group(2) in CONTENTS):
         return "it"
+    if own and own.group(2).split()[-1] not in PARTS | PACKAGING and own.group(1) in ("its", "their"):
+        return own.group(2)  # "back on its rack": the rack it belongs on, said as the thing's own
     m = re.search(r"\b([\w ]+?)'s? (.+)$", text)
     if not m:
         return text
@@ -89,7 +91,14 @@ def possessive(text: str) -> str:
 
 
 def comparative(text: str) -> str:
-    """ "farther of two black bowls" -> "farthest black bowl"; "bowl nearer to the robot" -> "nearest bowl"."""
+    """ "farther of two black bowls" -> "farthest black bowl"; "bowl nearer to the robot" -> "nearest bowl"; "thing
+    that is closest to you" -> "nearest thing"."""
+    text = re.sub(
+        r"^(.+?) (?:(?:that|which) )?(?:is|are|sits|stands|lies) (?=(?:nearer|closer|nearest|closest|farther|further|"
+        r"farthest|furthest) (?:to|from) )",
+        r"\1 ",
+        text,
+    )
     m = re.fullmatch(r"(\w+) of (?:the )?(?:two|three|both|all) (.+)", text)
     if m and m.group(1) in COMPARATIVES:
         return f"{COMPARATIVES[m.group(1)]} {' '.join(singular(w) for w in m.group(2).split())}"
@@ -127,7 +136,10 @@ def locator(text: str) -> str:
     # bowl on the table" (another is up on something) the lowest; "off"/"from" the table only says where it is
     table = r"(?:the )?(?:table|tabletop|table top|counter)\b(?!\s+(?:center|centre|middle))"
     text = re.sub(rf"\bnot (?:on|at) {table}", "not bottom", text)
-    text = re.sub(rf"^(.+?) (?:on|at) {table}$", r"bottom \1", text)
+    on_table = re.fullmatch(rf"(.+?) (?:on|at) {table}", text)
+    if on_table:  # "the item furthest back on the table": the extreme one already says which
+        held = on_table.group(1)
+        text = held if re.search(r"\b(?:\w+most|nearest|closest|farthest|furthest)\b", held) else f"bottom {held}"
     text = _TABLE_TAIL.sub("", text)
     # "from" before a place preposition only marks the source: the preposition says where it is
     text = re.sub(r"\bfrom (?=(?:between|inside|in|under|beside|next to|on top of)\b)", "", text)

@@ -7,7 +7,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
-from lemminflect import getLemma
+from lemminflect import getAllLemmas, getLemma
 
 from .lexicon import (
     CONTAINERS,
@@ -153,6 +153,8 @@ _TRAILING = re.compile(
     r"(?:(?:the )?(?:right|correct) (?:side|way) up|upside down|upright)(?=\s*$)|that (?:is|will be|should be) "
     r"(?:all|it|everything|the (?:goal|plan|idea|task|job|aim))|that is all|thanks?(?: you)?)\b.*$"
 )
+# Words said of small contents ("some little beads"): what they are is still the contents.
+_SMALL = r"(?:(?:little|tiny|small|loose|few|coloured|colored|glass|plastic) )*"
 # Surfaces said as a verb ("plate the bowl": put it on the plate).
 _SURFACES = ("plate", "saucer", "shelf", "rack")
 # Where to grip it is no object and no place: "pick up the mug by its handle" picks up the mug.
@@ -334,7 +336,9 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(r"\bteh\b", "the", text)
     text = re.sub(r"\bontop\b", "on top", text)
     text = re.sub(r"^id (like|love|want)\b", r"i would \1", text)
-    text = re.sub(r"\bi would (like|love)\b(?! you to)", r"i want", text)
+    text = re.sub(
+        r"\bi would (like|love)\b(?! you to)|\bi would (?:appreciate|prefer)\b(?! it\b| you\b)", r"i want", text
+    )
     # the speaker as "we" ("we need the ketchup in the basket"): the same wish
     text = re.sub(
         r"\bwe (?:want|need|would like|would love)\b(?= (?:the|a|an|it|them|both|all|every|each)\b)", "i want", text
@@ -579,7 +583,9 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(
         r"^((?:the|a|an) .+?) is (?:(?:the one|what|the \w+(?: \w+)?) (?:that |which )?(?:i|we) (?:want|need|"
         r"would like|'d like)(?: to go| moved| put| placed| set)? (?:on|in|into|onto|to|on top of)|"
-        r"the one (?:for|to go (?:on|in|into|onto|to))) (the .+)$",
+        r"the one (?:for|to go (?:on|in|into|onto|to)|"
+        r"(?:that |which )?(?:goes|belongs|should go|needs to go|has to go) (?:on|in|into|onto|to|on top of)))"
+        r" (the .+)$",
         r"put \1 to \2",
         text,
     )
@@ -638,6 +644,13 @@ def sentences(instruction: str) -> list[str]:
         r"(^|\bto |\byou )have "
         r"(?=(?:the|a|an) (?:(?!and\b)[\w]+ )+(?:sitting|resting|standing|lying|placed|put|set|moved)\b)",
         r"\1i want ",
+        text,
+    )
+    # "i'd appreciate the dressing going into the basket": where it goes, said as it going there
+    text = re.sub(
+        r"\bi want ((?:the|a|an) [\w ]+?) (?:going|getting put|being put|ending up) "
+        r"(?=(?:into|onto|in|on|inside|on top of|to) (?:the|a|an)\b)",
+        r"i want \1 ",
         text,
     )
     # "what i want is the cup on the saucer" (a cleft), "i want to see the cup on the saucer": the wish itself
@@ -1097,6 +1110,18 @@ _SAID_PLAINLY: tuple[tuple[str, str], ...] = (
     ),
     # "get the beads out of the mug and into the bowl": a source and a destination in one breath
     (r"\bout of ((?:the|a|an) [\w ]+?),? and (into|in|onto|on|to|over) (?=(?:the|a|an) )", r"from \1 \2 "),
+    # "not the ketchup, the milk. that's what goes in the basket": the thing just named, where it goes
+    (
+        r"([.;!?] )(?:that|this)(?: one)? (?:is (?:what|the one(?: that| which)?) )?(?:goes|belongs|should go|"
+        r"needs to go|has to go|must go) (?=(?:in|into|on|onto|inside|on top of|to) )",
+        r"\1put it ",
+    ),
+    # "whatever is closest to you, put that in the basket": the one that is so, acted on
+    (
+        r"(^|[.;!?] )(?:whatever|whichever(?: one| thing| item)?) (?:is|sits|stands) ([\w ]+?),? "
+        r"(?:(?:just|then|go ahead and) )?(\w+) (?:that|it)\b",
+        r"\1\3 the thing that is \2",
+    ),
     # "open up the drawer": the particle adds nothing
     (r"\bopen up (?=(?:the|a|an|that|this) )", "open "),
     # "the ramekin has a bowl next to it - put that bowl ...": the thing named by where it is, then acted on
@@ -1273,7 +1298,10 @@ def _lemma_verb(word: str) -> str:
 
 
 def _give_a(m: re.Match) -> str:
-    return f"{m.group(2)} {m.group(1)}" if m.group(2) in _VERB_FORMS else m.group(0)
+    """ "give the plate a scrub" -> "scrub the plate"; "a good scouring": the noun said as its verb's -ing form."""
+    said = m.group(2)
+    verb = getLemma(said, upos="VERB")[0] if said.endswith("ing") else said
+    return f"{verb} {m.group(1)}" if verb in _VERB_FORMS else m.group(0)
 
 
 def _gerund(text: str) -> str:
@@ -1305,6 +1333,8 @@ def _purpose(text: str) -> str:
         text,
     )
     m = _PURPOSE.search(text)
+    while m and _intensifier(m):  # "if you would be so good, kindly ...": "so" says how good, not what for
+        m = _PURPOSE.search(text, m.end(1) - len(m.group(1)) + 1)
     if not m:
         return text
     main, purpose = text[: m.start()], m.group(1)
@@ -1331,6 +1361,31 @@ def _purpose(text: str) -> str:
             prep = "onto"
         return f"{main} {prep} {place.group(2)}"
     return main
+
+
+def _request_after_reason(text: str) -> str:
+    """ "we're clearing the table, so I'd like the plate on the cabinet": a reason that asks for nothing first, the
+    request after "so" (a purpose follows a request, never stands before it)."""
+    m = re.fullmatch(r"(.+?),? so (?!that\b)(.+)", text)
+    if not m or _intensifier(re.match(r".*", f" so {m.group(2)}") or m):
+        return text
+    main, request = m.groups()
+    subject = re.match(r"((?:the|a|an) [\w ]+?) (?:is|are|looks?|seems?)\b", main)
+    if subject and starts_with_verb(request) and re.search(r"\b(?:it|them)\b", request):
+        # "the drawer is open, so close it": what the reason says of a thing, then the request acting on it
+        return re.sub(r"\b(?:it|them)\b", subject.group(1), request, count=1)
+    if starts_with_verb(main) or _DESTINATION.search(main) or goal_to_action(main):
+        return text
+    if re.search(r"\b(?:it|them|that|this|these|those|one)\b", request):
+        return text  # the reason names what the request acts on
+    return request if starts_with_verb(request) or goal_to_action(request) else text
+
+
+def _intensifier(m: re.Match[str]) -> bool:
+    """ "so" before a word of degree that ends the phrase ("be so good, ...", "so kind as to", "so much of you"):
+    it says how much; no purpose follows."""
+    degree = re.match(r"(?:\s*,\s*|\s+)so (\w+)(?:\s*,|$| as\b| of you\b)", m.group(0))
+    return bool(degree) and bool({"ADJ", "ADV"} & set(getAllLemmas(degree.group(1)) if degree else ()))
 
 
 def _colon(left: str, right: str) -> list[str]:
@@ -1715,7 +1770,7 @@ def imperatives(instruction: str) -> list[str]:
             i < len(said) - 1 and bool(re.search(r"\b(?:it|them)\b", said[i + 1])) and starts_with_verb(said[i + 1])
         )
         s = re.sub(
-            r"^((?:the|a|an) [\w ]+?) (?:has|holds|contains|is full of) (?:some |the )?(?:"
+            rf"^((?:the|a|an) [\w ]+?) (?:has|holds|contains|is full of) (?:some |the )?{_SMALL}(?:"
             + "|".join(c for c in CONTENTS if c not in SUBSTANCES)
             + r")(?: in (?:it|there))?(?:\s*,\s*(?=\w)"
             + ("|$)" if acted_on else ")"),
@@ -1724,7 +1779,7 @@ def imperatives(instruction: str) -> list[str]:
         ).rstrip(", ")
         if acted_on:  # "there are beads in the mug. tip them out ...": the holder is what is named, then poured
             s = re.sub(
-                r"^there (?:are|is) (?:some |the |a few )?(?:"
+                rf"^there (?:are|is) (?:some |the |a few )?{_SMALL}(?:"
                 + "|".join(c for c in CONTENTS if c not in SUBSTANCES)
                 + r") (?:in|inside) ((?:the|a|an) [\w ]+)$",
                 r"there is \1",
@@ -1760,7 +1815,7 @@ def imperatives(instruction: str) -> list[str]:
         # "open the drawer, all the way out": how far, after the action
         if starts_with_verb(s):
             s = re.sub(r",\s*(?:all the way )?(?:out|open|shut|closed)\b(?:\s+if (?:you can|possible))?\s*$", "", s)
-        s = _TRAILING.sub("", _GRIP.sub("", _NOT_THERE.sub("", s)))
+        s = _TRAILING.sub("", _GRIP.sub("", _NOT_THERE.sub("", _request_after_reason(s))))
         # "red block up, in the gripper", "red cube up and still held": a thing lifted and held
         lifted = re.fullmatch(
             r"((?:the |a |an )?[\w ]+?) up,?\s*(?:and )?(?:(?:still|now|held|kept|safely) )*"
