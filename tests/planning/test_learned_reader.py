@@ -16,7 +16,7 @@ from tests.planning.scene_views import leaves, view
 SCENE = {"red_block": (0.5, 0.1, 0.02), "bowl": (0.5, -0.1, 0.03), "plate": (0.6, 0.0, 0.01)}
 SAID = {k: v for k, v in SCENE.items() if k != "plate"}  # what perception finds for the phrases of UNREAD
 # worded so that no rule reading plans them (checked below with the reader off)
-UNREAD = ["make the bowl hold the red block", "give the bowl the red block"]
+UNREAD = ["give the bowl the red block", "bowl wants red block"]
 
 
 def test_every_goal_names_only_phrases_perception_found():
@@ -146,8 +146,10 @@ def test_the_shipped_weights_are_the_last_layer_and_the_head_only():
 def test_training_reads_dev_files_only():
     names = {Path(p).name for p in DEV_FILES}
     assert "dev.yaml" in names
-    assert not any(n.startswith("test") or n == "probe22.yaml" for n in names)
-    assert described() == "the dev half and probes 14, 19 and 21"  # as the bench's protocol line names them
+    # never a test half, nor the probes kept as the reader's unseen checks (39, 40 when collected; 41 on) or read
+    # after collection (36-38)
+    assert not any(n.startswith("test") or n in {f"probe{k}.yaml" for k in range(36, 100)} for n in names)
+    assert described() == "the dev half and probes 14, 19 and 21-35"  # as the bench's protocol line names them
 
 
 @pytest.mark.parametrize(
@@ -200,8 +202,10 @@ def test_no_goal_puts_a_thing_back_on_what_its_own_phrase_says_it_stands_on():
     assert not any(t.startswith("put the bowl on cookie box") and t.endswith("the cookie box") for t in texts)
 
 
-def test_a_goal_on_a_counted_phrase_is_declined():
-    # "the two cubes" is several things: a pick of it (the reader's only goal here) would act on one keypoint
+def test_a_goal_on_a_counted_phrase_is_declined(monkeypatch):
+    # "the two cubes" is several things: a pick of it (the reader's only goal here) would act on one keypoint;
+    # declined however confident the weights are
+    monkeypatch.setattr(fallback, "THRESHOLD", 0.0)
     scene = view(unresolved={"lower": "none found", "top": "none found"}, two_cubes=(0.5, 0.0, 0.04))
     result = RulesPlanner().plan(PlanRequest("swap the two cubes around so the lower one ends up on top", scene))
     assert not result.ok

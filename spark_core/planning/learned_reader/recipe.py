@@ -5,11 +5,12 @@ from __future__ import annotations
 
 import re
 
-# The dev half and probe files already tuned on when the shipped weights were trained; never a test half, never
-# `probe22.yaml` (the reader's unseen check then) nor a probe written after it.
+# The dev half and probe files already tuned on when the shipped weights were trained (round 30); never a test
+# half, never a probe written after probe35 (probes 36-38 were read after the examples were collected; probes 39 and
+# 40 are the reader's unseen checks).
 DEV_FILES = (
     "data/wording/dev.yaml",
-    *(f"data/wording/probe{n}.yaml" for n in (14, 19, 21)),
+    *(f"data/wording/probe{n}.yaml" for n in (14, 19, *range(21, 36))),
 )
 
 
