@@ -734,11 +734,27 @@ def restructured(instruction: str) -> str:
     """The instruction said plainly and in the order its steps happen (see the module's docstring); the instruction
     itself when none of these applies."""
     text = re.sub(r"\s+", " ", instruction.strip().lower().replace("\u2019", "'"))
+    # "the right-hand bowl (of the two)": how many there are says nothing of which
+    out = re.sub(
+        r"\s*\(\s*of (?:the|those|these) (?:two|2|both)\s*\)|,? of the two(?=\s*(?:,|$|into|onto)\b)", "", text
+    )
+    # "pick up the block - not the blue one, the other one": the block that is not blue
+    out = re.sub(
+        r"\bthe ((?:\w+ )?\w+)\s*(?:,|-+)?\s*not the (\w+) one,? (?:but )?the other(?: one)?\b",
+        r"the \1 that is not \2",
+        out,
+    )
+    # "it's meant to go in the bowl": where it should go
+    out = re.sub(
+        r"\b(it|they)(?: is|'s| are|'re) (?:meant|supposed) to (?=go |be (?:in|on|inside|on top of)\b)",
+        r"\1 should ",
+        out,
+    )
     # a parenthesis that names the thing is an apposition between commas ("the smaller cube (the red one) on ...")
     out = re.sub(
         r"\s*\(\s*(the [a-z]+ ones?)\s*\)\s*(?=(\w)?)",
         lambda m: f", {m.group(1)}," + (" " if m.group(2) else ""),
-        text,
+        out,
     )
     # a parenthesis that rules a thing out is a contrast between commas ("the top drawer (not the middle one)")
     out = re.sub(

@@ -90,8 +90,8 @@ _TRAILING = re.compile(
     r"leave (?:the rest|everything else|the others?|all else|the [\w ]+? (?=where|as|alone|be\b))(?: of them)?"
     r"\s*(?:(?:where (?:it is|they are)|as (?:it is|they are)|alone|be))?\s*$|"
     # when or how fast, not what or where ("... when you get a chance", "... in one go", "..., nice and slow")
-    r"(?:(?:when|whenever) you (?:get|have|find) (?:a |the )?(?:chance|moment|minute|sec|second|time)|"
-    r"(?:when|whenever) you (?:can|are ready)|if (?:you can|possible)|asap|"
+    r"(?:(?:when|whenever) you (?:get|have got|have|find) (?:a |the )?(?:chance|moment|minute|sec|second|time)|"
+    r"(?:when|whenever) you (?:can|are ready)|if (?:you can|possible)|asap|no (?:rush|hurry)|"
     r"in (?:one|a single) (?:go|motion|move|movement|piece)|nice and (?:slow|easy|gentle|steady|gently|slowly))\s*$|"
     # what the speaker will do after ("..., i'll heat it later")
     r"(?:i|we) (?:will|shall|am going to|are going to|can) \w+ (?:it|them)(?: \w+)?$|"
@@ -165,7 +165,7 @@ _NOT_THERE = re.compile(
 )
 _PURPOSE = re.compile(r"(?:\s*,\s*|\s+)(?:so(?: that)?|in order that|until|till)\s+(.*)$")
 _PURPOSE_PLACE = re.compile(
-    r"\b(?:sits?|is|are|ends? up|rests?|lands?|stays?|goes|fall|falls|drops?)\s+"
+    r"\b(?:sits?|is|are|ends? up|rests?|lands?|stays?|goes|fall|falls|drops?|(?:is |are )?(?:sitting|resting))\s+"
     r"(in front of|next to|beside|inside|into|in|on top of|onto|on)\s+(.+)$"
 )
 _DESTINATION = re.compile(r"\b(in front of|into|onto|inside|in|on top of|on|to|over)\b")
@@ -182,6 +182,17 @@ def sentences(instruction: str) -> list[str]:
     # "the blue block is first (the base)": in a stack, the first one is the bottom, the base only says so again
     text = re.sub(r"\bfirst,? \(?(?:as |at )?the (?:base|bottom|foundation)\)?", "at the bottom", text)
     text = re.sub(r"\s*[()]\s*", " ", text).strip()  # "(carefully)", "(thanks)": an aside's words, read as said
+    # speech: "um", "uh", and a phrase said twice around one ("in the, uh, in the basket")
+    text = re.sub(r",?\s*\b(?:um+|uh+|erm|er|hmm+)\b,?", "", text).strip(" ,")
+    text = re.sub(r"\b((?:\w+ ){1,2}\w+),? \1\b", r"\1", text)
+    # a correction said aloud, then the request said again in a sentence of its own ("put the ketchup in the b-- no
+    # wait, not the ketchup, the milk. milk in the basket"): what came before the correction is taken back
+    text = re.sub(
+        r"^.*?(?:\b\w*-+\s*|\b)(?:no wait|wait no|no no|scratch that|actually no|sorry,? i mean)\b[,.]?\s*"
+        r"(?=[^.;!?]*[.;!?]\s*\w)",
+        "",
+        text,
+    )
     text = re.sub(r"[!?]+(?=\s*,)", "", text)  # "the wine bottle, not the bowl!, should go ...": one sentence
     for short, long in CONTRACTIONS.items():
         text = re.sub(rf"\b{re.escape(short)}", long, text)
@@ -570,6 +581,28 @@ def sentences(instruction: str) -> list[str]:
     )
     # a remark that opens a turn in a conversation ("ok next one:", "alright,", "right then:")
     text = re.sub(r"^(?:ok|okay|alright|all right|right|so|now)(?: then)?(?:,? next(?: one)?)?\s*[:,]\s*", "", text)
+    # "ketchup stays where it is": left as it is, said of the thing
+    text = re.sub(
+        r"(^|[.;!?,] )(?:the )?((?:\w+ ){0,2}\w+) (?:stays?|remains?) "
+        r"(where (?:it is|they are)|as (?:it is|they are)|put)\b",
+        r"\1leave the \2 \3",
+        text,
+    )
+    # "push it so its in front of the stove": "it is" typed without the apostrophe before where it is
+    text = re.sub(
+        r"\b(so|till|until|then|and) its (?=(?:in|on|inside|next to|beside|near|at|sitting|resting)\b)",
+        r"\1 it is ",
+        text,
+    )
+    # "the cabinet's roof": its top
+    text = re.sub(r"\bthe ((?:\w+ ){0,2}\w+)'s roof\b", r"the top of the \1", text)
+    text = re.sub(r"\bthe roof of\b", "the top of", text)
+    # "nah, not the bowl on the cookies": the "no" is the "not" that follows
+    text = re.sub(r"^(?:nah|nope|naw|no),? (?=not\b)", "", text)
+    # the goal said as the speaker's hope or aim ("my hope is that the butter ends up in the basket")
+    text = re.sub(
+        r"^(?:so,? )?(?:my|our|the) (?:hope|wish|aim|goal|plan|idea) (?:is|here is) (?:that |for )?", "i want ", text
+    )
     # the goal said by what is wanted at the end ("what i want at the end: ...")
     text = re.sub(r"^(?:what|all) (?:i|we) (?:want|need)(?: at the end| in the end| to see)?\s*[:,]\s*", "", text)
     # "the cabinet top is where the plate goes", "the bowl closer to you is the one for the plate": a place named
@@ -581,12 +614,12 @@ def sentences(instruction: str) -> list[str]:
     )
     # ("the one near the ramekin is the one i want on the plate", "... is what we need in the basket")
     text = re.sub(
-        r"^((?:the|a|an) .+?) is (?:(?:the one|what|the \w+(?: \w+)?) (?:that |which )?(?:i|we) (?:want|need|"
-        r"would like|'d like)(?: to go| moved| put| placed| set)? (?:on|in|into|onto|to|on top of)|"
-        r"the one (?:for|to go (?:on|in|into|onto|to)|"
+        r"(^|[.;!?] )((?:the|a|an) [^.;!?]+?) is (?:(?:the one|what|the \w+(?: \w+)?) (?:that |which )?(?:i|we) "
+        r"(?:want|need|would like|'d like)(?: to go| moved| put| placed| set)? (?:on|in|into|onto|to|on top of)|"
+        r"the one (?:for|to go (?:on|in|into|onto|to)|(?:that is )?going (?:on|in|into|onto|to|on top of)|"
         r"(?:that |which )?(?:goes|belongs|should go|needs to go|has to go) (?:on|in|into|onto|to|on top of)))"
-        r" (the .+)$",
-        r"put \1 to \2",
+        r" (the [^.;!?]+?)(?=\s*[.;!?]|$)",
+        r"\1put \2 to \3",
         text,
     )
     # "could the green block go into the basket?": a question whose subject is the thing moved
@@ -1815,7 +1848,11 @@ def imperatives(instruction: str) -> list[str]:
         # "open the drawer, all the way out": how far, after the action
         if starts_with_verb(s):
             s = re.sub(r",\s*(?:all the way )?(?:out|open|shut|closed)\b(?:\s+if (?:you can|possible))?\s*$", "", s)
-        s = _TRAILING.sub("", _GRIP.sub("", _NOT_THERE.sub("", _request_after_reason(s))))
+        s = _GRIP.sub("", _NOT_THERE.sub("", _request_after_reason(s)))
+        for _ in range(3):  # remarks said one after another (", when you've got a sec, no rush"): the last goes first
+            s, cut = _TRAILING.subn("", s)
+            if not cut:
+                break
         # "red block up, in the gripper", "red cube up and still held": a thing lifted and held
         lifted = re.fullmatch(
             r"((?:the |a |an )?[\w ]+?) up,?\s*(?:and )?(?:(?:still|now|held|kept|safely) )*"
