@@ -137,3 +137,43 @@ def test_round31_probe40_wording_reads_as_its_plain_form(text, clauses):
 def test_a_correction_without_the_request_said_again_keeps_the_request():
     # the take-back applies only when a later sentence says the request again: here the request stays
     assert read("put the apple in the bowl, no wait, the pear")[0].startswith("put obj=")
+
+
+@pytest.mark.parametrize(
+    ("text", "clauses"),
+    [
+        # two bare pairs, each thing with its place, joined by "and": two carries
+        (
+            "put apple into the bowl and pear into the basket",
+            ["put obj=apple relation=in target=bowl", "put obj=pear relation=in target=basket"],
+        ),
+        (
+            "green cube onto the plate and red cube onto the tray",
+            ["put obj=green cube relation=on target=plate", "put obj=red cube relation=on target=tray"],
+        ),
+        # a goal ruled out after the goal: no step; the thing it names is still looked for
+        (
+            "the apple in the bowl, the pear must not end up in the bowl",
+            ["put obj=apple relation=in target=bowl", "mention obj=pear"],
+        ),
+        (
+            "green cube on top of the yellow one. not yellow on green, ok?",
+            ["put obj=green cube relation=on target=yellow cube", "mention obj=yellow cube"],
+        ),
+        # "start with X on Y": the first carry of a build, not a switch turned on
+        (
+            "start with the mug on the saucer, then the spoon in the mug",
+            ["put obj=mug relation=on target=saucer", "put obj=spoon relation=in target=mug"],
+        ),
+        # things counted without a verb, then "the more distant one" of them
+        ("two mugs there. take the more distant one", ["pick obj=farthest mug"]),
+    ],
+)
+def test_round31_coordination_and_ruled_out_goals_read_as_their_plain_form(text, clauses):
+    assert read(text) == clauses
+
+
+def test_a_ruled_out_goal_naming_a_thing_the_scene_lacks_is_refused():
+    scene = view(apple=[0.5, 0.1, 0.05], bowl=[0.5, -0.1, 0.05], unresolved={"banana": "none found"})
+    result = plan("put the apple in the bowl. not the banana in the bowl.", scene)
+    assert not result.ok and "banana" in result.error

@@ -730,10 +730,9 @@ def _joined(text: str) -> str:
     return re.sub(r"\b(left|right|front|back|top|bottom|upper|lower|rear|fore)[- ]most\b", r"\1most", text)
 
 
-def restructured(instruction: str) -> str:
-    """The instruction said plainly and in the order its steps happen (see the module's docstring); the instruction
-    itself when none of these applies."""
-    text = re.sub(r"\s+", " ", instruction.strip().lower().replace("\u2019", "'"))
+def _spoken(text: str) -> str:
+    """What is said in passing, plainly: a count in parentheses, "not the X one, the other one", a goal ruled out
+    after the goal, "the more distant one", things counted without a verb, "meant to go"."""
     # "the right-hand bowl (of the two)": how many there are says nothing of which
     out = re.sub(
         r"\s*\(\s*of (?:the|those|these) (?:two|2|both)\s*\)|,? of the two(?=\s*(?:,|$|into|onto)\b)", "", text
@@ -744,12 +743,39 @@ def restructured(instruction: str) -> str:
         r"the \1 that is not \2",
         out,
     )
+    # a goal ruled out, said after the goal ("..., red must not end up in yellow", "red on blue. NOT blue on red,
+    # ok?"): no step of its own (the goal said already stands); the thing it names must still be there
+    out = re.sub(
+        r",?\s*(?:the )?((?:\w+ )?\w+) (?:must|should|may|can)(?: not|n't|not) (?:end up|go|be put|be placed|be|land) "
+        r"(?:on|in|into|onto|inside|on top of) (?:the )?(?:\w+ )?\w+(?=\s*(?:[.;!?]|$))",
+        r". there is the \1",
+        out,
+    )
+    if re.search(r"\b(?:on|in|into|onto|on top of)\b.*[.;!?] (?:not|never) ", out):
+        out = re.sub(
+            r"(?<=[.;!?]) (?:not|never) (?:the )?(?!(?:\w+ )?ones?\b)((?:\w+ ){0,2}?\w+) (?:on|in|into|onto|on top of) "
+            r"(?:the )?(?:\w+ )?\w+(?:,?\s*(?:ok|okay|right|alright|got it|yeah)\b)?\s*(?:[.;!?]|$)",
+            r" there is the \1.",
+            out,
+        )
+    # "the more distant one": the farther one, for the one said before to name its kind
+    out = re.sub(r"\bthe (?:more|most) (?:distant|remote)\b", "the farther", out)
+    # "two black bowls there. grab the farther one": things counted, said without a verb, then one of them
+    out = re.sub(r"^((?:two|three|2|3) [a-z ]+?) (?:there|here|on the table)\s*[.;:!]\s+", r"there are \1. ", out)
     # "it's meant to go in the bowl": where it should go
     out = re.sub(
         r"\b(it|they)(?: is|'s| are|'re) (?:meant|supposed) to (?=go |be (?:in|on|inside|on top of)\b)",
         r"\1 should ",
         out,
     )
+    return out
+
+
+def restructured(instruction: str) -> str:
+    """The instruction said plainly and in the order its steps happen (see the module's docstring); the instruction
+    itself when none of these applies."""
+    text = re.sub(r"\s+", " ", instruction.strip().lower().replace("\u2019", "'"))
+    out = _spoken(text)
     # a parenthesis that names the thing is an apposition between commas ("the smaller cube (the red one) on ...")
     out = re.sub(
         r"\s*\(\s*(the [a-z]+ ones?)\s*\)\s*(?=(\w)?)",

@@ -114,6 +114,24 @@ def _match_verb(clause: str) -> tuple[str, str] | None:
     return (best[0], best[1]) if best else None
 
 
+_CARRIED_TO = r"(?:into|onto|in|on|inside) (?:the|a|an)"
+
+
+def _pairs(part: str) -> list[str]:
+    """ "red into the green tray and blue into the yellow tray": a bare second thing and its place after a first
+    pair with its place, two carries (the split on "and the ..." misses it for want of an article)."""
+    pieces = part.split(" and ")
+    out = [pieces[0]]
+    for piece in pieces[1:]:
+        if re.search(rf"\b{_CARRIED_TO} (?:\w+ ){{0,2}}\w+$", out[-1]) and re.match(
+            rf"(?:\w+ ){{0,2}}\w+ {_CARRIED_TO}\b", piece
+        ):
+            out.append(piece)
+        else:
+            out[-1] = f"{out[-1]} and {piece}"
+    return out
+
+
 def split_clauses(text: str) -> list[str]:
     verbs = "|".join(re.escape(f) for forms in VERBS.values() for f in forms)
     parts = re.split(
@@ -135,7 +153,7 @@ def split_clauses(text: str) -> list[str]:
         if " between " in f" {part} ":
             out.append(part)
         else:
-            out += [p for p in re.split(r"\s+and\s+(?=(?:the|a|an)\s)", part) if p.strip()]
+            out += [q for p in re.split(r"\s+and\s+(?=(?:the|a|an)\s)", part) if p.strip() for q in _pairs(p)]
     # "... and balance it on the blue one": a verb the lexicon knows, outside the planner's list, starts a clause
     split: list[str] = []
     for part in out:

@@ -581,6 +581,13 @@ def sentences(instruction: str) -> list[str]:
     )
     # a remark that opens a turn in a conversation ("ok next one:", "alright,", "right then:")
     text = re.sub(r"^(?:ok|okay|alright|all right|right|so|now)(?: then)?(?:,? next(?: one)?)?\s*[:,]\s*", "", text)
+    # "start with green on top of blue, then red on top of green": the first carry of a build
+    text = re.sub(
+        r"\bstart(?:ing)? (?:off )?(?:with|by putting|by placing|by setting) "
+        r"(?=(?:the )?\w+(?: \w+)? (?:on top of|on|onto|in|into)\b)",
+        "put ",
+        text,
+    )
     # "ketchup stays where it is": left as it is, said of the thing
     text = re.sub(
         r"(^|[.;!?,] )(?:the )?((?:\w+ ){0,2}\w+) (?:stays?|remains?) "
