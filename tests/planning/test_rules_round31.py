@@ -110,6 +110,10 @@ def test_a_reason_first_then_a_request_plans_the_request():
             "the apple goes in the bowl. the pear stays where it is",
             ["put obj=apple relation=in target=bowl", "mention obj=pear"],
         ),
+        (
+            "the tray stays put. first the cup on top of it",
+            ["mention obj=tray", "put obj=cup relation=on target=tray"],
+        ),
         # a push until it sits somewhere; "its" for "it is" before where it is
         (
             "the tray. push it along till it's sitting in front of the mug.",

@@ -592,7 +592,7 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(
         r"(^|[.;!?,] )(?:the )?((?:\w+ ){0,2}\w+) (?:stays?|remains?) "
         r"(where (?:it is|they are)|as (?:it is|they are)|put)\b",
-        r"\1leave the \2 \3",
+        r"\1leave the \2 where it is",
         text,
     )
     # "push it so its in front of the stove": "it is" typed without the apostrophe before where it is
