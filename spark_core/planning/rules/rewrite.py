@@ -1373,7 +1373,7 @@ def _purpose(text: str) -> str:
         text,
     )
     m = _PURPOSE.search(text)
-    while m and _intensifier(m):  # "if you would be so good, kindly ...": "so" says how good, not what for
+    while m and _intensifier(m.group(0)):  # "if you would be so good, kindly ...": "so" says how good, not what for
         m = _PURPOSE.search(text, m.end(1) - len(m.group(1)) + 1)
     if not m:
         return text
@@ -1407,7 +1407,7 @@ def _request_after_reason(text: str) -> str:
     """ "we're clearing the table, so I'd like the plate on the cabinet": a reason that asks for nothing first, the
     request after "so" (a purpose follows a request, never stands before it)."""
     m = re.fullmatch(r"(.+?),? so (?!that\b)(.+)", text)
-    if not m or _intensifier(re.match(r".*", f" so {m.group(2)}") or m):
+    if not m or _intensifier(f" so {m.group(2)}"):
         return text
     main, request = m.groups()
     subject = re.match(r"((?:the|a|an) [\w ]+?) (?:is|are|looks?|seems?)\b", main)
@@ -1421,11 +1421,11 @@ def _request_after_reason(text: str) -> str:
     return request if starts_with_verb(request) or goal_to_action(request) else text
 
 
-def _intensifier(m: re.Match[str]) -> bool:
-    """ "so" before a word of degree that ends the phrase ("be so good, ...", "so kind as to", "so much of you"):
-    it says how much; no purpose follows."""
-    degree = re.match(r"(?:\s*,\s*|\s+)so (\w+)(?:\s*,|$| as\b| of you\b)", m.group(0))
-    return bool(degree) and bool({"ADJ", "ADV"} & set(getAllLemmas(degree.group(1)) if degree else ()))
+def _intensifier(said: str) -> bool:
+    """`said` (from its "so" on) is "so" before a word of degree that ends the phrase ("be so good, ...", "so kind
+    as to", "so much of you"): it says how much; no purpose follows."""
+    degree = re.match(r"(?:\s*,\s*|\s+)so (\w+)(?:\s*,|$| as\b| of you\b)", said)
+    return degree is not None and bool({"ADJ", "ADV"} & set(getAllLemmas(degree.group(1))))
 
 
 def _colon(left: str, right: str) -> list[str]:
