@@ -150,8 +150,8 @@ def test_a_handle_phrase_found_as_the_drawer_itself_gives_way_to_the_handle_foun
             [("turn_on", "hob", None, None), ("mention", "lime cube", None, None)],
         ),
         (
-            "lime cube into the tin please, not the grey cube",
-            [("put", "lime cube", "in", "tin"), ("mention", "grey cube", None, None)],
+            "lime cube into the tin please, not the grey cube",  # the contrast is read first, as after any goal
+            [("mention", "grey cube", None, None), ("put", "lime cube", "in", "tin")],
         ),
         ("one arm picks up the wrench and then gives it to the other arm", [("pick", "wrench", None, None)]),
         (

@@ -41,6 +41,9 @@ _NP = rf"(?:{_WORD} ){{0,3}}{_WORD}"
 _DET = r"(?:the|a|an|that|this)"
 # Steps of the planner's own, and the words of a goal said as where a thing is ("the red block is in the tray").
 _GOAL_AS_STATE = re.compile(rf"^(?:{_DET} )?{_NP} (?:is|are) (?:now |already )?(?:in|inside|on|on top of|onto|into) ")
+# A goal said as the thing and where it goes, with or without a verb ("the milk goes in the basket", "square nut onto
+# the square peg").
+_BARE_GOAL = re.compile(rf"^(?:{_DET} )?{_NP} (?:(?:goes|go|belongs?) )?(?:in|into|on|onto|on top of|inside|to) ")
 # Current states a thing is described in before the request, and saying it is to stay as it is.
 _STATES = r"(?:open|opened|closed|shut|on|off|empty|full|ajar|cold|hot|there|here|in the way|out)"
 _STAYS = (
@@ -281,12 +284,19 @@ def _said_again(text: str) -> str:
 def _apposed_contrast(text: str) -> str:
     """ "put the tomato sauce, not the bbq sauce, in the basket", "the red cup, not the blue one, goes on the tray":
     a thing ruled out between the thing and the rest of its clause is said after the clause, as a contrast is; a
-    step after it ("..., and put ...") keeps it where it is."""
+    step after it ("..., and put ...") keeps it where it is. "Not the blue one" there says which of the thing's kind
+    ("the cup that is not blue"), not which place, once it moves."""
+
+    def after(m: re.Match) -> str:
+        one = re.fullmatch(r"not \w+ (\w+) one", m.group(2))
+        if one:
+            return f"{m.group(1)} that is not {one.group(1)} {m.group(3)}{m.group(4)}"
+        return f"{m.group(1)} {m.group(3)}, {m.group(2)}{m.group(4)}"
+
     return re.sub(
-        rf"^(.*?\b{_DET} {_NP}),\s*(not {_DET} {_NP}),\s*"
-        r"((?:in|into|on|onto|to|inside|on top of|next to|goes|go|belongs?|should|needs? to|must|has to|is to|"
-        r"ends? up)\b[^,.;]*?)([.!]?)$",
-        r"\1 \3, \2\4",
+        rf"^(.*?\b{_DET} {_NP}),\s*(not {_DET} [^,;.]+?),\s*"
+        rf"((?:in|into|on|onto|to|inside|on top of|next to|{_GOAL_VERBS})\b[^,.;]*?)([.!]?)$",
+        after,
         text,
     )
 
@@ -301,7 +311,10 @@ def _contrast(text: str) -> str:
     )
     if m and _same_request_reversed(m.group(2).removeprefix("but ").removeprefix("not "), m.group(1)):
         return m.group(1).strip()  # "stack red on green, not green on red": the request said the other way round
-    if not m or not _is_step(m.group(1)) and not _GOAL_AS_STATE.match(m.group(1)) and " goes " not in m.group(1):
+    if not m:
+        return text
+    said_as_goal = _GOAL_AS_STATE.match(m.group(1)) or _BARE_GOAL.match(m.group(1)) or " goes " in m.group(1)
+    if not _is_step(m.group(1)) and not said_as_goal:
         return text
     main = m.group(1).strip()
     parts = re.split(r"\s*(?:,\s*)?(?:and |but )?(?:not|rather than|instead of)\s+", m.group(2))
@@ -309,7 +322,8 @@ def _contrast(text: str) -> str:
     for part in (p.strip() for p in parts if p.strip()):
         said = re.fullmatch(
             rf"(?:back |again )?(?:(?:in|into|onto|on|to|in front of|on top of|inside|from|out of) )?"
-            rf"(?:(?:any|one) of )?(?:the|a|an|its|their) ({_NP})",
+            rf"(?:(?:any|one) of )?(?:the|a|an|its|their) ({_NP})"
+            r"(?: (?:on|in|at|to) (?:the|your|my) (?:left|right|back|front|middle|far end|near end|other side))?",
             part,
         )
         thing = said.group(1) if said else ""
@@ -512,12 +526,21 @@ def _restack(text: str) -> str:
 def _not_there_but(text: str) -> str:
     """ "don't put the wine bottle in the rack, it goes up on top of the cabinet": a place ruled out for a thing,
     then where "it" goes: the thing goes there (the place ruled out is no thing to act on)."""
-    return re.sub(
+    text = re.sub(
         r"^(?:do not|don't|dont|never) (?:put|place|set|stick|leave|move) ((?:the|a|an) [a-z' ]+?) "
         r"(?:in|into|on|onto|inside|on top of|next to|by|back in|back on) (?:the|a|an) [a-z' ]+?\s*[,;.:-]+\s*"
         r"(?:but |instead |rather )?(?:it|they) "
         r"(?=(?:goes|go|belongs|belong|should go|needs to go|has to go|must go)\b)",
         r"\1 ",
+        text,
+    )
+    # "don't put the wine bottle in the rack; stand it on top of the cabinet instead": "it" is the thing ruled out
+    # there, not the place
+    return re.sub(
+        r"^(?:do not|don't|dont|never) (?:put|place|set|stick|leave|move) ((?:the|a|an) [a-z' ]+?) "
+        r"(?:in|into|on|onto|inside|on top of|next to|by|back in|back on) (?:the|a|an) [a-z' ]+?\s*[,;.:-]+\s*"
+        r"(?:but |instead |rather |just )?([a-z]+(?: up| down)?) (?:it|them)\b",
+        r"\2 \1",
         text,
     )
 
@@ -640,11 +663,14 @@ def _restated_one(text: str) -> str:
             return f"{det} {attribute} {thing} "
         if not attribute and re.fullmatch(_SAID_OF_PLACE, rest):  # "the milk, the carton closest to you, in ..."
             return f"{det} {thing} {rest} "
+        if not attribute and re.fullmatch(rf"(?:{_WHERE}) (?:the|your|my) [a-z ]+", rest):
+            # "the right bowl, the one in the middle of the table, goes ...": where it is joins the thing
+            return f"{det} {thing} {rest} "
         return m.group(0)
 
     return re.sub(
         rf"\b(the|a|an) ([a-z' ]+?)\s*,\s*the (?!other\b)((?:[a-z]+ )?)(?:one|{'|'.join(_GENERAL_NOUNS)})\b([^,;]*),\s*"
-        rf"(?=(?:and|then|{_PLACE_PREPS})\b)",
+        rf"(?=(?:and|then|{_PLACE_PREPS}|{_GOAL_VERBS})\b)",
         said,
         text,
     )
@@ -652,6 +678,10 @@ def _restated_one(text: str) -> str:
 
 # Where a thing goes, after it is named: an apposition before it ends at it.
 _PLACE_PREPS = r"in|into|onto|on|inside|on top of|to|over to"
+# What follows a thing named as the subject of its goal ("the milk goes in ...", "the cube should be on ...").
+_GOAL_VERBS = r"goes|go|belongs?|should|needs? to|must|has to|is to|ends? up"
+# Prepositions that say where a thing is.
+_WHERE = r"in|on|on top of|inside|next to|near|by|beside|in front of|behind|at"
 # Nouns that name a thing by what it is sold or kept in, or by nothing at all ("the milk, the carton nearest you").
 _GENERAL_NOUNS = ("item", "thing", "object", "product", "carton", "box", "bottle", "jar", "can", "tin", "package")
 # An apposition's words after its noun that only say where the thing is ("closest to you", "on the left").
@@ -758,6 +788,29 @@ def _spoken(text: str) -> str:
             r" there is the \1.",
             out,
         )
+    # a tag asking for assent ("there's a cabinet on the left, yeah? slide its drawer open", "that bowl, yeah, put
+    # it ..."): no part of the request
+    out = re.sub(r",?\s*\b(?:yeah|yep|yup|ok|okay|alright|you know|got it|see)\s*\?\s*(?=\S)", ". ", out)
+    out = re.sub(r",\s*(?:yeah|yep|yup|you know)\s*,", ",", out)
+    # "the right-hand one of the two black bowls": the right-hand black bowl
+    out = re.sub(
+        r"\bthe ((?:[\w-]+ ){1,2}?)one of (?:the |those |these )?(?:two |three |2 |3 )?((?:[a-z]+ )??)([a-z]+s)\b"
+        r"(?=\s*(?:$|[,.;:!?-]|(?:goes|go|belongs?|should|must|needs?|is|are|has|and|then|in|into|on|onto|to|from|"
+        r"over|inside|off|out|up|down|please|that|which|with|by|near|next|beside|first)\b))",
+        lambda m: f"the {m.group(1)}{m.group(2)}{singular(m.group(3))}",
+        out,
+    )
+    # "slide out the top drawer": the drawer slid out (open)
+    out = re.sub(
+        r"\b(slide|pull|draw) out ((?:the|its|their|that|this) [a-z' ]+?)(?=\s*(?:[,;.!]|and\b|$))", r"\1 \2 out", out
+    )
+    # "make the beads go from the cup into the bowl", "get the block to end up on the plate": the thing moved there
+    out = re.sub(
+        r"\b(?:make|have|let|get) ((?:the|that|this|those|these|all the) [a-z' -]+?) (?:to )?(?:go|move|end up|"
+        r"wind up|travel|land)(?= (?:from|out of|into|in|onto|on|on top of|inside|over)\b)",
+        r"put \1",
+        out,
+    )
     # "the more distant one": the farther one, for the one said before to name its kind
     out = re.sub(r"\bthe (?:more|most) (?:distant|remote)\b", "the farther", out)
     # "two black bowls there. grab the farther one": things counted, said without a verb, then one of them

@@ -217,7 +217,7 @@ TABLE = ("table", "tabletop", "table top", "counter", "where it is", "where it s
 # Parts of an object that name the object itself as a destination ("the plate's centre" is the plate).
 SELF_PARTS = ("centre", "center", "middle", "surface", "top face", "top side", "top surface", "inside", "interior")
 # What a container holds: "the mug's beads", "the mug's contents" pour from the mug.
-CONTENTS = ("contents", "content", "beads", "liquid", "water")
+CONTENTS = ("contents", "content", "beads", "balls", "liquid", "water")
 # What may come before the contents' noun: a quantifier and up to three words of their own ("all those little yellow
 # beads"), never a preposition (not "the cube in the water").
 CONTENTS_SAID = (

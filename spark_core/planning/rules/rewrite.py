@@ -1491,7 +1491,8 @@ _TOWER_PLACES = (
 
 
 _TOWER_HEADER = re.compile(
-    r"^(?:build|make|form|create|assemble|put together|stack up|i want|i'd like|i need|we want|we need)(?: me)? "
+    r"^(?:build|make|form|create|assemble|put together|stack up|i want|i'd like|i need|we want|we need|"
+    r"(?:you should |we should |i want to |let's )?(?:end|finish|wind) up with|(?:end|finish) with)(?: me)? "
     r"(?:a|the|one) (?:[\w-]+ )?(?:tower|stack|pile)"
     r"(?: (?:out )?of (?:the |all )?(?:three |two |all )?(?:blocks|cubes|three|them|these))?"
     r"(?:\s*[-:]\s*|\s+(?:with|where|that has)\s+|\s*)"

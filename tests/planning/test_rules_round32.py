@@ -1,0 +1,80 @@
+"""Round 32: general mechanisms found in the read probe41, each tested on other things and wording than where it
+was found."""
+
+import pytest
+
+from tests.planning.scene_views import leaves, plan, view
+from tests.planning.test_rules_round28 import read
+
+
+@pytest.mark.parametrize(
+    ("text", "clauses"),
+    [
+        # a tag asking for assent is no part of the request
+        (
+            "there is a mug by the sink, yeah? put it on the rack",
+            ["mention obj=mug by sink", "put obj=mug by sink relation=on target=rack"],
+        ),
+        (
+            "the red block, yep, drop it in the tray",
+            ["mention obj=red block", "put obj=red block relation=in target=tray"],
+        ),
+        # "the X one of the two Ys" is the X Y, whatever follows it
+        ("the left one of the two mugs goes on the saucer", ["put obj=left mug relation=on target=saucer"]),
+        ("the nearest one of those three cups goes in the sink", ["put obj=nearest cup relation=in target=sink"]),
+        (
+            "the far one of the glass jars, put it in the bin",
+            ["mention obj=farthest glass jar", "put obj=farthest glass jar relation=in target=bin"],
+        ),
+        # a thing made to go somewhere is put there
+        ("make the apple go into the bowl", ["put obj=apple relation=in target=bowl"]),
+        ("get the cube to end up on the plate", ["put obj=cube relation=on target=plate"]),
+        ("have the lemon land in the basket", ["put obj=lemon relation=in target=basket"]),
+        # a drawer slid or pulled out is opened
+        ("slide out the bottom drawer", ["open obj=bottom drawer"]),
+        (
+            "pull out the middle drawer and put the spoon in it",
+            ["open obj=middle drawer", "put obj=spoon relation=in target=middle drawer"],
+        ),
+        # an apposition saying where the subject of a goal is joins it
+        ("the lemon, the one on your left, goes in the basket", ["put obj=leftmost lemon relation=in target=basket"]),
+        (
+            "the butter, the item nearest you, belongs in the basket",
+            ["put obj=nearest butter relation=in target=basket"],
+        ),
+        (
+            "the cup, the one next to the kettle, should go on the tray",
+            ["put obj=cup next to kettle relation=on target=tray"],
+        ),
+        # a thing ruled out between the subject of a goal and its verb, with any words
+        ("the mug, not the one by the sink, goes on the rack", ["put obj=mug not by sink relation=on target=rack"]),
+        # ... and "not the X one" there says which of the subject's kind (not which place)
+        ("the red cup, not the blue one, goes on the tray", ["put obj=red cup not blue relation=on target=tray"]),
+        ("the apple, not the green one, belongs in the bowl", ["put obj=apple not green relation=in target=bowl"]),
+        # a carry ruled out, then "<verb> it": "it" is the thing, not the place ruled out
+        ("never put the mug in the sink; set it on the rack instead", ["put obj=mug relation=on target=rack"]),
+        ("do not place the lemon on the plate, just drop it in the bowl", ["put obj=lemon relation=in target=bowl"]),
+        # a tower wished as what one ends with
+        ("finish with a tower, yellow at the bottom and red on top", ["stack obj=red relation=on target=yellow"]),
+        ("end up with a stack: green at the bottom, red on top", ["stack obj=red relation=on target=green"]),
+        # a contrast after a goal said without a verb
+        ("the pear onto the plate, not the bowl", ["mention obj=bowl", "put obj=pear relation=on target=plate"]),
+        # small balls a container holds are poured, as beads are
+        ("tip the balls from the mug into the bowl", ["pour obj=balls target=bowl source=mug"]),
+    ],
+)
+def test_round32_wording_reads_as_its_plain_form(text, clauses):
+    assert read(text) == clauses
+
+
+def test_a_thing_made_to_go_that_the_scene_lacks_is_refused():
+    scene = view(bowl=[0.5, -0.1, 0.05], unresolved={"banana": "none found"}, inventory=("apple", "bowl"))
+    result = plan("make the banana go into the bowl", scene)
+    assert not result.ok and "banana" in result.error
+
+
+def test_a_contrast_after_a_verbless_goal_plans_the_goal():
+    scene = view(square_nut=[0.5, 0.1, 0.02], square_peg=[0.6, 0.2, 0.05], round_peg=[0.6, -0.2, 0.05])
+    result = plan("square nut onto the square peg on the left, not the round one on the right", scene)
+    assert result.ok, result.error
+    assert leaves(result) == [("pick", "square nut"), ("place", "square peg")]
