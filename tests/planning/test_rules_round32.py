@@ -78,3 +78,77 @@ def test_a_contrast_after_a_verbless_goal_plans_the_goal():
     result = plan("square nut onto the square peg on the left, not the round one on the right", scene)
     assert result.ok, result.error
     assert leaves(result) == [("pick", "square nut"), ("place", "square peg")]
+
+
+@pytest.mark.parametrize(
+    ("text", "clauses"),
+    [
+        # a spec of keyed fields is the sentence it stands for
+        ("obj: apple; dst: bowl", ["put obj=apple relation=in target=bowl"]),
+        ("action: push; object: mug; to: green zone", ["push obj=mug relation=near target=green zone"]),
+        ("src: lemon (on the left); dst: basket", ["put obj=leftmost lemon relation=in target=basket"]),
+        ("item: butter; destination: inside the basket", ["put obj=butter relation=in target=basket"]),
+        # a place said as "there", then again by name
+        ("put the cup in there, on the tray i mean", ["put obj=cup relation=on target=tray"]),
+        # a state said as not to be left
+        ("make sure the lamp is not left on", ["turn off obj=lamp"]),
+        # how the scene should look, said as a header
+        ("final scene: apple inside the bowl", ["put obj=apple relation=in target=bowl"]),
+        # a correction that is only a pause before the next step
+        (
+            "put the apple in the bowl and then, wait, after that the pear on the plate",
+            ["put obj=apple relation=in target=bowl", "put obj=pear relation=on target=plate"],
+        ),
+        # chat address and closings; a verb of raising
+        ("switch on the lamp real quick fam", ["turn on obj=lamp"]),
+        ("kindly elevate the mug", ["pick obj=mug"]),
+        # a relative clause saying which side a place is on
+        (
+            "put the mug on the shelf that sits close to you on the left",
+            ["put obj=mug relation=on target=leftmost shelf"],
+        ),
+        # the thing opened before, said by its state
+        (
+            "open the drawer and put the spoon into the opened drawer",
+            ["open obj=drawer", "put obj=spoon relation=in target=drawer"],
+        ),
+    ],
+)
+def test_round32_probe42_wording_reads_as_its_plain_form(text, clauses):
+    assert read(text) == clauses
+
+
+def test_a_spec_naming_a_thing_the_scene_lacks_is_refused():
+    scene = view(bowl=[0.5, -0.1, 0.05], unresolved={"banana": "none found"}, inventory=("apple", "bowl"))
+    result = plan("obj: banana; dst: bowl", scene)
+    assert not result.ok and "banana" in result.error
+
+
+def test_a_text_with_a_colon_that_is_no_spec_is_left_alone():
+    from spark_core.planning.rules.specs import spelled_out
+
+    assert spelled_out("note: put the apple in the bowl") == "note: put the apple in the bowl"
+    assert spelled_out("obj: apple") == "obj: apple"  # one field says no goal
+
+
+def test_chat_spellings_and_colour_shorthand_are_read_as_words():
+    from spark_core.planning.rules.spelling import corrected
+
+    assert corrected("stack ylw on grn") == "stack yellow on green"
+    assert corrected("move da cup onto the saucer") == "move the cup onto the saucer"
+
+
+def test_a_flavour_the_scenes_thing_lacks_is_refused_as_another_product():
+    from spark_core.planning.rules.kinds import other_variety
+
+    inventory = ("milk", "chocolate pudding", "basket")
+    assert other_variety("chocolate milk", inventory) == "chocolate"
+    assert other_variety("milk carton", inventory) is None
+    assert other_variety("chocolate pudding", inventory) is None
+
+
+def test_a_narrower_kind_before_a_wider_word_names_the_thing():
+    from spark_core.planning.rules.discourse import restructured
+
+    assert restructured("take the bowl by the ramekin dish") == "take the bowl by the ramekin"
+    assert restructured("take the bowl by the dinner dish") == "take the bowl by the dinner dish"

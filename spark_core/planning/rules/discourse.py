@@ -23,10 +23,12 @@ from functools import lru_cache
 from lemminflect import getLemma
 
 from ...perception.colors import BASE_COLOURS
+from ...perception.variants import KIND_OF
 from .lexicon import VERBS
 from .mentions import ATTRIBUTES
 from .phrases import singular
 from .rewrite import starts_with_verb
+from .specs import spelled_out
 from .steps import sequenced
 from .things import adverb_only, is_thing, is_verb
 
@@ -418,6 +420,8 @@ def _header(text: str) -> str:
     # what the request describes ("final configuration: ...", "end state: ...", "final state i'm after: ...")
     parts |= {"configuration", "state", "arrangement", "layout", "goal", "target", "result", "final", "end", "setup"}
     parts |= {"i", "am", "m", "we", "are", "re", "after", "want", "what", "looking", "for", "desired", "wanted"}
+    if words[:1] in (["final"], ["end"], ["target"], ["desired"]):
+        parts |= {"table", "scene", "picture", "look", "tabletop"}  # "final table: ...": how the scene should look
     if not words or any(is_thing(w) for w in words if w not in numbers and w not in parts):
         return text
     return m.group(2)
@@ -482,7 +486,8 @@ def _negated_state(text: str) -> str:
     other state, which the readers know ("... the stove is off")."""
     return re.sub(
         r"\b(is|are|(?:should|must|would|will|shall|can|needs? to|has to) ?(?:not|n't) be) ?"
-        r"(?:not|n't)? ?(on|off|open|closed|shut)\b(?! (?:the|a|an|top|its|your|my|this|that|to|of)\b)"
+        r"(?:not|n't)? ?(?:left |kept |still )?(on|off|open|closed|shut)\b"
+        r"(?! (?:the|a|an|top|its|your|my|this|that|to|of)\b)"
         r"(?: (?:yet|anymore|any more|any longer|now)\b)?",
         _state_said,
         text,
@@ -800,6 +805,35 @@ def _spoken(text: str) -> str:
         lambda m: f"the {m.group(1)}{m.group(2)}{singular(m.group(3))}",
         out,
     )
+    # "put it in there, in the drawer i mean": the place said again, by name
+    out = re.sub(
+        r"\b(in|into|on|onto|inside) (?:there|here)\s*,\s*((?:in|into|inside|on|onto|on top of) (?:the|that) "
+        r"[a-z ]+?)(?:,? i mean)?(?=\s*(?:[.;!?]|$))",
+        r"\2",
+        out,
+    )
+    # "and then, no wait, after that the red one ...": a correction said only as a pause before the next step
+    out = re.sub(
+        r",?\s*\b(?:no,? wait|wait|hmm|um|uh|er)\s*,\s*(?=(?:after that|then|next|afterwards|and then)\b)", " ", out
+    )
+    # "the cabinet that stands close to you on the right": the cabinet that is on the right
+    out = re.sub(
+        r"\bthat (?:stands|sits|is|lies|rests)(?: (?:close|closest|near|nearest|next) to (?:you|me|the robot))? "
+        r"(on the (?:left|right)|in (?:the )?(?:front|back))\b",
+        r"that is \1",
+        out,
+    )
+    # "open the drawer ... put the cube in the open drawer": the one opened before, whatever else is open
+    out = re.sub(
+        r"\bthe (?:now )?(?:open|opened) ([a-z]+)\b",
+        lambda m: (
+            f"the {m.group(1)}"
+            if re.search(rf"\b(?:open|pull|slide|yank|draw)\b.*\b{m.group(1)}\b", out[: m.start()])
+            else m.group(0)
+        ),
+        out,
+    )
+    out = _narrower_named(out)
     # "slide out the top drawer": the drawer slid out (open)
     out = re.sub(
         r"\b(slide|pull|draw) out ((?:the|its|their|that|this) [a-z' ]+?)(?=\s*(?:[,;.!]|and\b|$))", r"\1 \2 out", out
@@ -824,11 +858,27 @@ def _spoken(text: str) -> str:
     return out
 
 
+def _narrower_named(text: str) -> str:
+    """ "the ramekin dish", "the bowl dish": a noun of a narrower kind before a wider word of its kind names the
+    thing; the wider word adds nothing (and would find every dish)."""
+
+    def narrower(m: re.Match) -> str:
+        first, second = KIND_OF.get(m.group(1)), KIND_OF.get(m.group(2))
+        return m.group(1) if first and second and first < second else m.group(0)
+
+    return re.sub(rf"\b([a-z]+) ({'|'.join(_WIDER)})\b", narrower, text)
+
+
+# Words of a kind that other kind words name part of ("dish": a plate, a bowl, a ramekin).
+_WIDER = sorted(w for w, k in KIND_OF.items() if any(o < k for o in KIND_OF.values()))
+
+
 def restructured(instruction: str) -> str:
     """The instruction said plainly and in the order its steps happen (see the module's docstring); the instruction
     itself when none of these applies."""
-    text = re.sub(r"\s+", " ", instruction.strip().lower().replace("\u2019", "'"))
-    out = _spoken(text)
+    text = re.sub(r"[ \t]+", " ", instruction.strip().lower().replace("\u2019", "'"))
+    out = _spoken(re.sub(r"\s+", " ", spelled_out(text)))  # a spec of keyed fields, said as a sentence
+    text = re.sub(r"\s+", " ", text)
     # a parenthesis that names the thing is an apposition between commas ("the smaller cube (the red one) on ...")
     out = re.sub(
         r"\s*\(\s*(the [a-z]+ ones?)\s*\)\s*(?=(\w)?)",

@@ -4,7 +4,8 @@ orange juice and "the sour cream" the cream cheese; these checks compare what wa
 perception can list of the scene (its inventory), word by word:
 
 - another variety: the phrase's head is the head of things the scene holds ("juice"), but a noun before it names a
-  variety none of them is ("grapefruit" where the scene's juice is the orange juice);
+  variety none of them is ("grapefruit" where the scene's juice is the orange juice), or a flavour or base that
+  makes it another product even where the scene names the thing by its head alone ("chocolate milk");
 - a modifier taken for a thing: the phrase's head is no thing's head or kind in the scene, only a word that
   describes one ("cream" of the cream cheese, "salad" of the salad dressing), unless that thing is named by its
   packaging ("the wine" of the wine bottle);
@@ -35,6 +36,15 @@ _ANY_CONTENTS = frozenset(
 )
 # Things a scene may show inside a container: what is poured.
 _SHOWN_CONTENTS = frozenset(["bead", "beads", "marble", "marbles", "ball", "balls"])
+
+
+# Flavours and bases that make a food or drink another product ("chocolate milk", "almond milk", "tomato soup"):
+# said of a thing the scene names by its head alone, the scene's thing is not it.
+_FLAVOURS = frozenset(
+    ["chocolate", "strawberry", "vanilla", "banana", "almond", "soy", "oat", "coconut", "caramel", "mint", "cherry"]
+    + ["mango", "peach", "raspberry", "blueberry", "hazelnut", "honey", "maple", "garlic", "onion", "mushroom"]
+    + ["chicken", "beef", "pumpkin", "lentil", "pea", "goat", "skim", "skimmed", "buttermilk", "cinnamon"]
+)
 
 
 def _forms(word: str) -> set[str]:
@@ -80,9 +90,13 @@ def other_variety(phrase: str, inventory: tuple[str, ...]) -> str | None:
         return None
     names = _names(inventory)
     same = [n for n in names if _is_head(words[-1], n)]
+    held = {f for n in names for w in n for f in _forms(w)}
+    own = {f for n in same for w in n for f in _forms(w)}  # of the things of its kind ("chocolate pudding" is not)
+    flavour = next((w for w in words[:-1] if w in _FLAVOURS and not _forms(w) & own), None)
+    if same and flavour:
+        return flavour  # "the chocolate milk" where the scene's milk is named by its head alone: another product
     if not same or not all(len(n) > 1 for n in same):
         return None  # no such thing, or one named by its head alone ("plate": "the dinner plate" is it)
-    held = {f for n in names for w in n for f in _forms(w)}
     skip = ATTRIBUTES | _closed_words()
     for w in words[:-1]:
         if w in skip or len(w) < 3 or not _known_noun(w) or _forms(w) & held:

@@ -22,6 +22,7 @@ VERBS: dict[str, tuple[str, ...]] = {
         "seize",
         "collect",
         "hoist",
+        "elevate",
         "choose",
         "select",
         # other English verbs of taking hold
@@ -195,6 +196,13 @@ FILLERS = (
     "thank you",
     "thanks",
     "go ahead and",
+    # chat closings and address ("... real quick fam", "... pls ty")
+    "real quick",
+    "fam",
+    "ty",
+    "tysm",
+    "bro",
+    "dude",
     "robot,",
     "for me",
     "all the way",

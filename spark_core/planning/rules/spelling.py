@@ -21,6 +21,7 @@ from ...perception.colors import BASE_COLOURS
 from ...perception.variants import KIND_OF
 from .lexicon import DETERMINERS, FILLERS, VERBS
 from .mentions import ABSTRACT, _closed_words
+from .specs import KEYS as SPEC_KEYS
 from .things import NOT_THINGS
 
 _MIN = 3  # shorter words are too close to too many others
@@ -30,6 +31,11 @@ _UNMARKED = {
     for w in ["don't", "doesn't", "didn't", "isn't", "aren't", "wasn't", "can't", "won't", "shouldn't", "wouldn't"]
     + ["couldn't", "that's", "there's", "what's", "here's", "you're", "they're", "i've", "i'm", "we've", "you've"]
 }
+
+
+# Chat spellings and shorthand of colours that no keystroke slip reaches ("da bowl", "grn on blu").
+_CHAT = {"da": "the", "tha": "the", "grn": "green", "blu": "blue", "ylw": "yellow", "yllw": "yellow", "wht": "white"}
+_CHAT |= {"blk": "black", "brn": "brown", "gry": "grey", "prpl": "purple", "orng": "orange", "rd": "red"}
 
 
 def _one_slip(a: str, b: str) -> bool:
@@ -51,7 +57,10 @@ def _planner_words() -> frozenset[str]:
     """Every word the planner reads: its verbs, prepositions, fillers and closed words, the interjections and
     shorthand it knows ("sec", "atop", "pls"), the kinds of things and the colours."""
     fillers = {w for f in FILLERS for w in f.split()}
-    words = _closed_words() | set(DETERMINERS) | set(KIND_OF) | set(BASE_COLOURS) | ABSTRACT | NOT_THINGS | fillers
+    keys = {w for k in SPEC_KEYS for w in k.split()}  # "dst", "obj": a spec's keys (rules/specs.py)
+    words = (
+        _closed_words() | set(DETERMINERS) | set(KIND_OF) | set(BASE_COLOURS) | ABSTRACT | NOT_THINGS | fillers | keys
+    )
     return frozenset(w for w in words if w.isalpha())
 
 
@@ -126,6 +135,9 @@ def corrected(instruction: str, inventory: tuple[str, ...] = ()) -> str:
         lambda m: _UNMARKED[m.group(1).lower()],
         instruction,
         flags=re.IGNORECASE,
+    )
+    instruction = re.sub(
+        rf"\b({'|'.join(_CHAT)})\b", lambda m: _CHAT[m.group(1).lower()], instruction, flags=re.IGNORECASE
     )
     scene = _scene_words(inventory)
     known = _planner_words() | scene

@@ -1,0 +1,53 @@
+"""A request written as a spec of keyed fields, as a test log or a batch script says it: "obj: red block; dst: white
+bowl", "action: push; obj: red block; dst: green target area", "src: cream cheese (near left corner); dst: bowl".
+
+The fields are said as the sentence they stand for ("put the red block to the white bowl"), so the rest of the
+rules read it as any request: each value is still a phrase perception must find, and a spec naming a thing the
+scene lacks is refused as any sentence is. A text that is not every part a known key and its value is left alone.
+"""
+
+from __future__ import annotations
+
+import re
+
+# The keys of a spec's fields, by what they say: the thing moved, where it goes, where it comes from, the action.
+KEYS: dict[str, str] = {
+    **dict.fromkeys(["obj", "object", "item", "thing", "target object", "what", "pick"], "thing"),
+    **dict.fromkeys(["dst", "dest", "destination", "to", "goal", "place", "where", "target", "loc", "into"], "to"),
+    **dict.fromkeys(["src", "source", "from"], "from"),
+    **dict.fromkeys(["action", "act", "verb", "op", "do", "task", "skill"], "action"),
+}
+# Where a destination's value already says how the thing goes there ("inside akita black bowl").
+_PREP = r"(?:in|into|inside|on|onto|on top of|next to|in front of|to|under|beside|behind)"
+
+
+def spelled_out(text: str) -> str:
+    """The spec in `text` said as a sentence; `text` itself when it is no spec."""
+    parts = [p.strip() for p in re.split(r"\s*[;|\n]\s*", text.strip().rstrip(".")) if p.strip()]
+    fields: dict[str, str] = {}
+    for part in parts:
+        m = re.fullmatch(r"([a-z ]+?)\s*[:=]\s*(.+)", part.lower())
+        if not m or m.group(1) not in KEYS or KEYS[m.group(1)] in fields:
+            return text
+        fields[KEYS[m.group(1)]] = m.group(2).strip()
+    if len(fields) < 2:
+        return text
+    thing, to, source = fields.get("thing"), fields.get("to"), fields.get("from")
+    if thing is None and source is not None:
+        thing, source = source, None  # "src: cream cheese; dst: bowl": the thing taken from where it is
+    if thing is None or (to is None and "action" not in fields):
+        return text
+    # where a thing is, said in parentheses, says which one: "cream cheese (near left corner)"
+    thing = re.sub(r"\s*\(\s*([^()]+?)\s*\)", r" \1", thing)
+    said = f"{fields.get('action', 'put')} the {_bare(thing)}"
+    if source is not None:
+        said += f" from the {_bare(source)}"
+    if to is not None:
+        prep = re.match(rf"{_PREP}\b", to)
+        said += f" {to}" if prep else f" to the {_bare(to)}"
+    return said
+
+
+def _bare(phrase: str) -> str:
+    """The phrase without its own article ("the bowl" -> "bowl")."""
+    return re.sub(r"^(?:the|a|an)\s+", "", phrase)
