@@ -107,6 +107,14 @@ def test_a_contrast_after_a_verbless_goal_plans_the_goal():
             "put the mug on the shelf that sits close to you on the left",
             ["put obj=mug relation=on target=leftmost shelf"],
         ),
+        # steps said to the robot as what "you" do; the tool said first ("with it ..."); "make X clean"; how it is
+        # rubbed
+        ("you take the cloth and you scrub the plate", ["pick obj=cloth", "scrub target=plate"]),
+        (
+            "grab the sponge, then with it you make the tray clean by scrubbing hard",
+            ["pick obj=sponge", "scrub target=tray tool=sponge"],
+        ),
+        ("then you put the apple in the bowl", ["put obj=apple relation=in target=bowl"]),
         # the thing opened before, said by its state
         (
             "open the drawer and put the spoon into the opened drawer",

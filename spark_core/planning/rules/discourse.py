@@ -834,6 +834,27 @@ def _spoken(text: str) -> str:
         out,
     )
     out = _narrower_named(out)
+    # "you take the sponge, then you wipe the plate": the steps said to the robot as what it does
+    out = re.sub(
+        r"(?:^|(?<=[.;,!?:] )|(?<=\bthen )|(?<=\band ))you (?=([a-z]+)\b)",
+        lambda m: "" if is_verb(m.group(1)) and m.group(1) not in ("know", "see", "mean", "are", "can") else m.group(0),
+        out,
+    )
+    # "then with it you make the plate clean": the tool said before the step it is used in
+    out = re.sub(
+        r"\bwith (it|this|that|them) (?:you )?(([a-z]+)\b[^,.;!?]*)",
+        lambda m: f"{m.group(2).strip()} with {m.group(1)}" if is_verb(m.group(3)) else m.group(0),
+        out,
+    )
+    # "... clean by rubbing hard": how a thing is cleaned, said of a cleaning already asked for
+    out = re.sub(
+        r",?\s*\bby (?:rubbing|scrubbing|wiping|scouring|polishing)(?: (?:it|them|hard|firmly|gently|lightly|well|"
+        r"thoroughly|back and forth|around|a bit))*(?=\s*(?:[,.;!?]|$|with\b))",
+        "",
+        out,
+    )
+    # "make the plate clean", "get the tray spotless": clean it
+    out = re.sub(r"\b(?:make|get) ((?:the|that|this) [a-z ]+?) (?:clean|spotless|shiny|sparkling)\b", r"clean \1", out)
     # "slide out the top drawer": the drawer slid out (open)
     out = re.sub(
         r"\b(slide|pull|draw) out ((?:the|its|their|that|this) [a-z' ]+?)(?=\s*(?:[,;.!]|and\b|$))", r"\1 \2 out", out
