@@ -160,3 +160,59 @@ def test_a_narrower_kind_before_a_wider_word_names_the_thing():
 
     assert restructured("take the bowl by the ramekin dish") == "take the bowl by the ramekin"
     assert restructured("take the bowl by the dinner dish") == "take the bowl by the dinner dish"
+
+
+@pytest.mark.parametrize(
+    ("text", "clauses"),
+    [
+        # a header with an arrow; a tower named without a verb
+        ("goal -> apple inside the bowl", ["put obj=apple relation=in target=bowl"]),
+        ("final tower, blue at the bottom, red on top", ["stack obj=red relation=on target=blue"]),
+        # a word of address; a remark on time after the request; what the speakers are doing, before it
+        (
+            "look at the red mug, dear? put it on the saucer",
+            ["mention obj=red mug", "put obj=red mug relation=on target=saucer"],
+        ),
+        ("put the pear in the bowl - we are running late", ["put obj=pear relation=in target=bowl"]),
+        (
+            "hi, we are testing the new gripper today. could you put the pear in the bowl?",
+            ["put obj=pear relation=in target=bowl"],
+        ),
+        # "closer in", "farther out"; a comparison with "the other one"
+        ("put the apple on the cube farther out", ["put obj=apple relation=on target=farthest cube"]),
+        (
+            "the bowl nearer the stove than the other one goes on the plate",
+            ["put obj=bowl near stove relation=on target=plate"],
+        ),
+        # the side an ordinal counts from, said apart from it
+        (
+            "the third mug, counting from the left, goes on the tray",
+            ["put obj=third leftmost mug relation=on target=tray"],
+        ),
+        (
+            "counting out from the robot, the second cup goes in the sink",
+            ["put obj=second nearest cup relation=in target=sink"],
+        ),
+        # what is not meant, said first
+        (
+            "instead of the plate, put the apple in the bowl",
+            ["mention obj=plate", "put obj=apple relation=in target=bowl"],
+        ),
+        ("rather than the mug, the cup goes on the tray", ["mention obj=mug", "put obj=cup relation=on target=tray"]),
+        # a thing that can stay right where it is
+        (
+            "the pear goes in the bowl; the apple can stay right where it is",
+            ["put obj=pear relation=in target=bowl", "mention obj=apple"],
+        ),
+    ],
+)
+def test_round32_probe43_wording_reads_as_its_plain_form(text, clauses):
+    assert read(text) == clauses
+
+
+def test_robot_said_as_where_counting_starts_is_not_a_word_of_address():
+    # "from the robot," keeps its "robot": only words of address between a comma and the sentence's end go
+    assert read("take the second cup counting out from the robot, and put it in the sink") == [
+        "pick obj=second nearest cup",
+        "put obj=second nearest cup relation=in target=sink",
+    ]

@@ -50,7 +50,8 @@ _BARE_GOAL = re.compile(rf"^(?:{_DET} )?{_NP} (?:(?:goes|go|belongs?) )?(?:in|in
 _STATES = r"(?:open|opened|closed|shut|on|off|empty|full|ajar|cold|hot|there|here|in the way|out)"
 _STAYS = (
     r"(?:stays?|remains?|is staying|should stay|must stay|can stay|stays? where (?:it|they) (?:is|are)|remains? where "
-    r"(?:it|they) (?:is|are))(?: put| still| in place| as (?:it|they) (?:is|are)| where (?:it|they) (?:is|are))?"
+    r"(?:it|they) (?:is|are))(?: put| still| in place| as (?:it|they) (?:is|are)|"
+    r" (?:right |just |exactly )?where (?:it|they) (?:is|are))?"
 )
 _OPENABLE = frozenset(["drawer", "door", "lid", "cabinet", "cupboard", "box", "microwave", "oven", "fridge"])
 _SWITCHED = frozenset(["stove", "burner", "hob", "cooktop", "knob", "dial", "light", "lamp", "tap", "faucet"])
@@ -290,14 +291,14 @@ def _apposed_contrast(text: str) -> str:
     ("the cup that is not blue"), not which place, once it moves."""
 
     def after(m: re.Match) -> str:
-        one = re.fullmatch(r"not \w+ (\w+) one", m.group(2))
+        one = re.fullmatch(r"(?:not|rather than|instead of) \w+ (\w+) one", m.group(2))
         if one:
             return f"{m.group(1)} that is not {one.group(1)} {m.group(3)}{m.group(4)}"
         return f"{m.group(1)} {m.group(3)}, {m.group(2)}{m.group(4)}"
 
     return re.sub(
-        rf"^(.*?\b{_DET} {_NP}),\s*(not {_DET} [^,;.]+?),\s*"
-        rf"((?:in|into|on|onto|to|inside|on top of|next to|{_GOAL_VERBS})\b[^,.;]*?)([.!]?)$",
+        rf"^(.*?\b{_DET} {_NP}),\s*((?:not|rather than|instead of) {_DET} [^,;.]+?),\s*"
+        rf"((?:in|into|on|onto|to|inside|on top of|next to|over to|in front of|{_GOAL_VERBS})\b[^,.;]*?)([.!]?)$",
         after,
         text,
     )
@@ -409,7 +410,7 @@ def _former_latter(text: str) -> str:
 def _header(text: str) -> str:
     """A header before a colon that names no thing and asks nothing ("two jobs: ...", "here's the plan: ..."):
     what follows is the request."""
-    m = re.fullmatch(r"([a-z' ]{1,40}?)\s*[:=]\s*(.+)", text)  # "goal = ...": a header too
+    m = re.fullmatch(r"([a-z' ]{1,40}?)\s*(?:[:=]|-+>|=>|\u2192)\s*(.+)", text)  # "goal = ...", "target state -> ..."
     if not m or _starts_with_verb(m.group(1)):
         return text
     words = re.findall(r"[a-z]+", m.group(1))
@@ -834,6 +835,46 @@ def _spoken(text: str) -> str:
         out,
     )
     out = _narrower_named(out)
+    # a word of address ("see the sponge, sweetie?", "the bottle, buddy") and a word of praise said as a sentence
+    # ("good. now stand it up ...") are no part of the request
+    out = re.sub(rf",\s*\b(?:{_ADDRESS})\b(?=\s*(?:[?.!,;]|$))", "", out)
+    # "..., by the way", "... - we're behind schedule already": a remark after the request
+    out = re.sub(r"\s*(?:-+|,|;|\.)\s*[^-,;.]*?,?\s*\bby the way\s*[.!]?$", "", out)
+    out = re.sub(
+        r"(?<=\S)\s*(?:,|;|-+|\.)\s*(?:we|i)(?: are|'re|'m| am) (?:already )?(?:behind|late|running late|in a "
+        r"hurry|short on time|pressed for time)\b[^.;!?]*[.!]?$",
+        "",
+        out,
+    )
+    out = re.sub(
+        r"(?:^|(?<=[.!?;] ))(?:good|great|nice|perfect|lovely|excellent|well done|do it)\s*(?:[.!;]\s*|$)", "", out
+    ).strip()
+    # "..., i want red on green. fix the stack.": asking for the goal just stated, in a word
+    out = re.sub(
+        r"(?<=[.!?;]) (?:fix|sort out|correct|redo|fix up) (?:the stack|the tower|it|that|this)\s*[.!]?$", "", out
+    )
+    # what the speakers are doing, said as a sentence before the request ("we're checking the scene before the demo;
+    # could you ...")
+    out = re.sub(
+        r"^(?:(?:hi|hello|morning|good morning|hey|okay|ok|so|right)[,.!]*\s+)*(?:we|i)(?: are|'re|'m| am) "
+        r"(?:[a-z]+ing)\b[^.;!?]*?[.;!?]\s+(?=(?:could|can|would|will|please|now)\b)",
+        "",
+        out,
+    )
+    # "the green cube closer in", "the bowl farther out": the nearer, the farther one
+    out = re.sub(r"\bthe ((?:[a-z]+ ){0,2}(?!one\b)[a-z]+) (closer|nearer) in\b", r"the nearer \1", out)
+    out = re.sub(r"\bthe ((?:[a-z]+ ){0,2}(?!one\b)[a-z]+) (?:farther|further) (?:out|back)\b", r"the farther \1", out)
+    # "nearer the plate than the other one (is)": the comparison says no more than "nearer the plate"
+    out = re.sub(r"\s+than the other(?: one| ones| bowl| two)?(?: is| does| are)?\b", "", out)
+    out = _counted_from(out)
+    # "rather than green on red, i want red on green", "not on top of the cabinet - the bottle goes in the bowl": what
+    # is not meant, said first, is said after the request as any contrast
+    out = re.sub(
+        r"^((?:rather than|instead of|not (?=(?:on|in|into|onto|on top of|inside|next to|by|in front of|under)\b))"
+        r"[^,;:-]+?)\s*(?:,|;|:|\s-+)\s*([^.;!?]+?)\s*([.;!?].*)?$",
+        lambda m: f"{m.group(2)}, {m.group(1)}{m.group(3) or ''}",
+        out,
+    )
     # "you take the sponge, then you wipe the plate": the steps said to the robot as what it does
     out = re.sub(
         r"(?:^|(?<=[.;,!?:] )|(?<=\bthen )|(?<=\band ))you (?=([a-z]+)\b)",
@@ -877,6 +918,42 @@ def _spoken(text: str) -> str:
         out,
     )
     return out
+
+
+# Words a speaker addresses the robot by.
+_ADDRESS = r"sweetie|sweetheart|kiddo|buddy|pal|mate|dear|honey|champ|my friend"
+# Where counting starts, and the side an ordinal counts from.
+_COUNTED_FROM = {"robot": "front", "you": "front", "me": "front", "front": "front", "near side": "front"}
+_COUNTED_FROM |= {"right": "right", "left": "left", "back": "back", "far side": "back"}
+
+
+def _counted_from(text: str) -> str:
+    """ "the second black bowl, counting outward from the robot, ...", "going out from the robot, the second bowl
+    ...", "the first one counting from the right": the ordinal counts from that side ("the second black bowl from
+    the front")."""
+    said = re.search(
+        r",?\s*\b(?:counting|going|starting|working|moving|looking) (?:out |outward |outwards |away |in |inward )?"
+        r"from (?:the )?(robot|you|me|front|near side|right|left|back|far side)(?:-hand)?(?: (?:edge|side|end))?"
+        r"(?: of the table)?\s*,?",
+        text,
+    )
+    if not said:
+        return text
+    side = _COUNTED_FROM[said.group(1)]
+    rest = text[: said.start()] + " " + text[said.end() :]
+    ordinal = None
+    for m in re.finditer(r"\bthe (first|second|third|fourth|last|1st|2nd|3rd) ", rest):
+        ordinal = m
+        if m.start() >= said.start():
+            break
+    if ordinal is None:
+        return text
+    words = re.match(
+        r"(?:(?!(?:on|onto|into|in|to|goes|go|and|is|from|off)\b)[a-z][a-z-]* ?){0,3}", rest[ordinal.end() :]
+    )
+    noun_end = ordinal.end() + len(words.group(0).rstrip()) if words else ordinal.end()
+    out = rest[:noun_end] + f" from the {side}" + rest[noun_end:]
+    return re.sub(r"\s+", " ", re.sub(r"\s+([,.;!?])", r"\1", out)).strip()
 
 
 def _narrower_named(text: str) -> str:

@@ -590,8 +590,8 @@ def sentences(instruction: str) -> list[str]:
     )
     # "ketchup stays where it is": left as it is, said of the thing
     text = re.sub(
-        r"(^|[.;!?,] )(?:the )?((?:\w+ ){0,2}\w+) (?:stays?|remains?) "
-        r"(where (?:it is|they are)|as (?:it is|they are)|put)\b",
+        r"(^|[.;!?,] )(?:the )?((?:\w+ ){0,2}?\w+) (?:stays?|remains?|(?:can|may|should|must|will) (?:stay|remain)) "
+        r"(?:right |just |exactly )?(where (?:it is|they are)|as (?:it is|they are)|put)\b",
         r"\1leave the \2 where it is",
         text,
     )
@@ -1508,6 +1508,8 @@ def _tower(items: list[str]) -> list[str] | None:
     items = [re.sub(r"^(?:and )?(?:then|next|after that)\s+", "", i.strip()) for i in items if i.strip()]
     if items:  # "build a tower - blue on the bottom, ...": the stack named first, its order after
         items[0] = _TOWER_HEADER.sub("", items[0])
+        # "three-block tower, blue at the bottom, ...": the tower named without a verb (after a header: "goal: ...")
+        items[0] = re.sub(r"^(?:a |the |one )?(?:[\w-]+ )?tower$", "", items[0])
         items = [i for i in items if i] if len(items) > 1 else items  # "make a tower, blue first, ..."
     counted = _tower_by_ordinals(items)
     if counted:  # "blue first, green second, red third"
