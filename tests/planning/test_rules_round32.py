@@ -199,6 +199,13 @@ def test_a_narrower_kind_before_a_wider_word_names_the_thing():
             ["mention obj=plate", "put obj=apple relation=in target=bowl"],
         ),
         ("rather than the mug, the cup goes on the tray", ["mention obj=mug", "put obj=cup relation=on target=tray"]),
+        # "that <kind>": the one of that kind named before
+        (
+            "open the top drawer and put the bowl in that drawer",
+            ["open obj=top drawer", "put obj=bowl relation=in target=top drawer"],
+        ),
+        # a reason, then the request asked in a frame after "so"
+        ("we need some heat, so would you mind switching the stove on?", ["turn on obj=stove"]),
         # a thing that can stay right where it is
         (
             "the pear goes in the bowl; the apple can stay right where it is",

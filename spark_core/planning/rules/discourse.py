@@ -834,7 +834,7 @@ def _spoken(text: str) -> str:
         ),
         out,
     )
-    out = _narrower_named(out)
+    out = _narrower_named(_that_kind(out))
     # a word of address ("see the sponge, sweetie?", "the bottle, buddy") and a word of praise said as a sentence
     # ("good. now stand it up ...") are no part of the request
     out = re.sub(rf",\s*\b(?:{_ADDRESS})\b(?=\s*(?:[?.!,;]|$))", "", out)
@@ -954,6 +954,29 @@ def _counted_from(text: str) -> str:
     noun_end = ordinal.end() + len(words.group(0).rstrip()) if words else ordinal.end()
     out = rest[:noun_end] + f" from the {side}" + rest[noun_end:]
     return re.sub(r"\s+", " ", re.sub(r"\s+([,.;!?])", r"\1", out)).strip()
+
+
+# Words before a kind that say which one of it ("the top drawer", "the left bowl").
+_WHICH_WORDS = frozenset(
+    ["top", "bottom", "middle", "upper", "lower", "left", "right", "front", "back", "near", "far", "nearer"]
+    + ["farther", "nearest", "farthest", "first", "second", "third", "last", "other", "centre", "center"]
+)
+
+
+def _that_kind(text: str) -> str:
+    """ "open the top drawer, then put the bowl into that drawer": "that <kind>" is the one of that kind named
+    before, with the words that named it."""
+
+    def named(m: re.Match) -> str:
+        kind = m.group(1)
+        before = [
+            said
+            for said in re.findall(rf"\bthe ((?:[a-z-]+ ){{1,3}}){kind}\b", text[: m.start()])
+            if all(w in ATTRIBUTES or w in _WHICH_WORDS or w.endswith("most") for w in said.split())
+        ]
+        return f"the {before[-1]}{kind}" if before and is_thing(kind) else m.group(0)
+
+    return re.sub(r"\b(?<!not )(?:that|this|the same) ([a-z]+)\b(?! (?:is|was|sits|one)\b)", named, text)
 
 
 def _narrower_named(text: str) -> str:

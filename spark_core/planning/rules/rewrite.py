@@ -1418,7 +1418,13 @@ def _request_after_reason(text: str) -> str:
         return text
     if re.search(r"\b(?:it|them|that|this|these|those|one)\b", request):
         return text  # the reason names what the request acts on
-    return request if starts_with_verb(request) or goal_to_action(request) else text
+    # asked in a frame ("so would you mind switching the stove on"), or as the frame left it ("switching ...")
+    asked = re.match(r"(?:would you mind|could you|can you|would you|will you|please|kindly)\b", request)
+    gerund = re.match(r"[a-z]+ing\b", request)
+    said = _lemma_verb(gerund.group(0)) + request[gerund.end() :] if gerund else request
+    if gerund and starts_with_verb(said):
+        return said
+    return request if starts_with_verb(request) or goal_to_action(request) or asked else text
 
 
 def _intensifier(said: str) -> bool:
