@@ -206,6 +206,9 @@ def test_a_narrower_kind_before_a_wider_word_names_the_thing():
         ),
         # a reason, then the request asked in a frame after "so"
         ("we need some heat, so would you mind switching the stove on?", ["turn on obj=stove"]),
+        # "down" of setting a thing down; "the second drawer down"; "it" of a request after a contrast said first
+        ("set the apple down inside the bowl", ["put obj=apple relation=in target=bowl"]),
+        ("rather than turning the lamp on, turn it off", ["turn off obj=lamp"]),
         # a thing that can stay right where it is
         (
             "the pear goes in the bowl; the apple can stay right where it is",

@@ -872,7 +872,7 @@ def _spoken(text: str) -> str:
     out = re.sub(
         r"^((?:rather than|instead of|not (?=(?:on|in|into|onto|on top of|inside|next to|by|in front of|under)\b))"
         r"[^,;:-]+?)\s*(?:,|;|:|\s-+)\s*([^.;!?]+?)\s*([.;!?].*)?$",
-        lambda m: f"{m.group(2)}, {m.group(1)}{m.group(3) or ''}",
+        lambda m: _said_after(m.group(1), m.group(2), m.group(3) or ""),
         out,
     )
     # "you take the sponge, then you wipe the plate": the steps said to the robot as what it does
@@ -896,6 +896,19 @@ def _spoken(text: str) -> str:
     )
     # "make the plate clean", "get the tray spotless": clean it
     out = re.sub(r"\b(?:make|get) ((?:the|that|this) [a-z ]+?) (?:clean|spotless|shiny|sparkling)\b", r"clean \1", out)
+    # "set the cube down inside the drawer": "down" of setting a thing down, not a word of the thing
+    out = re.sub(
+        r"\b(set|put|place|lay|lower|drop) ((?:the|that|this) [a-z ]+?|it|them) down "
+        r"(?=(?:in|into|inside|on|onto|on top of|next to|beside)\b)",
+        r"\1 \2 ",
+        out,
+    )
+    # "the third drawer down": counted from the top
+    out = re.sub(
+        r"\bthe (first|second|third|1st|2nd|3rd) ((?:[a-z]+ )?(?:drawer|shelf|tier|rack|level))s? down\b",
+        r"the \1 \2 from the top",
+        out,
+    )
     # "slide out the top drawer": the drawer slid out (open)
     out = re.sub(
         r"\b(slide|pull|draw) out ((?:the|its|their|that|this) [a-z' ]+?)(?=\s*(?:[,;.!]|and\b|$))", r"\1 \2 out", out
@@ -925,6 +938,20 @@ _ADDRESS = r"sweetie|sweetheart|kiddo|buddy|pal|mate|dear|honey|champ|my friend"
 # Where counting starts, and the side an ordinal counts from.
 _COUNTED_FROM = {"robot": "front", "you": "front", "me": "front", "front": "front", "near side": "front"}
 _COUNTED_FROM |= {"right": "right", "left": "left", "back": "back", "far side": "back"}
+
+
+def _said_after(contrast: str, request: str, rest: str) -> str:
+    """The request, then the contrast said before it; an action ruled out ("rather than turning the stove on")
+    goes, once its thing names the request's "it"."""
+    if re.match(r"(?:rather than|instead of) [a-z]+ing\b", contrast):
+        return f"{_it_named(request, contrast)}{rest}"
+    return f"{request}, {contrast}{rest}"
+
+
+def _it_named(request: str, contrast: str) -> str:
+    """ "rather than turning the stove on, turn it off": "it" of the request is the thing the contrast said first."""
+    thing = re.search(r"\bthe ((?:[a-z]+ ){0,2}?[a-z]+)(?= (?:on|off|open|closed|in|into|onto|to|from)\b|$)", contrast)
+    return re.sub(r"\bit\b", f"the {thing.group(1)}", request, count=1) if thing else request
 
 
 def _counted_from(text: str) -> str:

@@ -198,6 +198,7 @@ FILLERS = (
     "go ahead and",
     # chat closings and address ("... real quick fam", "... pls ty")
     "real quick",
+    "yo",
     "fam",
     "ty",
     "tysm",
