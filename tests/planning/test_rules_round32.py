@@ -115,6 +115,8 @@ def test_a_contrast_after_a_verbless_goal_plans_the_goal():
             ["pick obj=sponge", "scrub target=tray tool=sponge"],
         ),
         ("then you put the apple in the bowl", ["put obj=apple relation=in target=bowl"]),
+        # ... but "with that sponge" names the tool
+        ("mind scrubbing the tray with that sponge?", ["scrub target=tray tool=sponge"]),
         # the thing opened before, said by its state
         (
             "open the drawer and put the spoon into the opened drawer",

@@ -132,7 +132,8 @@ def spoken(text: str) -> str:
     # "then with it you make the plate clean": the tool said before the step it is used in
     out = re.sub(
         r"\bwith (it|this|that|them) (?:you )?(([a-z]+)\b[^,.;!?]*)",
-        lambda m: f"{m.group(2).strip()} with {m.group(1)}" if is_verb(m.group(3)) else m.group(0),
+        # ("with that sponge": "sponge" names the tool, whatever else it may be)
+        lambda m: f"{m.group(2).strip()} with {m.group(1)}" if _tool_first(m) else m.group(0),
         out,
     )
     # "... clean by rubbing hard": how a thing is cleaned, said of a cleaning already asked for
@@ -267,3 +268,9 @@ def _narrower_named(text: str) -> str:
 
 # Words of a kind that other kind words name part of ("dish": a plate, a bowl, a ramekin).
 _WIDER = sorted(w for w, k in KIND_OF.items() if any(o < k for o in KIND_OF.values()))
+
+
+def _tool_first(m: re.Match) -> bool:
+    """ "with it you clean ...": the word after "with it" starts a step; after "with that" it may name the tool."""
+    word = m.group(3)
+    return is_verb(word) and not (m.group(1) in ("this", "that") and is_thing(word))
