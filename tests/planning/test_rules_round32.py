@@ -211,6 +211,14 @@ def test_a_narrower_kind_before_a_wider_word_names_the_thing():
         # "down" of setting a thing down; "the second drawer down"; "it" of a request after a contrast said first
         ("set the apple down inside the bowl", ["put obj=apple relation=in target=bowl"]),
         ("rather than turning the lamp on, turn it off", ["turn off obj=lamp"]),
+        ("open the second drawer down on the wooden cabinet", ["open obj=second top wooden cabinet drawer"]),
+        # a chat address at the end; praise said as a sentence; "fix the stack" after the goal just stated
+        ("put the red block in the bowl yo", ["put obj=red block relation=in target=bowl"]),
+        (
+            "can you see the mug? good. now put it on the saucer",
+            ["mention obj=mug", "put obj=mug relation=on target=saucer"],
+        ),
+        ("i want red on green, not green on red. fix the stack.", ["put obj=red relation=on target=green"]),
         # a thing that can stay right where it is
         (
             "the pear goes in the bowl; the apple can stay right where it is",

@@ -15,8 +15,8 @@ from .things import is_thing, is_verb
 
 
 def spoken(text: str) -> str:
-    """What is said in passing, plainly: a count in parentheses, "not the X one, the other one", a goal ruled out
-    after the goal, "the more distant one", things counted without a verb, "meant to go"."""
+    """`text` (lower-cased) with what is said in passing said plainly (see the module's docstring); each rewrite's
+    comment names the wording it reads."""
     # "the right-hand bowl (of the two)": how many there are says nothing of which
     out = re.sub(
         r"\s*\(\s*of (?:the|those|these) (?:two|2|both)\s*\)|,? of the two(?=\s*(?:,|$|into|onto)\b)", "", text
