@@ -50,8 +50,12 @@ def split_qualifier(prompt: str) -> tuple[str | None, str]:
 
 
 # Relations to another object ("the bowl next to the plate", "the bowl between the plate and the ramekin"):
-# the chosen instance is the one whose centroid is nearest (in the table plane) to the anchor(s).
-RELATIONS = ("between", "next to", "beside", "near", "by", "on top of", "on", "in", "inside", "at", "from", "under")
+# the chosen instance is the one whose centroid is nearest (in the table plane) to the anchor(s), among those on the
+# side a sided relation names ("the bowl left of the plate").
+RELATIONS = (
+    *("between", "next to", "beside", "near", "by", "on top of", "on", "in", "inside", "at", "from", "under"),
+    *("left of", "right of"),
+)
 _RELATION = re.compile(
     r"^(.+?)\s+(" + "|".join(re.escape(r) for r in sorted(RELATIONS, key=len, reverse=True)) + r")\s+(.+)$"
 )
@@ -76,19 +80,34 @@ SUPPORT_RELATIONS = ("on top of", "on", "in", "inside", "at", "from")  # the hea
 NEAR_RELATIONS = ("next to", "beside", "near", "by")
 SUPPORT_MARGIN_M = 0.03  # a bowl's centre may overhang its support's seen footprint by this much
 NEAR_M = 0.2  # "next to": centres at most the anchor's radius plus this apart (table plane)
+# "left of X", "right of X" (the robot's left and right): (world axis, sign) of the side the head is on
+SIDED_RELATIONS: dict[str, tuple[int, float]] = {"left of": (1, 1.0), "right of": (1, -1.0)}
+
+
+def on_side(relation: str, head_xy_m: np.ndarray, anchor_xy_m: np.ndarray) -> bool:
+    """Whether a thing (its centroid in the table plane, world m) is on the side of the anchor's centre that a
+    sided relation ("left of", "right of") names; any relation that names no side holds."""
+    rel = relation.removeprefix("not ")
+    if rel not in SIDED_RELATIONS:
+        return True
+    axis, sign = SIDED_RELATIONS[rel]
+    return sign * (float(head_xy_m[axis]) - float(anchor_xy_m[axis])) > 0.0
 
 
 def relation_holds(relation: str, head_xy_m: np.ndarray, anchors: list[tuple[np.ndarray, float]]) -> bool:
     """Whether a chosen instance (its centroid in the table plane, world m) stands in `relation` to the anchors
     (each: centroid xy and footprint radius, m) - the check a view's pick must pass to outvote another view that
     chose differently. "on/in X": within X's footprint; "next to X": within NEAR_M of its edge; "between A and
-    B": nearer their midpoint than half their distance. A "not ..." relation holds where the relation does not."""
+    B": nearer their midpoint than half their distance; "left/right of X": on that side of X's centre. A "not ..."
+    relation holds where the relation does not."""
     negated = relation.startswith("not ")
     rel = relation[4:] if negated else relation
     centres = [np.asarray(c, float) for c, _ in anchors]
     if rel == "between" and len(centres) >= 2:
         mid = np.mean(centres, axis=0)
         holds = float(np.linalg.norm(head_xy_m - mid)) < 0.5 * float(np.linalg.norm(centres[0] - centres[1]))
+    elif rel in SIDED_RELATIONS:
+        holds = on_side(rel, head_xy_m, centres[0])
     else:
         (c, r), reach = anchors[0], NEAR_M if rel in NEAR_RELATIONS else SUPPORT_MARGIN_M
         holds = float(np.linalg.norm(head_xy_m - np.asarray(c, float))) <= r + reach

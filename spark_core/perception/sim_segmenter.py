@@ -12,7 +12,7 @@ from .colors import normalise_colours
 from .detection import Detection
 from .frame import CameraFrame
 from .naming import ANYTHING, class_members, mismatch, own_noun_prompts
-from .qualifiers import QUALIFIERS, SIZE_AXIS, anchor_apart, split_qualifier, split_relation
+from .qualifiers import QUALIFIERS, SIZE_AXIS, anchor_apart, on_side, split_qualifier, split_relation
 from .text_encoder import SHARED_ENCODER, TextEncoder
 from .variants import (
     SPELLINGS,
@@ -239,7 +239,9 @@ class SimSegmenter:
             dets = [d for d, holds in zip(dets, supported) if holds != negated]
         elif len(dets) > 1 and found:
             target = np.mean(found, axis=0)
-            pick = max if negated else min
+            sided = [d for d in dets if on_side(relation, _centroid_xy(d, frame), target) != negated]
+            dets = sided or dets  # "the bowl left of the plate": of those on that side, the nearest
+            pick = max if negated and not sided else min
             dets = [pick(dets, key=lambda d: float(np.linalg.norm(_centroid_xy(d, frame) - target)))]
         return [
             Detection(

@@ -97,8 +97,8 @@ def test_a_place_said_before_the_request_and_out_of_it():
 
 def test_a_destination_to_the_left_of_another_thing_stands_there():
     assert _read("put the ring onto the rod to the left of the square rod") == [
-        ("put", "ring", "on", "rod near square rod")
-    ]
+        ("put", "ring", "on", "rod left of square rod")
+    ]  # the side perception measures (round 33; "near" before)
 
 
 def test_chat_shorthand_and_wine_and_a_bare_table_before_an_arrow():

@@ -104,7 +104,7 @@ def test_which_one_said_after_a_thing_named_by_its_kind(said):
 def test_a_tool_named_by_where_it_lies():
     said = "use the scourer lying to the left of the saucer to scrub the saucer"
     assert [(c.action, c.target, c.tool) for c in parse_instruction(restructured(said))] == [
-        ("scrub", "saucer", "scourer near saucer")
+        ("scrub", "saucer", "scourer left of saucer")  # the side perception measures (round 33)
     ]
 
 

@@ -80,10 +80,10 @@ def test_a_remark_naming_a_thing_the_scene_lacks_is_no_remark():
             ["put obj=mug on shelf relation=in target=box"],
         ),
         # a thing to the side of another, lifted: where it is, not where it goes
-        ("lift the pear that is to the left of the apple", ["pick obj=pear near apple"]),
+        ("lift the pear that is to the left of the apple", ["pick obj=pear left of apple"]),
         (
             "grab the pear sitting to the right of the apple and put it in the bowl",
-            ["pick obj=pear near apple", "put obj=pear near apple relation=in target=bowl"],
+            ["pick obj=pear right of apple", "put obj=pear right of apple relation=in target=bowl"],  # sided (round 33)
         ),
         # a time said of this request only
         (

@@ -26,7 +26,7 @@ from ..detection import Detection
 from ..frame import CameraFrame
 from ..naming import class_members, own_noun_prompts
 from ..pixels import mask_pixels
-from ..qualifiers import anchor_apart, relation_holds, split_qualifier, split_relation
+from ..qualifiers import anchor_apart, on_side, relation_holds, split_qualifier, split_relation
 from ..quantiles import percentile, percentiles, percentiles_of_sorted
 from ..sim_segmenter import calibrated_score, pick_by_qualifier
 from ..text_encoder import SHARED_ENCODER, TextEncoder
@@ -477,7 +477,9 @@ class LearnedSegmenter:
             centres = [np.mean([_centroid_xy(i.mask, frame) for i in self.instances(frame)], axis=0)]
         if len(dets) > 1 and centres:
             target = np.mean(centres, axis=0)
-            pick = max if negated else min
+            sided = [d for d in dets if on_side(relation, _centroid_xy(d.mask, frame), target) != negated]
+            dets = sided or dets  # "the bowl left of the plate": of those on that side, the nearest
+            pick = max if negated and not sided else min
             dets = [pick(dets, key=lambda d: float(np.linalg.norm(_centroid_xy(d.mask, frame) - target)))]
         out = []
         for d in dets:

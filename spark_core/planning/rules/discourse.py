@@ -656,6 +656,30 @@ def _named_in_apposition(text: str) -> str:
     )
 
 
+# Words that say which of a stack or row a thing is: an ordinal or where it stands.
+_WHICH_OF_A_ROW = (
+    r"first|second|third|fourth|top|bottom|middle|lowest|highest|uppermost|lowermost|upper|lower|leftmost|rightmost"
+)
+
+
+def _row_restated(text: str) -> str:
+    """ "open the lowest drawer of the cabinet, the third one down": an ordinal said again at the end, of a thing
+    already picked out, says nothing new; "open the drawer, the third one down": it picks the thing out."""
+    m = re.search(
+        rf"\b(the|a) ((?:(?!the\b|a\b|of\b)[a-z]+ )*?[a-z]+(?: of the [a-z]+)?)\s*,\s*the ({_WHICH_OF_A_ROW}) one"
+        r"((?: down| up| from the (?:top|bottom|left|right))?)"
+        r"\s*[.!]?$",
+        text,
+    )
+    if not m:
+        return text
+    thing = m.group(2)
+    if re.search(rf"\b(?:{_WHICH_OF_A_ROW})\b", thing):
+        return f"{text[: m.start()]}{m.group(1)} {thing}"
+    noun, sep, of = thing.partition(" of ")
+    return f"{text[: m.start()]}{m.group(1)} {m.group(3)} {noun}{m.group(4)}{' of ' + of if sep else ''}"
+
+
 def _restated_one(text: str) -> str:
     """ "take the stove's bowl, the black one sitting on top of it, and ...": an apposition said of a thing already
     picked out (by whose it is or where it is) only says it again; "take the bowl, the black one, and ...": its
@@ -674,6 +698,10 @@ def _restated_one(text: str) -> str:
             return f"{det} {thing} {rest} "
         return m.group(0)
 
+    # "take the bowl closest to you, beside the ramekin, and ...": where it is, said alone, as "the one beside ..."
+    text = re.sub(
+        rf"\b(the [a-z ]+?), (?=(?:right |just )?(?:{_WHERE}) the [a-z ]+?, (?:and|then)\b)", r"\1, the one ", text
+    )
     return re.sub(
         rf"\b(the|a|an) ([a-z' ]+?)\s*,\s*the (?!other\b)((?:[a-z]+ )?)(?:one|{'|'.join(_GENERAL_NOUNS)})\b([^,;]*),\s*"
         rf"(?=(?:and|then|{_PLACE_PREPS}|{_GOAL_VERBS})\b)",
@@ -792,7 +820,7 @@ def restructured(instruction: str) -> str:
     # "would you mind sorting these? red block into ...": what "these" are, said next
     out = re.sub(r"\b(these|those|the following)\s*\?\s+(?=\S)", r"\1: ", out)
     out = _self_corrected(out)
-    out = _its_part(_negated_state(_joined(_but_clause(_restated_one(_named_in_apposition(out))))))
+    out = _its_part(_negated_state(_joined(_but_clause(_restated_one(_row_restated(_named_in_apposition(out)))))))
     for step in (
         _header,
         _former_latter,

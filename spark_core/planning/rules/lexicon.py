@@ -168,6 +168,8 @@ FILLERS = (
     "would you be so kind as to",
     "would you be kind enough to",
     "be so kind as to",
+    # a request put as a favour ("could you be a dear and switch the stove on")
+    *(f"be {a} and" for a in ("a dear", "a love", "a darling", "an angel", "a sweetheart", "a pal", "a sport")),
     "would you be able to",
     "could you be able to",
     "are you able to",
@@ -224,7 +226,10 @@ REGIONS = ("area", "zone", "region", "square", "spot", "mark")
 # Surfaces the objects stand on anyway: "off the table" or "from the table" says nothing about which object.
 TABLE = ("table", "tabletop", "table top", "counter", "where it is", "where it sits", "its place")
 # Parts of an object that name the object itself as a destination ("the plate's centre" is the plate).
-SELF_PARTS = ("centre", "center", "middle", "surface", "top face", "top side", "top surface", "inside", "interior")
+SELF_PARTS = (
+    *("centre", "center", "middle", "surface", "top face", "top side", "top surface", "inside", "interior"),
+    *("insides", "belly", "hollow", "innards"),
+)
 # What a container holds: "the mug's beads", "the mug's contents" pour from the mug.
 CONTENTS = ("contents", "content", "beads", "balls", "liquid", "water")
 # What may come before the contents' noun: a quantifier and up to three words of their own ("all those little yellow
@@ -245,6 +250,8 @@ STATE_ACTIONS: tuple[tuple[str, str], ...] = (
     ("pulled open", "open"),
     ("pulled out", "open"),
     ("slid out", "open"),
+    ("extended", "open"),  # a drawer's travel: "drawer fully extended"
+    ("retracted", "close"),
     ("pushed in", "close"),
     ("pushed shut", "close"),
     ("opened", "open"),

@@ -35,7 +35,7 @@ _PARTICIPLE = re.compile(
     # (when it is there: "that is currently on the cabinet")
     r"(?:\s+(?:currently|now|still|presently|already|right now))?\s+"
     r"(?=(?:not\s+)?(?:" + "|".join(re.escape(x) for x in LOCATORS) + r"|to (?:the )?(?:left|right) of|in front of|"
-    r"behind)\b)"
+    r"behind|(?:left|right) of)\b)"
 )
 # "up on the cabinet", "down in the drawer", "over by the box": the particle adds nothing to where it is
 _PARTICLE = re.compile(r"\b(?:up|down|over|back) (?=(?:on|onto|in|inside|on top of|at|by|near|next to|beside)\b)")
@@ -112,6 +112,9 @@ def comparative(text: str) -> str:
     m = re.fullmatch(r"(.+?) (?:farthest|furthest|farther|further) from (?:the )?(?!robot|you\b|me\b)(.+)", text)
     if m:
         return f"{m.group(1)} not near {m.group(2)}"
+    m = re.fullmatch(r"(.+?) (?:near|close to|next to|by) (?:to )?(?:the )?(?:robot|you|me)( .+)?", text)
+    if m:  # "the bowl near you (by the ramekin)": the robot is no thing to be near, the nearer one is meant
+        return f"nearest {m.group(1)}{m.group(2) or ''}"
     m = re.fullmatch(r"(.+?) (\w+) (?:to|from) (?:the )?(?:robot|you|me)", text)
     if m and m.group(2) in ("nearer", "closer", "nearest", "closest"):
         return f"nearest {m.group(1)}"
@@ -129,6 +132,12 @@ def locator(text: str) -> str:
     # "the bowl (that) was on top of the cabinet": where it was is where it is until the robot moves it
     text = re.sub(
         r"\b(?:was|were|used to be) (?=(?:on|in|inside|on top of|at|by|near|next to|beside|between)\b)", "", text
+    )
+    # the side of another thing, which perception measures ("the bowl to the left of the plate" -> "left of")
+    text = re.sub(
+        r"\b(?:(?:just|right|directly|immediately) )?(?:to|on|at) (?:the )?(left|right)(?:[- ]hand)?(?: side)? of\b",
+        r"\1 of",
+        text,
     )
     text = BESIDE.sub("near", _PARTICLE.sub("", _NOT_PARTICIPLE.sub("not ", text)))
     text = _PARTICIPLE.sub("", text)
@@ -165,11 +174,13 @@ def object_phrase(words: str) -> str:
     text = _predicative(text)
     # "block (that) is not blue", "block other than the blue one": perception keeps the blocks not blue
     text = re.sub(r"^(.+?) (?:(?:which )?(?:is|are) not|other than) (\w+)(?: ones?)?$", r"\1 not \2", text)
-    if re.search(r"\b(between|next to|beside|near|by|on top of|on|in|inside|at|from|under|not)\b", text):
+    if re.search(
+        r"\b(between|next to|beside|near|by|on top of|on|in|inside|at|from|under|not|left of|right of)\b", text
+    ):
         # the object it is located by reads as a noun phrase too ("next to the box of cookies" -> "cookies box",
         # "in the top tier of the shelf" -> "in shelf top tier")
         head, relation, anchors = split_relation(text)
-        if relation and len(anchors) == 1 and " of " in anchors[0] and not relation.endswith("between"):
+        if relation and len(anchors) == 1 and (" of " in anchors[0] or relation.endswith(("left of", "right of"))):
             return f"{head} {relation} {noun_phrase(anchors[0])}"
         return re.sub(r"\b(\w+) of (\w+)$", _reorder_container, text)
     return noun_phrase(text)

@@ -192,7 +192,7 @@ class RulesPlanner:
             return None
         if any(c.get("primitive") in FIXTURE_STEPS for c in children[-1:]):
             children.append(_prim("go_home"))
-        return _free_hand(_one_grasp(children)), understood
+        return _free_hand(_carried_once(_one_grasp(children))), understood
 
     def _refusal(self, e: Exception, understood: list[str], t0: float) -> PlanResult:
         if isinstance(e, ParseError):
@@ -475,7 +475,7 @@ class RulesPlanner:
                 )
         if clauses and clauses[-1].action in ("open", "close", "turn_on", "turn_off"):
             out.append(_prim("go_home"))  # leave the fixture's neighbourhood
-        return _free_hand(out)
+        return _free_hand(_carried_once(out))
 
     @staticmethod
     def _push_geometry(c: Clause, obj: str, target: str | None, scene) -> tuple[str, float]:
@@ -580,6 +580,23 @@ def _one_grasp(steps: list[dict]) -> list[dict]:
     out: list[dict] = []
     for step in steps:
         if step.get("primitive") == "pick" and out and out[-1] == step:
+            continue
+        out.append(step)
+    return out
+
+
+def _carried_once(steps: list[dict]) -> list[dict]:
+    """A carry said again right after it is done ("place it in the basket; target pose is inside the basket"): the
+    same pick and place twice in a row is one carry; the thing is already there."""
+    out: list[dict] = []
+    for step in steps:
+        if (
+            step.get("primitive") in ("place", "place_in")
+            and len(out) >= 3
+            and out[-1].get("primitive") == "pick"
+            and [out[-3], out[-2]] == [out[-1], step]
+        ):
+            out.pop()
             continue
         out.append(step)
     return out

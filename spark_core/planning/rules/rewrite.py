@@ -165,8 +165,9 @@ _NOT_THERE = re.compile(
 )
 _PURPOSE = re.compile(r"(?:\s*,\s*|\s+)(?:so(?: that)?|in order that|until|till)\s+(.*)$")
 _PURPOSE_PLACE = re.compile(
-    r"\b(?:sits?|is|are|ends? up|rests?|lands?|stays?|goes|fall|falls|drops?|(?:is |are )?(?:sitting|resting))\s+"
-    r"(in front of|next to|beside|inside|into|in|on top of|onto|on)\s+(.+)$"
+    r"\b(?:sits?|is|are|ends? up|rests?|lands?|stays?|goes|fall|falls|drops?|lies|lie|"
+    r"(?:is |are )?(?:sitting|resting|lying))\s+"
+    r"(in front of|next to|beside|inside|into|within|in|on top of|onto|on)\s+(.+)$"
 )
 _DESTINATION = re.compile(r"\b(in front of|into|onto|inside|in|on top of|on|to|over)\b")
 
@@ -194,6 +195,29 @@ def sentences(instruction: str) -> list[str]:
         text,
     )
     text = re.sub(r"[!?]+(?=\s*,)", "", text)  # "the wine bottle, not the bowl!, should go ...": one sentence
+    # "grab the bowl to the right of the box and put it on the plate": it is carried to the plate, so the side said
+    # first is where it is (as "sitting to the right of" says), not a place it goes
+    text = re.sub(
+        r"\b((?:grab|take|pick up|pick|lift|get|grasp|fetch|collect|seize) (?:the|a|an) [a-z ]+?) "
+        r"(?=(?:just |right |directly )?to the (?:left|right)(?:[- ]hand)?(?: side)? of (?:the|a|an) [a-z ]+?,? "
+        r"(?:and|then)(?: then)? (?:\w+ ){1,2}(?:it|them)\b)",
+        lambda m: m.group(0) if re.search(r"(?:ing|ed|is|are)$", m.group(1)) else f"{m.group(1)} sitting ",
+        text,
+    )
+    # "slid along the table until it rests in front of the stove": the surface it moves on, before where it goes
+    text = re.sub(
+        r"\s+(?:along|across|over) the (?:table|tabletop|table top|surface|counter|worktop)\b"
+        r"(?=\s+(?:until|till|to|towards?|into|onto|so)\b)",
+        "",
+        text,
+    )
+    # where the gripper takes hold ("grasp the wine bottle by the neck"): how it is held, no thing of the scene's
+    text = re.sub(
+        r"\b((?:grasp|grab|grip|hold|take|pick up|lift|seize|catch)(?: up)? (?:the|a|an|it|that) ?[a-z ]*?) by "
+        r"(?:the|its) (?:neck|rim|lip|cap|top|base|body|middle|sides?|edges?|corners?|waist|shoulder)\b",
+        r"\1",
+        text,
+    )
     for short, long in CONTRACTIONS.items():
         text = re.sub(rf"\b{re.escape(short)}", long, text)
     # "... in the white bowl instead": the goal replaces how things are, no word of it
@@ -370,6 +394,7 @@ def sentences(instruction: str) -> list[str]:
     )
     text = re.sub(r"^(?:is there )?any chance (?:you could |you can |you would |of you |that you could )?", "", text)
     text = re.sub(r"\byou (?:will |would |are going to )?(?:need|have|got|must) to\b", "", text)
+    text = re.sub(r"\byou (?:will|would) (?:want to|wanna)\b", "", text)  # "first you'll want to open it"
     # "only the cheese goes in the basket": the one thing the goal names
     text = re.sub(r"^only (?=(?:the|a|an) )", "", text)
     # a wish said around the goal ("i'd love it if the ketchup ended up in the basket", "it would be great to have
@@ -665,9 +690,22 @@ def sentences(instruction: str) -> list[str]:
     # about ("get the hob going"): switching it on
     text = re.sub(r"^(fire|heat|power|switch|turn) ((?:the|a|an) [\w ]+?) (up|on)\b", r"\1 \3 \2", text)
     text = re.sub(
-        r"(?:^|(?<=\byou )|(?<=\bplease ))get ((?:the|a|an) [\w ]+?) "
+        r"(?:^|(?<=\byou )|(?<=\bplease )|(?<=\band ))get ((?:the|a|an) [\w ]+?) "
         r"(?:going|started|running|lit|fired up|heated up)\b",
         r"turn on \1",
+        text,
+    )
+    # "the plate is to be slid until it rests in front of the stove": a push said in the passive, then where it ends
+    text = re.sub(
+        r"^((?:the|a|an) [a-z ]+?) (?:is|are|should be|must be|needs to be|has to be|is to be|are to be) "
+        r"(?:pushed|slid|shoved|nudged)\b(?= (?:until|till|so|to|towards?|into|forwards?|backwards?|left|right)\b)",
+        r"push \1",
+        text,
+    )
+    # "make the stove stop being on": the state it is to leave, the other one brought about
+    text = re.sub(
+        r"\bmake ((?:the|a|an) [\w ]+?) (?:stop|quit) being (on|off)\b",
+        lambda m: f"turn {'off' if m.group(2) == 'on' else 'on'} {m.group(1)}",
         text,
     )
     # "the bowl on the burner goes to the plate": a goal verb after a thing named without its article
@@ -779,8 +817,16 @@ def sentences(instruction: str) -> list[str]:
     # a label for the goal said first ("end state: ...", "goal - ..."): what follows is the goal
     text = re.sub(
         r"^(?:the )?(?:end state|final state|end result|desired state|end goal|final goal|goal state|target state|"
-        r"goal|target|objective|aim|result|outcome)\s*[:,]\s*",
+        r"goal|target|objective|aim|result|outcome|"
+        r"(?:target|goal|final|end) (?:pose|configuration|position))\s*[:,]\s*",
         "",
+        text,
+    )
+    # the place said as the goal's pose ("...; target pose is inside the basket"): where the thing goes
+    text = re.sub(
+        r"(^|[;,.] )(?:the )?(?:target|goal|final|end) (?:pose|position|location|spot|place)(?: for it)? "
+        r"(?:is|should be|will be)\s+(?=(?:in|inside|on|onto|on top of|into)\b)",
+        r"\1it goes ",
         text,
     )
     # ... or said to be the goal ("end state should be the bowl ... resting on the plate")

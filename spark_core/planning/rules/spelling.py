@@ -78,6 +78,10 @@ def _action_words() -> frozenset[str]:
 def _fix(word: str, known: frozenset[str], scene: frozenset[str], verb_slot: bool = False) -> str | None:
     if len(word) < _MIN or word in known or getAllLemmas(word):
         return None
+    # a letter held for emphasis ("pleeease", "baskettt"): the word with the run said once, or twice ("sooo")
+    for held in (re.sub(r"(.)\1{2,}", r"\1", word), re.sub(r"(.)\1{2,}", r"\1\1", word)):
+        if held != word and (held in known or getAllLemmas(held)):
+            return held
     near = {k for k in known if len(k) >= _MIN and _one_slip(word, k)}
     if len(near) == 1:
         return next(iter(near))

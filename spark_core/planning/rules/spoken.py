@@ -95,7 +95,10 @@ def spoken(text: str) -> str:
         out,
     )
     out = re.sub(
-        r"(?:^|(?<=[.!?;] ))(?:good|great|nice|perfect|lovely|excellent|well done|do it)\s*(?:[.!;]\s*|$)", "", out
+        r"(?:^|(?<=[.!?;] ))(?:good|great|nice|perfect|lovely|excellent|well done|do it|execute|proceed|go ahead|"
+        r"engage|make it so|go)\s*(?:[.!;]\s*|$)",
+        "",
+        out,
     ).strip()
     # "..., i want red on green. fix the stack.": asking for the goal just stated, in a word
     out = re.sub(
@@ -121,6 +124,14 @@ def spoken(text: str) -> str:
         r"^((?:rather than|instead of|not (?=(?:on|in|into|onto|on top of|inside|next to|by|in front of|under)\b))"
         r"[^,;:-]+?)\s*(?:,|;|:|\s-+)\s*([^.;!?]+?)\s*([.;!?].*)?$",
         lambda m: _said_after(m.group(1), m.group(2), m.group(3) or ""),
+        out,
+    )
+    # "not the bowl next to the plate; the one by the ramekin goes on it", "not the bowl on the ramekin but the other
+    # one: put it ...": the thing ruled out first, then the one meant
+    out = re.sub(
+        rf"^not (?:the|a) ((?:(?!{_LOCATING}\b)[a-z]+ ){{0,2}}?[a-z]+) (?:that is |which is )?(({_LOCATING}) [^,;:]+?)"
+        rf"\s*(?:,|;|:|\s-+)?\s*(?:but )?the (other )?one\b",
+        _other_than_ruled_out,
         out,
     )
     # "you take the sponge, then you wipe the plate": the steps said to the robot as what it does
@@ -187,6 +198,21 @@ _ADDRESS = r"sweetie|sweetheart|kiddo|buddy|pal|mate|dear|honey|champ|my friend"
 # Where counting starts, and the side an ordinal counts from.
 _COUNTED_FROM = {"robot": "front", "you": "front", "me": "front", "front": "front", "near side": "front"}
 _COUNTED_FROM |= {"right": "right", "left": "left", "back": "back", "far side": "back"}
+
+
+# Words that say where a thing is, after its kind ("the bowl next to the plate").
+_LOCATING = r"(?:next to|beside|by|near|on top of|on|in|inside|under|behind|in front of|at|to the (?:left|right) of)"
+
+
+def _other_than_ruled_out(m: re.Match) -> str:
+    """ "not the bowl on the ramekin, the one on the box": the one meant, with its kind; "..., the other one": the one
+    the contrast does not name; "..., the other one by the kettle": left as said, for the contrast rules."""
+    kind, ruled_out, other = m.group(1), m.group(2), m.group(4)
+    if not other:
+        return f"the {kind}"
+    if re.match(rf"\s+{_LOCATING}\b", m.string[m.end() :]):
+        return m.group(0)
+    return f"the {kind} not {ruled_out}"
 
 
 def _said_after(contrast: str, request: str, rest: str) -> str:

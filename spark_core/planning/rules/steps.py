@@ -27,7 +27,7 @@ _ENUMERATION = re.compile(
 # Sequencing words that can only begin a step ("finally", "as a second step", "after that") ...
 _ALWAYS = (
     r"firstly|first of all|first off|to (?:start|begin)(?: with)?|secondly|thirdly|next up|afterwards|after that|"
-    r"after this|finally|lastly|last of all|to finish(?: (?:up|off))?|"
+    r"after this|after which|finally|lastly|last of all|to finish(?: (?:up|off))?|"
     r"as (?:a|the|your) (?:first|second|third|next|final|last) (?:step|thing|move)|"
     r"(?:in|for) (?:the )?(?:first|second|third|next|final|last) (?:step|place)|"
     r"(?:once|when) (?:that(?:'s| is| has been) done|done|finished)"
