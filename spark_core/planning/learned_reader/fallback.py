@@ -43,6 +43,15 @@ _NAMES_NOTHING = frozenset(
     + ["once", "then", "now", "just", "so", "and", "or", "but", "if", "when", "while", "until", "as", "than"]
     + ["in", "on", "at", "of", "to", "into", "onto", "from", "with", "by", "for", "up", "down", "out", "off", "over"]
     + ["against", "back", "other", "same", "also", "too", "very", "i", "you", "me", "we", "us", "my", "your"]
+    # closed-class words the lexicon has no lemma for (so they would count as unknown, maybe a thing): relative and
+    # question words, prepositions, conjunctions, quantifiers, greetings; none names a thing on a table
+    + ["which", "whose", "whom", "what", "who", "whatever", "whichever", "where", "whether", "whereas", "because"]
+    + ["although", "unless", "whilst", "till", "beside", "behind", "underneath", "beneath", "above", "among"]
+    + ["amongst", "toward", "towards", "upon", "via", "per", "despite", "during", "atop", "amid", "neither", "nor"]
+    + ["both", "each", "every", "all", "any", "some", "none", "another", "such", "okay", "ok", "yes", "yeah"]
+    + ["nope", "hey", "hi", "hello"]
+    # verbs of a stated goal whose noun senses are no thing on a table ("the red cube goes ...")
+    + ["goes", "must", "want", "wants", "need", "needs", "sitting", "resting"]
 )
 _NOT_FOUND = re.compile(r"""could not find (?:'([^']*)'|"([^"]*)")""")
 
