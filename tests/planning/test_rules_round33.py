@@ -72,6 +72,9 @@ from tests.planning.test_rules_round28 import read
             "shove the red block forwards until it lies within the green zone",
             ["push obj=red block relation=in target=green zone direction=forward"],
         ),
+        # the robot's own part raised with the thing in it lifts the thing
+        ("grab the mug and raise the gripper", ["pick obj=mug", "pick obj=mug"]),
+        ("grasp the lemon and lift the end-effector up", ["pick obj=lemon", "pick obj=lemon"]),
         # a container's belly is the container
         ("put the lemon in the crate's belly", ["put obj=lemon relation=in target=crate"]),
     ],

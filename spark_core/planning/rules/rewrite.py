@@ -211,6 +211,13 @@ def sentences(instruction: str) -> list[str]:
         "",
         text,
     )
+    # "grasp the cube and raise the end-effector": the robot's own part raised with the thing in it lifts the thing
+    text = re.sub(
+        r"(?<=\band )(?:raise|lift|move up|bring up) (?:the |your |its )?(?:end[- ]?effector|gripper|arm|hand|wrist)"
+        r"(?: up)?\b(?! of\b)",
+        "lift it",
+        text,
+    )
     # where the gripper takes hold ("grasp the wine bottle by the neck"): how it is held, no thing of the scene's
     text = re.sub(
         r"\b((?:grasp|grab|grip|hold|take|pick up|lift|seize|catch)(?: up)? (?:the|a|an|it|that) ?[a-z ]*?) by "
