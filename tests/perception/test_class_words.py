@@ -97,3 +97,21 @@ def test_the_builder_reads_wndb_lines_and_writes_the_same_bytes_each_time(tmp_pa
 
 def test_accented_letters_are_read_as_plain_ones():
     assert corrected("the bowl on the soufflé dish", ("ramekin",)) == "the bowl on the souffle dish"
+
+
+@pytest.mark.parametrize(
+    "word, none",
+    [
+        ("grandma", True),
+        ("folks", True),  # the plural, through its singular
+        ("crowd", True),
+        ("deck", False),  # a ship's deck and a deck of cards: an artifact sense keeps it a thing
+        ("letter", False),  # communication is kept: a letter can lie on a table
+        ("money", False),
+        ("zone", False),
+        ("spoon", False),
+        ("lol", False),  # a word WordNet does not file is taken as a possible thing
+    ],
+)
+def test_a_noun_names_no_thing_only_when_every_sense_is_a_person_group_act_or_the_like(word, none):
+    assert nouns().names_no_thing(word) is none

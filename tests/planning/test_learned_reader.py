@@ -227,3 +227,20 @@ def test_closed_class_words_and_goal_verbs_name_no_thing_but_a_noun_still_does(p
     known = {"red", "cube", "plate"}
     assert fallback.misread(phrase, known)
     assert not fallback.misread(absent, known)
+
+
+@pytest.mark.parametrize(
+    ("phrase", "absent"),
+    [
+        ("white bowl for grandma sweetheart", "white bowl for spoon"),
+        ("crowd goes wild folks", "crowd goes wild ladle"),
+        ("stove lol", "stove lid"),
+        ("thanks buddy", "thanks letter"),
+    ],
+)
+def test_people_groups_and_chat_shorthand_name_no_thing_but_a_thing_still_does(phrase, absent):
+    # WordNet files every sense of "grandma", "folks", "crowd", "buddy" as a person or a group: nothing to look for;
+    # "letter" has a sense that can lie on a table (communication is kept), so it is still an absent thing
+    known = {"white", "bowl", "stove", "goes", "wild"}
+    assert fallback.misread(phrase, known)
+    assert not fallback.misread(absent, known)

@@ -16,6 +16,13 @@ LEXICON_PATH = Path(__file__).with_name("nouns.json.gz")
 # Lexicographer files of things one can see and hold: only senses of these count when naming objects (a "cup" is
 # also a quantity, a "plate" a dental plate and a baseball base; those are artifacts too, and count)
 PHYSICAL = frozenset(["noun.artifact", "noun.food", "noun.object", "noun.plant", "noun.substance", "noun.body"])
+# Lexicographer files of nothing one sets on a table: people, groups, acts, times, feelings, ideas, amounts. Files
+# left out keep a word a possible thing (a "letter" is filed under communication, "money" under possession, a
+# "zone" under location: each can be what a request names).
+NOT_THINGS = frozenset(
+    ["noun.act", "noun.attribute", "noun.cognition", "noun.event", "noun.feeling", "noun.group", "noun.motive"]
+    + ["noun.person", "noun.phenomenon", "noun.process", "noun.relation", "noun.state", "noun.time", "noun.quantity"]
+)
 
 
 @dataclass(frozen=True)
@@ -58,6 +65,17 @@ class Nouns:
             if ids:
                 return ids
         return []
+
+    def names_no_thing(self, noun: str) -> bool:
+        """WordNet files `noun` (or its singular) and every sense of it under `NOT_THINGS`: "grandma", "folks",
+        "crowd" name no thing to look for. False for a word it does not file ("lol") and for a word with any sense
+        that may be a thing ("deck", "step", "letter")."""
+        word = noun.lower().strip()
+        for form in [word] + [f for f in getAllLemmas(word).get("NOUN", ()) if f != word]:
+            ids = self._lemmas.get(form)
+            if ids:
+                return all(self._lexnames[self._synsets[i][0]] in NOT_THINGS for i in ids)
+        return False
 
     @functools.lru_cache(maxsize=65536)  # noqa: B019 - one lexicon per process, shared
     def ancestors(self, synset: int) -> dict[int, int]:

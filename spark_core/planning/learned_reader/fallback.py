@@ -15,6 +15,7 @@ import re
 
 from lemminflect import getAllLemmas
 
+from ...perception.lexicon.nouns import nouns
 from ..protocol import PlanRequest
 from ..rules.framing import verb_words
 from ..rules.lexicon import PARTICIPLES, STATE_ACTIONS, VERBS
@@ -50,6 +51,8 @@ _NAMES_NOTHING = frozenset(
     + ["amongst", "toward", "towards", "upon", "via", "per", "despite", "during", "atop", "amid", "neither", "nor"]
     + ["both", "each", "every", "all", "any", "some", "none", "another", "such", "okay", "ok", "yes", "yeah"]
     + ["nope", "hey", "hi", "hello"]
+    # chat shorthand: words of the register, none a thing
+    + ["lol", "lmao", "omg", "pls", "plz", "thx", "ty", "btw", "tbh", "imo", "asap", "rn", "fwd", "ur", "u", "ya"]
     # verbs of a stated goal whose noun senses are no thing on a table ("the red cube goes ...")
     + ["goes", "must", "want", "wants", "need", "needs", "sitting", "resting"]
 )
@@ -57,9 +60,14 @@ _NOT_FOUND = re.compile(r"""could not find (?:'([^']*)'|"([^"]*)")""")
 
 
 def _may_be_thing(word: str) -> bool:
-    """A word that may name a thing: a noun, or a word the lexicon does not know (taken as one, the safe way)."""
+    """A word that may name a thing: a noun, or a word the lexicon does not know (taken as one, the safe way), unless
+    WordNet files every sense of it as no thing on a table (a person, a group, an act: "grandma", "folks")."""
+    if word in NOUNS_IT_MISSES:
+        return True
     lemmas = getAllLemmas(word)
-    return not lemmas or "NOUN" in lemmas or "PROPN" in lemmas or word in NOUNS_IT_MISSES
+    if lemmas and "NOUN" not in lemmas and "PROPN" not in lemmas:
+        return False
+    return not nouns().names_no_thing(word)
 
 
 # Words after which a word that may be a noun or a verb is the verb ("do not touch", "it sits", "to box").
