@@ -244,3 +244,14 @@ def test_people_groups_and_chat_shorthand_name_no_thing_but_a_thing_still_does(p
     known = {"white", "bowl", "stove", "goes", "wild"}
     assert fallback.misread(phrase, known)
     assert not fallback.misread(absent, known)
+
+
+def test_a_person_said_in_passing_is_not_an_absent_thing_but_an_object_is():
+    # "grandma" is filed only as a person: perception finding nothing for it blocks no plan; "spoon" still does
+    said = view(unresolved={"bowl for grandma": "none found", "grandma": "none found"}, **SAID)
+    result = RulesPlanner().plan(PlanRequest("be a dear and put the red block into the bowl for grandma", said))
+    assert result.ok, result.error
+    assert leaves(result)[-1] in (("place_in", "bowl"), ("place", "bowl"))
+    absent = view(unresolved={"bowl for spoon": "none found", "spoon": "none found"}, **SAID)
+    result = RulesPlanner().plan(PlanRequest("be a dear and put the red block into the bowl for spoon", absent))
+    assert not result.ok and "spoon" in result.error

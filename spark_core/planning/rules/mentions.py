@@ -10,6 +10,7 @@ import re
 
 from ...perception.colors import BASE_COLOURS
 from ...perception.colors import SYNONYMS as COLOUR_SYNONYMS
+from ...perception.lexicon.nouns import nouns
 from ...perception.qualifiers import QUALIFIERS, split_relation
 from ...perception.variants import MATERIALS, SHAPES, SIZES
 from .frames import said_again
@@ -187,6 +188,8 @@ def stray_nouns(instruction: str, clauses: list[Clause]) -> list[str]:
                 continue
             if w in DETERMINERS or w in PRONOUNS or not is_thing(w) or adverb_only(w) or said_again(w):
                 continue  # (a verb said again, "restack", is no thing either)
+            if nouns().names_no_thing(w):
+                continue  # a person, a group, an act ("for grandma", "the crowd goes wild"): nothing to look for
             before = words[i - 1].removesuffix("'s") if i else ""
             if w in ROBOT_PARTS and i and words[i - 1] in _ROBOT_OWNERS:
                 continue  # the robot's own part ("the robot's base", "your arm")
