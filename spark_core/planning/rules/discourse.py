@@ -680,6 +680,10 @@ def _row_restated(text: str) -> str:
     return f"{text[: m.start()]}{m.group(1)} {m.group(3)} {noun}{m.group(4)}{' of ' + of if sep else ''}"
 
 
+# Whose a thing is ("the stove's bowl"), not "that's" / "it's" (that is, it is).
+_POSSESSIVE = r"\b(?!(?:that|it|what|there|here|who|which|where|he|she)'s)[a-z]+'s\b"
+
+
 def _restated_one(text: str) -> str:
     """ "take the stove's bowl, the black one sitting on top of it, and ...": an apposition said of a thing already
     picked out (by whose it is or where it is) only says it again; "take the bowl, the black one, and ...": its
@@ -687,10 +691,16 @@ def _restated_one(text: str) -> str:
 
     def said(m: re.Match) -> str:
         det, thing, attribute, rest = m.group(1), m.group(2), m.group(3).strip(), m.group(4).strip()
-        if "'s " in thing or re.search(r"\b(?:on|in|inside|next to|near|by|beside|from|under)\b", thing):
+        ends, owned = m.group(5), re.search(_POSSESSIVE, thing)
+        # no other thing said in it (a side is none: "off to the right"), else the look may be of the thing after
+        sides = re.sub(r"\b(?:to|on|at) (?:the|your|my) (?:left|right|front|back)\b", "", thing)
+        alone = not re.search(r"\b(?:the|a|an|your|my|its)\b", sides)
+        if attribute and not rest and not owned and alone:  # "the block that's farther from you, the red one"
+            return f"{det} {attribute} {thing}{ends if ends is not None else ' '}"
+        if ends is not None:
+            return m.group(0)
+        if owned or re.search(r"\b(?:on|in|inside|next to|near|by|beside|from|under)\b", thing):
             return f"{det} {thing} "
-        if attribute and not rest and len(thing.split()) == 1:
-            return f"{det} {attribute} {thing} "
         if not attribute and re.fullmatch(_SAID_OF_PLACE, rest):  # "the milk, the carton closest to you, in ..."
             return f"{det} {thing} {rest} "
         if not attribute and re.fullmatch(rf"(?:{_WHERE}) (?:the|your|my) [a-z ]+", rest):
@@ -703,8 +713,8 @@ def _restated_one(text: str) -> str:
         rf"\b(the [a-z ]+?), (?=(?:right |just )?(?:{_WHERE}) the [a-z ]+?, (?:and|then)\b)", r"\1, the one ", text
     )
     return re.sub(
-        rf"\b(the|a|an) ([a-z' ]+?)\s*,\s*the (?!other\b)((?:[a-z]+ )?)(?:one|{'|'.join(_GENERAL_NOUNS)})\b([^,;]*),\s*"
-        rf"(?=(?:and|then|{_PLACE_PREPS}|{_GOAL_VERBS})\b)",
+        rf"\b(the|a|an) ([a-z' ]+?)\s*,\s*the (?!other\b)((?:[a-z]+ )?)(?:one|{'|'.join(_GENERAL_NOUNS)})\b([^,;.!?]*)"
+        rf"(?:,\s*(?=(?:and|then|{_PLACE_PREPS}|{_GOAL_VERBS})\b)|(\s*(?:[.!?]|$)))",
         said,
         text,
     )

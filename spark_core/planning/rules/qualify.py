@@ -232,11 +232,14 @@ def extremes(text: str, push: bool = False) -> str:
     )
     relative = r"(?:(?:that|which) (?:is|are) |(?:sitting|standing|lying|resting|placed) )"
     text = re.sub(
-        rf"\b({DET}) ({NP}) (?:{relative}(?:the )?(?:farther|further|farthest|furthest)(?: away| back| out)?"
+        rf"\b({DET}) ({NP}) (?:{relative}(?:the )?(?:(?:farther|further|farthest|furthest)(?: away| back| out)?|"
+        rf"far (?:away|off|back|out))"
         rf"(?: from {_ME}\b)?(?=$|[\s,.])(?! from\b)|(?:the )?(?:(?:farther|further)(?: away| back| out)? from {_ME}\b|"
         rf"(?:farthest|furthest)(?: away| back| out)?(?: from {_ME}\b)?(?=$|[\s,.])(?! from\b)|"
         # "the one further back goes on the plate": the comparison with its direction, after the noun
-        rf"(?:farther|further) (?:back|away|out)(?=$|[\s,.])(?! from\b)))",
+        rf"(?:farther|further) (?:back|away|out)(?=$|[\s,.])(?! from\b)|"
+        # "the mug (that is) far away (from you)": far from the robot, the farthest
+        rf"far (?:away|off|back|out)(?: from {_ME}\b)?(?=$|[\s,.])(?! from\b)))",
         lambda m: f"{m.group(1)} farthest {m.group(2)}",
         text,
     )
@@ -281,6 +284,15 @@ def _sides(text: str) -> str:
     )
     # the robot's own left is the left perception counts in ("on the robot's left", "on your right", "on its left")
     text = re.sub(r"\b(on|at|to) (?:the robot's|the robot|your|its|my) (left|right)\b", r"\1 the \2", text)
+    # "the mug that is off to the left", "the bowl (and) over on the right": a side said with an adverb of place,
+    # or after a relative; a bare "to the left" after a thing stays where it goes ("move the mug to the left")
+    text = re.sub(
+        rf"\b({DET}) ({NP})(?: and|,)? (?:(?:that|which) (?:is|are) (?:(?:off|over|way|out|far) )?|"
+        rf"(?:sitting|standing|lying|resting) (?:(?:off|over|way|out) )?|(?:off|over|way) )(?:to|on|at) the "
+        rf"{_SIDE}{_SIDE_TAIL}{_SIDE_END}{_NP_END}",
+        lambda m: f"{m.group(1)} {SIDES[m.group(3)]} {m.group(2)}",
+        text,
+    )
     text = re.sub(
         rf"\b({DET}) ({NP}) (?:(?:that|which) (?:is|are) |(?:sitting|standing|lying) )?(?:on|at|in) the (?:far |very )?"
         rf"{_SIDE}{_SIDE_TAIL}{_SIDE_END}{_NP_END}",

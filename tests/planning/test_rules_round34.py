@@ -1,0 +1,48 @@
+"""Round 34: general mechanisms found in the read probe45, each tested on other things and wording than where it
+was found."""
+
+import pytest
+
+from tests.planning.test_rules_round28 import read
+
+
+@pytest.mark.parametrize(
+    ("text", "clauses"),
+    [
+        # a look said after a thing picked out by where it is joins it, at the sentence's end too ("that's" is no
+        # possessive)
+        ("lift the mug that's nearer to you, the blue one.", ["pick obj=nearest blue mug"]),
+        ("take the cup that is farther away, the green one", ["pick obj=farthest green cup"]),
+        (
+            "grab the bottle that's closer to you, the tall one, and put it in the crate",
+            ["pick obj=nearest tall bottle", "put obj=nearest tall bottle relation=in target=crate"],
+        ),
+        # a side is no other thing the look could be of
+        (
+            "pick up the mug that's far away and off to the left, the white one.",
+            ["pick obj=leftmost farthest white mug"],
+        ),
+        # a side said with an adverb of place, or after a relative; far away from the robot is the farthest
+        ("take the cup that's off to the right", ["pick obj=rightmost cup"]),
+        (
+            "grab the bowl over on the left and put it on the tray",
+            ["pick obj=leftmost bowl", "put obj=leftmost bowl relation=on target=tray"],
+        ),
+        ("put the lemon sitting off to the right in the basket", ["put obj=rightmost lemon relation=in target=basket"]),
+        ("lift the jar that is far away", ["pick obj=farthest jar"]),
+        ("pick up the spoon far away from you", ["pick obj=farthest spoon"]),
+    ],
+)
+def test_wordings_of_round_34_read_as_meant(text, clauses):
+    assert read(text) == clauses
+
+
+def test_a_look_after_two_things_is_not_joined_to_the_first():
+    # the look may be of the thing said last
+    assert "put obj=red lid relation=on target=pot on stove" not in read(
+        "put the lid on the pot on the stove, the red one"
+    )
+
+
+def test_a_bare_side_after_a_moved_thing_stays_where_it_goes():
+    assert read("move the mug to the left") == ["put obj=mug relation=on target=left"]
