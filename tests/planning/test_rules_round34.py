@@ -31,6 +31,36 @@ from tests.planning.test_rules_round28 import read
         ("put the lemon sitting off to the right in the basket", ["put obj=rightmost lemon relation=in target=basket"]),
         ("lift the jar that is far away", ["pick obj=farthest jar"]),
         ("pick up the spoon far away from you", ["pick obj=farthest spoon"]),
+        # chat shorthand: a direction texted, a laugh
+        (
+            "push the blue cube fwd into the red zone",
+            ["push obj=blue cube relation=in target=red zone direction=forward"],
+        ),
+        ("put the pear in the basket lol", ["put obj=pear relation=in target=basket"]),
+        # letting go said as a last step of its own: the carry does it
+        (
+            "routine: 1) take the pear; 2) set it in the basket; 3) release.",
+            ["pick obj=pear", "put obj=pear relation=in target=basket"],
+        ),
+        (
+            "lift the mug and put it on the tray. then let go of it.",
+            ["pick obj=mug", "put obj=mug relation=on target=tray"],
+        ),
+        # a list's header and closing status frame the steps; "step one:" after a header still starts a step
+        (
+            "task 7. step one: open the lowest drawer. step two: put the lemon in it. task complete.",
+            ["open obj=bottom drawer", "put obj=lemon relation=in target=bottom drawer"],
+        ),
+        ("job #2: wipe the plate with the sponge. done.", ["scrub target=plate tool=sponge"]),
+        # "the <look> one" compared with the robot keeps its look
+        (
+            "stack the green cube onto the yellow one nearer to you",
+            ["stack obj=green cube relation=on target=nearest yellow cube"],
+        ),
+        (
+            "set the small plate on the white one farther from you",
+            ["put obj=small plate relation=on target=farthest white plate"],
+        ),
     ],
 )
 def test_wordings_of_round_34_read_as_meant(text, clauses):

@@ -255,9 +255,10 @@ def extremes(text: str, push: bool = False) -> str:
     )
     # "the one closer to the robot": "one" stands for the kind named before (parse.py), the comparison before it
     text = re.sub(
-        rf"\b(the|that) ones? (?:(?:that|which) (?:is|are) )?(nearer|closer|nearest|closest|farther|further|farthest|"
-        rf"furthest)(?: away)?(?: to| from)? {_ME}\b",
-        lambda m: f"the {EXTREMES[m.group(2)]} one",
+        rf"\b(the|that) ((?!other\b)[a-z]+ )?ones? (?:(?:that|which) (?:is|are) )?(nearer|closer|nearest|closest|"
+        rf"farther|further|farthest|furthest)(?: away)?(?: to| from)? {_ME}\b",
+        # "the blue one nearer to you": its look stays with it
+        lambda m: f"the {EXTREMES[m.group(3)]} {m.group(2) or ''}one",
         text,
     )
     # "the closest bowl to you": the extreme is said before the noun, the point of view after it

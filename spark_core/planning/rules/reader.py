@@ -412,7 +412,7 @@ _MAX_COMBINATIONS = 8
 # bowl", "... and keep hold of it"): what the step before does anyway, no step of its own.
 _NO_STEP = re.compile(
     r"^(?:let go of|let go|release|keep hold of|keep holding|keep a hold of|hold on to|hold onto)"
-    r" (?:it|them)\b"
+    r"(?: (?:it|them)\b|(?=\s*[.!]?\s*$))"  # or said alone ("...; 3) release.")
 )
 _HOLD_FORMS = ("let go", "release", "keep hold", "keep holding", "keep a hold", "hold on to", "hold onto")
 

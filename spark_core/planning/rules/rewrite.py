@@ -322,6 +322,7 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(r",?\s*\b(?:this time|for once|for today|this once|(?:just )?for the moment)\b", "", text)
     # thanks as it is texted ("... in the basket thx"): a courtesy, said plainly so that it closes the request
     text = re.sub(r"\b(?:thx|thnx|thnks|thanx|thks|tyvm)\b", "thanks", text)
+    text = re.sub(r"\bfwd\b", "forward", text)  # a direction as it is texted ("push it fwd")
     # "the mug's got beads in it": the mug has them, not whose
     text = re.sub(r"(\w)'s got\b|\bhas got\b", lambda m: f"{m.group(1) or ''} has".lstrip(), text)
     # an interjection or a turn-taking word said first ("hey, ...", "um ...", "next: ..."): no part of the request
@@ -553,6 +554,19 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(
         r"(?:\s*,\s*|\s+)(?:and\s+)?(?:then\s+)?(?:open|release|relax|loosen|let go of) (?:the |your )?"
         r"(?:gripper|grip|hand|fingers|claw|jaws)\b(?=\s*(?:$|[,.;!?]))",
+        "",
+        text,
+    )
+    # a list's closing status ("item complete.", "task done."): the request's frame, no step
+    text = re.sub(
+        r"(?<=[.;!?])\s*(?:checklist |task |job |item |step |procedure |order )?"
+        r"(?:complete|completed|done|finished|over)\s*[.!]?\s*$",
+        "",
+        text,
+    )
+    # "...; 3) release.", "... . let go of it": letting go said as a last sentence of its own, which a carry does
+    text = re.sub(
+        r"(?<=[.;!?])\s*(?:and |then |finally |lastly )?(?:release|let go)(?: (?:of )?(?:it|them))?\s*[.!]?\s*$",
         "",
         text,
     )

@@ -21,8 +21,13 @@ _AT = r"(?:^|(?<=[,;:.!?])\s*|\s+-+\s+|\s+(?:and|but)\s+|\s+(?:and\s+)?then,?\s+
 # A step's number: "step 1:", "step two -", "1)", "(2)", "2.", "#3", "a)" (a letter only with its bracket).
 _NUMBER = r"(?:\d|one|two|three|four|five)"
 _ENUMERATION = re.compile(
-    rf"(?:^|\s+|(?<=[,;.]))(?:step\s*{_NUMBER}\s*[:.)-]?|\(?{_NUMBER}\)|\(?[a-e]\)|#\s*{_NUMBER}\s*[:.)-]?|"
+    rf"(?:^|\s+|(?<=[,;.\s]))(?:step\s*{_NUMBER}\s*[:.)-]?|\(?{_NUMBER}\)|\(?[a-e]\)|#\s*{_NUMBER}\s*[:.)-]?|"
     r"(?<![\w.])\d\s*[.:](?=\s+[a-z]))\s*"
+)
+# A list's header before its steps ("checklist item 4.", "task #2:"): the request's frame, no step.
+_HEADER = re.compile(
+    r"^(?:checklist|task|job|order|ticket|item|protocol|procedure|exercise)(?: item)? (?:no\.? ?|number |#)?"
+    r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*[.:]\s*"
 )
 # Sequencing words that can only begin a step ("finally", "as a second step", "after that") ...
 _ALWAYS = (
@@ -59,7 +64,8 @@ def sequenced(text: str) -> str:
     """The instruction (lower case) with its step cues as sentence boundaries ("step 1: pick up the red block. step
     2: ..." -> "pick up the red block. ..."); the text itself when it has none. Only cues that start a step count:
     "the first block", "first bowl from the left" and "next to" name a thing or a place, not a step."""
-    out = _ENUMERATION.sub(". ", text)
+    out = _HEADER.sub("", text)
+    out = _ENUMERATION.sub(". ", out)
     out = _CUE.sub(_cue, out)
     out = _RESTATED.sub("", out)
     if out == text:
