@@ -3,6 +3,7 @@ was found."""
 
 import pytest
 
+from tests.planning.scene_views import leaves, plan, view
 from tests.planning.test_rules_round28 import read
 
 
@@ -52,6 +53,17 @@ from tests.planning.test_rules_round28 import read
             ["open obj=bottom drawer", "put obj=lemon relation=in target=bottom drawer"],
         ),
         ("job #2: wipe the plate with the sponge. done.", ["scrub target=plate tool=sponge"]),
+        # where the thing is, said alone between commas before its goal ("up", "over" before the place)
+        (
+            "of the two mugs, the taller one, over by the sink, goes on the tray",
+            ["put obj=taller mug by sink relation=on target=tray"],
+        ),
+        (
+            "the smaller cup, next to the kettle, goes on the saucer",
+            ["put obj=smallest cup next to kettle relation=on target=saucer"],
+        ),
+        # a place word said again after the place
+        ("put the jar on the shelf, up top", ["put obj=jar relation=on target=shelf"]),
         # "the <look> one" compared with the robot keeps its look
         (
             "stack the green cube onto the yellow one nearer to you",
@@ -76,3 +88,11 @@ def test_a_look_after_two_things_is_not_joined_to_the_first():
 
 def test_a_bare_side_after_a_moved_thing_stays_where_it_goes():
     assert read("move the mug to the left") == ["put obj=mug relation=on target=left"]
+
+
+def test_no_and_a_gerund_says_how_not_to_do_it():
+    scene = view(mug=(0.5, 0.0, 0.0), tray=(0.4, 0.2, 0.0), unresolved={"no lifting": "none found"})
+    result = plan("shove the mug over to the tray. no lifting, just slide it.", scene)
+    assert result.ok, result.error
+    assert leaves(result)[0] == ("push_object", "mug")
+    assert "set aside as a remark" in result.detail["understood"][-1]

@@ -703,14 +703,19 @@ def _restated_one(text: str) -> str:
             return f"{det} {thing} "
         if not attribute and re.fullmatch(_SAID_OF_PLACE, rest):  # "the milk, the carton closest to you, in ..."
             return f"{det} {thing} {rest} "
-        if not attribute and re.fullmatch(rf"(?:{_WHERE}) (?:the|your|my) [a-z ]+", rest):
+        if not attribute and re.fullmatch(
+            rf"(?:up |down |over |right |just )?(?:{_WHERE}) (?:the|your|my) [a-z ]+", rest
+        ):
             # "the right bowl, the one in the middle of the table, goes ...": where it is joins the thing
             return f"{det} {thing} {rest} "
         return m.group(0)
 
     # "take the bowl closest to you, beside the ramekin, and ...": where it is, said alone, as "the one beside ..."
     text = re.sub(
-        rf"\b(the [a-z ]+?), (?=(?:right |just )?(?:{_WHERE}) the [a-z ]+?, (?:and|then)\b)", r"\1, the one ", text
+        rf"\b(the [a-z ]+?), (?=(?:right |just |up |down |over )?(?:{_WHERE}) the [a-z ]+?, "
+        rf"(?:and|then|{_GOAL_VERBS})\b)",
+        r"\1, the one ",
+        text,
     )
     return re.sub(
         rf"\b(the|a|an) ([a-z' ]+?)\s*,\s*the (?!other\b)((?:[a-z]+ )?)(?:one|{'|'.join(_GENERAL_NOUNS)})\b([^,;.!?]*)"

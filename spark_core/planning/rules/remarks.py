@@ -39,6 +39,7 @@ _SELVES = frozenset(
 # to see ...", "i do the rest myself"), or a thing left as it is ("the other bowl can stay where it is", "fyi").
 _REMARK = re.compile(
     r"\b(?:not|never|don't|dont|doesn't|won't)\b|n't\b|^(?:i|we|my|our|just|fyi|btw|nothing else)\b|"
+    r"^no \w+ing\b|"  # how not to do it ("no lifting, just push")
     r"\b(?:can|should|may|will) (?:stay|remain|be left)\b|\b(?:stays?|remains?) (?:where|as|put)\b|\bfyi\b|\bbtw\b"
 )
 # A remark never says the request itself in other words ("i want the red cube on the green one").

@@ -323,6 +323,8 @@ def sentences(instruction: str) -> list[str]:
     # thanks as it is texted ("... in the basket thx"): a courtesy, said plainly so that it closes the request
     text = re.sub(r"\b(?:thx|thnx|thnks|thanx|thks|tyvm)\b", "thanks", text)
     text = re.sub(r"\bfwd\b", "forward", text)  # a direction as it is texted ("push it fwd")
+    # "..., up top": where the place is, said again after it ("top" alone is a place of its own)
+    text = re.sub(r",\s*(?:up top|down below|down low|up high)\s*(?=$|[.!,;])", "", text)
     # "the mug's got beads in it": the mug has them, not whose
     text = re.sub(r"(\w)'s got\b|\bhas got\b", lambda m: f"{m.group(1) or ''} has".lstrip(), text)
     # an interjection or a turn-taking word said first ("hey, ...", "um ...", "next: ..."): no part of the request
