@@ -64,6 +64,17 @@ from tests.planning.test_rules_round28 import read
         ),
         # a place word said again after the place
         ("put the jar on the shelf, up top", ["put obj=jar relation=on target=shelf"]),
+        # a state with what it holds: the opening, then the carry into it
+        (
+            "when ur done the cabinet should be pulled out with the lemon sitting in it",
+            ["open obj=cabinet", "put obj=lemon relation=in target=cabinet"],
+        ),
+        (
+            "the top drawer needs to be open with the bowl inside it",
+            ["open obj=top drawer", "put obj=bowl relation=in target=top drawer"],
+        ),
+        # how a thing stands, said of its state
+        ("i need the oven door standing open", ["open obj=oven door"]),
         # "the <look> one" compared with the robot keeps its look
         (
             "stack the green cube onto the yellow one nearer to you",

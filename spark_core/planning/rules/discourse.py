@@ -474,7 +474,7 @@ def _cleft(text: str) -> str:
         text,
     )
     m = re.fullmatch(rf"(?:{_DET} )?({_NP}) with (?:the|a|an) ({_NP}) (in|on|inside|on top of) (?:it|them)\.?", text)
-    if m:
+    if m and not re.search(r"\b(?:should|must|needs?|has|have|is|are|be)\b", m.group(1)):  # no state said of it
         return f"the {m.group(2)} {m.group(3)} the {m.group(1)}"
     return text
 

@@ -323,6 +323,23 @@ def sentences(instruction: str) -> list[str]:
     # thanks as it is texted ("... in the basket thx"): a courtesy, said plainly so that it closes the request
     text = re.sub(r"\b(?:thx|thnx|thnks|thanx|thks|tyvm)\b", "thanks", text)
     text = re.sub(r"\bfwd\b", "forward", text)  # a direction as it is texted ("push it fwd")
+    # "when ur done the drawer should be ...": the end of the task, said of the goal that follows
+    text = re.sub(
+        r"^(?:when|once) (?:you(?:'re| are| r)?|ur|u r|you're) (?:all )?(?:done|finished),?\s+(?=the\b)", "", text
+    )
+    # "i need the drawer standing open": how a thing wanted stands, said of its state
+    text = re.sub(
+        r"\b(need|want|like|get|keep) (the [a-z ]+?) (?:standing|sitting|left|lying|hanging) (open|shut|closed)\b",
+        r"\1 \2 \3",
+        text,
+    )
+    # "the drawer should be open with the block (sitting) in it": the opening, then the carry into it
+    text = re.sub(
+        r"\b(the [a-z ]+?) (?:should be|must be|needs to be|is to be|has to be) (?:left )?(?:open|opened|pulled out|"
+        r"pulled open|slid out) with (the [a-z ]+?) (?:sitting |resting |placed |put |lying )?(in|inside) it\b",
+        r"open \1, then put \2 in it",
+        text,
+    )
     # "..., up top": where the place is, said again after it ("top" alone is a place of its own)
     text = re.sub(r",\s*(?:up top|down below|down low|up high)\s*(?=$|[.!,;])", "", text)
     # "the mug's got beads in it": the mug has them, not whose
