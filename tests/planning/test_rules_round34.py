@@ -75,6 +75,10 @@ from tests.planning.test_rules_round28 import read
         ),
         # how a thing stands, said of its state
         ("i need the oven door standing open", ["open obj=oven door"]),
+        # "that one" after a thing said first only points back at it
+        ("the jar on the shelf, that one goes in the basket", ["put obj=jar on shelf relation=in target=basket"]),
+        # a thing said first without its article, then "the one <where>"
+        ("cup on the left, the one by the kettle, onto the tray", ["put obj=leftmost cup relation=on target=tray"]),
         # "the <look> one" compared with the robot keeps its look
         (
             "stack the green cube onto the yellow one nearer to you",

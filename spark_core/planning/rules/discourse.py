@@ -710,6 +710,20 @@ def _restated_one(text: str) -> str:
             return f"{det} {thing} {rest} "
         return m.group(0)
 
+    # "bowl closest to you, the one on the stove, onto the plate": a thing said first without its article (not a
+    # request: "take the mug, the white one, ...")
+    text = re.sub(
+        r"^(?!(?:the|a|an|not|no|it|this|that|i|you|we|of|in|on|at|for|from|with|by|to|please|now|then|and|so|first|"
+        r"next|after|once|when|if)\b)([a-z]+(?: [a-z]+){0,4}), (?=the (?:[a-z]+ )?one\b)",
+        lambda m: m.group(0) if starts_with_verb(m.group(1)) else f"the {m.group(1)}, ",
+        text,
+    )
+    # "the bowl on the cabinet, that one goes on the plate": "that one" only points back at the thing said first
+    text = re.sub(
+        rf"^((?:the|a|an) [a-z' ]+?),\s*(?:that|this) one (?=(?:{_GOAL_VERBS})\b)",
+        r"\1 ",
+        text,
+    )
     # "take the bowl closest to you, beside the ramekin, and ...": where it is, said alone, as "the one beside ..."
     text = re.sub(
         rf"\b(the [a-z ]+?), (?=(?:right |just |up |down |over )?(?:{_WHERE}) the [a-z ]+?, "
