@@ -111,3 +111,10 @@ def test_no_and_a_gerund_says_how_not_to_do_it():
     assert result.ok, result.error
     assert leaves(result)[0] == ("push_object", "mug")
     assert "set aside as a remark" in result.detail["understood"][-1]
+
+
+def test_a_list_label_before_a_colon_is_no_thing_to_find():
+    scene = view(pear=(0.5, 0.0, 0.0), bowl=(0.4, 0.2, 0.0), unresolved={"procedure": "none found"})
+    result = plan("procedure: 1) take the pear; 2) put it in the bowl; 3) release.", scene)
+    assert result.ok, result.error
+    assert leaves(result)[-1] in (("place_in", "bowl"), ("place", "bowl"))

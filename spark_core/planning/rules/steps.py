@@ -26,8 +26,10 @@ _ENUMERATION = re.compile(
 )
 # A list's header before its steps ("checklist item 4.", "task #2:"): the request's frame, no step.
 _HEADER = re.compile(
-    r"^(?:checklist|task|job|order|ticket|item|protocol|procedure|exercise)(?: item)? (?:no\.? ?|number |#)?"
-    r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*[.:]\s*"
+    r"^(?:(?:checklist|task|job|order|ticket|item|protocol|procedure|exercise)(?: item)? (?:no\.? ?|number |#)?"
+    r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*[.:]|"
+    # ... or its label alone before a colon ("procedure: 1) ...")
+    r"(?:procedure|protocol|steps|instructions|routine|recipe|checklist|sequence)\s*:)\s*"
 )
 # Sequencing words that can only begin a step ("finally", "as a second step", "after that") ...
 _ALWAYS = (
