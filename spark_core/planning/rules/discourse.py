@@ -20,9 +20,10 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from lemminflect import getLemma
+from lemminflect import getAllLemmas, getLemma
 
 from ...perception.colors import BASE_COLOURS
+from ...perception.lexicon.nouns import nouns
 from .lexicon import VERBS
 from .mentions import ATTRIBUTES
 from .phrases import singular
@@ -684,6 +685,90 @@ def _row_restated(text: str) -> str:
 _POSSESSIVE = r"\b(?!(?:that|it|what|there|here|who|which|where|he|she)'s)[a-z]+'s\b"
 
 
+def _stage_direction(words: str) -> bool:
+    """ "whispering", "quietly": how it is said, as a script writes it."""
+    first = words.split()[0]
+    return adverb_only(first) or (is_verb(first) and first.endswith("ing"))
+
+
+def _manner_dropped(text: str) -> str:
+    """ "quietly slide the drawer closed", "..., smartly now!": a word only ever an adverb, said of how the request
+    is done, before its verb or alone after a comma at the sentence's end, says nothing of what is done."""
+    text = re.sub(
+        r"(^|\s)([a-z]+ly) (?=([a-z]+))",
+        lambda m: m.group(1) if adverb_only(m.group(2)) and _starts_with_verb(text[m.end() :]) else m.group(0),
+        text,
+    )
+    # a stage direction in parentheses ("(whispering)", "(quietly)") at the start or the end
+    text = re.sub(
+        r"(?:^\(\s*([a-z]+(?: [a-z]+)?)\s*\)\s*|\s*\(\s*([a-z]+(?: [a-z]+)?)\s*\)\s*(?=[.!?]*$))",
+        lambda m: m.group(0) if not _stage_direction(m.group(1) or m.group(2)) else "",
+        text,
+    )
+    # a comparison says how, never what ("..., as one would handle a ming vase", "..., as if it were made of glass")
+    text = re.sub(
+        r",\s*(?:just )?(?:as (?:one|you|i|we|a \w+) (?:would|might|does|do)|as if|as though|like (?:one|you) would)\b"
+        r"[^.!?;]*",
+        "",
+        text,
+    )
+    return re.sub(
+        r",\s*(?:(?:very|so|extra|real|super|nice and) )?((?:[a-z]+ly )?[a-z]+ly)(?: now| please| there)?"
+        r"\s*([.!?]*)\s*$",
+        lambda m: m.group(2) if all(adverb_only(w) for w in m.group(1).split()) else m.group(0),
+        text,
+    )
+
+
+def _pointed_and_urged(text: str) -> str:
+    """ "ah go on, open that drawer there": urging said before the request ("go on,", "come on,") and "there" after
+    a thing pointed at with "that" say nothing of what is done ("go on" as a goal, "it should go on the plate", is
+    never said before a comma)."""
+    text = re.sub(
+        r"^(?:(?:ah|oh|well|now|aw) )?(?:go on|come on|go ahead|off you go)\s*[,!.]+\s*(?=(\S.*))",
+        lambda m: "" if _starts_with_verb(m.group(1)) else m.group(0),
+        text,
+    )
+    # (not where a carry puts it: "put that cup there" says where)
+    return re.sub(
+        r"\b(([a-z]+) (?:that|this|those|these) [a-z]+(?: [a-z]+)?) (?:there|here|over there)"
+        r"(?=\s*,|\s+(?:and|then)\b)",
+        lambda m: m.group(0) if m.group(2) in VERBS["put"] else m.group(1),
+        text,
+    )
+
+
+def _dashed_apposition(text: str) -> str:
+    """ "take the bowl next to the ramekin - the closer of the two bowls - and ...", "pick up the cube on the right -
+    the red one.": an apposition between dashes, or after one at the sentence's end, is one between commas; "the
+    closer of the two bowls" is "the closer one"."""
+    text = re.sub(r"\s+-+\s+((?:the|a|an) [a-z' ]+?)\s+-+\s+", r", \1, ", text)
+    text = re.sub(
+        r"\s+-+\s+((?:the|a|an) (?![a-z' ]*\b(?:in|into|on|onto|to)\b)[a-z' ]+?)\s*([.!?]*)$", r", \1\2", text
+    )
+    # (only in an apposition: "pick up the farther of the two cubes" names its kind)
+    return re.sub(
+        r"(?<=, )the (closer|nearer|farther|further|bigger|smaller|larger|taller|shorter|left|right|front|back) of the "
+        r"(?:two|2|pair of) [a-z]+\b(?=,)",
+        r"the \1 one",
+        text,
+    )
+
+
+def _class_apposition(text: str) -> str:
+    """ "put the chocolate pudding cup, the dessert, into the basket": an apposition whose one noun is a class the
+    thing falls under (WordNet) only says what sort of thing it is."""
+
+    def said(m: re.Match) -> str:
+        thing, noun = m.group(2), m.group(3)
+        lexicon = nouns()
+        if any((k := lexicon.kinship(noun, w)) is not None and (k.broader or k.same) for w in thing.split()[-2:]):
+            return f"{m.group(1)} {thing}" + ("" if m.group(4) == "," else m.group(4))
+        return m.group(0)
+
+    return re.sub(r"\b(the|a|an) ([a-z' ]+?), the ([a-z]+)((?:,|\s*[.!?]*$))", said, text)
+
+
 def _restated_one(text: str) -> str:
     """ "take the stove's bowl, the black one sitting on top of it, and ...": an apposition said of a thing already
     picked out (by whose it is or where it is) only says it again; "take the bowl, the black one, and ...": its
@@ -701,13 +786,16 @@ def _restated_one(text: str) -> str:
             return m.group(0)
         if owned or re.search(r"\b(?:on|in|inside|next to|near|by|beside|from|under)\b", thing):
             return f"{det} {thing} "
+        # "the second bowl, the one on the stove": "second" only counted it as another of its kind; where it is says
+        # which
+        unordered = re.sub(r"^(?:second|2nd|other) (?=\w)", "", thing)
         if not attribute and re.fullmatch(_SAID_OF_PLACE, rest):  # "the milk, the carton closest to you, in ..."
-            return f"{det} {thing} {rest} "
+            return f"{det} {unordered} {rest} "
         if not attribute and re.fullmatch(
             rf"(?:up |down |over |right |just )?(?:{_WHERE}) (?:the|your|my) [a-z ]+", rest
         ):
             # "the right bowl, the one in the middle of the table, goes ...": where it is joins the thing
-            return f"{det} {thing} {rest} "
+            return f"{det} {unordered} {rest} "
         return m.group(0)
 
     # "bowl closest to you, the one on the stove, onto the plate": a thing said first without its article (not a
@@ -725,8 +813,10 @@ def _restated_one(text: str) -> str:
         text,
     )
     # "take the bowl closest to you, beside the ramekin, and ...": where it is, said alone, as "the one beside ..."
+    # ("sitting on the ramekin", "between the plate and the ramekin" alike)
     text = re.sub(
-        rf"\b(the [a-z ]+?), (?=(?:right |just |up |down |over )?(?:{_WHERE}) the [a-z ]+?, "
+        rf"\b(the [a-z ]+?), (?:(?:sitting|standing|resting|lying|placed|located|kept) )?"
+        rf"(?=(?:right |just |up |down |over )?(?:{_WHERE}|between) the [a-z ]+?, "
         rf"(?:and|then|{_GOAL_VERBS})\b)",
         r"\1, the one ",
         text,
@@ -818,6 +908,133 @@ def _self_corrected(text: str) -> str:
     return (before[: corrected.start()] + new + before[corrected.end() :] + after).strip()
 
 
+# Words that take back what was just said (no hesitation sounds: "open the drawer, um, put the cube in it" is two
+# steps); a bare "no" only after a pause mark.
+_TAKEN_BACK = (
+    r"(?:no,? wait|wait,? no|no,? no|sorry|oops|actually|make that|or rather|correction|scratch that|i mean|i meant)"
+)
+_TAKEN_BACK_RUN = re.compile(rf"(?:\s*(?:,|;|-+|\.)\s*(?:no\b[\s,.]*)?|\s+)((?:{_TAKEN_BACK}\b[\s,.]*)+)(?=\S)")
+# The thing a request acts on: its first article phrase, up to where it goes or the clause ends.
+_ACTED_ON = re.compile(
+    r"\b((?:the|a|an) [a-z' ]+?)(?=\s*$|\s+(?:in|into|on|onto|on top of|to|from|off|next to|inside|over)\b)"
+)
+
+
+def _names_a_thing(word: str) -> bool:
+    """A noun that may name a thing on the table: not a word of address or assent ("okay", "right", "buddy")."""
+    lemmas = getAllLemmas(word)
+    return is_thing(word) and "NOUN" in lemmas and "ADV" not in lemmas and not nouns().names_no_thing(word)
+
+
+def _bare_topic(text: str) -> str:
+    """ "middle drawer on the wooden cabinet, open it": a thing said first without its article, then a request that
+    acts on "it", is the thing the request is about (as "the middle drawer ..., open it"), not a carry of it."""
+
+    def topic(m: re.Match) -> str:
+        said, request = m.group(2), m.group(3)
+        head = re.split(rf" (?:{_WHERE}|of)\b", said, maxsplit=1)[0].split()
+        if (
+            re.match(
+                r"(?:the|a|an|this|that|these|those|my|your|our|its|some|any|no|all|each|both|either|neither|none|"
+                r"(?:any|every|some|no)(?:thing|one|body)|whatever|whichever)\b",
+                said,
+            )
+            or not _names_a_thing(said.split()[0])
+            and not getAllLemmas(said.split()[0]).keys() & {"ADJ", "NUM"}
+            or (
+                starts_with_verb(said)
+                and not re.match(
+                    r"[a-z]+ (?!(?:the|a|an|it|them|this|that|these|those|my|your|"
+                    r"up|down|out|off|on|over|in|into|away|back|all|both|one|two|three)\b)[a-z]",
+                    said,
+                )
+            )
+            or not (starts_with_verb(request) or is_verb(request.split(" ", 1)[0]))
+            or not re.match(r"\S+(?: up| out| down| on| off)? (?:it|them)\b", request)
+            or not head
+            or not _names_a_thing(head[-1])
+        ):
+            return m.group(0)
+        return f"{m.group(1)}the {said}, {request}"
+
+    return re.sub(r"(^|[.!?;]\s+)([a-z][a-z' ]*?)\s*,\s*([a-z][^.!?;]*)", topic, text)
+
+
+def _topic_carried(text: str) -> str:
+    """ "the salad dressing, put inside the basket": a thing said first, then a carry that says only where: the
+    carry is of the thing ("put it inside the basket")."""
+    verbs = "|".join(sorted((f for f in VERBS["put"] if " " not in f), key=len, reverse=True))
+    return re.sub(
+        rf"(^|[.!?;]\s+|^(?:eh|ah|oh|so|ok|okay|now|right|well|alright),?\s+)((?:the|a|an) [a-z' ]+?),\s*({verbs}) "
+        r"(?=(?:in|into|inside|on|onto|on top of|atop)\s)",
+        r"\1\2, \3 it ",
+        text,
+    )
+
+
+def _conditioned_on_state(text: str) -> str:
+    """ "if it is open, close it", "if the drawer's still shut, open it": a request made on the state it changes is
+    the request (the skill checks its own post-condition); "it" is the thing whose state was said."""
+
+    def request(m: re.Match) -> str:
+        thing, rest = m.group(2), m.group(3)
+        if thing != "it":
+            rest = re.sub(r"\b(?:it)\b", thing, rest, count=1)
+        return m.group(1) + rest
+
+    return re.sub(
+        r"(^|[.!?;]\s+)if (it|the [a-z' ]+?) (?:is|are|'s|was) (?:still |already |currently |now )?"
+        r"(?:open|opened|closed|shut|on|off|lit|running)\s*,\s*(?:then\s+)?(?:please\s+)?"
+        r"((?:close|shut|open|turn|switch|slide|push|pull)\b[^.!?;]*)",
+        request,
+        text,
+    )
+
+
+def _cut_off(text: str) -> str:
+    """ "open the top dr- sorry, the bottom drawer": a phrase broken off mid-word and taken back; the phrase said
+    after the correction stands in its place."""
+    return re.sub(
+        rf"\b(?:the|a|an) (?:[a-z]+ )*?[a-z]+-+\s*[,.]?\s*(?:{_CORRECTION}\b[\s,.]*)+(?=(?:the|a|an) )", "", text
+    )
+
+
+def _pointed_out_first(text: str) -> str:
+    """ "see the ramekin? the black bowl beside it goes on the plate": a thing pointed out in a sentence of its own,
+    then "it" where another thing is said to be: "it" is the thing pointed out."""
+    m = re.match(
+        r"(?:(?:do )?(?:you )?(?:see|notice|spot|spy)|look at|there(?:'s| is)) (the [a-z' ]+?)\s*[?.!:,]+\s+(?=\S)",
+        text,
+    )
+    if not m:
+        return text
+    rest = re.sub(
+        r"\b(beside|next to|near|by|behind|in front of|on top of|on|under|left of|right of|close to) it\b",
+        rf"\1 {m.group(1)}",
+        text[m.end() :],
+        count=1,
+    )
+    return text if rest == text[m.end() :] else rest
+
+
+def _verb_corrected(text: str) -> str:
+    """ "close the drawer, no wait, i mean open it", "put the cube in the bowl, sorry, put it on the plate": a request
+    said again with another verb after words that take it back replaces the request; "it" there is the thing the
+    request acted on."""
+    for m in _TAKEN_BACK_RUN.finditer(text):
+        after = text[m.end() :]
+        start = max(text.rfind(p, 0, m.start()) for p in ".!?;") + 1
+        before = text[start : m.start()].strip()
+        if not (before and starts_with_verb(before) and starts_with_verb(after)):
+            continue
+        verb, _, rest = after.partition(" ")
+        said = _ACTED_ON.search(before)
+        if said and re.match(r"(?:up |down )?(?:it|them)\b", rest):
+            rest = re.sub(r"\b(?:it|them)\b", said.group(1), rest, count=1)
+        return text[:start] + (" " if start else "") + f"{verb} {rest}".strip()
+    return text
+
+
 def _joined(text: str) -> str:
     """A superlative of place said with a hyphen as one word: "right-most" is "rightmost"."""
     return re.sub(r"\b(left|right|front|back|top|bottom|upper|lower|rear|fore)[- ]most\b", r"\1most", text)
@@ -835,6 +1052,14 @@ def restructured(instruction: str) -> str:
         lambda m: f", {m.group(1)}," + (" " if m.group(2) else ""),
         out,
     )
+    # "the cream cheese (the little box, not the plate)": what sort of thing it is said again, and a thing ruled out
+    out = re.sub(
+        r"\s*\(\s*(?:the|a|an) (?:[a-z]+ )*?([a-z]+)\s*,\s*(not [a-z ]+?)\s*\)\s*(?=(\w)?)",
+        lambda m: (
+            (f", {m.group(2)}," + (" " if m.group(3) else "")) if m.group(1) in (*_GENERAL_NOUNS, "one") else m.group(0)
+        ),
+        out,
+    )
     # a parenthesis that rules a thing out is a contrast between commas ("the top drawer (not the middle one)")
     out = re.sub(
         r"\s*\(\s*(not [a-z ]+?)\s*\)\s*(?=(\w)?)", lambda m: f", {m.group(1)}," + (" " if m.group(2) else ""), out
@@ -848,7 +1073,21 @@ def restructured(instruction: str) -> str:
     ).strip()
     # "would you mind sorting these? red block into ...": what "these" are, said next
     out = re.sub(r"\b(these|those|the following)\s*\?\s+(?=\S)", r"\1: ", out)
-    out = _self_corrected(out)
+    # what is said in passing, appositions, a thing said first, and corrections, in this order
+    for said in (
+        _pointed_and_urged,
+        _manner_dropped,
+        _dashed_apposition,
+        _class_apposition,
+        _bare_topic,
+        _pointed_out_first,
+        _topic_carried,
+        _conditioned_on_state,
+        _cut_off,
+        _verb_corrected,
+        _self_corrected,
+    ):
+        out = said(out)
     out = _its_part(_negated_state(_joined(_but_clause(_restated_one(_row_restated(_named_in_apposition(out)))))))
     for step in (
         _header,

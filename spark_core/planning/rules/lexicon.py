@@ -96,8 +96,11 @@ VERBS: dict[str, tuple[str, ...]] = {
     ),
     "stack": ("stack", "pile"),
     "push": ("push", "shove", "nudge", "slide", "scoot", "bump", "budge", "poke"),
-    "open": ("open", "pull open", "slide open", "pull out", "draw out"),
-    "close": ("close", "shut", "push closed", "push shut", "slam", "slam shut"),
+    "open": ("open", "pull open", "slide open", "pull out", "draw out", "haul open", "yank open", "swing open"),
+    "close": (
+        *("close", "shut", "push closed", "push shut", "slam", "slam shut"),
+        *("slide closed", "slide shut", "pull closed", "pull shut", "swing shut", "ease shut", "ease closed"),
+    ),
     "turn_on": ("turn on", "switch on", "ignite", "start", "light", "fire up", "power on", "activate", "heat up"),
     "turn_off": ("turn off", "switch off", "power off", "shut off", "deactivate", "extinguish", "shut down", "kill"),
     "pour": ("pour", "empty", "tip", "dump", "tilt", "decant"),
@@ -168,6 +171,8 @@ FILLERS = (
     "would you be so kind as to",
     "would you be kind enough to",
     "be so kind as to",
+    "be so good as to",
+    "if you please",
     # a request put as a favour ("could you be a dear and switch the stove on")
     *(f"be {a} and" for a in ("a dear", "a love", "a darling", "an angel", "a sweetheart", "a pal", "a sport")),
     "would you be able to",
@@ -207,6 +212,26 @@ FILLERS = (
     "lol",
     "lmao",
     "haha",
+    "fr",
+    "quick quick",
+    "can or not",
+    "breathe in and",
+    "breathe out and",
+    "breathe in",
+    "breathe out",
+    "can u",
+    "could u",
+    "would u",
+    "will u",
+    # interjections and sentence particles ("psst", "ah", Singapore English "lah", "lor")
+    "psst",
+    "ah",
+    "oh",
+    "eh",
+    "lah",
+    "lor",
+    "matey",
+    "would ya",
     "bro",
     "dude",
     "robot,",
@@ -345,7 +370,18 @@ COPULAS: tuple[str, ...] = (
     "needs",
 )
 # A modal and a verb of ending up: any pair states a goal ("ought to sit", "has to end up", "should land").
-MODALS: tuple[str, ...] = ("should", "must", "ought to", "needs to", "need to", "has to", "have to", "is to", "are to")
+MODALS: tuple[str, ...] = (
+    "should",
+    "shall",
+    "must",
+    "ought to",
+    "needs to",
+    "need to",
+    "has to",
+    "have to",
+    "is to",
+    "are to",
+)
 MODALS += ("will", "is supposed to", "are supposed to", "is meant to", "are meant to", "wants to")
 END_UP = ("be", "go", "sit", "rest", "stay", "end up", "stand", "lie", "land", "get", "wind up", "finish")
 COPULAS += tuple(f"{m} {v}" for m in MODALS for v in END_UP)

@@ -94,10 +94,10 @@ def _match_verb(clause: str) -> tuple[str, str] | None:
     m = re.fullmatch(r"(?:turn|switch) (.+?) (?:to )?(on|off)", clause)  # "turn the stove on", "... knob to on"
     if m:
         return ("turn_on" if m.group(2) == "on" else "turn_off"), m.group(1)
-    m = re.fullmatch(r"(?:pull|slide|draw) (.+) (?:open|out)", clause)
+    m = re.fullmatch(r"(?:pull|slide|draw|haul|yank|swing|ease) (.+) (?:open|out)", clause)
     if m:
         return "open", m.group(1)
-    m = re.fullmatch(r"(?:push|slide) (.+) (?:closed|shut)|(?:push|slide) in (.*drawer.*)", clause)
+    m = re.fullmatch(r"(?:push|slide|pull|swing|ease) (.+) (?:closed|shut)|(?:push|slide) in (.*drawer.*)", clause)
     # "slide it back in" said of a drawer named before: closing it
     m = m or re.fullmatch(r"(?:push|slide) ()(it|that one|this one) back in", clause)
     m = m or re.fullmatch(r"(?:push|slide) ()(.*drawer.*?)(?: back)? in", clause)

@@ -192,7 +192,8 @@ class RulesPlanner:
             return None
         if any(c.get("primitive") in FIXTURE_STEPS for c in children[-1:]):
             children.append(_prim("go_home"))
-        return _free_hand(_carried_once(_one_grasp(children))), understood
+        joined = _free_hand(_carried_once(_one_grasp(children, request.scene.keypoints)))
+        return (joined, understood) if _second_grasp(joined) is None else None
 
     def _refusal(self, e: Exception, understood: list[str], t0: float) -> PlanResult:
         if isinstance(e, ParseError):
@@ -475,7 +476,11 @@ class RulesPlanner:
                 )
         if clauses and clauses[-1].action in ("open", "close", "turn_on", "turn_off"):
             out.append(_prim("go_home"))  # leave the fixture's neighbourhood
-        return _free_hand(_carried_once(out))
+        out = _free_hand(_carried_once(_one_grasp(out, scene)))
+        wrong = _second_grasp(out)
+        if wrong is not None:
+            raise CannotPlan(f"{wrong} (understood: {understood}; found in the scene: {seen})")
+        return out
 
     @staticmethod
     def _push_geometry(c: Clause, obj: str, target: str | None, scene) -> tuple[str, float]:
@@ -557,6 +562,28 @@ def _check_kinds(
 FIXTURE_STEPS = ("open_drawer", "close_drawer", "turn_knob")
 
 
+# Steps after which the hand is empty again.
+_LETS_GO = frozenset(["place", "place_in", "stack", "place_over", "insert", "release", "drag"])
+
+
+def _second_grasp(steps: list[dict]) -> str | None:
+    """One hand holds one thing: a pick while the thing picked before is still held ("pick up the red block, put it
+    on the table, then pick up the blue one", where nothing was read as setting it down) would drop or crush it.
+    What is wrong, naming both; None when no step does so. Plans for more than one arm are not checked here."""
+    if any("primitive" not in s or "arm" in s.get("params", {}) for s in steps):
+        return None
+    held: str | None = None
+    for step in steps:
+        kind, label = step["primitive"], step.get("params", {}).get("keypoint_label")
+        if kind == "pick":
+            if held is not None and label != held:
+                return f"the plan would pick up {label!r} while still holding {held!r}: say where {held!r} goes first"
+            held = label
+        elif kind in _LETS_GO:
+            held = None
+    return None
+
+
 def _free_hand(steps: list[dict]) -> list[dict]:
     """A fixture is worked with the hand free: a thing picked up just before a drawer is opened or a knob turned,
     and picked up again after it ("grab the block, open the drawer and put it inside"), is picked up after it only."""
@@ -574,15 +601,36 @@ def _free_hand(steps: list[dict]) -> list[dict]:
     return out
 
 
-def _one_grasp(steps: list[dict]) -> list[dict]:
+def _one_grasp(steps: list[dict], scene) -> list[dict]:
     """Steps planned one by one: a pick of what the step before already picked up ("grab X." then "put X in Y")
-    is the same grasp."""
+    is the same grasp; a drawer opened (or shut) right after the same opening is the request said again ("open
+    the drawer. open the cabinet drawer.")."""
     out: list[dict] = []
     for step in steps:
-        if step.get("primitive") == "pick" and out and out[-1] == step:
+        if (
+            step.get("primitive") in ("pick", "open_drawer", "close_drawer")
+            and out
+            and _same_step(out[-1], step, scene)
+        ):
             continue
         out.append(step)
     return out
+
+
+def _same_step(a: dict, b: dict, scene) -> bool:
+    """One step, or two whose only difference is a label perception resolved to the same thing ("drawer handle",
+    "cabinet drawer handle")."""
+    if a == b:
+        return True
+    pa, pb = dict(a.get("params", {})), dict(b.get("params", {}))
+    la, lb = pa.pop("keypoint_label", None), pb.pop("keypoint_label", None)
+    return (
+        a.get("primitive") == b.get("primitive")
+        and pa == pb
+        and la in scene
+        and lb in scene
+        and _same_detection(scene[la], scene[lb])
+    )
 
 
 def _carried_once(steps: list[dict]) -> list[dict]:

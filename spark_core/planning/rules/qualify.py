@@ -405,7 +405,7 @@ def negations(text: str) -> str:
     # an apposition says which: "the bowl, the one not on the stove, ..." / "the block, i mean the one on the left,"
     text = re.sub(
         rf"\bthe ({NP}),? (?:i mean |that is |namely |it is |the one that is )?the ones? ([^,;:]+),?",
-        lambda m: f"the {m.group(1)} {m.group(2)}",
+        lambda m: f"the {_unordered(m.group(1), m.group(2))} {m.group(2)}",
         text,
     )
     # "the non-blue block", "the non red one"
@@ -420,6 +420,16 @@ def negations(text: str) -> str:
         lambda m: f"not {_ruled_out(m.group(1))}",
         text,
     )
+
+
+def _unordered(np_: str, said: str) -> str:
+    """ "the second black bowl, the one farther away from you": where the apposition says it is picks it out; the
+    ordinal said first only counted it as another of its kind."""
+    if re.match(r"(?:second|other|2nd) ", np_) and re.match(
+        rf"(?:(?:further|farther|closer|nearer) |(?:{_EXTREME})\b|(?:on|at|in) the (?:far )?{_SIDE}\b)", said
+    ):
+        return np_.split(" ", 1)[1]
+    return np_
 
 
 def _positive_of_ruled_out(text: str) -> str:
@@ -522,11 +532,12 @@ def _trailing_not(text: str) -> str:
     cabinet"). (A correction of the place, "..., not on the stove", is dropped as a trailing clause.)"""
     m = re.fullmatch(
         rf"(.+?),? (?:and |but )?(?:just |only |simply )?not (?:the|a|an|that|this) (?:({_WORD}) ones?|ones?|({NP}))"
-        rf"(?: ([^,;:]+))?",
+        rf"(?: ([^,;:]+?))?\s*([.!?]*)",
         text,
     )
     if not m:
         return text
+    end = m.group(5)  # the sentence's end mark stays at its end
     main, named, rest = m.group(1), m.group(3), (m.group(4) or m.group(2) or "").strip()
     obj = re.search(rf"\b(the|a|an) ({NP})(?=\s|$)", main)
     if obj is None:
@@ -547,7 +558,7 @@ def _trailing_not(text: str) -> str:
             rest = " ".join(said[:-1])
     if not rest:
         return text
-    return f"{main[: obj.end()]} not {_ruled_out(rest)}{main[obj.end() :]}"
+    return f"{main[: obj.end()]} not {_ruled_out(rest)}{main[obj.end() :]}{end}"
 
 
 def _ruled_out(what: str) -> str:

@@ -579,9 +579,22 @@ def sentences(instruction: str) -> list[str]:
     # a list's closing status ("item complete.", "task done."): the request's frame, no step
     text = re.sub(
         r"(?<=[.;!?])\s*(?:checklist |task |job |item |step |procedure |order )?"
-        r"(?:complete|completed|done|finished|over)\s*[.!]?\s*$",
+        r"(?:complete|completed|done|finished|over|over and out|out)\s*[.!]?\s*$",
         "",
         text,
+    )
+    # "... . hold it there.": holding still after a lift, said as a last sentence of its own, is what a lift ends in
+    text = re.sub(
+        r"(?<=[.;!?])\s*(?:and |then |now |just )?hold (?:it|them)(?: (?:there|still|steady|up|up there|in the air))?"
+        r"(?: for a (?:moment|second|sec|bit|while))?\s*[.!]?\s*$",
+        "",
+        text,
+    )
+    # "lift it up toward the sky": up, said as where up leads
+    text = re.sub(r"\b(?:up )?(?:toward|towards|to) the (?:sky|ceiling|heavens|roof)\b", "up", text)
+    # "..., and nothing further.": the request said to be all there is
+    text = re.sub(
+        r"(?:,\s*(?:and )?|\s+and )(?:nothing|no more) (?:else|further|more|beyond that)\s*([.!]?)\s*$", r"\1", text
     )
     # "...; 3) release.", "... . let go of it": letting go said as a last sentence of its own, which a carry does
     text = re.sub(
@@ -1405,7 +1418,7 @@ _ORDINAL_OF = {"one": "first", "1": "first", "two": "second", "2": "second", "th
 _ORDINAL_OF |= {"four": "fourth", "4": "fourth"}
 _CLOSING = re.compile(
     r"(?:that is|that will be|that should be|and that is) (?:it|all|everything)(?: for now| thanks?(?: you)?)?|"
-    r"(?:nothing|that is all|all) else|done|cheers|thanks?(?: you)?|ta"
+    r"(?:nothing|that is all|all) (?:else|further|more)|done|cheers|thanks?(?: you)?|ta"
 )
 
 

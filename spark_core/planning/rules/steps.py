@@ -29,7 +29,12 @@ _HEADER = re.compile(
     r"^(?:(?:checklist|task|job|order|ticket|item|protocol|procedure|exercise)(?: item)? (?:no\.? ?|number |#)?"
     r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*[.:]|"
     # ... or its label alone before a colon ("procedure: 1) ...")
-    r"(?:procedure|protocol|steps|instructions|routine|recipe|checklist|sequence)\s*:)\s*"
+    r"(?:procedure|protocol|steps|instructions|routine|recipe|checklist|sequence)\s*:|"
+    # ... or who it is for ("dispatch to unit one:", "note for the robot:", "attention robot:")
+    r"(?:(?:dispatch|message|memo|note|orders?|request|instructions?|attention|attn|calling)(?: (?:to|for))? )?"
+    r"(?:the )?(?:unit|team|robot|bot|station|arm|crew|operator)(?: (?:\d+|one|two|three|[a-z]))?\s*:|"
+    # ... or the bullet of a list's first item ("- pull the drawer open - pick up ...")
+    r"[-*\u2022]+(?=\s))\s*"
 )
 # Sequencing words that can only begin a step ("finally", "as a second step", "after that") ...
 _ALWAYS = (
