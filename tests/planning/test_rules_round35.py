@@ -136,3 +136,16 @@ def test_two_drawers_opened_one_after_the_other_stay_two_steps():
     result = plan("open the top drawer. then open the bottom drawer.", scene)
     assert result.ok, result.error
     assert [p for p, _ in leaves(result)].count("open_drawer") == 2
+
+
+def test_a_remark_about_people_is_set_aside_but_not_one_about_a_thing():
+    """A trailing remark whose noun names a person ("nobody wake up") names no thing the scene must hold; one
+    naming a thing the scene lacks still refuses."""
+    people = view(pear=(0.5, 0.0, 0.0), bowl=(0.4, 0.2, 0.0), unresolved={"nobody wake up": "none found"})
+    result = plan("put the pear in the bowl, nobody wake up.", people)
+    assert result.ok, result.error
+    assert leaves(result)[0] == ("pick", "pear")
+    thing = view(pear=(0.5, 0.0, 0.0), bowl=(0.4, 0.2, 0.0), unresolved={"dirty spoon": "none found"})
+    refused = plan("put the pear in the bowl, the spoon is dirty.", thing)
+    assert not refused.ok
+    assert "spoon" in refused.error

@@ -12,6 +12,7 @@ import re
 from lemminflect import getAllLemmas
 
 from ...perception.colors import BASE_COLOURS
+from ...perception.lexicon.nouns import nouns
 from ...perception.variants import KIND_OF
 from .lexicon import DETERMINERS, STATE_ACTIONS, VERBS
 from .phrases import singular
@@ -151,7 +152,14 @@ def names_absent(sentence: str, found: list[str]) -> str | None:
             continue
         # a word only ever a noun, that names a thing ("laptop"), not a pronoun ("myself") or a word of time or
         # manner ("bit", "way")
-        if w not in _SELVES and w not in DETERMINERS and set(getAllLemmas(w)) == {"NOUN"} and names_a_thing(w):
+        # (a person or a group, "nobody", "the baby", is none: lexicon.nouns.Nouns.names_no_thing)
+        if (
+            w not in _SELVES
+            and w not in DETERMINERS
+            and set(getAllLemmas(w)) == {"NOUN"}
+            and names_a_thing(w)
+            and not nouns().names_no_thing(w)
+        ):
             return w
     return None
 
