@@ -193,6 +193,34 @@ def package_kind(word: str) -> int | None:
     return next((n for n, group in enumerate(_PACKAGE_KINDS) if word_forms(word) & group), None)
 
 
+# Package nouns said of the same package ("a tin of soup" is a can of soup).
+_SAME_PACKAGE = {"tin": ("tin", "can"), "can": ("can", "tin")}
+
+
+def package_members(prompt: str, descriptions: list[str]) -> set[int] | None:
+    """For a prompt that is a package noun naming no kind of thing ("the carton", "a box", "the small tin"): the
+    indexes of the descriptions saying their thing comes in that package ("carton of milk"); when none does, those
+    saying it comes in a package of its kind (a box for "carton"). A scene with milk and juice cartons beside a box of
+    butter means the cartons by "the carton", not the box (the kind alone had named all three, and "the carton that
+    isn't orange juice" was two). None when the prompt is no such noun or no description says it."""
+    words = [w for w in _words(prompt.lower()) if w not in _ATTRIBUTES]
+    if len(words) != 1 or word_kind(words[0]) is not None:
+        return None
+    forms = word_forms(words[0])
+    package = next((f for f in forms if f in PACKAGING), None)
+    if package is None:
+        return None
+    said = set(_SAME_PACKAGE.get(package, (package,)))
+    kind = package_kind(package)
+    # whole words only: a "box-shaped cube" comes in no box
+    texts = [set(d.replace(",", " ").lower().split()) for d in descriptions]
+    exact = {k for k, t in enumerate(texts) if any(word_forms(w) & said for w in t)}
+    if exact:
+        return exact
+    alike = {k for k, t in enumerate(texts) if kind is not None and any(package_kind(w) == kind for w in t)}
+    return alike or None
+
+
 def _other_package(head: str, name_words: list[str], doc_words: list[str]) -> str | None:
     """The object is (or, by its description, comes in) a package of one kind and the prompt's noun is a package of
     another ("cookie jar" for the cookies in their box, "ketchup jar" for the ketchup's bottle): another product."""

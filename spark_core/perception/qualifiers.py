@@ -38,15 +38,25 @@ SIZE_AXIS = 3
 _ARTICLES = re.compile(r"\b(the|a|an|one|of|to|robot|from)\b", re.I)
 
 
+# Words said for a qualifier ("the centre bowl": the middle one).
+_SAID_FOR = {"centre": "middle", "center": "middle", "central": "middle"}
+
+
 def split_qualifier(prompt: str) -> tuple[str | None, str]:
     """('left', 'mug') for 'the left mug'; (None, prompt) when there is no spatial qualifier."""
     words = prompt.lower().replace("-", " ").split()
     for i, w in enumerate(words):
-        if w in QUALIFIERS:
+        if w in QUALIFIERS or w in _SAID_FOR and i < len(words) - 1:  # "the centre bowl", not "the plate's centre"
             rest = " ".join(words[:i] + words[i + 1 :])
             core = _ARTICLES.sub(" ", rest).split()
-            return w, " ".join(core) if core else rest
+            return _SAID_FOR.get(w, w), " ".join(core) if core else rest
     return None, prompt
+
+
+def ruled_out_parts(said: str) -> list[str]:
+    """The things a negation rules out, one per part: "cream cheese nor chocolate pudding" -> both; "blue" -> itself."""
+    parts = [p.strip() for p in re.split(r"\s*,\s*|\s+(?:nor|or|and|not)\s+", said.strip())]
+    return [p for p in parts if p] or [said]
 
 
 # Relations to another object ("the bowl next to the plate", "the bowl between the plate and the ramekin"):

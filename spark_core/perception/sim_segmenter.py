@@ -11,8 +11,17 @@ import numpy as np
 from .colors import normalise_colours
 from .detection import Detection
 from .frame import CameraFrame
-from .naming import ANYTHING, class_members, mismatch, own_noun_prompts
-from .qualifiers import QUALIFIERS, SIZE_AXIS, anchor_apart, on_side, split_qualifier, split_relation
+from .learned.categories import libero_description
+from .naming import ANYTHING, class_members, mismatch, own_noun_prompts, package_members
+from .qualifiers import (
+    QUALIFIERS,
+    SIZE_AXIS,
+    anchor_apart,
+    on_side,
+    ruled_out_parts,
+    split_qualifier,
+    split_relation,
+)
 from .text_encoder import SHARED_ENCODER, TextEncoder
 from .variants import (
     SPELLINGS,
@@ -57,6 +66,11 @@ class SimSegmenter:
         self._docs = [f"{self._names[label]}: {desc}" for label, desc in self.catalog.items()]
         self._doc_vecs = self.encoder.encode(self._docs) if self._docs else np.zeros((0, 384))
         self._labels = list(self.catalog)
+        # what each thing comes in, for a prompt that names only a package ("the carton"): its description, and for
+        # a LIBERO object (described by its name alone) the package its category's description says
+        self._package_docs = [
+            f"{desc} {libero_description(self._names[label])}" for label, desc in self.catalog.items()
+        ]
         self._similar: dict[str, dict[str, float]] = {}  # prompt text -> `similarities`
 
     def similarities(self, text: str) -> dict[str, float]:
@@ -94,6 +108,8 @@ class SimSegmenter:
         # a word for a class ("the container", "the dairy product") names each thing WordNet files under it alike
         # and nothing else, however the encoder ranks them (naming.class_members)
         members = class_members(norm, [self._names[label] for label in self._labels])
+        if members is None:  # "the carton": each thing that comes in one (naming.package_members)
+            members = package_members(norm, self._package_docs)
         if members is None and norm.strip() in ANYTHING:
             # "the item closest to you" (its qualifier split off before): a word that names anything names each
             # thing alike, for the qualifier to choose
@@ -141,12 +157,12 @@ class SimSegmenter:
                     if d.detail["object"] not in ruled_out
                 )
                 continue
-            if unlike:  # "block not blue": the blocks the negated words contradict
+            if unlike:  # "block not blue", "box not cream cheese nor chocolate pudding"
                 core, said = unlike.group(1), unlike.group(2)
                 out.extend(
                     Detection(prompt, prompt, d.mask, d.score, d.camera, d.privileged, {**d.detail, "unlike": said})
                     for d in self.segment(frame, [core])
-                    if mismatch(f"{said} {core}", self._names[d.detail["object"]], self.catalog[d.detail["object"]])
+                    if all(self._rules_out(frame, part, core, d.detail["object"]) for part in ruled_out_parts(said))
                 )
                 continue
             rank, prompt_q = split_rank(prompt)
@@ -176,6 +192,15 @@ class SimSegmenter:
                 dets = [pick_by_qualifier(dets, frame, qualifier)]
             out.extend(dets)
         return out
+
+    def _rules_out(self, frame: CameraFrame, said: str, core: str, label: str) -> bool:
+        """Whether "<core> not <said>" leaves the object out: what "<said> <core>" grounds to ("box not chocolate
+        pudding": the chocolate pudding, as the learned segmenter reads it); when that grounds to nothing, whether
+        the words contradict the object ("block not blue": the blue block)."""
+        named = {d.detail["object"] for d in self.segment(frame, [f"{said} {core}"])}
+        if named:
+            return label not in named
+        return mismatch(f"{said} {core}", self._names[label], self.catalog[label]) is not None
 
     def _supported(
         self, frame: CameraFrame, dets: list[Detection], relation: str, anchors: list[str]
@@ -226,14 +251,7 @@ class SimSegmenter:
             if cands:
                 found.append(_centroid_xy(max(cands, key=lambda d: d.score), frame))
         if len(dets) > 1 and not found and any(w in a for a in anchors for w in ("center", "centre", "middle")):
-            # "from the table center": the middle of everything on the table in this view
-            ids = [i for i in np.unique(frame.object_ids) if i]
-            found = [
-                np.mean(
-                    [_centroid_xy(Detection("", "", frame.object_ids == i, 1.0, frame.camera), frame) for i in ids],
-                    axis=0,
-                )
-            ]
+            found = [_middle_xy(frame)]  # "from the table center"
         supported = self._supported(frame, dets, relation, anchors) if len(dets) > 1 else None
         if supported is not None:  # "on" / "in" said by where it rests, not by how near it is
             dets = [d for d, holds in zip(dets, supported) if holds != negated]
@@ -261,6 +279,16 @@ def _instance_names(catalog: Mapping[str, str]) -> dict[str, str]:
     return {label: base[label] if kinds[(base[label], catalog[label])] > 1 else label for label in catalog}
 
 
+def _middle_xy(frame: CameraFrame) -> np.ndarray:
+    """The middle of the table (m, world xy): the mean centroid of everything on it in this view (needs the
+    renderer's object ids)."""
+    assert frame.object_ids is not None
+    ids = [i for i in np.unique(frame.object_ids) if i]
+    return np.mean(
+        [_centroid_xy(Detection("", "", frame.object_ids == i, 1.0, frame.camera), frame) for i in ids], axis=0
+    )
+
+
 def _centroid_xy(d: Detection, frame: CameraFrame) -> np.ndarray:
     vs, us = np.nonzero(d.mask)
     pts = frame.backproject(us.astype(float), vs.astype(float), frame.depth_m[vs, us])
@@ -283,6 +311,11 @@ def pick_by_qualifier(dets: list[Detection], frame: CameraFrame, qualifier: str,
     if sign == 0.0:
         spread = np.ptp(np.array(list(centres.values())), axis=0)
         axis = int(np.argmax(spread))
+        if len(dets) == 2 and axis != 2 and frame.object_ids is not None:
+            # two on the table have no median: "the middle bowl" is the one nearer the middle of the table (of
+            # everything on it in this view, as "from the table center" reads it)
+            middle = _middle_xy(frame)
+            return min(dets, key=lambda d: float(np.linalg.norm(centres[id(d)][:2] - middle)))
         return sorted(dets, key=lambda d: float(centres[id(d)][axis]))[len(dets) // 2]
     ordered = sorted(dets, key=lambda d: -sign * float(centres[id(d)][axis]))
     return ordered[min(rank, len(ordered)) - 1]

@@ -24,9 +24,10 @@ def _named(segmenter: LearnedSegmenter, prompt: str) -> set[str]:
         ("sauce", {"bbq sauce", "tomato sauce"}),  # the encoder ranked bbq sauce first and named it alone
         ("dish", {"bowl", "plate", "ramekin"}),  # a word of several kinds names each
         ("the bottle", {"bottle", "wine bottle"}),
-        # a package noun: every category said to come in a package of its kind (a carton is a box)
-        ("carton", {"milk", "orange juice", "butter", "cookie box", "cream cheese", "chocolate pudding"}),
-        ("box", {"milk", "orange juice", "butter", "cookie box", "cream cheese", "chocolate pudding"}),
+        # a package noun: every category said to come in it, not those in another package of its kind ("the
+        # carton" among milk, juice and a box of butter: the milk and the juice)
+        ("carton", {"milk", "orange juice"}),
+        ("box", {"butter", "cookie box", "cream cheese", "chocolate pudding"}),
         ("tin", {"alphabet soup", "tomato sauce"}),  # a tin is a can
     ],
 )

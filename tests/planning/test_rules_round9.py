@@ -94,7 +94,7 @@ def test_the_planner_refuses_a_phrase_whose_modifier_names_an_absent_thing():
         ),
         ("the further-back mug onto the tray", [("put", "farthest mug", "on", "tray")]),
         ("open drawer number three, counting from the bottom", [("open", "third bottom drawer", None, None)]),
-        ("put the cup that's neither red nor blue on the tray", [("put", "cup not red blue", "on", "tray")]),
+        ("put the cup that's neither red nor blue on the tray", [("put", "cup not red nor blue", "on", "tray")]),
         ("lift the mug that is sitting directly on the tray", [("pick", "mug on tray", None, None)]),
         ("I want the mug on your left sitting on the tray", [("put", "leftmost mug", "on", "tray")]),
         # a surface said as the verb; a thing named by where it is, then acted on

@@ -65,7 +65,7 @@ CATEGORIES: tuple[Category, ...] = (
     Category("cookie box", "rectangular cardboard box of cookies"),
     Category("alphabet soup", "can of alphabet soup, a food tin"),
     Category("bbq sauce", "bottle of barbecue sauce"),
-    Category("butter", "small carton of butter"),
+    Category("butter", "small box of butter"),  # LIBERO's butter: a printed box, not a gabled carton
     Category("chocolate pudding", "small box of chocolate pudding"),
     Category("ketchup", "squeeze bottle of tomato ketchup"),
     Category("milk", "carton of milk"),
@@ -117,6 +117,14 @@ LIBERO_CATEGORY: dict[str, str] = {
     "salad dressing": "salad dressing",
     "tomato sauce": "tomato sauce",
 }
+
+
+def libero_description(name: str) -> str:
+    """What a LIBERO object (the adapter's label without its instance number) looks like and comes in ("carton of
+    milk"), by its category; "" for a name of no category here."""
+    category = LIBERO_CATEGORY.get(name)
+    return CATEGORIES[CATEGORY_INDEX[category]].description if category else ""
+
 
 # Colour classes of the colour head: index 0 = no colour (not an object); the rest are spark_core.perception
 # .colors.BASE_COLOURS names ("wood" renders as brown).

@@ -5,12 +5,9 @@ several (an ambiguous label) instead of whichever the sentence encoder ranks fir
 
 from __future__ import annotations
 
-from ..naming import mismatch, package_kind, word_forms, word_kind
-from ..variants import GENERIC, MATERIALS, PACKAGING
+from ..naming import mismatch, package_members, word_forms, word_kind
+from ..variants import GENERIC, MATERIALS
 from .categories import CATEGORIES
-
-# Package nouns said of the same package ("a tin of soup" is a can of soup).
-_SAME_PACKAGE = {"tin": ("tin", "can"), "can": ("can", "tin")}
 
 
 def contradicted(core: str, category: int) -> bool:
@@ -33,8 +30,8 @@ def _kind_words(description: str) -> str:
 def lone_noun_categories(core: str) -> set[int]:
     """The categories a prompt that is one noun names ("sauce", "bottle", "carton"): every category whose name
     ends in it; for a package noun that is no kind of thing ("box", "carton", "tin"), every category said to come
-    in a package of its kind too; for a word naming no kind ("object", "item"), every category. Empty for a prompt
-    of several words or a noun naming none."""
+    in it too (or, when none is, in a package of its kind: `naming.package_members`); for a word naming no kind
+    ("object", "item"), every category. Empty for a prompt of several words or a noun naming none."""
     words = core.split()
     if len(words) != 1:
         return set()
@@ -45,15 +42,5 @@ def lone_noun_categories(core: str) -> set[int]:
     # its own noun, or a word of its kind ("dish": the bowl, the plate and the ramekin alike; "bin": basket, tray)
     kinds = set().union(*(word_kind(f) or () for f in forms))
     out = {i for i in things if CATEGORIES[i].name.split()[-1] in forms | kinds}
-    package = next((f for f in forms if f in PACKAGING), None)
-    if package is not None and word_kind(package) is None:
-        out |= {i for i in things if _comes_in(package, CATEGORIES[i].description)}
-    return out
-
-
-def _comes_in(package: str, description: str) -> bool:
-    """The description says the category comes in `package` or a package of its kind ("box": a carton too)."""
-    kind = package_kind(package)
-    said = set(_SAME_PACKAGE.get(package, (package,)))
-    words = description.replace(",", " ").lower().split()
-    return any(w in said or (kind is not None and package_kind(w) == kind) for w in words)
+    packaged = package_members(words[0], [CATEGORIES[i].description for i in things])
+    return out | {things[k] for k in packaged or ()}

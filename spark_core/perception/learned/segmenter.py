@@ -26,7 +26,7 @@ from ..detection import Detection
 from ..frame import CameraFrame
 from ..naming import class_members, own_noun_prompts
 from ..pixels import mask_pixels
-from ..qualifiers import anchor_apart, on_side, relation_holds, split_qualifier, split_relation
+from ..qualifiers import anchor_apart, on_side, relation_holds, ruled_out_parts, split_qualifier, split_relation
 from ..quantiles import percentile, percentiles, percentiles_of_sorted
 from ..sim_segmenter import calibrated_score, pick_by_qualifier
 from ..text_encoder import SHARED_ENCODER, TextEncoder
@@ -401,7 +401,11 @@ class LearnedSegmenter:
             unlike = re.fullmatch(r"(.+?) not (.+)", prompt.strip().lower())
             if unlike:  # "block not blue", "bowl not leftmost": every instance but those the negated words pick
                 core, said = unlike.group(1), unlike.group(2)
-                ruled_out = {d.detail["instance"] for d in self.segment(frame, [f"{said} {core}"])}
+                ruled_out = {
+                    d.detail["instance"]
+                    for part in ruled_out_parts(said)  # "box not cream cheese nor chocolate pudding": both
+                    for d in self.segment(frame, [f"{part} {core}"])
+                }
                 out.extend(
                     Detection(prompt, prompt, d.mask, d.score, d.camera, False, {**d.detail, "unlike": said})
                     for d in self.segment(frame, [core])

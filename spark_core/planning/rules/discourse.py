@@ -741,7 +741,14 @@ def _pointed_and_urged(text: str) -> str:
 def _dashed_apposition(text: str) -> str:
     """ "take the bowl next to the ramekin - the closer of the two bowls - and ...", "pick up the cube on the right -
     the red one.": an apposition between dashes, or after one at the sentence's end, is one between commas; "the
-    closer of the two bowls" is "the closer one"."""
+    closer of the two bowls" is "the closer one"; "the one on the cabinet - that bowl - ..." names the one by where it
+    is and its kind by the apposition: "the bowl on the cabinet ..."."""
+    text = re.sub(
+        r"\b(?:the|that) one ((?:on|in|at|by|near|next to|beside|under|inside|behind)\b[a-z' ]+?)\s+-+\s+"
+        r"(?:that|this|the) ([a-z]+)\s+-+\s+",
+        r"the \2 \1 ",
+        text,
+    )
     text = re.sub(r"\s+-+\s+((?:the|a|an) [a-z' ]+?)\s+-+\s+", r", \1, ", text)
     text = re.sub(
         r"\s+-+\s+((?:the|a|an) (?![a-z' ]*\b(?:in|into|on|onto|to)\b)[a-z' ]+?)\s*([.!?]*)$", r", \1\2", text

@@ -22,7 +22,22 @@ from .things import adverb_only, is_thing, names_a_thing
 
 # Words that locate or qualify without naming a thing in the scene ("the table's centre", "the left side").
 PLACE_WORDS = frozenset(
-    ["center", "centre", "middle", "left", "right", "front", "back", "side", "edge", "corner", "end", "top", "bottom"]
+    [
+        "center",
+        "centre",
+        "central",
+        "middle",
+        "left",
+        "right",
+        "front",
+        "back",
+        "side",
+        "edge",
+        "corner",
+        "end",
+        "top",
+        "bottom",
+    ]
     + ["robot", "you", "me", "us", "arm", "gripper", "hand", "hands", "air", "floor", "ground", "way", "rest", "rim"]
     + ["surface", "place", "position", "spot", "half", "area", "row", "line", "direction", "distance", "moment"]
     + ["time", "goal", "task", "job", "plan", "idea", "aim", "one", "ones", "other", "others", "thing", "things"]

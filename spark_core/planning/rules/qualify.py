@@ -335,6 +335,15 @@ def negations(text: str) -> str:
     )
     # "..., but not the one in the middle": a correction of the clause's object, as "..., not the one ..."
     text = re.sub(r",\s*but not ((?:the|that|this) ones? [^,;:.!]*)[.!]?$", r", not \1", text)
+    # "leave the one in the drawer, plate the bowl on the cabinet": the one left where it is, said by where it is
+    # alone, is ruled out of the request after it (no "other" there to carry it)
+    text = re.sub(
+        r"^(?:leave|ignore|skip|do not touch|do not move|forget) (?:the|that) one "
+        r"((?:in|on|at|by|near|next to|beside|under|inside|on top of)\b[^,;.]+?)"
+        r"(?: alone| be| where it is| in place| as it is)?\s*[,;.] (?:and |but |then )?(.+)$",
+        lambda m: re.sub(r"\bthe other\b", "the", m.group(2), count=1) + f", not the one {m.group(1)}",
+        text,
+    )
     # "leave the centre bowl alone; the other bowl goes ...", "ignore the bowl on the stove and put the other one
     # ...": the one left alone is ruled out, by where it is or by its own words
     text = re.sub(
@@ -547,6 +556,11 @@ def _trailing_not(text: str) -> str:
         return main  # "the bottom drawer, not the middle one": the qualifier said already picks it out
     located = re.match(
         r"\s+(?:next to|beside|by|near|between|(?:that|which) (?:is|are|sits?|stands?) \w+) ", main[obj.end() :]
+    )
+    # two places after it: the first says where it is ("the bowl on top of the cabinet on the plate")
+    located = located or re.match(
+        r"\s+(?:on top of|on|in|inside|at|from) (?:the )?[a-z' ]+? (?:on top of|onto|on|into|inside|in|to) the ",
+        main[obj.end() :],
     )
     if located or obj.group(2).endswith(" next") and main[obj.end() :].startswith(" to "):
         return main  # "the black bowl next to the ramekin ..., not the one further back": where it is picks it out

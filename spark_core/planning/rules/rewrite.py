@@ -814,11 +814,18 @@ def sentences(instruction: str) -> list[str]:
     )
     # "that is not sitting directly on the table", "squarely on the plate": the adverb adds nothing to where
     text = re.sub(r"\b(?:directly|squarely) (?=(?:on|in|inside|on top of|onto|into) )", "", text)
+    # "the middle-of-the-table black bowl": where it is, said after it
+    text = re.sub(
+        r"\b([a-z]+)-of-the-([a-z]+) ([a-z]+(?: [a-z]+){0,2}?)"
+        r"(?=\s*(?:->|\b(?:onto|into|on|in|to|goes|go|should|please)\b|[,.;:!]|$))",
+        r"\3 in the \1 of the \2",
+        text,
+    )
     # "the box that is neither cream cheese nor pudding": ruled out by both
     text = re.sub(
         r"\b(the|a|an|any) ([\w ]+?) (?:(?:that|which) )?(?:is|are) neither (?:the |a |an )?([\w ]+?)(?: ones?)? nor "
         r"(?:the |a |an )?([\w ]+?)(?: ones?)?(?=\s+(?:in|into|on|onto|to|inside|goes|go|should|please)\b|\s*$|,)",
-        r"\1 \2 not \3 \4",
+        r"\1 \2 not \3 nor \4",
         text,
     )
     # "give the drawer a pull" / "a push": a drawer or a door pulled opens, pushed closes
@@ -1735,6 +1742,8 @@ def bare_goal(text: str) -> str | None:
     held = _with_on_it(text)
     if held:
         return held
+    # a thing that goes around another is put on it ("the nut around the peg")
+    text = re.sub(r"\baround (?=(?:the|a|an) )", "onto ", text)
     # "to" without a verb is a direction, not a place ("fly to the moon"): only words that say in or on
     places = [m for m in _DESTINATION.finditer(text) if m.group(1) not in ("to", "over")]
     if not places:
