@@ -34,6 +34,21 @@ from tests.planning.test_rules_round28 import read
             ["put obj=mug on shelf relation=in target=sink"],
         ),
         ("put the mug in the sink, not the one on the tray", ["put obj=mug not on tray relation=in target=sink"]),
+        # a second thing and its place after a first pair, without articles: two carries
+        (
+            "put apple in bowl and pear on plate",
+            ["put obj=apple relation=in target=bowl", "put obj=pear relation=on target=plate"],
+        ),
+        (
+            "stack big on small and mid on big",
+            ["stack obj=big relation=on target=small", "stack obj=mid relation=on target=big"],
+        ),
+        # ... but two things before one place stay one carry, and "and" after a place names no second carry
+        (
+            "push the red block and blue block into the tray",
+            ["push obj=red block and blue block relation=in target=tray"],
+        ),
+        ("put the black bowl on the plate and ramekin", ["put obj=black bowl relation=on target=plate and ramekin"]),
         # "neither ... nor ...": each is ruled out, kept apart for perception to ground one by one
         (
             "put the jar that's neither jam nor honey on the shelf",

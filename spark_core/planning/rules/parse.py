@@ -114,7 +114,7 @@ def _match_verb(clause: str) -> tuple[str, str] | None:
     return (best[0], best[1]) if best else None
 
 
-_CARRIED_TO = r"(?:into|onto|in|on|inside) (?:the|a|an)"
+_CARRIED_TO = r"(?:into|onto|on top of|in|on|inside)(?: (?:the|a|an))?"
 
 
 def _pairs(part: str) -> list[str]:
