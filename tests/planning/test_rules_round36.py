@@ -49,6 +49,45 @@ from tests.planning.test_rules_round28 import read
             ["push obj=red block and blue block relation=in target=tray"],
         ),
         ("put the black bowl on the plate and ramekin", ["put obj=black bowl relation=on target=plate and ramekin"]),
+        # a thing said first by where it is (or after a notebook's label), then a request acting on it
+        (
+            "mug on the shelf. transfer to the sink.",
+            ["mention obj=mug on shelf", "put obj=mug on shelf relation=in target=sink"],
+        ),
+        ("specimen: the pear. transfer into the bowl.", ["mention obj=pear", "put obj=pear relation=in target=bowl"]),
+        # ... but a carry with a verb and an object of its own after "then" is a second carry
+        (
+            "red block in the bowl, then put the blue block on it",
+            ["put obj=red block relation=in target=bowl", "put obj=blue block relation=on target=red block"],
+        ),
+        ("the drawer is open. put in the block", ["mention obj=drawer", "put relation=in target=block"]),
+        # a sentence after the request that says which thing it meant, or says again what it named
+        ("grab the mug. not the red one, the green one.", ["pick obj=green mug"]),
+        ("lift the pear, eh? the yellow one, not the green one.", ["pick obj=yellow pear"]),
+        ("put the jar on the shelf. the shelf, not the tray.", ["put obj=jar relation=on target=shelf"]),
+        ("set the lemon in the sink. yes, the sink, i know it is odd.", ["put obj=lemon relation=in target=sink"]),
+        # a thing said by where it is, then one of its kind ruled out; or by its kind, ruled out by where
+        (
+            "the cup by the kettle, not the one on the tray: put it in the sink.",
+            ["mention obj=cup by kettle", "put obj=cup by kettle relation=in target=sink"],
+        ),
+        (
+            "the mug, not the one by the sink - put it on the tray",
+            ["mention obj=mug not by sink", "put obj=mug not by sink relation=on target=tray"],
+        ),
+        # a request said with its subject; impatience, timing and a purpose that says the state after
+        ("please you open the cupboard door", ["open obj=cupboard door"]),
+        ("ugh just switch the kettle on already", ["turn on obj=kettle"]),
+        ("kindly lift the pear from the table surface at your earliest convenience", ["pick obj=pear"]),
+        (
+            "upon completion, the pear shall rest within the bowl and the lemon within the tray",
+            ["put obj=pear relation=in target=bowl", "put obj=lemon relation=in target=tray"],
+        ),
+        ("twist the dial so the oven comes on", ["turn on obj=dial"]),
+        (
+            "take the jar down from atop the shelf and set it on the tray",
+            ["pick obj=jar on top of shelf", "put obj=jar on top of shelf relation=on target=tray"],
+        ),
         # "neither ... nor ...": each is ruled out, kept apart for perception to ground one by one
         (
             "put the jar that's neither jam nor honey on the shelf",

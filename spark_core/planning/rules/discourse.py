@@ -967,16 +967,93 @@ def _bare_topic(text: str) -> str:
     return re.sub(r"(^|[.!?;]\s+)([a-z][a-z' ]*?)\s*,\s*([a-z][^.!?;]*)", topic, text)
 
 
+# Labels a lab notebook puts before the thing a request is about ("sample: chocolate pudding. transfer ...").
+_LABELS = r"(?:sample|specimen|item|object|payload|cargo|subject|article|unit under test)"
+
+
 def _topic_carried(text: str) -> str:
-    """ "the salad dressing, put inside the basket": a thing said first, then a carry that says only where: the
-    carry is of the thing ("put it inside the basket")."""
+    """ "the salad dressing, put inside the basket", "bowl on the stove. transfer to the plate.": a thing said first
+    (with where it is, or after a label: "sample: chocolate pudding."), then a carry that says only where: the carry
+    is of the thing ("put it inside the basket")."""
     verbs = "|".join(sorted((f for f in VERBS["put"] if " " not in f), key=len, reverse=True))
+    text = re.sub(rf"^{_LABELS}\s*:\s*(?=[a-z' ]+[.!;]\s+(?:{verbs}) )", "", text)
+
+    def carried(m: re.Match) -> str:
+        thing = m.group(2)
+        if starts_with_verb(thing) or re.search(r"(?<!that )(?<!which )\b(?:is|are|was|were|be)\b|'s\b", thing):
+            return m.group(0)  # a request, or a remark about a thing, before the carry
+        return f"{m.group(1)}{thing}, {m.group(4)} it "
+
     return re.sub(
-        rf"(^|[.!?;]\s+|^(?:eh|ah|oh|so|ok|okay|now|right|well|alright),?\s+)((?:the|a|an) [a-z' ]+?),\s*({verbs}) "
-        r"(?=(?:in|into|inside|on|onto|on top of|atop)\s)",
-        r"\1\2, \3 it ",
+        rf"(^|[.!?;]\s+|^(?:eh|ah|oh|so|ok|okay|now|right|well|alright),?\s+)"
+        rf"((?:(the|a|an) )?[a-z' ]+?)(?:,|[.!:;])\s*({verbs}) "
+        r"(?=(?:in|into|inside|on|onto|on top of|atop|to|over to)\s)",
+        lambda m: carried(m) if m.group(3) or m.group(2).count(" ") < 6 else m.group(0),
         text,
     )
+
+
+def _located_topic_contrasted(text: str) -> str:
+    """ "the bowl inside the top drawer, not the one on top of the cabinet: put it on the plate": a thing said first
+    by where it is, then one of its kind ruled out: where it is picks it out already, the contrast adds nothing; said
+    by its kind alone, the contrast is what picks it out ("the bowl that is not on the cabinet")."""
+    m = re.match(
+        r"((?:the|a|an) [a-z' ]+? (?:on|in|inside|on top of|under|by|near|next to|beside|between|at) (?:the|a|an) "
+        r"[a-z' ]+?)\s*,\s*not (?:the|that|this) [a-z' ]+?\s*[,:;.-]+\s*",
+        text,
+    )
+    if m and starts_with_verb(text[m.end() :]):
+        return f"{m.group(1)}, {text[m.end() :]}"
+    # said by its kind alone: the one ruled out by where it is ("the bowl, not the one on the cabinet: put it ...")
+    m = re.match(
+        r"((?:the|a|an) [a-z' ]+?)\s*,\s*not (?:the|that|this) ones? ((?:on|in|inside|on top of|under|by|near|next to|"
+        r"beside|between|at) (?:the|a|an) [a-z' ]+?)\s*[,:;.-]+\s*",
+        text,
+    )
+    if m and starts_with_verb(text[m.end() :]):
+        return f"{m.group(1)} that is not {m.group(2)}, {text[m.end() :]}"
+    return text
+
+
+def _you_before_verb(text: str) -> str:
+    """ "please you open the drawer", "you put the cup in the sink": a request said with its subject (a learner's
+    order, or an order given to a person) is the request."""
+    return re.sub(
+        r"(^|[.!?;,]\s*)(?:please |pls |now )?you (?:just |then )?(?=\w)",
+        lambda m: m.group(1) if starts_with_verb(text[m.end() :]) else m.group(0),
+        text,
+    )
+
+
+def _said_after(text: str) -> str:
+    """A sentence after the request that only says again which thing it meant: "pick up the block. not the blue
+    one, the red one." is the red block; "put the bottle in the bowl. the bowl, not the rack." and "... yes, the
+    wine rack, i know it's odd." say again a thing the request named, and add nothing to it."""
+    m = re.fullmatch(r"(.+?[a-z'])\s*[.!?]+\s+(?:(?:yes|yeah|yep|right|correct),?\s+)?(.+?)\s*[.!?]*", text)
+    if not m:
+        return text
+    request, after = m.group(1), m.group(2)
+    one = r"(?:ones?|[a-z]+)"
+    c = re.fullmatch(rf"not the ([a-z]+) ({one})\s*(?:,|;|-+)\s*(?:but |rather |i mean )?the ([a-z]+) ({one})", after)
+    c = c or re.fullmatch(rf"()()the ([a-z]+) ({one})\s*(?:,|;|-+)\s*not the [a-z]+ {one}", after)
+    if c:
+        said, noun = c.group(3), c.group(4)
+        named = [
+            n
+            for n in re.finditer(r"\bthe ((?:[a-z]+ )?)([a-z]+)\b", request)
+            if n.group(2) == noun or noun in ("one", "ones") and is_thing(n.group(2))
+        ]
+        if not named or len({n.group(2) for n in named}) > 1 or said in ("other", "same"):
+            return text
+        n = named[-1]
+        return f"{request[: n.start()]}the {said} {n.group(2)}{request[n.end() :]}"
+    # "the bowl, not the wine rack" / "the wine rack, i know it's weird": a thing the request named, said again
+    again = re.fullmatch(
+        r"(the [a-z' ]+?)(?:\s*[,;-]+\s*(?:not (?:the|a|an) [a-z' ]+|(?:i|we|it|that|this)\b.*))?", after
+    )
+    if again and re.search(rf"\b{re.escape(again.group(1))}\b", request):
+        return request
+    return text
 
 
 def _conditioned_on_state(text: str) -> str:
@@ -1088,7 +1165,10 @@ def restructured(instruction: str) -> str:
         _class_apposition,
         _bare_topic,
         _pointed_out_first,
+        _you_before_verb,
+        _located_topic_contrasted,
         _topic_carried,
+        _said_after,
         _conditioned_on_state,
         _cut_off,
         _verb_corrected,

@@ -225,6 +225,7 @@ FILLERS = (
     "will u",
     # interjections and sentence particles ("psst", "ah", Singapore English "lah", "lor")
     "psst",
+    "ugh",
     "ah",
     "oh",
     "eh",
@@ -236,6 +237,11 @@ FILLERS = (
     "dude",
     "robot,",
     "for me",
+    # when it is to be done ("at your earliest convenience", "upon completion, the ... shall rest ...")
+    "at your earliest convenience",
+    "at your convenience",
+    "upon completion",
+    "on completion",
     "all the way",
     "fully",
     "up there",
@@ -252,7 +258,7 @@ SOLIDS = ("block", "cube", "brick", "ball", "butter", "hammer")
 # Flat regions an object is pushed into rather than carried to.
 REGIONS = ("area", "zone", "region", "square", "spot", "mark")
 # Surfaces the objects stand on anyway: "off the table" or "from the table" says nothing about which object.
-TABLE = ("table", "tabletop", "table top", "counter", "where it is", "where it sits", "its place")
+TABLE = ("table", "tabletop", "table top", "table surface", "counter", "where it is", "where it sits", "its place")
 # Parts of an object that name the object itself as a destination ("the plate's centre" is the plate).
 SELF_PARTS = (
     *("centre", "center", "middle", "surface", "top face", "top side", "top surface", "inside", "interior"),

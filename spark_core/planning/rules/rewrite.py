@@ -812,6 +812,19 @@ def sentences(instruction: str) -> list[str]:
         lambda m: f"{_ORDINAL_OF[m.group(2)]} {m.group(1)} {m.group(3)}",
         text,
     )
+    # "down from atop the cabinet", "from on top of the cabinet": where it is taken from, said as its top
+    text = re.sub(
+        r"\b(?:down |up )?from (?:atop|on top of|off of|off) (?:the )?(?!top\b)", "from the top of the ", text
+    )
+    # "twist the knob so the burner comes on": until it is on
+    text = re.sub(
+        r"\bso(?: that)? (the [a-z' ]+?|it) (?:comes|goes|turns|switches|gets|will be|is) (on|off)\b",
+        r"until \1 is \2",
+        text,
+    )
+    # "within the tray": in it; "switch it on already": impatience, no word of what or where
+    text = re.sub(r"\bwithin (?=(?:the|a|an|it|them)\b)", "in ", text)
+    text = re.sub(r"\s+already(?=\s*(?:[,.!?;]|$))", "", text)
     # "that is not sitting directly on the table", "squarely on the plate": the adverb adds nothing to where
     text = re.sub(r"\b(?:directly|squarely) (?=(?:on|in|inside|on top of|onto|into) )", "", text)
     # "the middle-of-the-table black bowl": where it is, said after it
