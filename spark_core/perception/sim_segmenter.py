@@ -284,18 +284,27 @@ def _middle_xy(frame: CameraFrame) -> np.ndarray:
     renderer's object ids)."""
     assert frame.object_ids is not None
     ids = [i for i in np.unique(frame.object_ids) if i]
-    return np.mean(
-        [_centroid_xy(Detection("", "", frame.object_ids == i, 1.0, frame.camera), frame) for i in ids], axis=0
-    )
+    return np.mean([mask_centroid_xy(frame.object_ids == i, frame) for i in ids], axis=0)
 
 
 def _centroid_xy(d: Detection, frame: CameraFrame) -> np.ndarray:
-    vs, us = np.nonzero(d.mask)
+    return mask_centroid_xy(d.mask, frame)
+
+
+def mask_centroid_xy(mask: np.ndarray, frame: CameraFrame) -> np.ndarray:
+    """The median world xy (m) of a mask's back-projected pixels."""
+    vs, us = np.nonzero(mask)
     pts = frame.backproject(us.astype(float), vs.astype(float), frame.depth_m[vs, us])
     return np.median(pts[:, :2], axis=0)
 
 
-def pick_by_qualifier(dets: list[Detection], frame: CameraFrame, qualifier: str, rank: int = 1) -> Detection:
+def pick_by_qualifier(
+    dets: list[Detection],
+    frame: CameraFrame,
+    qualifier: str,
+    rank: int = 1,
+    table_middle_xy_m: np.ndarray | None = None,
+) -> Detection:
     """The instance a spatial qualifier points at, from each mask's back-projected centroid (a size qualifier: from
     its points' footprint); `rank` counts from
     that end ("second leftmost"). "middle": the median one along the axis the instances spread along most (stacked
@@ -311,10 +320,12 @@ def pick_by_qualifier(dets: list[Detection], frame: CameraFrame, qualifier: str,
     if sign == 0.0:
         spread = np.ptp(np.array(list(centres.values())), axis=0)
         axis = int(np.argmax(spread))
-        if len(dets) == 2 and axis != 2 and frame.object_ids is not None:
+        if table_middle_xy_m is None and frame.object_ids is not None:
+            table_middle_xy_m = _middle_xy(frame)
+        if len(dets) == 2 and axis != 2 and table_middle_xy_m is not None:
             # two on the table have no median: "the middle bowl" is the one nearer the middle of the table (of
-            # everything on it in this view, as "from the table center" reads it)
-            middle = _middle_xy(frame)
+            # everything on it in this view, as "from the table center" reads it; given by a camera-only caller)
+            middle = table_middle_xy_m
             return min(dets, key=lambda d: float(np.linalg.norm(centres[id(d)][:2] - middle)))
         return sorted(dets, key=lambda d: float(centres[id(d)][axis]))[len(dets) // 2]
     ordered = sorted(dets, key=lambda d: -sign * float(centres[id(d)][axis]))

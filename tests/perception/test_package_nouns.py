@@ -1,8 +1,7 @@
 """A package noun names what comes in that package ("the carton": the milk and the juice, not the box of butter
 beside them); a negation rules out what each thing it names grounds to ("the box that is neither cream cheese nor
-chocolate pudding"); "the middle bowl" of two on a table is the one nearer the table's middle. Synthetic top-down
-frame: a camera 1 m above the table looking straight down (1 px = 1 cm; pixel (u, v) is world x = (u - 50) cm,
-y = (50 - v) cm)."""
+chocolate pudding"). Synthetic top-down frame: a camera 1 m above the table looking straight down (1 px = 1 cm;
+pixel (u, v) is world x = (u - 50) cm, y = (50 - v) cm)."""
 
 from __future__ import annotations
 
@@ -107,26 +106,3 @@ def test_a_package_noun_the_scene_has_no_such_package_for_names_its_kind_or_noth
     assert package_members("tub", descriptions) is None  # nothing comes in one
     assert package_members("milk carton", descriptions) is None  # a product named: not the package's own question
     assert package_members("box", ["wooden box-shaped cube"]) is None  # a shape is no package
-
-
-@pytest.mark.parametrize("prompt", ["middle bowl", "centre bowl", "the center black bowl"])
-def test_the_middle_one_of_two_on_a_table_is_the_one_nearer_its_middle(prompt):
-    """Two bowls have no median: the one nearer the middle of everything on the table is "the middle bowl"."""
-    catalog = {
-        "black bowl": "black ceramic bowl",
-        "black bowl 2": "black ceramic bowl",
-        "plate": "flat round white plate",
-        "cabinet": "brown wooden cabinet",
-        "stove": "grey electric stove",
-    }
-    where = {
-        "black bowl": (2, -3),
-        "black bowl 2": (-25, 30),
-        "plate": (25, 10),
-        "cabinet": (-20, -30),
-        "stove": (10, 25),
-    }
-    seg = SimSegmenter(catalog)
-    frame = _frame(where)
-    assert _found(seg, frame, prompt) == {"black bowl"}
-    assert _found(seg, frame, f"{prompt.replace('the ', '').split()[-1]} not middle") == {"black bowl 2"}

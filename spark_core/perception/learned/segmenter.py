@@ -28,7 +28,7 @@ from ..naming import class_members, own_noun_prompts
 from ..pixels import mask_pixels
 from ..qualifiers import anchor_apart, on_side, relation_holds, ruled_out_parts, split_qualifier, split_relation
 from ..quantiles import percentile, percentiles, percentiles_of_sorted
-from ..sim_segmenter import calibrated_score, pick_by_qualifier
+from ..sim_segmenter import calibrated_score, mask_centroid_xy, pick_by_qualifier
 from ..text_encoder import SHARED_ENCODER, TextEncoder
 from . import patch_classifier
 from .categories import CATEGORIES, CATEGORY_INDEX, COLOURS, ROBOT, TABLE
@@ -419,9 +419,16 @@ class LearnedSegmenter:
             if is_stacked(qualifier) and dets and all(d.detail["category"] == "drawer" for d in dets):
                 dets = self._drawer_layer(frame, dets, qualifier)  # type: ignore[arg-type]  # is_stacked: a str
             elif qualifier and len(dets) > 1:
-                dets = [pick_by_qualifier(dets, frame, qualifier)]
+                middle = self._table_middle_xy(frame) if qualifier == "middle" else None
+                dets = [pick_by_qualifier(dets, frame, qualifier, table_middle_xy_m=middle)]
             out.extend(dets)
         return out
+
+    def _table_middle_xy(self, frame: CameraFrame) -> np.ndarray | None:
+        """The middle of the table (m, world xy) as this frame shows it: the mean centroid of every thing seen on
+        it ("the middle bowl" of two is the one nearer it, as the sim oracle reads it from its object ids)."""
+        seen = [mask_centroid_xy(i.mask, frame) for i in self.instances(frame) if CATEGORIES[i.category].thing]
+        return np.mean(seen, axis=0) if seen else None
 
     def _matches(self, frame: CameraFrame, prompt: str, core: str) -> list[Detection]:
         cats, colours = self.ground(core)
