@@ -88,6 +88,41 @@ from tests.planning.test_rules_round28 import read
             "take the jar down from atop the shelf and set it on the tray",
             ["pick obj=jar on top of shelf", "put obj=jar on top of shelf relation=on target=tray"],
         ),
+        # a correction said first, then its request in a sentence of its own
+        ("not the left drawer, the right one. open it", ["mention obj=right drawer", "open obj=right drawer"]),
+        # a thing named again after the one ruled out; a place said alone after a thing said with no verb
+        ("pear into the bowl. not the apple, pear", ["put obj=pear relation=in target=bowl"]),
+        ("the lemon. tray", ["put obj=lemon relation=in target=tray"]),
+        # sides and heights said with a hyphen
+        ("left-hand mug into the sink", ["put obj=left mug relation=in target=sink"]),
+        (
+            "take the higher-up mug and put it in the sink",
+            ["pick obj=top mug", "put obj=top mug relation=in target=sink"],
+        ),
+        # a thing that stays put is left where it is; the gripper moved over a place carries what it holds
+        (
+            "the apple stays put on the table, don't move it. pear into the bowl",
+            ["mention obj=apple", "put obj=pear relation=in target=bowl"],
+        ),
+        (
+            "pick up the pear, move the gripper over the bowl, open the gripper",
+            ["pick obj=pear", "put obj=pear relation=on target=bowl"],
+        ),
+        ("move your hand to the left", ["put obj=your hand relation=on target=left"]),  # no carry of "it"
+        # a destination said by its kind alone is the one of that kind an earlier step worked
+        (
+            "open the top drawer and put the apple in the drawer",
+            ["open obj=top drawer", "put obj=apple relation=in target=top drawer"],
+        ),
+        ("open the drawer and put the block in it", ["open obj=drawer", "put obj=block relation=in target=drawer"]),
+        # steps listed with ">", goals with "+"; ">" between a thing and a place is an arrow
+        (
+            "pull the drawer out > grab the pear > place it in the drawer",
+            ["open obj=drawer", "pick obj=pear", "put obj=pear relation=in target=drawer"],
+        ),
+        ("pear > bowl", ["put obj=pear relation=in target=bowl"]),
+        ("drawer open + pear inside it", ["open obj=drawer", "put obj=pear relation=in target=drawer"]),
+        ("stove on, kettle on it", ["turn on obj=stove", "put obj=kettle relation=on target=stove"]),
         # "neither ... nor ...": each is ruled out, kept apart for perception to ground one by one
         (
             "put the jar that's neither jam nor honey on the shelf",
@@ -112,3 +147,14 @@ def test_the_central_one_is_a_place_word_not_a_thing():
     result = plan("move the central mug into the sink", scene)
     assert result.ok, result.error
     assert leaves(result) == [("pick", "central mug"), ("place_in", "sink")]
+
+
+def test_a_word_salad_with_a_colour_describing_nothing_is_refused():
+    """The order-free reader had read "drawer the open blue sideways of quickly" as "open the drawer": a colour left
+    over that describes no thing named is a word salad. "the blue one" still describes a kind named elsewhere."""
+    scene = view(drawer=(0.7, 0.2, 0.07), drawer_handle=(0.65, 0.2, 0.09))
+    assert not plan("drawer the open blue sideways of quickly", scene).ok
+    blocks = view(inventory=("red block", "blue block"), blue_block=(0.5, 0.1, 0.02), red_block=(0.5, -0.1, 0.02))
+    result = plan("pick up the block, the blue one", blocks)
+    assert result.ok, result.error
+    assert leaves(result) == [("pick", "blue block")]

@@ -784,6 +784,8 @@ def _restated_one(text: str) -> str:
     def said(m: re.Match) -> str:
         det, thing, attribute, rest = m.group(1), m.group(2), m.group(3).strip(), m.group(4).strip()
         ends, owned = m.group(5), re.search(_POSSESSIVE, thing)
+        if re.search(r"\bnot\s*$", m.string[: m.start()]):
+            return m.group(0)  # "not the middle drawer, the bottom one": a correction (qualify), no apposition
         # no other thing said in it (a side is none: "off to the right"), else the look may be of the thing after
         sides = re.sub(r"\b(?:to|on|at) (?:the|your|my) (?:left|right|front|back)\b", "", thing)
         alone = not re.search(r"\b(?:the|a|an|your|my|its)\b", sides)
@@ -1015,6 +1017,15 @@ def _located_topic_contrasted(text: str) -> str:
     return text
 
 
+def _destination_said_last(text: str) -> str:
+    """ "not the butter - the cream cheese. basket": a thing said with no verb, then a sentence that is only a place
+    for it: the thing and its place, as "the cream cheese, basket" is read."""
+    m = re.fullmatch(r"([^.!?]+?)\s*[.!?]+\s+((?:(?:in|into|on|onto) )?(?:the |a |an )?([a-z]+))\s*[.!?]*", text)
+    if not m or starts_with_verb(m.group(1)) or not is_thing(m.group(3)) or re.search(r"\bit\b", m.group(1)):
+        return text
+    return f"{m.group(1)}, {m.group(2)}"
+
+
 def _you_before_verb(text: str) -> str:
     """ "please you open the drawer", "you put the cup in the sink": a request said with its subject (a learner's
     order, or an order given to a person) is the request."""
@@ -1047,6 +1058,12 @@ def _said_after(text: str) -> str:
             return text
         n = named[-1]
         return f"{request[: n.start()]}the {said} {n.group(2)}{request[n.end() :]}"
+    # "not the bbq sauce, ketchup": the thing the request named, said again after the one ruled out
+    again = re.fullmatch(
+        r"not (?:the|a|an) [a-z' ]+?\s*(?:,|;|-+)\s*(?:but |rather |i mean )?(?:the |a |an )?([a-z' ]+)", after
+    )
+    if again and re.search(rf"\b{re.escape(again.group(1))}\b", request):
+        return request
     # "the bowl, not the wine rack" / "the wine rack, i know it's weird": a thing the request named, said again
     again = re.fullmatch(
         r"(the [a-z' ]+?)(?:\s*[,;-]+\s*(?:not (?:the|a|an) [a-z' ]+|(?:i|we|it|that|this)\b.*))?", after
@@ -1155,6 +1172,13 @@ def restructured(instruction: str) -> str:
         lambda m: ". " if m.group(1) and starts_with_verb(m.group(1)) else " " if m.group(1) else "",
         out,
     ).strip()
+    # "pull the drawer out > grab the cheese > place it in the drawer": steps listed with ">" between them; between
+    # a thing and a place it is an arrow ("red block > green tray")
+    out = re.sub(
+        r"\s+(?:>|\u00bb)\s+(?=(\S[^>\u00bb]*))", lambda m: ", then " if starts_with_verb(m.group(1)) else " -> ", out
+    )
+    # "top drawer open + cream cheese inside it": goals listed with "+"
+    out = re.sub(r"\s+\+\s+(?=[a-z])", ", ", out)
     # "would you mind sorting these? red block into ...": what "these" are, said next
     out = re.sub(r"\b(these|those|the following)\s*\?\s+(?=\S)", r"\1: ", out)
     # what is said in passing, appositions, a thing said first, and corrections, in this order
@@ -1166,6 +1190,7 @@ def restructured(instruction: str) -> str:
         _bare_topic,
         _pointed_out_first,
         _you_before_verb,
+        _destination_said_last,
         _located_topic_contrasted,
         _topic_carried,
         _said_after,

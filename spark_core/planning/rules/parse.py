@@ -62,7 +62,20 @@ _DEST = re.compile(
     r"within|atop|over|in|on|to)\b"
 )
 _RELATION_OF = {"onto": "on", "on to": "on", "on top of": "on", "atop": "on", "over": "on", "on": "on"}
-_RELATIONS = ("between", "next to", "beside", "near", "by", "on top of", "on", "in", "inside")
+_RELATIONS = (
+    "between",
+    "next to",
+    "beside",
+    "near",
+    "by",
+    "on top of",
+    "on",
+    "in",
+    "inside",
+    "under",
+    "below",
+    "behind",
+)
 
 
 def _split_on(phrase: str, preps: tuple[str, ...]) -> tuple[str, str] | None:
@@ -224,7 +237,13 @@ def parse_instruction(instruction: str) -> list[Clause]:
             verb = ("mention", part)  # "the bowl on the stove, move it to the plate": named first, then acted on
         if verb is None and previous in (None, "mention") and verbless_carry:
             verb = ("put", part)  # "first the red block into the green tray", "I want the cup on the saucer"
-        if verb is None and previous in (None, "mention"):
+        if verb is None and (
+            previous in (None, "mention")
+            # "top drawer open, cream cheese inside it": a goal said after a fixture's state is a carry, not the
+            # same state again
+            or previous in _FIXTURE_ACTIONS
+            and re.search(r"\b(?:in|inside|into|on|onto|on top of) (?:it|the|a|an)\b", part)
+        ):
             goal = bare_goal(part)  # "red block in the cabinet drawer": no verb, a thing and a place
             verb = _match_verb(goal) if goal else None
         if verb is None:
@@ -262,7 +281,7 @@ def parse_instruction(instruction: str) -> list[Clause]:
         previous = clause.action
         clauses.append(clause)
     clauses = [_remaining(c, clauses[:i]) for i, c in enumerate(clauses)]
-    clauses = _said_once(_open_before_filling(_grip_then_act(clauses)))
+    clauses = _said_once(_open_before_filling(_grip_then_act(_named_before(clauses))))
     if all(c.action == "mention" for c in clauses):
         raise ParseError(f"{instruction.strip()!r} names {', '.join(c.obj or '?' for c in clauses)} but no action")
     for remark in remarks:
@@ -270,6 +289,21 @@ def parse_instruction(instruction: str) -> list[Clause]:
         if at is not None and not _remark_used(clauses[at], clauses[at + 1 :]):
             clauses[at] = replace(clauses[at], unread=True)  # "into the green bin with the lime. the pear ..."
     return clauses
+
+
+def _named_before(clauses: list[Clause]) -> list[Clause]:
+    """ "open the top drawer and put the cream cheese in the drawer": a destination said by its kind alone is the
+    one of that kind an earlier step worked or carried ("the drawer": the top drawer just opened), not any of them."""
+    out: list[Clause] = []
+    for c in clauses:
+        if c.target and re.fullmatch(r"[a-z]+", c.target) and not is_pronoun(c.target):
+            fuller = [
+                p.obj for p in out if p.action != "mention" and p.obj and p.obj.split()[-1] == c.target and " " in p.obj
+            ]
+            if len(set(fuller)) == 1:
+                c = replace(c, target=fuller[0])
+        out.append(c)
+    return out
 
 
 def _said_once(clauses: list[Clause]) -> list[Clause]:

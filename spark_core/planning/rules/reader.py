@@ -347,8 +347,14 @@ def _uncovered(tokens: list[str], found: list[Mention]) -> str | None:
     inside = {n for m in found for n in range(m.start, m.end)}
     verbs = _verb_spans(tokens)
     for n, t in enumerate(tokens):
-        if n in inside or n in verbs or t in BASE_COLOURS:
+        if n in inside or n in verbs:
             continue
+        if t in BASE_COLOURS:
+            # "the blue one": a colour said of a kind named elsewhere; a colour describing nothing is a word salad
+            # ("drawer the open blue sideways of quickly")
+            if tokens[n + 1 : n + 2] in (["one"], ["ones"]) or any(t in m.phrase.split() for m in found):
+                continue
+            return f"colour left over: {t}"
         if not _closed(t):
             return f"noun left over: {t}"
         if _unknown_verb(t):

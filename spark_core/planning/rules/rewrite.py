@@ -669,7 +669,8 @@ def sentences(instruction: str) -> list[str]:
     # "ketchup stays where it is": left as it is, said of the thing
     text = re.sub(
         r"(^|[.;!?,] )(?:the )?((?:\w+ ){0,2}?\w+) (?:stays?|remains?|(?:can|may|should|must|will) (?:stay|remain)) "
-        r"(?:right |just |exactly )?(where (?:it is|they are)|as (?:it is|they are)|put)\b",
+        r"(?:right |just |exactly )?(where (?:it is|they are)|as (?:it is|they are)|put)\b"
+        r"(?: (?:on|at) the (?:table|counter)\b)?",  # "stays put on the table": where it is
         r"\1leave the \2 where it is",
         text,
     )
@@ -815,6 +816,16 @@ def sentences(instruction: str) -> list[str]:
     # "down from atop the cabinet", "from on top of the cabinet": where it is taken from, said as its top
     text = re.sub(
         r"\b(?:down |up )?from (?:atop|on top of|off of|off) (?:the )?(?!top\b)", "from the top of the ", text
+    )
+    # "the right-hand bowl", "the higher-up one": the side or the height alone
+    text = re.sub(r"\b(left|right)[- ]hand(?:ed)?(?= (?!side\b)[a-z])", r"\1", text)
+    text = re.sub(r"\b(higher|lower)[- ](?:up|down)\b", r"\1", text)
+    # "move the eef over the basket": the gripper carries what it holds ("... then open the gripper")
+    text = re.sub(
+        r"\b(move|bring|take|position|put) (?:the |your )?(?:eef|ee|end[- ]effector|gripper|hand|arm|tool)"
+        r" (?=(?:over|above|to|into|onto) (?:the|a|an) (?!(?:left|right|front|back|side)\b))",
+        r"\1 it ",
+        text,
     )
     # "twist the knob so the burner comes on": until it is on
     text = re.sub(
