@@ -194,12 +194,14 @@ class SimSegmenter:
         return out
 
     def _rules_out(self, frame: CameraFrame, said: str, core: str, label: str) -> bool:
-        """Whether "<core> not <said>" leaves the object out: what "<said> <core>" grounds to ("box not chocolate
-        pudding": the chocolate pudding, as the learned segmenter reads it); when that grounds to nothing, whether
-        the words contradict the object ("block not blue": the blue block)."""
-        named = {d.detail["object"] for d in self.segment(frame, [f"{said} {core}"])}
-        if named:
-            return label not in named
+        """Whether "<core> not <said>" leaves the object out: what the said words ground to alone, else with the core
+        ("box not chocolate pudding": the chocolate pudding; "peg not round": the round peg); when neither grounds
+        to anything, whether the words contradict the object ("block not blue": the blue block)."""
+        # the words alone first: "milk carton not oj" rules out the orange juice ("oj milk carton" is the milk)
+        for prompt in (said, f"{said} {core}"):
+            named = {d.detail["object"] for d in self.segment(frame, [prompt])}
+            if named:
+                return label not in named
         return mismatch(f"{said} {core}", self._names[label], self.catalog[label]) is not None
 
     def _supported(

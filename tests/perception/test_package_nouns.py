@@ -78,6 +78,9 @@ def test_a_package_noun_names_what_comes_in_it(groceries, prompt, names):
         ("box not cream cheese nor chocolate pudding", {"butter"}),
         ("box not cream cheese, chocolate pudding", {"butter"}),
         ("carton not milk or orange juice", set()),
+        # a thing named in full keeps itself: what the ruled-out words name alone is ruled out, not "orange juice
+        # milk carton"
+        ("milk carton not orange juice", {"milk"}),
     ],
 )
 def test_a_negation_rules_out_what_each_thing_it_names_grounds_to(groceries, prompt, names):

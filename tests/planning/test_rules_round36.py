@@ -123,6 +123,25 @@ from tests.planning.test_rules_round28 import read
         ("pear > bowl", ["put obj=pear relation=in target=bowl"]),
         ("drawer open + pear inside it", ["open obj=drawer", "put obj=pear relation=in target=drawer"]),
         ("stove on, kettle on it", ["turn on obj=stove", "put obj=kettle relation=on target=stove"]),
+        # a spec's fields between commas; "tgt:" is "target:"
+        ("obj: pear, dest: bowl", ["put obj=pear relation=in target=bowl"]),
+        ("tgt: lemon in tray", ["put obj=lemon relation=in target=tray"]),
+        # the goal as a notebook's config, a question then "if not, put it there", or a thing let sit somewhere
+        (
+            "final config: pear in bowl, lemon on tray",
+            ["put obj=pear relation=in target=bowl", "put obj=lemon relation=on target=tray"],
+        ),
+        ("is the pear in the bowl yet? if not, put it there", ["put obj=pear relation=in target=bowl"]),
+        ("let the pear sit in the bowl", ["put obj=pear relation=in target=bowl"]),
+        # "any X but the one ...": one ruled out after "any"; a "but" after a destination joins
+        ("any mug but the one on the tray, into the sink", ["put obj=mug not on tray relation=in target=sink"]),
+        ("put the mug in the sink but not the one on the tray", ["put obj=mug not on tray relation=in target=sink"]),
+        # where it is from the robot in parentheses; an item number; an ordinal thing said first without its article
+        ("the mug (on your left) goes in the sink", ["put obj=leftmost mug relation=in target=sink"]),
+        ("cup #2 (the near one) to the tray", ["put obj=nearest cup relation=in target=tray"]),
+        ("1st cup (closest to you) onto tray", ["put obj=nearest cup relation=on target=tray"]),
+        # a thing ruled out by a thing named in full after "other than"
+        ("the jar other than the jam goes on the shelf", ["put obj=jar not jam relation=on target=shelf"]),
         # "neither ... nor ...": each is ruled out, kept apart for perception to ground one by one
         (
             "put the jar that's neither jam nor honey on the shelf",

@@ -421,6 +421,7 @@ def _header(text: str) -> str:
     parts |= {"stacking", "action", "actions", "sequence", "order"}
     # what the request describes ("final configuration: ...", "end state: ...", "final state i'm after: ...")
     parts |= {"configuration", "state", "arrangement", "layout", "goal", "target", "result", "final", "end", "setup"}
+    parts |= {"config", "cfg", "conf"}
     parts |= {"i", "am", "m", "we", "are", "re", "after", "want", "what", "looking", "for", "desired", "wanted"}
     if words[:1] in (["final"], ["end"], ["target"], ["desired"]):
         parts |= {"table", "scene", "picture", "look", "tabletop"}  # "final table: ...": how the scene should look
@@ -807,6 +808,15 @@ def _restated_one(text: str) -> str:
             return f"{det} {unordered} {rest} "
         return m.group(0)
 
+    # "1st bowl, the one closest to you, ...": an ordinal thing said first without its article (not "first, ...")
+    text = re.sub(
+        r"^(1st|2nd|3rd|first|second|third) ([a-z]+), (?=the (?:[a-z]+ )?one\b)",
+        lambda m: (
+            f"the {dict(zip(('1st', '2nd', '3rd'), ('first', 'second', 'third'))).get(m.group(1), m.group(1))} "
+            f"{m.group(2)}, "
+        ),
+        text,
+    )
     # "bowl closest to you, the one on the stove, onto the plate": a thing said first without its article (not a
     # request: "take the mug, the white one, ...")
     text = re.sub(
@@ -1026,6 +1036,18 @@ def _destination_said_last(text: str) -> str:
     return f"{m.group(1)}, {m.group(2)}"
 
 
+def _asked_if_done(text: str) -> str:
+    """ "is the pear in the bowl yet? if not, put it there": a question about the goal, then the request to make it
+    so: the request is the goal asked about."""
+    return re.sub(
+        r"^(?:is|are) ((?:the|a|an) [a-z' ]+?) (in|inside|on|on top of|into|onto) ((?:the|a|an) [a-z' ]+?)"
+        r"(?: yet| already| now)?\s*\?\s*(?:if not|no|otherwise|if it is not|if it isn't)\s*[,:-]?\s*"
+        r"(?:please |just |then )?(put|place|move|set|get|pop) (?:it|them) (?:there|in there|on there)\s*([.!?]*)$",
+        r"\4 \1 \2 \3\5",
+        text,
+    )
+
+
 def _you_before_verb(text: str) -> str:
     """ "please you open the drawer", "you put the cup in the sink": a request said with its subject (a learner's
     order, or an order given to a person) is the request."""
@@ -1063,13 +1085,13 @@ def _said_after(text: str) -> str:
         r"not (?:the|a|an) [a-z' ]+?\s*(?:,|;|-+)\s*(?:but |rather |i mean )?(?:the |a |an )?([a-z' ]+)", after
     )
     if again and re.search(rf"\b{re.escape(again.group(1))}\b", request):
-        return request
+        return f"{request}."
     # "the bowl, not the wine rack" / "the wine rack, i know it's weird": a thing the request named, said again
     again = re.fullmatch(
         r"(the [a-z' ]+?)(?:\s*[,;-]+\s*(?:not (?:the|a|an) [a-z' ]+|(?:i|we|it|that|this)\b.*))?", after
     )
     if again and re.search(rf"\b{re.escape(again.group(1))}\b", request):
-        return request
+        return f"{request}."
     return text
 
 
@@ -1161,6 +1183,15 @@ def restructured(instruction: str) -> str:
         ),
         out,
     )
+    # a parenthesis that says where it is from the robot ("the first bowl (closest to you)"): "the one ..." between
+    # commas; an item number ("bowl #1") says nothing perception could see
+    out = re.sub(
+        r"\s*\(\s*((?:closest|nearest|furthest|farthest|closer|nearer|further|farther)\b[a-z ]*|(?:on|to|at) (?:the|your) "
+        r"(?:left|right|front|back)[a-z ]*)\s*\)\s*(?=(\w)?)",
+        lambda m: f", the one {m.group(1)}," + (" " if m.group(2) else ""),
+        out,
+    )
+    out = re.sub(r"(?<=[a-z])\s+(?:#\s?|no\. ?)\d+\b", "", out)
     # a parenthesis that rules a thing out is a contrast between commas ("the top drawer (not the middle one)")
     out = re.sub(
         r"\s*\(\s*(not [a-z ]+?)\s*\)\s*(?=(\w)?)", lambda m: f", {m.group(1)}," + (" " if m.group(2) else ""), out
@@ -1190,6 +1221,7 @@ def restructured(instruction: str) -> str:
         _bare_topic,
         _pointed_out_first,
         _you_before_verb,
+        _asked_if_done,
         _destination_said_last,
         _located_topic_contrasted,
         _topic_carried,

@@ -298,12 +298,18 @@ def _named_before(clauses: list[Clause]) -> list[Clause]:
     for c in clauses:
         if c.target and re.fullmatch(r"[a-z]+", c.target) and not is_pronoun(c.target):
             fuller = [
-                p.obj for p in out if p.action != "mention" and p.obj and p.obj.split()[-1] == c.target and " " in p.obj
+                p.obj for p in out if p.action != "mention" and p.obj and " " in p.obj and _head_word(p.obj) == c.target
             ]
             if len(set(fuller)) == 1:
                 c = replace(c, target=fuller[0])
         out.append(c)
     return out
+
+
+def _head_word(phrase: str) -> str:
+    """The noun a phrase names its thing by, before where it is ("bowl next to plate" -> "bowl")."""
+    words = split_relation(phrase)[0].split()
+    return words[-1] if words else ""
 
 
 def _said_once(clauses: list[Clause]) -> list[Clause]:
@@ -520,7 +526,8 @@ def _topic(part: str, later: list[str]) -> bool:
         bare
         or on_it
         and re.fullmatch(
-            r"[a-z]+(?: [a-z]+){0,2} (?:on|in|inside|at|by|near|next to|beside|under|between) (?:the|a|an) [a-z ]+",
+            r"(?!(?:look|see|check|watch|find|spot|notice|go|come)\b)[a-z]+(?: [a-z]+){0,2} "
+            r"(?:on|in|inside|by|near|next to|beside|under|between) (?:the|a|an) [a-z ]+",
             part,
         )
     )

@@ -398,7 +398,16 @@ def negations(text: str) -> str:
     # "any bowl except (for) the one near the box", "the bowl other than the one further back", "... the blue one"
     but = r"(?:except(?: for)?|but not|other than|apart from|besides|save for|excluding|rather than)"
     text = re.sub(rf"\b{DET} ({NP}),? {but} (?:the|that) ({_WORD}) ones?\b", r"the \1 not \2", text)
+    # "the carton other than the orange juice goes in ...": ruled out by a thing named in full
+    text = re.sub(
+        rf"\b{DET} ({NP}),? {but} (?:the|a|an) (?!ones?\b)({NP})"
+        rf"(?=\s+(?:goes|go|into|in|onto|on|to|should|please)\b|\s*[,;:.!]|\s*$)",
+        r"the \1 not \2",
+        text,
+    )
     text = re.sub(rf"\b{DET} ({NP}),? {but} (?:the|that) (?:ones?|{NP}) ([^,;:]+),?", r"the \1 not \2", text)
+    # "any bowl but the one on the cabinet": "but" rules one out only after "any" (a "but" after "the bowl" joins)
+    text = re.sub(rf"\b(?:any|whichever) ({NP}),? but (?:the|that) (?:ones?|{NP}) ([^,;:]+),?", r"the \1 not \2", text)
     # "the sauce that is not (the) barbecue sauce": ruled out by the words of its own kind
     text = re.sub(rf"\b{DET} ({NP}) (?:(?:that|which) )?{_NEG} (?:the |a |an )?({NP})\b", _not_own_kind, text)
     # "whichever block is not the blue one", "the block that is not the blue one"
@@ -559,7 +568,8 @@ def _trailing_not(text: str) -> str:
     )
     # two places after it: the first says where it is ("the bowl on top of the cabinet on the plate")
     located = located or re.match(
-        r"\s+(?:on top of|on|in|inside|at|from) (?:the )?[a-z' ]+? (?:on top of|onto|on|into|inside|in|to) the ",
+        r"\s+(?:on top of|on|in|inside|at|from) (?:the )?(?:(?!goes\b|go\b|belongs?\b|should\b|must\b|needs?\b)[a-z']+ )+?"
+        r"(?:on top of|onto|on|into|inside|in|to) the ",
         main[obj.end() :],
     )
     if located or obj.group(2).endswith(" next") and main[obj.end() :].startswith(" to "):

@@ -352,7 +352,8 @@ def _uncovered(tokens: list[str], found: list[Mention]) -> str | None:
         if t in BASE_COLOURS:
             # "the blue one": a colour said of a kind named elsewhere; a colour describing nothing is a word salad
             # ("drawer the open blue sideways of quickly")
-            if tokens[n + 1 : n + 2] in (["one"], ["ones"]) or any(t in m.phrase.split() for m in found):
+            said_of = tokens[n + 1 : n + 2] in (["one"], ["ones"]) or n > 0 and tokens[n - 1] in DETERMINERS
+            if said_of or any(t in m.phrase.split() for m in found):  # "the blue (one)": a thing said by its colour
                 continue
             return f"colour left over: {t}"
         if not _closed(t):

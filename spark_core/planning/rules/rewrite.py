@@ -827,6 +827,12 @@ def sentences(instruction: str) -> list[str]:
         r"\1 it ",
         text,
     )
+    # "let the pear sit in the bowl": a carry to where it is let be
+    text = re.sub(
+        r"^let ((?:the|a|an) [a-z' ]+?) (?:sit|rest|stay|lie|stand|live) (?=(?:in|inside|on|on top of)\b)",
+        r"put \1 ",
+        text,
+    )
     # "twist the knob so the burner comes on": until it is on
     text = re.sub(
         r"\bso(?: that)? (the [a-z' ]+?|it) (?:comes|goes|turns|switches|gets|will be|is) (on|off)\b",

@@ -13,7 +13,9 @@ import re
 # The keys of a spec's fields, by what they say: the thing moved, where it goes, where it comes from, the action.
 KEYS: dict[str, str] = {
     **dict.fromkeys(["obj", "object", "item", "thing", "target object", "what", "pick"], "thing"),
-    **dict.fromkeys(["dst", "dest", "destination", "to", "goal", "place", "where", "target", "loc", "into"], "to"),
+    **dict.fromkeys(
+        ["dst", "dest", "destination", "to", "goal", "place", "where", "target", "tgt", "loc", "into"], "to"
+    ),
     **dict.fromkeys(["src", "source", "from"], "from"),
     **dict.fromkeys(["action", "act", "verb", "op", "do", "task", "skill"], "action"),
 }
@@ -22,8 +24,12 @@ _PREP = r"(?:in|into|inside|on|onto|on top of|next to|in front of|to|under|besid
 
 
 def spelled_out(text: str) -> str:
-    """The spec in `text` said as a sentence; `text` itself when it is no spec."""
+    """The spec in `text` said as a sentence; `text` itself when it is no spec. A lone goal after "tgt:" is said
+    after "target:" ("tgt: bbq sauce in basket")."""
+    text = re.sub(r"^tgt\s*:", "target:", text)
     parts = [p.strip() for p in re.split(r"\s*[;|\n]\s*", text.strip().rstrip(".")) if p.strip()]
+    if len(parts) == 1 and text.count(":") + text.count("=") > 1:  # "obj: milk, dest: basket": fields between commas
+        parts = [p.strip() for p in re.split(r"\s*,\s*", text.strip().rstrip(".")) if p.strip()]
     fields: dict[str, str] = {}
     for part in parts:
         m = re.fullmatch(r"([a-z ]+?)\s*[:=]\s*(.+)", part.lower())
