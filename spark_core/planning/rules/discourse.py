@@ -1186,8 +1186,8 @@ def restructured(instruction: str) -> str:
     # a parenthesis that says where it is from the robot ("the first bowl (closest to you)"): "the one ..." between
     # commas; an item number ("bowl #1") says nothing perception could see
     out = re.sub(
-        r"\s*\(\s*((?:closest|nearest|furthest|farthest|closer|nearer|further|farther)\b[a-z ]*|(?:on|to|at) (?:the|your) "
-        r"(?:left|right|front|back)[a-z ]*)\s*\)\s*(?=(\w)?)",
+        r"\s*\(\s*((?:closest|nearest|furthest|farthest|closer|nearer|further|farther)\b[a-z ]*"
+        r"|(?:on|to|at) (?:the|your) (?:left|right|front|back)[a-z ]*)\s*\)\s*(?=(\w)?)",
         lambda m: f", the one {m.group(1)}," + (" " if m.group(2) else ""),
         out,
     )
