@@ -569,7 +569,8 @@ def _trailing_not(text: str) -> str:
     # two places after it: the first says where it is ("the bowl on top of the cabinet on the plate")
     located = located or re.match(
         r"\s+(?:on top of|on|in|inside|at|from) (?:the )?"
-        r"(?:(?!goes\b|go\b|belongs?\b|should\b|must\b|needs?\b)[a-z']+ )+?(?:on top of|onto|on|into|inside|in|to) the ",
+        r"(?:(?!goes\b|go\b|belongs?\b|should\b|must\b|needs?\b)[a-z']+ )+?"
+        r"(?:on top of|onto|on|into|inside|in|to) the ",
         main[obj.end() :],
     )
     if located or obj.group(2).endswith(" next") and main[obj.end() :].startswith(" to "):
