@@ -519,18 +519,15 @@ def _topic(part: str, later: list[str]) -> bool:
     # ... or by where it is alone, when a request acting on it comes next ("bowl on the stove, put it on the plate",
     # "..., transfer to the plate"; "red block in the bowl, then put the blue block on it" is two carries)
     acted = _match_verb(later[0])
-    on_it = acted is not None and re.match(
-        r"(?:(?:it|them|that one|this one)\b|(?:to|into|onto|on|in|inside)\s)", acted[1]
+    on_it = acted is not None and bool(
+        re.match(r"(?:(?:it|them|that one|this one)\b|(?:to|into|onto|on|in|inside)\s)", acted[1])
     )
-    bare = (
-        bare
-        or on_it
-        and re.fullmatch(
+    if bare is None and on_it:
+        bare = re.fullmatch(
             r"(?!(?:look|see|check|watch|find|spot|notice|go|come)\b)[a-z]+(?: [a-z]+){0,2} "
             r"(?:on|in|inside|by|near|next to|beside|under|between) (?:the|a|an) [a-z ]+",
             part,
         )
-    )
     if not re.match(r"(?:the|a|an|this|that|these|those) \w", part) and not bare:
         return False
     if re.search(r"\b(?:onto|into|on to)\b", part):  # "the red block onto the plate, then ...": a carry
