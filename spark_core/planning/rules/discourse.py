@@ -1009,21 +1009,14 @@ def _located_topic_contrasted(text: str) -> str:
     """ "the bowl inside the top drawer, not the one on top of the cabinet: put it on the plate": a thing said first
     by where it is, then one of its kind ruled out: where it is picks it out already, the contrast adds nothing; said
     by its kind alone, the contrast is what picks it out ("the bowl that is not on the cabinet")."""
-    m = re.match(
-        r"((?:the|a|an) [a-z' ]+? (?:on|in|inside|on top of|under|by|near|next to|beside|between|at) (?:the|a|an) "
-        r"[a-z' ]+?)\s*,\s*not (?:the|that|this) [a-z' ]+?\s*[,:;.-]+\s*",
-        text,
-    )
-    if m and starts_with_verb(text[m.end() :]):
-        return f"{m.group(1)}, {text[m.end() :]}"
+    where = r"(?:on|in|inside|on top of|under|by|near|next to|beside|between|at) (?:the|a|an) [a-z' ]+?"
+    located = re.match(rf"((?:the|a|an) [a-z' ]+? {where})\s*,\s*not (?:the|that|this) [a-z' ]+?\s*[,:;.-]+\s*", text)
+    if located and starts_with_verb(text[located.end() :]):
+        return f"{located.group(1)}, {text[located.end() :]}"
     # said by its kind alone: the one ruled out by where it is ("the bowl, not the one on the cabinet: put it ...")
-    m = re.match(
-        r"((?:the|a|an) [a-z' ]+?)\s*,\s*not (?:the|that|this) ones? ((?:on|in|inside|on top of|under|by|near|next to|"
-        r"beside|between|at) (?:the|a|an) [a-z' ]+?)\s*[,:;.-]+\s*",
-        text,
-    )
-    if m and starts_with_verb(text[m.end() :]):
-        return f"{m.group(1)} that is not {m.group(2)}, {text[m.end() :]}"
+    kind = re.match(rf"((?:the|a|an) [a-z' ]+?)\s*,\s*not (?:the|that|this) ones? ({where})\s*[,:;.-]+\s*", text)
+    if kind and starts_with_verb(text[kind.end() :]):
+        return f"{kind.group(1)} that is not {kind.group(2)}, {text[kind.end() :]}"
     return text
 
 
