@@ -142,6 +142,9 @@ from tests.planning.test_rules_round28 import read
         ("1st cup (closest to you) onto tray", ["put obj=nearest cup relation=on target=tray"]),
         # a thing ruled out by a thing named in full after "other than"
         ("the jar other than the jam goes on the shelf", ["put obj=jar not jam relation=on target=shelf"]),
+        # a place given one of a kind, then which one
+        ("the tray gets a cup: the red one", ["put obj=red cup relation=in target=tray"]),
+        ("sink needs a mug: the one on the tray.", ["put obj=mug on tray relation=in target=sink"]),
         # "neither ... nor ...": each is ruled out, kept apart for perception to ground one by one
         (
             "put the jar that's neither jam nor honey on the shelf",

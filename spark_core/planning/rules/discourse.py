@@ -1201,6 +1201,14 @@ def restructured(instruction: str) -> str:
     out = re.sub(
         r"\s+(?:>|\u00bb)\s+(?=(\S[^>\u00bb]*))", lambda m: ", then " if starts_with_verb(m.group(1)) else " -> ", out
     )
+    # "basket gets a can: not the tomato sauce, the alphabet soup", "the tray gets a cup: the red one": a place given
+    # one of a kind, then which one
+    out = re.sub(
+        r"^((?:the )?[a-z ]+?) (?:gets|receives|needs|wants|takes) (?:a|an|one) ([a-z]+)\s*:\s*"
+        r"(.*\b(?:the|a|an) [a-z].*?)\s*([.!]*)$",
+        lambda m: re.sub(r"\bone\b", m.group(2), m.group(3)) + f" -> {m.group(1)}{m.group(4)}",
+        out,
+    )
     # "top drawer open + cream cheese inside it": goals listed with "+"
     out = re.sub(r"\s+\+\s+(?=[a-z])", ", ", out)
     # "would you mind sorting these? red block into ...": what "these" are, said next
