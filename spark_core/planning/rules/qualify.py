@@ -566,14 +566,17 @@ def _trailing_not(text: str) -> str:
     located = re.match(
         r"\s+(?:next to|beside|by|near|between|(?:that|which) (?:is|are|sits?|stands?) \w+) ", main[obj.end() :]
     )
-    # two places after it: the first says where it is ("the bowl on top of the cabinet on the plate")
-    located = located or re.match(
+    # two places after it: the first says where it is ("the bowl on top of the cabinet on the plate"), when what is
+    # ruled out is of its kind ("..., not the one in the drawer"; "into the container that is not the mug" rules out
+    # another thing's kind)
+    same_kind = named is None or _singular_phrase(named).split()[-1] == head
+    two_places = same_kind and re.match(
         r"\s+(?:on top of|on|in|inside|at|from) (?:the )?"
         r"(?:(?!goes\b|go\b|belongs?\b|should\b|must\b|needs?\b)[a-z']+ )+?"
         r"(?:on top of|onto|on|into|inside|in|to) the ",
         main[obj.end() :],
     )
-    if located or obj.group(2).endswith(" next") and main[obj.end() :].startswith(" to "):
+    if located or two_places or obj.group(2).endswith(" next") and main[obj.end() :].startswith(" to "):
         return main  # "the black bowl next to the ramekin ..., not the one further back": where it is picks it out
     if named is not None:
         said = _singular_phrase(named).split()
