@@ -159,10 +159,11 @@ class SimSegmenter:
                 continue
             if unlike:  # "block not blue", "box not cream cheese nor chocolate pudding"
                 core, said = unlike.group(1), unlike.group(2)
+                named = [(part, self._named_by(frame, part, core)) for part in ruled_out_parts(said)]
                 out.extend(
                     Detection(prompt, prompt, d.mask, d.score, d.camera, d.privileged, {**d.detail, "unlike": said})
                     for d in self.segment(frame, [core])
-                    if all(self._rules_out(frame, part, core, d.detail["object"]) for part in ruled_out_parts(said))
+                    if all(self._rules_out(part, core, d.detail["object"], by) for part, by in named)
                 )
                 continue
             rank, prompt_q = split_rank(prompt)
@@ -193,15 +194,21 @@ class SimSegmenter:
             out.extend(dets)
         return out
 
-    def _rules_out(self, frame: CameraFrame, said: str, core: str, label: str) -> bool:
-        """Whether "<core> not <said>" leaves the object out: what the said words ground to alone, else with the core
-        ("box not chocolate pudding": the chocolate pudding; "peg not round": the round peg); when neither grounds
-        to anything, whether the words contradict the object ("block not blue": the blue block)."""
-        # the words alone first: "milk carton not oj" rules out the orange juice ("oj milk carton" is the milk)
+    def _named_by(self, frame: CameraFrame, said: str, core: str) -> set[str]:
+        """What "<core> not <said>" rules out: what the said words ground to alone, else with the core ("box not
+        chocolate pudding": the chocolate pudding; "milk carton not oj": the orange juice, where "oj milk carton" is
+        the milk; "peg not round": the round peg); empty when neither grounds to anything."""
         for prompt in (said, f"{said} {core}"):
             named = {d.detail["object"] for d in self.segment(frame, [prompt])}
             if named:
-                return label not in named
+                return named
+        return set()
+
+    def _rules_out(self, said: str, core: str, label: str, named: set[str]) -> bool:
+        """Whether the object is left out: not among what the said words name (`_named_by`), or, when they name
+        nothing, contradicted by them ("block not blue": the blue block)."""
+        if named:
+            return label not in named
         return mismatch(f"{said} {core}", self._names[label], self.catalog[label]) is not None
 
     def _supported(
