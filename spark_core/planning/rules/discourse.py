@@ -854,6 +854,8 @@ _PLACE_PREPS = r"in|into|onto|on|inside|on top of|to|over to"
 _GOAL_VERBS = r"goes|go|belongs?|should|needs? to|must|has to|is to|ends? up"
 # Prepositions that say where a thing is.
 _WHERE = r"in|on|on top of|inside|next to|near|by|beside|in front of|behind|at"
+# The ordinal said for an item number counted from a side ("#2 from the left").
+_ORDINAL_WORDS = ("first", "second", "third", "fourth", "fifth")
 # Nouns that name a thing by what it is sold or kept in, or by nothing at all ("the milk, the carton nearest you").
 _GENERAL_NOUNS = ("item", "thing", "object", "product", "carton", "box", "bottle", "jar", "can", "tin", "package")
 # An apposition's words after its noun that only say where the thing is ("closest to you", "on the left").
@@ -1013,6 +1015,17 @@ def _located_topic_contrasted(text: str) -> str:
     located = re.match(rf"((?:the|a|an) [a-z' ]+? {where})\s*,\s*not (?:the|that|this) [a-z' ]+?\s*[,:;.-]+\s*", text)
     if located and starts_with_verb(text[located.end() :]):
         return f"{located.group(1)}, {text[located.end() :]}"
+    # said by a word that picks it out, then one of its kind ruled out ("the bottom drawer, not the top one - open
+    # it"): the word picks it out already
+    picked = re.match(
+        r"((?:the|a|an) (?:[a-z']+ )+([a-z]+))\s*,\s*not (?:the|that|this) [a-z' ]+? ([a-z]+)\s*[,:;.-]+\s*", text
+    )
+    if picked and picked.group(3) in ("one", picked.group(2)) and starts_with_verb(text[picked.end() :]):
+        return f"{picked.group(1)}, {text[picked.end() :]}"
+    # said by its kind alone, one of its kind ruled out by a word ("the mug, not the blue one: put it ...")
+    plain = re.match(r"((?:the|a|an) ([a-z]+))\s*,\s*not (?:the|that|this) ([a-z]+) ([a-z]+)\s*[,:;.-]+\s*", text)
+    if plain and plain.group(4) in ("one", plain.group(2)) and starts_with_verb(text[plain.end() :]):
+        return f"{plain.group(1)} that is not {plain.group(3)}, {text[plain.end() :]}"
     # said by its kind alone: the one ruled out by where it is ("the bowl, not the one on the cabinet: put it ...")
     kind = re.match(rf"((?:the|a|an) [a-z' ]+?)\s*,\s*not (?:the|that|this) ones? ({where})\s*[,:;.-]+\s*", text)
     if kind and starts_with_verb(text[kind.end() :]):
@@ -1061,7 +1074,7 @@ def _said_after(text: str) -> str:
     request, after = m.group(1), m.group(2)
     one = r"(?:ones?|[a-z]+)"
     c = re.fullmatch(rf"not the ([a-z]+) ({one})\s*(?:,|;|-+)\s*(?:but |rather |i mean )?the ([a-z]+) ({one})", after)
-    c = c or re.fullmatch(rf"()()the ([a-z]+) ({one})\s*(?:,|;|-+)\s*not the [a-z]+ {one}", after)
+    c = c or re.fullmatch(rf"()()the ([a-z]+) ({one})\s*(?:,|;|-+)\s*not the [a-z]+(?: {one})?", after)
     if c:
         said, noun = c.group(3), c.group(4)
         named = [
@@ -1182,6 +1195,12 @@ def restructured(instruction: str) -> str:
         r"\s*\(\s*((?:closest|nearest|furthest|farthest|closer|nearer|further|farther)\b[a-z ]*"
         r"|(?:on|to|at) (?:the|your) (?:left|right|front|back)[a-z ]*)\s*\)\s*(?=(\w)?)",
         lambda m: f", the one {m.group(1)}," + (" " if m.group(2) else ""),
+        out,
+    )
+    # ... but a number counted from a side is an ordinal ("drawer #3 from the top": the third drawer from the top)
+    out = re.sub(
+        r"\b([a-z]+)\s+(?:#\s?|no\. ?)([1-5])\s+(?=(?:counting )?from (?:the )?(?:top|bottom|left|right|front|back)\b)",
+        lambda m: f"{_ORDINAL_WORDS[int(m.group(2)) - 1]} {m.group(1)} ",
         out,
     )
     out = re.sub(r"(?<=[a-z])\s+(?:#\s?|no\. ?)\d+\b", "", out)

@@ -221,6 +221,12 @@ def extremes(text: str, push: bool = False) -> str:
         lambda m: f"{m.group(1)} {SIDES[m.group(3)]} {m.group(2)}",
         text,
     )
+    # "the drawer nearest the floor": the bottom one; nearest the ceiling, the top one
+    text = re.sub(
+        rf"\b({DET}) ({NP}) {where}(?:the )?(?:nearest|closest|nearer|closer) (?:to )?the (floor|ground|ceiling|sky)\b",
+        lambda m: f"{m.group(1)} {'bottom' if m.group(3) in ('floor', 'ground') else 'top'} {m.group(2)}",
+        text,
+    )
     # "the bowl sitting higher", "whichever bowl is highest up": the top one
     text = re.sub(
         rf"\b({DET}) ({NP}) (?:(?:that|which) )?(?:is |are )?(?:sitting |standing |resting |placed |set )?"

@@ -87,6 +87,12 @@ _PURPOSE = re.compile(
 )
 # The speaker's own doing said after the request ("i need to put something in it later", "we're going to ...").
 _SPEAKER_DOES = re.compile(r"(?:i|we)(?: will| would| am| are| ll| re| m| d)? (?:need|want|have|going|plan|hope) to\b")
+# The speaker's own cooking or occasion said after the request ("i'm making pasta later", "we're having guests"):
+# what they make or have is no thing asked of the robot, so it may be absent from the scene.
+_SPEAKER_BUSY = re.compile(
+    r"(?:i|we)(?: am| are| m| re| ll| will(?: be)?) "
+    r"(?:making|cooking|baking|prepping|preparing|having|hosting|serving)\b"
+)
 # How many trailing clauses, at most, are tried: each try is a reading of its own.
 _MAX_TAILS = 4
 
@@ -121,7 +127,8 @@ def trailing_remarks(instruction: str, found: list[str]) -> list[tuple[str, str]
         ]
         if any(w in _ASKS or w in known or singular(w) in known for w in words):
             break  # a longer tail holds this one: it names the scene or asks too
-        if names_absent(_PURPOSE.sub(" ", _plain(tail)), found):
+        busy = _SPEAKER_BUSY.match(" ".join(re.findall(r"[a-z]+", _plain(tail))))
+        if not busy and names_absent(_PURPOSE.sub(" ", _plain(tail)), found):
             break
         out.append((kept, tail))
         if len(out) == _MAX_TAILS:

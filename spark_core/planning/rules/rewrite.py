@@ -591,7 +591,13 @@ def sentences(instruction: str) -> list[str]:
         text,
     )
     # "lift it up toward the sky": up, said as where up leads
-    text = re.sub(r"\b(?:up )?(?:toward|towards|to) the (?:sky|ceiling|heavens|roof)\b", "up", text)
+    # (not after a superlative: "the box closest to the ceiling" is the top one, qualify.py)
+    text = re.sub(
+        r"(?<!nearest )(?<!closest )(?<!nearer )(?<!closer )"
+        r"\b(?:up )?(?:toward|towards|to) the (?:sky|ceiling|heavens|roof)\b",
+        "up",
+        text,
+    )
     # "..., and nothing further.": the request said to be all there is
     text = re.sub(
         r"(?:,\s*(?:and )?|\s+and )(?:nothing|no more) (?:else|further|more|beyond that)\s*([.!]?)\s*$", r"\1", text
