@@ -197,14 +197,18 @@ def package_kind(word: str) -> int | None:
 _SAME_PACKAGE = {"tin": ("tin", "can"), "can": ("can", "tin")}
 
 
-def package_members(prompt: str, descriptions: list[str]) -> set[int] | None:
+def package_members(prompt: str, descriptions: list[str], kind_too: bool = False) -> set[int] | None:
     """For a prompt that is a package noun naming no kind of thing ("the carton", "a box", "the small tin"): the
     indexes of the descriptions saying their thing comes in that package ("carton of milk"); when none does, those
     saying it comes in a package of its kind (a box for "carton"). A scene with milk and juice cartons beside a box of
     butter means the cartons by "the carton", not the box (the kind alone had named all three, and "the carton that
-    isn't orange juice" was two). None when the prompt is no such noun or no description says it."""
+    isn't orange juice" was two). None when the prompt is no such noun or no description says it.
+
+    `kind_too`: a package noun that is also a kind of thing ("bottle": a wine bottle is one) names the things said
+    to come in that very package as well ("the farthest of the three bottles": the ketchup, bbq sauce and salad
+    dressing bottles); its kind's other packages do not count (a jar is no bottle)."""
     words = [w for w in _words(prompt.lower()) if w not in _ATTRIBUTES]
-    if len(words) != 1 or word_kind(words[0]) is not None:
+    if len(words) != 1 or (word_kind(words[0]) is not None) != kind_too:
         return None
     forms = word_forms(words[0])
     package = next((f for f in forms if f in PACKAGING), None)
@@ -215,6 +219,10 @@ def package_members(prompt: str, descriptions: list[str]) -> set[int] | None:
     # whole words only: a "box-shaped cube" comes in no box
     texts = [set(d.replace(",", " ").lower().split()) for d in descriptions]
     exact = {k for k, t in enumerate(texts) if any(word_forms(w) & said for w in t)}
+    if kind_too:  # what comes in one ("bottle of salad dressing"), not what holds them ("a stand that holds bottles")
+        lows = [d.lower() for d in descriptions]
+        came = {k for k, d in enumerate(lows) if any(re.search(rf"\b{re.escape(f)} of\b", d) for f in said)}
+        return came or None
     if exact:
         return exact
     alike = {k for k, t in enumerate(texts) if kind is not None and any(package_kind(w) == kind for w in t)}
@@ -265,12 +273,14 @@ def _noun_cosine(a: str, b: str) -> float:
 def own_noun_prompts(prompt: str, names: list[str]) -> dict[int, str]:
     """index into `names` -> `prompt` with each word of that name's kind put as the name's own noun ("red brick"
     -> "red block" for "block", "hob" -> "stove"), for the names where that changes the prompt: a thing scores at
-    least as the prompt naming it by its own noun would."""
+    least as the prompt naming it by its own noun would. A word of the kind of another word of the name is that word
+    ("vino" -> "wine" for the wine bottle)."""
     words = prompt.split()
     out = {}
     for k, name in enumerate(names):
-        noun = name.split()[-1]
-        swapped = [noun if w != noun and noun in (word_kind(w) or ()) else w for w in words]
+        own = name.split()
+        noun = own[-1] if own else ""
+        swapped = [next((n for n in [noun, *own[:-1]] if n != w and n in (word_kind(w) or ())), w) for w in words]
         if swapped != words:
             out[k] = " ".join(swapped)
     return out

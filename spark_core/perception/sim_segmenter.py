@@ -110,6 +110,10 @@ class SimSegmenter:
         members = class_members(norm, [self._names[label] for label in self._labels])
         if members is None:  # "the carton": each thing that comes in one (naming.package_members)
             members = package_members(norm, self._package_docs)
+        # "the bottle": a thing of that kind, or one that comes in a bottle (the ketchup's)
+        packed = set() if members is not None else package_members(norm, self._package_docs, kind_too=True) or set()
+        if packed:
+            members = packed | {k for k, label in enumerate(self._labels) if strict[label] is None}
         if members is None and norm.strip() in ANYTHING:
             # "the item closest to you" (its qualifier split off before): a word that names anything names each
             # thing alike, for the qualifier to choose
@@ -119,7 +123,7 @@ class SimSegmenter:
             if head and head == self._names[label].split()[-1]:
                 c += HEAD_NOUN_BONUS
             mismatched = mismatch(text, self._names[label], self.catalog[label]) if whole else strict[label]
-            if members is not None and not mismatched:
+            if members is not None and (not mismatched or k in packed):
                 c = max(self.threshold, max(float(cos[m]) for m in members)) if k in members else c - MISMATCH_PENALTY
             elif mismatched:
                 c -= MISMATCH_PENALTY
@@ -262,6 +266,10 @@ class SimSegmenter:
         if len(dets) > 1 and not found and any(w in a for a in anchors for w in ("center", "centre", "middle")):
             found = [_middle_xy(frame)]  # "from the table center"
         supported = self._supported(frame, dets, relation, anchors) if len(dets) > 1 else None
+        # "the thing on the stove": of no kind, only what rests on or in it is meant, never the nearest thing
+        kindless = head.split()[-1:] and head.split()[-1] in ANYTHING
+        if supported is None and kindless and relation.removeprefix("not ") in ("on", "on top of", "in", "inside"):
+            return []
         if supported is not None:  # "on" / "in" said by where it rests, not by how near it is
             dets = [d for d, holds in zip(dets, supported) if holds != negated]
         elif len(dets) > 1 and found:

@@ -23,7 +23,8 @@ def _named(segmenter: LearnedSegmenter, prompt: str) -> set[str]:
     [
         ("sauce", {"bbq sauce", "tomato sauce"}),  # the encoder ranked bbq sauce first and named it alone
         ("dish", {"bowl", "plate", "ramekin"}),  # a word of several kinds names each
-        ("the bottle", {"bottle", "wine bottle"}),
+        # a package noun that is a kind too: the bottles, and what comes in a bottle
+        ("the bottle", {"bottle", "wine bottle", "bbq sauce", "ketchup", "salad dressing"}),
         # a package noun: every category said to come in it, not those in another package of its kind ("the
         # carton" among milk, juice and a box of butter: the milk and the juice)
         ("carton", {"milk", "orange juice"}),

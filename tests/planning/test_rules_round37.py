@@ -59,7 +59,68 @@ def test_the_speakers_own_cooking_after_the_request_is_a_remark():
             "the mug, not the blue one: put it in the sink",
             ["mention obj=mug not blue", "put obj=mug not blue relation=in target=sink"],
         ),
+        # from probe49 (read): a run's end said as when ("by the end of the episode") is no thing
+        ("lamp off by the end of the episode", ["turn off obj=lamp"]),
+        ("switch the lamp on before the trial ends", ["turn on obj=lamp"]),
+        # a header naming the run or the line ("eval:", "episode 3:", "new trial:")
+        ("eval: put the mug in the sink", ["put obj=mug relation=in target=sink"]),
+        ("new trial: mug in sink", ["put obj=mug relation=in target=sink"]),
+        # a goal said in the present, alone, is the goal; said before a request, where the thing is
+        ("end state: the mug from the shelf sits in the sink", ["put obj=mug on shelf relation=in target=sink"]),
+        ("the cup rests on the tray", ["put obj=cup relation=on target=tray"]),
+        (
+            "the cup sits on the tray. put it in the sink",
+            ["mention obj=cup on tray", "put obj=cup on tray relation=in target=sink"],
+        ),
+        ("the cup that sits on the tray goes in the sink", ["put obj=cup on tray relation=in target=sink"]),
+        # a count of a kind said first with where the two are ("over on the left", "up front"): "one" is that kind
+        (
+            "two mugs over on the left. the one closer to the robot goes in the sink",
+            ["put obj=nearest mug relation=in target=sink"],
+        ),
+        (
+            "two small jars up front; take the one on the right and put it in the sink",
+            ["pick obj=rightmost small jar", "put obj=rightmost small jar relation=in target=sink"],
+        ),
+        # a thing of another kind ruled out in a sentence after the request must be there, and adds nothing
+        ("jam in the sink. not the honey", ["mention obj=honey", "put obj=jam relation=in target=sink"]),
+        # ... one of the same kind ruled out stays the request's own negation
+        ("put the mug in the sink. not the blue mug", ["put obj=mug not blue relation=in target=sink"]),
+        # a parenthesis saying which one, after a thing said by where it is, is said of that thing
+        (
+            "pick up the mug next to the kettle (the left one), then put it in the sink",
+            ["pick obj=left mug next to kettle", "put obj=left mug next to kettle relation=in target=sink"],
+        ),
+        # a thing named by the fixture it stands on or lies in, said of its kind or of "one"
+        (
+            "not the shelf mug. the cabinet one. put it in the sink",
+            ["mention obj=mug on cabinet", "put obj=mug on cabinet relation=in target=sink"],
+        ),
+        (
+            "take the drawer cup and put it on the tray",
+            ["pick obj=cup in drawer", "put obj=cup in drawer relation=on target=tray"],
+        ),
+        # "the one on the shelf" of no kind named: whatever rests there; another one ruled out by where adds nothing
+        (
+            "the one on the shelf, not the one up on the cabinet -> sink",
+            ["put obj=thing on shelf relation=in target=sink"],
+        ),
+        # arrows: the end said as a step, a thing then the step done to it, a thing put in what was just opened
+        ("mug -> sink -> done", ["put obj=mug relation=in target=sink"]),
+        ("second cupboard from the left -> open it", ["open obj=second leftmost cupboard"]),
+        ("open cupboard -> mug in -> done", ["open obj=cupboard", "put obj=mug relation=in target=cupboard"]),
+        ("open the cupboard -> put the mug in it", ["open obj=cupboard", "put obj=mug relation=in target=cupboard"]),
+        # where the place is from the thing carried says nothing more; pushed "up against" is pushed to
+        ("slide the mug onto the mat just ahead of it", ["put obj=mug relation=on target=mat"]),
+        ("slide the tray up against the sink's front", ["push obj=tray relation=near target=sink front"]),
     ],
 )
 def test_wordings_of_round_37_read_as_meant(text, clauses):
     assert read(text) == clauses
+
+
+def test_a_side_is_no_place_a_thing_of_no_kind_rests_on():
+    """ "the one on the left" of no kind named says no thing: never "the leftmost thing" in the scene."""
+    scene = view(inventory=("mug", "sink"), mug=(0.5, 0.2, 0.05), sink=(0.5, -0.2, 0.0))
+    assert all("thing" not in c for c in read("the one on the left goes in the sink"))
+    assert not plan("the one on the left goes in the sink", scene).ok

@@ -42,5 +42,7 @@ def lone_noun_categories(core: str) -> set[int]:
     # its own noun, or a word of its kind ("dish": the bowl, the plate and the ramekin alike; "bin": basket, tray)
     kinds = set().union(*(word_kind(f) or () for f in forms))
     out = {i for i in things if CATEGORIES[i].name.split()[-1] in forms | kinds}
-    packaged = package_members(words[0], [CATEGORIES[i].description for i in things])
+    descriptions = [CATEGORIES[i].description for i in things]
+    # a package noun that is a kind too ("bottle"): the bottled products as well as the wine bottle
+    packaged = package_members(words[0], descriptions) or package_members(words[0], descriptions, kind_too=True)
     return out | {things[k] for k in packaged or ()}

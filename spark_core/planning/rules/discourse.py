@@ -204,7 +204,10 @@ def _counted_kind(text: str) -> str:
     goes."""
     m = re.fullmatch(
         r"(?:there(?: are|'re| re|'s| is) )?(?:two|three|2|3) ([a-z ]+?)"
-        r"(?: here| there| on the table| in front of you| (?:near|by|next to|beside|around) the [a-z ]+?)?"
+        r"(?: here| there| on the table| in front of you| (?:near|by|next to|beside|around) the [a-z ]+?"
+        # where the two are ("two bowls over on the left", "two little boxes up front"): both, so no help choosing
+        r"| (?:over |up |down |back )?(?:on|to|at|in) (?:the |your )?(?:left|right|front|back|rear)(?: side)?"
+        r"| up front| in front| over there| over here)?"
         r"\s*(?:[,;:.!]|\s-+)\s*(.+)",
         text,
     )
@@ -422,12 +425,26 @@ def _header(text: str) -> str:
     # what the request describes ("final configuration: ...", "end state: ...", "final state i'm after: ...")
     parts |= {"configuration", "state", "arrangement", "layout", "goal", "target", "result", "final", "end", "setup"}
     parts |= {"config", "cfg", "conf"}
+    # the run it is for, or what the line is ("eval: ...", "episode 3: ...", "cmd: ...")
+    parts |= {"eval", "evaluation", "episode", "ep", "trial", "run", "demo", "test", "cmd", "command", "instruction"}
+    parts |= {"request", "todo", "note", "next", "new", "ok", "okay"}
     parts |= {"i", "am", "m", "we", "are", "re", "after", "want", "what", "looking", "for", "desired", "wanted"}
     if words[:1] in (["final"], ["end"], ["target"], ["desired"]):
         parts |= {"table", "scene", "picture", "look", "tabletop"}  # "final table: ...": how the scene should look
     if not words or any(is_thing(w) for w in words if w not in numbers and w not in parts):
         return text
     return m.group(2)
+
+
+def _present_goal(text: str) -> str:
+    """ "the bowl from the top of the cabinet sits on the plate", said alone: a goal said in the present is the goal
+    (said before a request, "the bowl sits on the plate. put it in the basket", it says where the bowl is)."""
+    return re.sub(
+        r"^((?:the|a|an) (?:(?!\b(?:that|which|who)\b)[a-z' ])+?) (?:sits|rests|sit|rest|lies|stands) "
+        r"((?:on|in|inside|on top of|onto|into) (?:the|a|an) [a-z']+(?: [a-z']+){0,2})\s*[.!]*$",
+        r"\1 should sit \2",
+        text,
+    )
 
 
 def _cleft(text: str) -> str:
@@ -1007,6 +1024,23 @@ def _topic_carried(text: str) -> str:
     )
 
 
+def _kindless_one(text: str) -> str:
+    """ "the one on the stove, not the one up on the cabinet -> plate": "one" said first, of no kind named, is whatever
+    is there (perception looks for a thing on the stove); another "one" ruled out by where it is adds nothing."""
+    # (a thing, not a side: "the one on the left" of no kind named is any thing there, which says no kind)
+    sides = r"(?!(?:left|right|front|back|rear|middle|end|far|near|top|bottom)\b)"
+    where = rf"(?:on|in|inside|on top of|under|by|near|next to|beside|at) (?:the|a|an) {sides}[a-z' ]+?"
+    m = re.match(
+        rf"(?:take |grab |get |move |put |pick up )?the one ({where})(?=\s*(?:[,:;.-]|->|$|\s+(?:goes|to|onto)\b))",
+        text,
+    )
+    if not m:
+        return text
+    rest = text[m.end() :]
+    rest = re.sub(rf"^\s*,\s*not the one (?:up |down )?{where}(?=\s*(?:[,:;.-]|->|$))", "", rest)
+    return f"{text[: m.start(1) - len('the one ')]}the thing {m.group(1)}{rest}"
+
+
 def _located_topic_contrasted(text: str) -> str:
     """ "the bowl inside the top drawer, not the one on top of the cabinet: put it on the plate": a thing said first
     by where it is, then one of its kind ruled out: where it is picks it out already, the contrast adds nothing; said
@@ -1086,6 +1120,12 @@ def _said_after(text: str) -> str:
             return text
         n = named[-1]
         return f"{request[: n.start()]}the {said} {n.group(2)}{request[n.end() :]}"
+    # "milk in the basket. not the oj": a thing of another kind ruled out after the request adds nothing to it (it
+    # must be in the scene all the same)
+    other = re.fullmatch(r"(?:and |but )?not (?:the|a|an) ([a-z' ]+?)(?: (?:though|please|pls|ok|okay))?", after)
+    noun = other.group(1).split()[-1] if other else ""
+    if other and noun not in ("one", "ones", "other") and is_thing(noun) and not re.search(rf"\b{noun}\b", request):
+        return f"there is the {other.group(1)}. {request}."
     # "not the bbq sauce, ketchup": the thing the request named, said again after the one ruled out
     again = re.fullmatch(
         r"not (?:the|a|an) [a-z' ]+?\s*(?:,|;|-+)\s*(?:but |rather |i mean )?(?:the |a |an )?([a-z' ]+)", after
@@ -1175,6 +1215,14 @@ def restructured(instruction: str) -> str:
     text = re.sub(r"[ \t]+", " ", instruction.strip().lower().replace("\u2019", "'"))
     out = spoken(re.sub(r"\s+", " ", spelled_out(text)))  # a spec of keyed fields, said as a sentence
     text = re.sub(r"\s+", " ", text)
+    # "the bowl next to the box (the right one)": a parenthesis saying which one, after a thing said by where it is,
+    # is said of that thing, before its noun
+    out = re.sub(
+        r"\bthe ([a-z]+) ((?:next to|beside|near|by|on|in|behind|in front of) the [a-z ]+?)\s*"
+        r"\(\s*the ([a-z]+) one\s*\)",
+        r"the \3 \1 \2",
+        out,
+    )
     # a parenthesis that names the thing is an apposition between commas ("the smaller cube (the red one) on ...")
     out = re.sub(
         r"\s*\(\s*(the [a-z]+ ones?)\s*\)\s*(?=(\w)?)",
@@ -1243,6 +1291,7 @@ def restructured(instruction: str) -> str:
         _you_before_verb,
         _asked_if_done,
         _destination_said_last,
+        _kindless_one,
         _located_topic_contrasted,
         _topic_carried,
         _said_after,
@@ -1255,6 +1304,7 @@ def restructured(instruction: str) -> str:
     out = _its_part(_negated_state(_joined(_but_clause(_restated_one(_row_restated(_named_in_apposition(out)))))))
     for step in (
         _header,
+        _present_goal,
         _former_latter,
         _cleft,
         _temporal,

@@ -242,6 +242,19 @@ FILLERS = (
     "at your convenience",
     "upon completion",
     "on completion",
+    # ... said by the run it is done in ("stove off by the end of the episode")
+    *(
+        f"{when} {run}"
+        for when in (
+            "by the end of the",
+            "by the end of this",
+            "by end of",
+            "at the end of the",
+            "before the end of the",
+        )
+        for run in ("episode", "run", "trial", "rollout", "demo", "session")
+    ),
+    *(f"before the {run} ends" for run in ("episode", "run", "trial", "rollout", "demo", "session")),
     "all the way",
     "fully",
     "up there",

@@ -487,11 +487,26 @@ def sentences(instruction: str) -> list[str]:
         r"\1 \3 \2",
         text,
     )
-    # "the stove bowl", "the cabinet-top bowl": a thing named by the fixture it stands on
+    # "onto the green square just ahead of it": where the place is from the thing carried says nothing more
     text = re.sub(
-        r"\bthe (stove|cabinet[- ]top|counter|shelf|rack|burner|hob) "
-        r"(bowl|plate|mug|cup|pot|pan|bottle|box|block|cube)\b",
-        lambda m: f"the {m.group(2)} on the {m.group(1).replace('-', ' ')}",
+        r"(\b(?:onto|into|on|in|to|toward|towards) (?:the|a|an) [a-z ]+?),? (?:just |right |directly |immediately )?"
+        r"(?:ahead of|in front of|beyond|past|behind|beside|next to) (?:it|them)\b",
+        r"\1",
+        text,
+    )
+    # "slide the plate up against the stove's front": pushed to it
+    text = re.sub(
+        r"\b((?:slide|slides|push|pushes|shove|shoves|nudge|nudges|move|moves|scoot|scoots) (?:the |a |an )?[a-z ]+?) "
+        r"(?:up |right |flush |snug )?against (?=the |its |their )",
+        r"\1 to ",
+        text,
+    )
+    # "the stove bowl", "the cabinet-top bowl": a thing named by the fixture it stands on
+    # (or "the cabinet one" in a correction, and "the drawer bowl": in the drawer)
+    text = re.sub(
+        r"\bthe (stove|cabinet[- ]top|cabinet|cupboard|counter|shelf|rack|burner|hob|drawer) "
+        r"(bowl|plate|mug|cup|pot|pan|bottle|box|block|cube|one)\b",
+        lambda m: f"the {m.group(2)} {'in' if m.group(1) == 'drawer' else 'on'} the {m.group(1).replace('-', ' ')}",
         text,
     )
     # "..., the blue one must not move", "make sure the bowl isn't disturbed": the thing is left alone
@@ -625,6 +640,24 @@ def sentences(instruction: str) -> list[str]:
     )
     # an arrow pointing back: "plate <- black bowl" is "black bowl -> plate"
     text = re.sub(r"^([^<]+?)\s*(?:<-|<=|\u2190|<--)\s*(.+)$", r"\2 -> \1", text)
+    # "... -> done": the end of the steps said as one of them
+    text = re.sub(r"\s*(?:->|=>|\u2192|-->)\s*(?:done|finished|finish|end|stop|complete)\s*[.!]*$", "", text)
+    # "third drawer from the top -> open it": a thing, then the step done to it
+    text = re.sub(
+        r"^((?:the )?[a-z' ]+?)\s*(?:->|=>|\u2192|-->)\s*(open|close|shut|turn on|turn off|switch on|switch off|"
+        r"pick up|lift|grab|push|wipe) (?:it|that one|that)\s*([.!]*)$",
+        lambda m: f"{m.group(2)} {m.group(1) if m.group(1).startswith('the ') else 'the ' + m.group(1)}{m.group(3)}",
+        text,
+    )
+    # "open drawer -> red block in": a thing and "in" after a step that opens is put in what was opened
+    text = re.sub(
+        r"^((?:open|pull open|pull out) (?:the )?[a-z ]+?)\s*(?:->|=>|\u2192|-->)\s*((?:the )?[a-z ]+?) "
+        r"(?:in|inside|in there|in it)\s*([.!]*)$",
+        lambda m: (
+            m.group(0) if starts_with_verb(m.group(2)) else f"{m.group(1)}, then put {m.group(2)} in it{m.group(3)}"
+        ),
+        text,
+    )
     # "open the top drawer -> put the cheese in it": an arrow before a step is "then"
     text = re.sub(
         r"\s*(?:->|=>|\u2192|-->)\s*(?=(?:put|place|set|move|take|grab|pick|open|close|turn|push|stack|"
