@@ -113,6 +113,59 @@ def test_the_speakers_own_cooking_after_the_request_is_a_remark():
         # where the place is from the thing carried says nothing more; pushed "up against" is pushed to
         ("slide the mug onto the mat just ahead of it", ["put obj=mug relation=on target=mat"]),
         ("slide the tray up against the sink's front", ["push obj=tray relation=near target=sink front"]),
+        # from probe50 (read): a correction between dashes; where the thing is, between dashes or commas
+        ("put the jam - no, the honey - in the sink", ["put obj=honey relation=in target=sink"]),
+        (
+            "take the nearer mug - it's sitting on the tray - and put it in the sink",
+            ["pick obj=nearest mug", "put obj=nearest mug relation=in target=sink"],
+        ),
+        (
+            "take the mug, which is resting on the tray, and put it in the sink",
+            ["pick obj=mug on tray", "put obj=mug on tray relation=in target=sink"],
+        ),
+        (
+            "the taller of the two mugs, on the shelf, into the sink",
+            ["put obj=top mug on shelf relation=in target=sink"],
+        ),
+        # counted from a side in a parenthesis: the ordinal counts from it; "middle" needs no side; "that stack" is
+        # topped by what was put last, and a step said without its verb puts on it too
+        ("take the second mug (counting from the left) and lift it", ["pick obj=second leftmost mug"] * 2),
+        (
+            "put the red cup on the middle one (counting left to right), then the blue cup on top of that stack",
+            ["put obj=red cup relation=on target=middle cup", "put obj=blue cup relation=on target=red cup"],
+        ),
+        # the request said by the state it leaves or the order it restores
+        ("could you get the cupboard door into an open position?", ["open obj=cupboard door"]),
+        ("put the lid in the closed position", ["close obj=lid"]),
+        (
+            "the red cup is sitting on the blue one; restack them so blue sits on red.",
+            ["mention obj=red cup on blue", "stack obj=blue cup relation=on target=red"],
+        ),
+        (
+            "don't push the mug, push the jar to the front of the sink",
+            ["mention obj=mug", "push obj=jar relation=near target=sink"],
+        ),
+        (
+            "the shelf's top has a mug on it; move that mug to the sink",
+            ["mention obj=mug on shelf top", "put obj=mug on shelf top relation=in target=sink"],
+        ),
+        # what is said to be done after the goal: no thing
+        ("jam in sink = done", ["put obj=jam relation=in target=sink"]),
+        ("honey in the sink when done, please.", ["put obj=honey relation=in target=sink"]),
+        ("i want the jam inside the drawer, which means opening it first.", ["put obj=jam relation=in target=drawer"]),
+        # "reach for" takes hold
+        (
+            "reach for the jam, lift it, and lower it into the sink",
+            ["pick obj=jam", "pick obj=jam", "put obj=jam relation=in target=sink"],
+        ),
+        # possessives of a centre and of a neighbour; where it is not to go, of no one thing
+        ("the mug at the table's centre goes in the sink", ["put obj=mug at centre of table relation=in target=sink"]),
+        ("pull the cupboard's middle drawer open", ["open obj=cupboard middle drawer"]),
+        (
+            "pick up the kettle's neighbour, the mug right beside it, and put it in the sink",
+            ["pick obj=mug next to kettle", "put obj=mug next to kettle relation=in target=sink"],
+        ),
+        ("put the mug on top of the shelf, not inside any drawer", ["put obj=mug relation=on target=shelf"]),
     ],
 )
 def test_wordings_of_round_37_read_as_meant(text, clauses):

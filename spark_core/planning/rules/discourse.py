@@ -576,8 +576,15 @@ def _on_top_of_last(text: str) -> str:
     text = re.sub(
         r"\s*\bto (?:finish|complete|top off|end|cap) (?:the |your |this |our )?(?:stack|tower|pile)\b", "", text
     )
+    # "..., then put the red block on top of that stack": the stack just made, topped by what was put last
+    stack = re.search(
+        r"\bon(?: top of)? (?:that|the|this|your) (?:stack|tower|pile)\b(?= *(?:$|[.,;!]|and\b|then\b))", text
+    )
+    if stack and re.search(r"\b(?:on|onto|on top of) (?:the|a|an)\b", text[: stack.start()]):
+        text = f"{text[: stack.start()]}on top{text[stack.end() :]}"
     m = re.search(
-        r"\b(?:put|place|set|add|stack|pop|drop|lay|goes|go|sits|belongs)\b[^.;,]*? on top"
+        # (or a step said without its verb: "..., then the red block on top")
+        r"\b(?:(?:put|place|set|add|stack|pop|drop|lay|goes|go|sits|belongs)\b|then (?=(?:the|a|an) ))[^.;,]*? on top"
         r"(?= *(?:$|[.,;!]|and\b|then\b|so\b))",
         text,
     )
@@ -752,6 +759,114 @@ def _pointed_and_urged(text: str) -> str:
         r"\b(([a-z]+) (?:that|this|those|these) [a-z]+(?: [a-z]+)?) (?:there|here|over there)"
         r"(?=\s*,|\s+(?:and|then)\b)",
         lambda m: m.group(0) if m.group(2) in VERBS["put"] else m.group(1),
+        text,
+    )
+
+
+# Where a thing is: a preposition and the thing it is on, in or by ("on the ramekin", "next to the plate").
+_WHERE_PHRASE = r"(?:on top of|on|in|inside|next to|beside|by|near|under|behind|in front of) (?:the|a|an) [a-z' ]+?"
+# Words that pick one thing out of its kind ("the closer one", "the left mug", "the second bowl").
+_PICKING = (
+    r"closer|nearer|closest|nearest|farther|further|farthest|furthest|left|right|leftmost|rightmost|front|back|"
+    r"first|second|third|last|middle|top|bottom|higher|lower|highest|lowest|bigger|smaller|larger|taller|shorter"
+)
+# How a thing is said to rest where it is ("it's stacked on the ramekin").
+_RESTING = r"(?:(?:stacked|sitting|resting|placed|lying|standing|set|sat|perched|parked) )?"
+
+
+def _said_in_passing(text: str) -> str:
+    """Things said in passing about the thing meant: a correction between dashes ("put the milk - no, the butter -
+    in the basket"); where it is, between dashes or commas ("take the nearer bowl - it's stacked on the ramekin - and
+    ...", "the higher of the two bowls, on top of the cabinet, onto the plate"); which one, counted from a side in a
+    parenthesis ("the second one (counting from the left)"); that the goal is the end ("... = done")."""
+    text = re.sub(r"\s*=+\s*(?:done|finished|complete|success|goal)\s*[.!]*$", "", text)
+    text = re.sub(
+        r"\b(?:the|a|an) [a-z' ]+?\s+-+\s*(?:no|nope|sorry|wait|oops|er|erm|uh|scratch that)[,!]?\s*(?:i mean\s+)?"
+        r"((?:the|a|an) [a-z' ]+?)\s*-+\s*",
+        r"\1 ",
+        text,
+    )
+
+    def aside(m: re.Match) -> str:
+        # said of a thing a word already picks out ("the closer one, it's sitting on the tray,"): no more than an
+        # aside; said of a thing by its kind alone, where it is picks it out
+        picked = re.search(rf"\b(?:{_PICKING})\b[a-z ]*$", m.string[: m.start()])
+        return " " if picked else f" {m.group(1)} "
+
+    text = re.sub(
+        rf"\s+-+\s*(?:it's|it is|that's|that is|which is|the one|one)\s+{_RESTING}({_WHERE_PHRASE})\s*-+\s*",
+        aside,
+        text,
+    )
+    text = re.sub(rf",\s*(?:it's|it is|which is|that's|that is)\s+{_RESTING}({_WHERE_PHRASE}),\s*", aside, text)
+    text = re.sub(
+        rf"(\b(?:the|a|an) [a-z' ]+?),\s*({_WHERE_PHRASE}),\s*(?=(?:onto|into|on|in|to|goes|go|should|and|then)\b)",
+        r"\1 \2 ",
+        text,
+    )
+
+    def counted(m: re.Match) -> str:
+        before = m.string[: m.start()]
+        ranked = re.search(r"\b(?:first|second|third|fourth|fifth|1st|2nd|3rd|4th|5th)\b(?: [a-z]+)?$", before)
+        return f" from the {m.group(1)}" if ranked else ""
+
+    return re.sub(
+        r"\s*\(?\s*counting (?:from )?(?:the )?(left|right|front|back)"
+        r"(?: to (?:the )?(?:left|right|front|back))?\s*\)?",
+        counted,
+        text,
+    )
+
+
+def _said_as_a_state(text: str) -> str:
+    """The request said by the state it leaves or the order it restores: "get the drawer into an open position" opens
+    it; "restack them so red sits on green" stacks red on green; "don't push the plate, push the cheese ..." names
+    the plate (it must be there) and pushes the cheese; "the cabinet's top has a bowl on it; move that bowl ..." is the
+    bowl on the cabinet's top."""
+    text = re.sub(
+        r"\b(?:get|put|bring|move|set|leave|place) ((?:the|a|an) [a-z' ]+?) (?:into|in|to) (?:an|the|its) "
+        r"(open|opened|closed|shut) (?:position|state|configuration|config)\b",
+        lambda m: f"{'open' if m.group(2).startswith('open') else 'close'} {m.group(1)}",
+        text,
+    )
+    text = re.sub(
+        r"\b(?:re-?stack|stack|swap|rearrange|flip|reorder) (?:them|these|those|the (?:two|cubes|blocks|pair|stack))"
+        r"(?: up| around| over)? so (?:that )?(?:the )?([a-z]+(?: one| cube| block)?) (?:sits|is|ends up|rests|goes) "
+        r"on(?: top of)? (?:the )?([a-z]+(?: one| cube| block)?)\b",
+        r"stack the \1 on the \2",
+        text,
+    )
+    text = re.sub(
+        r"^(?:do not|don't|dont|never) (\w+) ((?:the|a|an) [a-z' ]+?)\s*[,;]\s*(?:just |only |instead )?"
+        r"\1 (?=(?:the|a|an) )",
+        r"there is \2. \1 ",
+        text,
+    )
+    # "..., which means opening it first": the planner opens a drawer it puts something in (planner.py)
+    text = re.sub(
+        r",?\s*(?:which|that|this) (?:means|requires|needs|involves) opening (?:it|the [a-z ]+?) (?:first|beforehand)",
+        "",
+        text,
+    )
+    # "the bowl at the table's centre": the centre of the table
+    # (not "the cabinet's middle drawer", where "middle" says which drawer)
+    text = re.sub(
+        r"\bthe ([a-z]+)'s (centre|center|middle)"
+        r"(?=\s*(?:$|[,.;:!?]|(?:goes|go|should|onto|into|on|in|to|and|then)\b))",
+        r"the \2 of the \1",
+        text,
+    )
+    # "the ramekin's neighbour, the black bowl right beside it,": the bowl next to the ramekin
+    text = re.sub(
+        r"\bthe ([a-z]+)'s neighbou?r\s*,\s*(the [a-z ]+?) (?:right |just |directly )?(?:beside|next to|by) it\s*,?",
+        r"\2 next to the \1",
+        text,
+    )
+    # "on top of the cabinet, not inside any drawer": where it is not to go, of no one thing, adds nothing
+    text = re.sub(r",?\s*(?:and )?not (?:in|inside|into|on|onto) (?:any|a|one of the) [a-z]+\s*(?=$|[.!;])", "", text)
+    return re.sub(
+        r"^((?:the|a|an) [a-z' ]+?) (?:has|holds) (?:a|an|one) ([a-z ]+?) (?:on|on top of|in) it\s*(?=[;,.:-])",
+        r"there's a \2 on \1",
         text,
     )
 
@@ -983,7 +1098,7 @@ def _bare_topic(text: str) -> str:
                 starts_with_verb(said)
                 and not re.match(
                     r"[a-z]+ (?!(?:the|a|an|it|them|this|that|these|those|my|your|"
-                    r"up|down|out|off|on|over|in|into|away|back|all|both|one|two|three)\b)[a-z]",
+                    r"up|down|out|off|on|over|in|into|away|back|all|both|one|two|three|for)\b)[a-z]",
                     said,
                 )
             )
@@ -1282,6 +1397,8 @@ def restructured(instruction: str) -> str:
     out = re.sub(r"\b(these|those|the following)\s*\?\s+(?=\S)", r"\1: ", out)
     # what is said in passing, appositions, a thing said first, and corrections, in this order
     for said in (
+        _said_in_passing,
+        _said_as_a_state,
         _pointed_and_urged,
         _manner_dropped,
         _dashed_apposition,
