@@ -159,7 +159,7 @@ def test_the_one_left_alone_keeps_its_kind_and_loses_its_place_word():
         ),
         (
             "the teacup that is currently on the shelf, sitting on the tray.",
-            "put the teacup that is currently on the shelf on the tray",
+            "put the teacup that is on the shelf on the tray",
         ),
         (
             "i'd like the lime cube in the blue square, pushed forward",

@@ -166,6 +166,68 @@ def test_the_speakers_own_cooking_after_the_request_is_a_remark():
             ["pick obj=mug next to kettle", "put obj=mug next to kettle relation=in target=sink"],
         ),
         ("put the mug on top of the shelf, not inside any drawer", ["put obj=mug relation=on target=shelf"]),
+        # from probe51 (read): an ordinal said again without its side counts from the side said first; without a
+        # noun, it is of the kind counted first
+        (
+            "first cup from the left goes onto the first tray from the left, second cup onto the second tray.",
+            [
+                "put obj=leftmost cup relation=on target=leftmost tray",
+                "put obj=second leftmost cup relation=on target=second leftmost tray",
+            ],
+        ),
+        (
+            "place the second box from the front onto the first.",
+            ["put obj=second nearest box relation=on target=nearest box"],
+        ),
+        (
+            "put the second box counting from the front on top of the first one",
+            ["put obj=second nearest box relation=on target=nearest box"],
+        ),
+        (
+            "first, put the second cup from the left on the tray",
+            ["put obj=second leftmost cup relation=on target=tray"],
+        ),
+        ("take the second mug (counting from the left) and lift it", ["pick obj=second leftmost mug"] * 2),
+        # "the first of the cupboard's three shelves, counting from the top": the top one
+        ("wipe the first of the cupboard's three shelves, counting from the top", ["scrub target=top shelf"]),
+        # a goal said as a wish or a remark about it
+        (
+            "it'd be great if the mug sitting on the tray ended up in the sink.",
+            ["put obj=mug on tray relation=in target=sink"],
+        ),
+        (
+            "it'd be great if the beads ended up in the jar, poured out of the mug",
+            ["pour obj=beads target=jar source=mug"],
+        ),
+        (
+            "i'd like the mug that's stacked on the tray sitting in the sink instead.",
+            ["put obj=mug on tray relation=in target=sink"],
+        ),
+        (
+            "the only mug i want in the sink is the one sitting on top of the shelf.",
+            ["put obj=mug on top of shelf relation=in target=sink"],
+        ),
+        ("mug by the kettle, into the sink: that's the target.", ["put obj=mug by kettle relation=in target=sink"]),
+        (
+            "the mug currently resting on the tray should be in the sink when you finish.",
+            ["put obj=mug on tray relation=in target=sink"],
+        ),
+        (
+            "reach up to the top of the shelf, take the mug from there, and then lower it into the sink.",
+            ["pick obj=mug on top of shelf", "put obj=mug on top of shelf relation=in target=sink"],
+        ),
+        (
+            "i want the top drawer open and the jam inside it.",
+            ["open obj=top drawer", "put obj=jam relation=in target=top drawer"],
+        ),
+        ("i want the stove on and the pot on it", ["turn on obj=stove", "put obj=pot relation=on target=stove"]),
+        # a goal that ends up somewhere, said with "up" before the place, is no lift; how it is pushed there is no step
+        (
+            "the cube should finish up inside the green zone, pushed forward to get there.",
+            ["put obj=cube relation=in target=green zone"],
+        ),
+        ("the cube should end up in the air", ["pick obj=cube"]),
+        ("tray ought to end up pushed right up to the front of the sink", ["push obj=tray relation=near target=sink"]),
     ],
 )
 def test_wordings_of_round_37_read_as_meant(text, clauses):
@@ -177,3 +239,25 @@ def test_a_side_is_no_place_a_thing_of_no_kind_rests_on():
     scene = view(inventory=("mug", "sink"), mug=(0.5, 0.2, 0.05), sink=(0.5, -0.2, 0.0))
     assert all("thing" not in c for c in read("the one on the left goes in the sink"))
     assert not plan("the one on the left goes in the sink", scene).ok
+
+
+def test_a_flat_thing_holds_nothing_to_pour():
+    """ "pour the plate into the bowl" (probe51's nonsense): a plate is flat; pouring from the mug still plans."""
+    scene = view(
+        inventory=("plate", "bowl", "mug"), plate=(0.5, 0.2, 0.01), bowl=(0.4, -0.1, 0.03), mug=(0.6, 0.0, 0.05)
+    )
+    assert "flat" in plan("pour the plate into the bowl", scene).error
+    assert plan("pour the mug into the bowl", scene).ok
+
+
+def test_a_request_for_a_doing_the_robot_has_no_word_for_is_not_read_by_what_the_scene_affords():
+    """ "teach the sponge to sing to the plate" (probe51's nonsense) had planned the sponge onto the plate from what
+    the scene affords; a goal framed by a wish still reads so."""
+    from spark_core.planning.rules.afford import asks_other_doing
+    from spark_core.planning.rules.reader import _tokens
+
+    scene = view(inventory=("sponge", "plate"), sponge=(0.5, 0.2, 0.02), plate=(0.5, -0.2, 0.01))
+    assert not plan("teach the sponge to sing to the plate", scene).ok
+    assert asks_other_doing(_tokens("teach the sponge to sing to the plate")) == "teach"
+    for text in ("ensure the bowl ends up on the plate", "i'd love the bowl sitting on the plate", "stow the cup"):
+        assert asks_other_doing(_tokens(text)) is None, text

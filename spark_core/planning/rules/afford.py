@@ -72,6 +72,39 @@ _FRAMING = frozenset(
     + ["make", "makes", "let", "lets", "after"]
 )
 _FILLER_WORDS = frozenset(f for f in FILLERS if " " not in f)
+# Verbs of wanting, seeing to it and ending up: they frame a goal, they ask no other doing of the robot.
+_WISHING = frozenset(
+    ["want", "need", "like", "love", "wish", "hope", "prefer", "see", "let", "make", "ensure", "help", "try", "mean"]
+    + ["think", "guess", "reckon", "suppose", "believe", "know", "seem", "appear", "require", "expect", "end", "wind"]
+    + ["finish", "land", "stay", "remain", "sit", "rest", "stand", "lie", "belong", "go", "get", "leave", "keep", "be"]
+    + ["do", "have", "can", "could", "would", "should", "must", "will", "shall", "may", "might", "use", "manage"]
+)
+
+
+def _known_verbs() -> frozenset[str]:
+    """The lemmas of every word of the lexicon's verbs and goal words, and the verbs that frame a goal."""
+    words = {w for forms in VERBS.values() for f in forms for w in f.split()}
+    words |= {w for p in PARTICIPLES for w in p.split()} | {w for s, _ in STATE_ACTIONS for w in s.split()}
+    lemmas = {lemma for w in words for ls in getAllLemmas(w).values() for lemma in ls}
+    return frozenset(words | lemmas | _WISHING | _FRAMING)
+
+
+_KNOWN_VERBS = _known_verbs()
+
+
+def asks_other_doing(tokens: list[str]) -> str | None:
+    """A word only ever a verb that no verb of the lexicon is, nor one of wanting or ending up ("teach the sponge to
+    sing to the plate"): the sentence asks for a doing the robot has no word for, and reading it by what the scene
+    affords would plan something else. None when there is none."""
+    for t in tokens:
+        lemmas = getAllLemmas(t)
+        if set(lemmas) != {"VERB"} or t in _KNOWN_VERBS or t in _FILLER_WORDS:
+            continue
+        if not {lemma for ls in lemmas.values() for lemma in ls} & _KNOWN_VERBS:
+            return t
+    return None
+
+
 MARGIN = 1.0
 MAX_MENTIONS = 3
 
@@ -138,6 +171,8 @@ def mentions(instruction: str) -> tuple[list[Mention], list[str], bool] | None:
     fallback leaves to the rule parser (negation, a question, words said twice, several steps' worth of things)."""
     tokens = _tokens(instruction)
     if set(tokens) & _NEGATION or any(t.endswith("n't") for t in tokens) or set(tokens) & _QUESTION:
+        return None
+    if asks_other_doing(tokens):
         return None
     if any(a == b for a, b in zip(tokens, tokens[1:])):
         return None

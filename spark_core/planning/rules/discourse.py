@@ -780,6 +780,21 @@ def _said_in_passing(text: str) -> str:
     ...", "the higher of the two bowls, on top of the cabinet, onto the plate"); which one, counted from a side in a
     parenthesis ("the second one (counting from the left)"); that the goal is the end ("... = done")."""
     text = re.sub(r"\s*=+\s*(?:done|finished|complete|success|goal)\s*[.!]*$", "", text)
+    # "the first of the cabinet's three drawers, counting from the top": the first drawer from the top
+    text = re.sub(
+        r"\bthe (first|second|third|fourth|last) of (?:the|its) (?:[a-z]+'s |[a-z]+ )?(?:two|three|four|five|[2-5]) "
+        r"([a-z]+s)\b(?:,?\s*counting (?:from|down from|up from) the (top|bottom|left|right|front|back)\b,?)?",
+        lambda m: f"the {m.group(1)} {singular(m.group(2))}" + (f" from the {m.group(3)}" if m.group(3) else ""),
+        text,
+    )
+    # "..., pushed forward to get there": how the goal is reached, when the goal says where (the planner pushes
+    # what it moves into a region)
+    text = re.sub(
+        r",\s*(?:by )?(?:pushed|pushing|slid|sliding|nudged|nudging|shoved|shoving)(?: it)?"
+        r"(?: forward| forwards| along| across| over)? to get (?:it )?there\s*[.!]*$",
+        "",
+        text,
+    )
     text = re.sub(
         r"\b(?:the|a|an) [a-z' ]+?\s+-+\s*(?:no|nope|sorry|wait|oops|er|erm|uh|scratch that)[,!]?\s*(?:i mean\s+)?"
         r"((?:the|a|an) [a-z' ]+?)\s*-+\s*",
@@ -812,9 +827,90 @@ def _said_in_passing(text: str) -> str:
 
     return re.sub(
         r"\s*\(?\s*counting (?:from )?(?:the )?(left|right|front|back)"
-        r"(?: to (?:the )?(?:left|right|front|back))?\s*\)?",
+        r"(?: to (?:the )?(?:left|right|front|back))?(?:\s*\))?",
         counted,
         text,
+    )
+
+
+_ORDINAL = r"first|second|third|fourth|fifth|1st|2nd|3rd|4th|5th"
+
+
+def _ordinal_side_carried(text: str) -> str:
+    """ "the first block from the left goes into the first tray from the left, second block into the second tray",
+    "place the second cube from the front onto the first": an ordinal said again without its side counts from the
+    side said first, and said without a noun ("the first", "the first one") is of the kind counted first."""
+    m = re.search(rf"\b({_ORDINAL}) ([a-z]+) (?:counting )?from the (left|right|front|back|top|bottom)\b", text)
+    if not m or not is_thing(m.group(2)):
+        return text
+    noun, side = m.group(2), m.group(3)
+    out, last = [], 0
+    for k in re.finditer(rf"\b({_ORDINAL})\b(?: ([a-z]+))?", text):
+        said = k.group(2)
+        after = text[k.end() :]
+        if k.start() == m.start() or re.match(r" (?:counting )?from\b", after):
+            continue  # the one counted, or one with its own side
+        article = text[: k.start()].endswith("the ")
+        if said in (None, "one", "ones") and article and not (said is None and re.match(r" [a-z]", after)):
+            out += [text[last : k.start()], f"{k.group(1)} {noun} from the {side}"]
+        elif said and is_thing(said) and (article or re.search(r"(?:^|[,;]\s*)$", text[: k.start()])):
+            out += [text[last : k.start()], f"{k.group(1)} {said} from the {side}"]
+        else:
+            continue
+        last = k.end()
+    return "".join([*out, text[last:]])
+
+
+def _wished(text: str) -> str:
+    """A goal said as a wish or a remark about it: "it'd be great if the bowl ... ended up on the plate" (the bowl
+    should end up on the plate); "i'd like the bowl that's stacked on the ramekin sitting on the plate instead";
+    "the only bowl i want on the plate is the one on top of the cabinet"; "bowl by the ramekin, onto the plate:
+    that's the target"; "the bowl currently resting on the box"; "reach up to the cabinet top, take the bowl from
+    there"; "pushed right up to the front of the stove"."""
+    text = re.sub(
+        r"^(?:it'd|it would|that'd|that would|it will|it'll|i'd|i would) (?:be|find it|really be|honestly be) "
+        r"(?:great|nice|good|ideal|perfect|lovely|awesome|helpful|brilliant|fantastic|grand|super) "
+        r"if (.+?) (?:ended up|could end up|would end up|wound up|finished up|went|got|landed|were|was|sat|could be) ",
+        r"\1 should end up ",
+        text,
+    )
+    # a participle saying how the goal comes about, after it says where ("..., poured out of the mug"): where from
+    text = re.sub(
+        r"^(.+?) ((?:should|must|ought to|needs to|need to|has to) .+?),\s*(?:poured|tipped|emptied) (?:out of|from) "
+        r"(the [a-z ]+?)\s*([.!]*)$",
+        r"\1 from \3 \2\4",
+        text,
+    )
+    # said in a wish: "sitting on" the place is on it; "that's stacked on" where it is now, "instead" no more
+    text = re.sub(r"\b(?:that's|that is|which is) (?:stacked|sitting|resting|placed|lying|standing|perched) ", "", text)
+    if re.match(r"(?:i'd like|i would like|i want|i'd love|i need|we want|we need) ", text):
+        text = re.sub(
+            r" (?:sitting|resting|standing|placed|lying|sat) (on|in|inside|on top of|onto|into) ", r" \1 ", text
+        )
+        text = re.sub(r",?\s*instead\s*([.!]*)$", r"\1", text)
+    text = re.sub(
+        r"^the only ([a-z ]+?) (?:i|we) (?:want|need|would like) (on|in|inside|on top of) (the [a-z ]+?) is the one "
+        r"(?:(?:that is |that's |which is )?(?:sitting|resting|standing|placed|lying) )?"
+        r"((?:on top of|on|in|inside|next to|beside|by|near) (?:the|a) [a-z ]+?)\s*([.!]*)$",
+        r"put the \1 \4 \2 \3\5",
+        text,
+    )
+    text = re.sub(
+        r"\s*[:;,-]+\s*(?:that's|that is|this is|that'd be) (?:the|my|our) (?:target|goal|aim|plan|idea)\W*$", "", text
+    )
+    text = re.sub(
+        r"\b(?:currently|presently|right now|at the moment|for now) (?=(?:sitting|resting|standing|lying|on|in)\b)",
+        "",
+        text,
+    )
+    text = re.sub(
+        r"^reach (?:up |over |across |out )?(?:to|into|toward|towards) (the [a-z ]+?),\s*(take|grab|pick up|get|lift) "
+        r"(the [a-z ]+?) (?:from|off) (?:there|it)\b",
+        r"\2 \3 from \1",
+        text,
+    )
+    return re.sub(
+        r"\bright (?=(?:up to|up against|next to|beside|by|into|onto|in front of|behind|over to)\b)", "", text
     )
 
 
@@ -1398,6 +1494,8 @@ def restructured(instruction: str) -> str:
     # what is said in passing, appositions, a thing said first, and corrections, in this order
     for said in (
         _said_in_passing,
+        _wished,
+        _ordinal_side_carried,
         _said_as_a_state,
         _pointed_and_urged,
         _manner_dropped,

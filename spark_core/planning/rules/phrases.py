@@ -58,6 +58,10 @@ _CONTAINER_OF = re.compile(r"\b(carton|jar|bottle|box|can|tin|stick|pack|packet|
 
 
 def singular(word: str) -> str:
+    if word.endswith("ves") and len(word) > 4:  # "shelves", "knives": the lexicon knows which keep their v
+        from lemminflect import getLemma
+
+        return getLemma(word, "NOUN")[0]
     if word.endswith("ies") and len(word) > 4:
         return word[:-3] + "y"
     if word.endswith(("xes", "ches", "shes")):

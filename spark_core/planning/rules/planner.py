@@ -434,6 +434,11 @@ class RulesPlanner:
                         f"{understood}; found in the scene: {seen})"
                     )
                 src = need(_holder_of(c.source or obj, dst, scene), "container to pour from", c)
+                if _kind(src) in _FLAT:  # "pour the plate into the ramekin": a flat thing holds nothing to pour
+                    raise Impossible(
+                        f"{c.text!r}: {src!r} is flat and holds nothing to pour (understood: {understood}; found in "
+                        f"the scene: {seen})"
+                    )
                 if held == src and out and out[-1]["primitive"] == "pick":
                     out.pop()  # "pick up the mug and pour it": pouring grasps it from the side itself
                 out += [
@@ -702,6 +707,10 @@ def _handle_on(action: str, o: str, scene, seen: str) -> str:
 def _among(label: str, labels: set[str], scene) -> bool:
     """`label` is one of `labels`, by name or as the same detection ("cabinet drawer" opened, "the drawer" filled)."""
     return label in labels or any(x in scene and _same_detection(scene[x], scene[label]) for x in labels)
+
+
+# Flat things: nothing to pour stays on them.
+_FLAT = frozenset(["plate", "saucer", "platter", "board", "mat", "lid", "coaster"])
 
 
 def _poured_next(obj: str | None, target: str | None, after: list[Clause]) -> bool:

@@ -1834,7 +1834,9 @@ def goal_to_action(text: str) -> str | None:
     wish = re.fullmatch(r"(?:i|we) (?:want|need)\s+(.+)", text)
     body = wish.group(1) if wish else text
     both = body.split(" and ")
-    if wish and len(both) > 1 and all(_DESTINATION.search(b) for b in both):
+    # (or a state: "i want the top drawer open and the black bowl inside it")
+    stated = re.compile(r"\b(?:open|opened|closed|shut|on|off)\s*[.!]*$")
+    if wish and len(both) > 1 and all(_DESTINATION.search(b) or stated.search(b) for b in both):
         # "i want red in the green tray and blue in the yellow tray": one carry per goal
         steps = [goal_to_action(f"i want {b}") for b in both]
         return ", ".join(x for x in steps if x) if all(steps) else None
@@ -1879,6 +1881,9 @@ def _predicate(subject: str, predicate: str) -> str | None:
     state = dict(STATE_ACTIONS).get(predicate)
     if state:
         return f"{ACTION_WORDS[state]} {subject}"
+    # ("up" before a place is where it ends up: "should finish up inside the green area")
+    place = r"(?:in|inside|into|on|onto|at|in front of|next to|by|near|beside|under)\b"
+    predicate = re.sub(rf"^up (?={place})", "", predicate)
     if predicate in HELD or re.match(r"(?:up\b|in the air|in the gripper|held|lifted|raised|picked up)", predicate):
         return f"pick up {subject}"
     action = "put"

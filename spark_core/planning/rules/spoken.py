@@ -242,12 +242,15 @@ def _counted_from(text: str) -> str:
     if not said:
         return text
     side = _COUNTED_FROM[said.group(1)]
-    rest = text[: said.start()] + " " + text[said.end() :]
+    # (said in a parenthesis, the parenthesis goes with it)
+    rest = re.sub(r"\(\s*\)", "", text[: said.start()] + " " + text[said.end() :])
     ordinal = None
+    # the last ordinal said before the count, else the first after it
     for m in re.finditer(r"\bthe (first|second|third|fourth|last|1st|2nd|3rd) ", rest):
-        ordinal = m
         if m.start() >= said.start():
+            ordinal = ordinal or m
             break
+        ordinal = m
     if ordinal is None:
         return text
     words = re.match(
