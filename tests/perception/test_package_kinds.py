@@ -8,9 +8,7 @@ from __future__ import annotations
 
 from spark_core.perception.naming import own_noun_prompts, package_members
 from spark_core.perception.sim_segmenter import SimSegmenter
-from tests.perception.test_package_nouns import _found
-
-from .test_package_nouns import _frame
+from tests.perception.test_package_nouns import _found, _frame
 
 SAUCES = {"ketchup": (-30, 20), "salad dressing": (-10, -20), "milk": (10, 20), "basket": (30, -20)}
 

@@ -918,7 +918,9 @@ def _said_as_a_state(text: str) -> str:
     """The request said by the state it leaves or the order it restores: "get the drawer into an open position" opens
     it; "restack them so red sits on green" stacks red on green; "don't push the plate, push the cheese ..." names
     the plate (it must be there) and pushes the cheese; "the cabinet's top has a bowl on it; move that bowl ..." is the
-    bowl on the cabinet's top."""
+    bowl on the cabinet's top. With them, what such a sentence says in passing: "which means opening it first" (the
+    planner opens a drawer it puts into), "the table's centre", "the ramekin's neighbour, the bowl beside it", "not
+    inside any drawer"."""
     text = re.sub(
         r"\b(?:get|put|bring|move|set|leave|place) ((?:the|a|an) [a-z' ]+?) (?:into|in|to) (?:an|the|its) "
         r"(open|opened|closed|shut) (?:position|state|configuration|config)\b",
