@@ -1244,14 +1244,14 @@ def _kindless_one(text: str) -> str:
     sides = r"(?!(?:left|right|front|back|rear|middle|end|far|near|top|bottom)\b)"
     where = rf"(?:on|in|inside|on top of|under|by|near|next to|beside|at) (?:the|a|an) {sides}[a-z' ]+?"
     m = re.match(
-        rf"(?:take |grab |get |move |put |pick up )?the one ({where})(?=\s*(?:[,:;.-]|->|$|\s+(?:goes|to|onto)\b))",
+        rf"((?:take |grab |get |move |put |pick up )?)the one ({where})(?=\s*(?:[,:;.-]|->|$|\s+(?:goes|to|onto)\b))",
         text,
     )
     if not m:
         return text
     rest = text[m.end() :]
     rest = re.sub(rf"^\s*,\s*not the one (?:up |down )?{where}(?=\s*(?:[,:;.-]|->|$))", "", rest)
-    return f"{text[: m.start(1) - len('the one ')]}the thing {m.group(1)}{rest}"
+    return f"{m.group(1)}the thing {m.group(2)}{rest}"
 
 
 def _located_topic_contrasted(text: str) -> str:
