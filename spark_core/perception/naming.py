@@ -122,6 +122,16 @@ def mismatch(prompt: str, name: str, description: str, part_is_whole: bool = Tru
         own = {w for w in nw[:-1] if w not in attributes and w not in pw}
         if said and own:
             return f"{pw[-1]}: {' '.join(sorted(said))} vs {' '.join(sorted(own))}"
+    if word_forms(said_head) & PACKAGING:
+        # "the mustard bottle": a package said by the food or drink it holds holds that, not another one (the bbq
+        # sauce's bottle is no mustard bottle)
+        held = [
+            w
+            for w in said_kinds[:-1]
+            if word_forms(w) & CONSUMABLES and not (word_forms(w) | (word_kind(w) or frozenset())) & doc
+        ]
+        if held:
+            return f"contents: {' '.join(held)} {said_head}"
     # checked after the distinguishing word above, whose reason is the more specific one ("sauce: bbq vs tomato")
     return _other_food(pw, nw, doc, attributes) or _other_package(said_head, nw, doc_words)
 
@@ -207,9 +217,12 @@ def package_members(prompt: str, descriptions: list[str], kind_too: bool = False
     `kind_too`: a package noun that is also a kind of thing ("bottle": a wine bottle is one) names the things said
     to come in that very package as well ("the farthest of the three bottles": the ketchup, bbq sauce and salad
     dressing bottles); its kind's other packages do not count (a jar is no bottle)."""
-    words = [w for w in _words(prompt.lower()) if w not in _ATTRIBUTES]
+    spoken = _words(prompt.lower())
+    words = [w for w in spoken if w not in _ATTRIBUTES]
     if len(words) != 1 or (word_kind(words[0]) is not None) != kind_too:
         return None
+    if kind_too and any(word_forms(w) & CONSUMABLES for w in spoken if w != words[0]):
+        return None  # "the mustard bottle" ("mustard" is also a colour): what it holds says which bottle
     forms = word_forms(words[0])
     package = next((f for f in forms if f in PACKAGING), None)
     if package is None:
@@ -308,6 +321,9 @@ def class_members(prompt: str, names: list[str]) -> set[int] | None:
         return None
     lexicon = nouns()
     for noun in _noun_of(words):
+        # "the receptacle": what receives things put in it, as "the container" (WordNet files baskets and bowls
+        # under container, not under its narrower receptacle)
+        noun = {"receptacle": "container", "receptacles": "containers"}.get(noun, noun)
         if word_kind(noun) is not None or noun in ANYTHING | PARTS | NOT_NOUNS:
             return None
         if package_kind(noun) is not None or any(noun in word_forms(n.split()[-1]) for n in names if n):

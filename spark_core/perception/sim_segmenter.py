@@ -111,7 +111,8 @@ class SimSegmenter:
         if members is None:  # "the carton": each thing that comes in one (naming.package_members)
             members = package_members(norm, self._package_docs)
         # "the bottle": a thing of that kind, or one that comes in a bottle (the ketchup's)
-        packed = set() if members is not None else package_members(norm, self._package_docs, kind_too=True) or set()
+        # (on the words as said: "mustard" is a colour to normalise_colours, and a food that says which bottle)
+        packed = set() if members is not None else package_members(text, self._package_docs, kind_too=True) or set()
         if packed:
             members = packed | {k for k, label in enumerate(self._labels) if strict[label] is None}
         if members is None and norm.strip() in ANYTHING:

@@ -85,7 +85,7 @@ KINDS: tuple[frozenset[str], ...] = tuple(
         "hammer mallet",
         "bead marble ball",
         "area zone region target patch spot",
-        "rack holder",  # "the wine holder": a rack (a holder of nothing in particular is no other kind)
+        "rack holder stand",  # "the wine holder", "the bottle stand": a rack (a holder of nothing in particular)
         "shelf",
         "vase",
         "book",

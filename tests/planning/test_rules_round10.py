@@ -76,7 +76,7 @@ def test_a_fruit_named_by_a_colour_word_is_a_thing_not_a_colour():
 
 
 def test_the_planner_falls_back_on_the_order_free_reading_when_the_rule_parse_refuses():
-    text = "yellow cube atop the blue cube"
+    text = "yellow cube over the blue cube"
     with pytest.raises(ParseError):
         parse_instruction(text)
     view = _view(("blue cube", "yellow cube"), yellow_cube=(0.5, 0.1, 0.02), blue_cube=(0.5, -0.1, 0.02))

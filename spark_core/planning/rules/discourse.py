@@ -24,6 +24,7 @@ from lemminflect import getAllLemmas, getLemma
 
 from ...perception.colors import BASE_COLOURS
 from ...perception.lexicon.nouns import nouns
+from .endstate import end_state_framed
 from .lexicon import VERBS
 from .mentions import ATTRIBUTES
 from .phrases import singular
@@ -221,9 +222,16 @@ def _counted_kind(text: str) -> str:
 def _one_of_count(text: str) -> str:
     """ "one of the two black bowls is sitting on the stove. pick that one up ...": the one of them said so is "the
     black bowl" (where it is says which)."""
-    return re.sub(
+    text = re.sub(
         r"\bone of the (?:two|three|2|3) ([a-z]+(?: [a-z]+)?)s\b(?= (?:is|that is|which is|sitting|standing|on|in)\b)",
         r"the \1",
+        text,
+    )
+    # "one bowl is stacked on the ramekin. take it ...": one of a kind said with where it is
+    return re.sub(
+        r"(^|[.;!]\s+)one ([a-z]+(?: [a-z]+)?)(?= (?:is|sits|stands|rests) (?:stacked |sitting |standing |resting |"
+        r"placed |located )?(?:on|in|inside|on top of|next to|beside)\b)",
+        lambda m: f"{m.group(1)}the {m.group(2)}" if is_thing(m.group(2).split()[-1]) else m.group(0),
         text,
     )
 
@@ -399,14 +407,30 @@ def _former_latter(text: str) -> str:
         for m in re.finditer(rf"(?:^|\b{_DET} )({_NP}) and (?:{_DET} )?({_NP})", text[: said.start()])
         if is_thing(m.group(1).split()[-1]) and is_thing(m.group(2).split()[-1])
     ]
-    if not pairs:
-        return text
-    pair = pairs[-1]
-    # the words after the last article are the thing ("there's a green cube": green cube)
-    first, second = (re.split(rf"\b{_DET} ", pair.group(g))[-1] for g in (1, 2))
     head = text[: said.start()]
-    if pair.start() == 0 and re.fullmatch(r"\s*(?:[:,;]|\s-+\s)\s*", head[pair.end() :]) and first == pair.group(1):
-        head = ""  # the list said as a header names nothing else: what follows is the request
+    if pairs:
+        pair = pairs[-1]
+        # the words after the last article are the thing ("there's a green cube": green cube)
+        first, second = (re.split(rf"\b{_DET} ", pair.group(g))[-1] for g in (1, 2))
+        if pair.start() == 0 and re.fullmatch(r"\s*(?:[:,;]|\s-+\s)\s*", head[pair.end() :]) and first == pair.group(1):
+            head = ""  # the list said as a header names nothing else: what follows is the request
+    else:
+        # "place the green block onto the blue block, then set the red block on top of the former": the two
+        # things named last before it, each said once, in the order said
+        named: list[str] = []
+        # (said before the step that names the former or the latter)
+        before = re.split(r"[,.;:!?]\s*(?:and )?(?:then )?|\s(?:and|then)\s", head)
+        prior = " , ".join(before[:-1])
+        for m in re.finditer(
+            r"\b(?:the|a|an) ((?:[a-z]+ ){0,2}[a-z]+?)(?=\s*(?:$|[,.;:!?]|\b(?:on|onto|in|into|"
+            r"and|then|to|from|off|out|inside|on top of|next to|beside)\b))",
+            prior,
+        ):
+            if is_thing(m.group(1).split()[-1]) and m.group(1) not in named:
+                named.append(m.group(1))
+        if len(named) < 2:
+            return text
+        first, second = named[-2], named[-1]
     rest = re.sub(r"\bthe former\b", f"the {first}", text[said.start() :])
     return head + re.sub(r"\bthe latter\b", f"the {second}", rest)
 
@@ -774,6 +798,129 @@ _PICKING = (
 _RESTING = r"(?:(?:stacked|sitting|resting|placed|lying|standing|set|sat|perched|parked) )?"
 
 
+# Words that start a sentence and are no thing's first word.
+_NOT_LEADS = frozenset(
+    ["it", "this", "that", "there", "here", "what", "which", "who", "whatever", "whichever", "i", "we", "you", "they"]
+    + ["he", "she", "everything", "something", "nothing", "all", "both", "each", "one", "none", "so", "and", "but"]
+)
+
+
+def _article_restored(text: str) -> str:
+    """ "green cube is closer to you. put the red one on it", "middle drawer of the cabinet should be open": a sentence
+    that starts with a thing said without its article, then says what it is or should be, is said of that thing."""
+
+    def restored(m: re.Match) -> str:
+        words = m.group(2).split()
+        if words[0] in _NOT_LEADS or starts_with_verb(m.group(2)):
+            return m.group(0)
+        head = m.group(2).split(" of ")[0].split()[-1]
+        return f"{m.group(1)}the {m.group(2)} " if is_thing(head) else m.group(0)
+
+    return re.sub(
+        r"(^|[.!?;]\s+)((?!(?:the|a|an|my|your|its|their|our|this|that|these|those)\b)[a-z]+(?: [a-z]+)?"
+        r"(?: of the [a-z]+(?: [a-z]+)?)?) (?=(?:is|are|should|must|needs to|has to|ought to|sits|stands)\b)",
+        restored,
+        text,
+    )
+
+
+def _pointed_then_described(text: str) -> str:
+    """ "see the red mug? it has beads in it. pour them into the bowl": a thing pointed out, then what it holds said
+    of "it", is that thing holding them ("the red mug has beads in it")."""
+    return re.sub(
+        r"^(?:there's|there is|see|look at|you see|notice|spot) (?:a|an|the) ([a-z ]+?)\s*[?.!,;]+\s*"
+        r"(?:it|that one) (has|holds|contains|has got|'s got) ",
+        r"the \1 \2 ",
+        text,
+    )
+
+
+_NOW = r"(?:now|currently|still|at the moment|right now|at present|presently|for now)"
+
+
+def _state_now(text: str) -> str:
+    """ "..., it is closed now so open it first", "..., right now they are in the red mug": how things stand now is no
+    step (a state said with "now" describes; "the drawer should be closed" asks)."""
+
+    # "... inside the top drawer, it is closed now so open it first", "..., you'll have to pull the drawer open first i
+    # think": advice to open the drawer a thing goes into (the planner opens a closed drawer it puts into)
+    if re.search(r"\b(?:in|into|inside) (?:the |its |that )?[a-z' ]*drawer\b", text):
+        text = re.sub(
+            rf"\s*(?:[,;:]|\s-+)\s*(?:(?:but |and )?(?:it|the drawer|it's|its)(?: is| 's)? (?:{_NOW} )?(?:closed|shut)"
+            rf"(?: {_NOW})?\s*[,;.]?\s*(?:so |and so |which means )?)?"
+            r"(?:(?:you'?ll |you will |you'd |you |we'll |we )?(?:will )?(?:have|need|might need|may need|must) to |"
+            r"please |just )?"
+            r"(?:open|pull open|pull out|slide open|opening|pull|slide|get) (?:it|the drawer|the [a-z ]+ drawer)"
+            r"(?: open| out| up)? "
+            r"(?:first|beforehand|before that)\b(?: (?:obvs|obviously|i think|i guess|probably|of course))?"
+            r"(?=\s*(?:$|[.!]))",
+            "",
+            text,
+        )
+
+    def described(m: re.Match) -> str:
+        said = f"there is {m.group(1)}. " if m.group(1).startswith("the ") else ""
+        return f"{'. ' if m.start() else ''}{said}"
+
+    text = re.sub(
+        rf",?\s*\b(it|they|the [a-z ]+?) (?:is|are|'s|'re) (?:{_NOW} (?:open|opened|closed|shut|empty|full|off|on)|"
+        rf"(?:open|opened|closed|shut|empty|full|off|on) {_NOW})\s*[,;.]?\s*(?:so |and so |which means )?"
+        r"(?=[a-z]+ (?:it|them|the)\b)",
+        described,
+        text,
+    )
+    return re.sub(
+        rf",?\s*\b{_NOW},? (?:it|they) (?:is|are|'s|'re|sits?|rests?) (?:in|inside|on|on top of) (?:the|a|an) [a-z ]+?"
+        r"(?=\s*(?:$|[.!]))",
+        "",
+        text,
+    )
+
+
+def _being_apposition(text: str) -> str:
+    """ "..., the latter being the one closer to the robot", "...; the bowl in question being the one on top of the
+    cabinet": which one a thing is, said after the request, is said right after that thing ("the green cube, the one
+    closer to the robot"); a description under another noun ("the stove being the flat appliance on the right") only
+    restates the thing and is dropped."""
+    m = re.search(
+        r"\s*(?:[,;:-]+\s*(?:with )?(the former|the latter|it|the [a-z ]+?)(?: in question)? being |"
+        r"[;.]\s*(the [a-z ]+?|it|that|this) (?:is|'s) (?=the (?:one|item|thing|object)\b))"
+        r"((?:the|a|an) [a-z' ]+?)\s*([.!]?)\s*$",
+        text,
+    )
+    if not m:
+        return text
+    head, subject = text[: m.start()], m.group(1) or m.group(2)
+    what = re.sub(r"^the (?:item|thing|object)\b", "the one", m.group(3))
+    if subject in ("that", "this"):
+        subject = "it"
+    named = [
+        t
+        for t in re.finditer(
+            r"\bthe ((?:[a-z]+ ){0,2}[a-z]+?)(?=\s*(?:$|[,.;:!?]|\b(?:on|onto|in|into|to|and|then|"
+            r"from|inside|on top of|next to)\b))",
+            head,
+        )
+        if is_thing(t.group(1).split()[-1])
+    ]
+    if not named:
+        return text
+    if subject in ("the latter", "it"):
+        at = named[-1]
+    elif subject == "the former":
+        at = named[-2] if len(named) > 1 else named[-1]
+    else:
+        noun = singular(subject.split()[-1])
+        same = [t for t in named if singular(t.group(1).split()[-1]) == noun]
+        if not same:
+            return text
+        at = same[0]
+    if not re.match(r"the ones? ", what):
+        return f"{head}{m.group(4)}"  # "the stove being the flat appliance ...": said again, nothing picked out
+    tail = head[at.end() :]
+    return f"{head[: at.end()]}, {what}{',' + tail if tail.strip() else ''}{m.group(4)}"
+
+
 def _said_in_passing(text: str) -> str:
     """Things said in passing about the thing meant: a correction between dashes ("put the milk - no, the butter -
     in the basket"); where it is, between dashes or commas ("take the nearer bowl - it's stacked on the ramekin - and
@@ -928,9 +1075,11 @@ def _said_as_a_state(text: str) -> str:
         text,
     )
     text = re.sub(
-        r"\b(?:re-?stack|stack|swap|rearrange|flip|reorder) (?:them|these|those|the (?:two|cubes|blocks|pair|stack))"
-        r"(?: up| around| over)? so (?:that )?(?:the )?([a-z]+(?: one| cube| block)?) (?:sits|is|ends up|rests|goes) "
-        r"on(?: top of)? (?:the )?([a-z]+(?: one| cube| block)?)\b",
+        r"\b(?:(?:re-?stack|stack|swap|rearrange|flip|reorder|reverse) (?:them|these|those|the (?:two|cubes|blocks|"
+        r"pair|stack))|(?:i )?want (?:them|the (?:two|cubes|blocks|pair|stack)) (?:re-?stacked|swapped|rearranged|"
+        r"flipped|reordered|reversed|the other way))"
+        r"(?: up| around| round| over)?,? so (?:that )?(?:the )?([a-z]+(?: one| cube| block)?)(?: sits| is| ends up| "
+        r"rests| goes|'s|s) on(?: top of)? (?:the )?([a-z]+(?: one| cube| block)?)\b",
         r"stack the \1 on the \2",
         text,
     )
@@ -1426,12 +1575,13 @@ def restructured(instruction: str) -> str:
     """The instruction said plainly and in the order its steps happen (see the module's docstring); the instruction
     itself when none of these applies."""
     text = re.sub(r"[ \t]+", " ", instruction.strip().lower().replace("\u2019", "'"))
-    out = spoken(re.sub(r"\s+", " ", spelled_out(text)))  # a spec of keyed fields, said as a sentence
+    # a spec of keyed fields, said as a sentence; an end state said as a specification, said plainly
+    out = spoken(end_state_framed(re.sub(r"\s+", " ", spelled_out(text))))
     text = re.sub(r"\s+", " ", text)
     # "the bowl next to the box (the right one)": a parenthesis saying which one, after a thing said by where it is,
     # is said of that thing, before its noun
     out = re.sub(
-        r"\bthe ([a-z]+) ((?:next to|beside|near|by|on|in|behind|in front of) the [a-z ]+?)\s*"
+        r"\bthe ([a-z]+) ((?:next to|beside|near|by|on|in|at|behind|in front of) the [a-z ]+?)\s*"
         r"\(\s*the ([a-z]+) one\s*\)",
         r"the \3 \1 \2",
         out,
@@ -1454,8 +1604,12 @@ def restructured(instruction: str) -> str:
     # commas; an item number ("bowl #1") says nothing perception could see
     out = re.sub(
         r"\s*\(\s*((?:closest|nearest|furthest|farthest|closer|nearer|further|farther)\b[a-z ]*"
-        r"|(?:on|to|at) (?:the|your) (?:left|right|front|back)[a-z ]*)\s*\)\s*(?=(\w)?)",
-        lambda m: f", the one {m.group(1)}," + (" " if m.group(2) else ""),
+        r"|(?:(?:located|sitting|placed|standing|positioned|lying) )?(?:on|to|at) (?:the|your) "
+        r"(?:left|right|front|back)[a-z ]*)\s*\)\s*(?=(\w)?)",
+        lambda m: (
+            f", the one {re.sub(r'^(?:located|sitting|placed|standing|positioned|lying) ', '', m.group(1))},"
+            + (" " if m.group(2) else "")
+        ),
         out,
     )
     # ... but a number counted from a side is an ordinal ("drawer #3 from the top": the third drawer from the top)
@@ -1495,6 +1649,10 @@ def restructured(instruction: str) -> str:
     out = re.sub(r"\b(these|those|the following)\s*\?\s+(?=\S)", r"\1: ", out)
     # what is said in passing, appositions, a thing said first, and corrections, in this order
     for said in (
+        _article_restored,
+        _pointed_then_described,
+        _state_now,
+        _being_apposition,
         _said_in_passing,
         _wished,
         _ordinal_side_carried,

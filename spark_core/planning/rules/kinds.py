@@ -98,9 +98,12 @@ def other_variety(phrase: str, inventory: tuple[str, ...]) -> str | None:
     if not same or not all(len(n) > 1 for n in same):
         return None  # no such thing, or one named by its head alone ("plate": "the dinner plate" is it)
     skip = ATTRIBUTES | _closed_words()
+    head_kind = KIND_OF.get(words[-1], frozenset())
     for w in words[:-1]:
         if w in skip or len(w) < 3 or not _known_noun(w) or _forms(w) & held:
             continue
+        if KIND_OF.get(w, frozenset()) & head_kind:
+            continue  # a word of the head's own kind says it again ("the green target patch": a patch, the area)
         return w
     return None
 

@@ -17,6 +17,7 @@ VERBS: dict[str, tuple[str, ...]] = {
         "hold up",
         "get",
         "find",
+        "locate",
         "reach for",
         "fetch",
         "retrieve",
@@ -175,7 +176,21 @@ FILLERS = (
     "be so good as to",
     "if you please",
     # a request put as a favour ("could you be a dear and switch the stove on")
-    *(f"be {a} and" for a in ("a dear", "a love", "a darling", "an angel", "a sweetheart", "a pal", "a sport")),
+    *(
+        f"be {a} and"
+        for a in (
+            "a dear",
+            "a love",
+            "a darling",
+            "an angel",
+            "a sweetheart",
+            "a pal",
+            "a sport",
+            "a star",
+            "a gem",
+            "a hero",
+        )
+    ),
     "would you be able to",
     "could you be able to",
     "are you able to",

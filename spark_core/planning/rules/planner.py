@@ -433,11 +433,16 @@ class RulesPlanner:
                         f"{c.text!r}: {dst!r} is a product in its package, not a container to pour into (understood: "
                         f"{understood}; found in the scene: {seen})"
                     )
-                src = need(_holder_of(c.source or obj, dst, scene), "container to pour from", c)
-                if _kind(src) in _FLAT:  # "pour the plate into the ramekin": a flat thing holds nothing to pour
+                if _kind(dst) in SOLIDS:  # "pour the bowl into the red block": nothing goes into a solid thing
                     raise Impossible(
-                        f"{c.text!r}: {src!r} is flat and holds nothing to pour (understood: {understood}; found in "
-                        f"the scene: {seen})"
+                        f"{c.text!r}: nothing can be poured into {dst!r}: a {_kind(dst)} is solid, it holds nothing "
+                        f"(understood: {understood}; found in the scene: {seen})"
+                    )
+                src = need(_holder_of(c.source or obj, dst, scene), "container to pour from", c)
+                if _kind(src) in _FLAT | _FRAMES | set(SOLIDS):  # "pour the plate into the ramekin": nothing to pour
+                    raise Impossible(
+                        f"{c.text!r}: {src!r} {'is flat and ' if _kind(src) in _FLAT else ''}holds nothing to pour "
+                        f"(a {_kind(src)}; understood: {understood}; found in the scene: {seen})"
                     )
                 if held == src and out and out[-1]["primitive"] == "pick":
                     out.pop()  # "pick up the mug and pour it": pouring grasps it from the side itself
@@ -711,6 +716,8 @@ def _among(label: str, labels: set[str], scene) -> bool:
 
 # Flat things: nothing to pour stays on them.
 _FLAT = frozenset(["plate", "saucer", "platter", "board", "mat", "lid", "coaster"])
+# Frames and furniture that hold things standing in or on them, nothing poured out of them ("pour the wine rack").
+_FRAMES = frozenset(["rack", "stand", "shelf", "cabinet", "stove", "table"])
 
 
 def _poured_next(obj: str | None, target: str | None, after: list[Clause]) -> bool:

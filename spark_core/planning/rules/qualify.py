@@ -639,16 +639,36 @@ def partitive(text: str) -> str:
         rf"({NP}),\s*(.+)$",
         text,
     )
+    # (or said without the comma, with its count: "from the two blocks lift the one that is further away")
+    m = m or re.match(
+        r"(?:out of|of|from|among|between) (?:the|these|those) (?:two|three|four|both|2|3|4) ((?:[a-z]+ )?[a-z]+s) "
+        r"(?=(?:the|which|whichever|take|lift|pick|grab|put|place|move|get|choose|select)\b)(.+)$",
+        text,
+    )
     if not m:
         return text
     kind = _singular_phrase(m.group(1))
     return re.sub(r"\b(the|which|whichever)( \w+)? ones?\b", rf"\1\2 {kind}", m.group(2), count=1)
 
 
+def _extreme_said_after(text: str) -> str:
+    """ "the bowl that's up highest", "the block which is furthest away": an extreme said after its noun, before it
+    ("the highest bowl")."""
+    return re.sub(
+        r"\bthe ([a-z]+) (?:that's|thats|that is|which is|which's) (?:up |down |the )?"
+        r"(highest|lowest|farthest|furthest|"
+        r"nearest|closest|leftmost|rightmost|topmost)(?: (?:up|down|away|off|of all|out))?\b"
+        # (not "the box that's closest to the ceiling": nearest another thing is near it)
+        r"(?=\s*(?:$|[,.;:!?-]|(?:away )?from (?:the robot|you|me)\b|(?:and|then|put|take|goes|should)\b))",
+        r"the \2 \1",
+        text,
+    )
+
+
 def qualify(text: str) -> str:
     """A sentence with its ordinals, extremes, sides and negations in perception's forms. A push keeps its words:
     there "further", "closer" and "to the left" say which way to move, not which object."""
-    text = neither_nor(partitive(text))
+    text = neither_nor(partitive(_extreme_said_after(text)))
     push = re.match(r"(?:push|shove|nudge|slide)\b", text) is not None
     return extremes(ordinals(negations(text)), push)
 

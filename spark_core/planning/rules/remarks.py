@@ -32,7 +32,9 @@ _SELVES = frozenset(
     + ["its", "his", "her", "their", "our", "your", "my", "mine"]
     + ["thanks", "thank", "thx", "ty", "cheers", "please", "pls", "mate", "buddy"]  # a courtesy
     # the scene's things all together ("we're packing the groceries away"), never one thing perception looks for
-    + ["groceries", "grocery", "items", "objects", "belongings"]
+    + ["groceries", "grocery", "items", "objects", "belongings", "scene", "setup", "workspace", "everyone"]
+    # the robot itself and who watches it ("so everyone can see the gripper working", "fingers crossed")
+    + ["robot", "gripper", "camera", "fingers", "finger", "audience", "viewers", "photo", "picture", "video"]
     + list(_OCCASIONS)
 )
 
@@ -82,6 +84,9 @@ _PURPOSE = re.compile(
     # what the thing is wanted for ("we'll need it for pasta tonight", "it's for the soup"): the dish, not a thing here
     r"|\b(?:need|use|want|keep|save) (?:it|them|this|that) for (?:the |a |an |some |my |our )?\w+"
     # ... or said of it with a time ("it's for the pasta tonight"; "it's for the banana" may ask for a banana)
+    # ... or made by the speaker ("for the cookies i bake"): what they make, not a thing here
+    r"|\bfor (?:the |my |our |some )?\w+(?: \w+)? (?:i|we) "
+    r"(?:bake|make|cook|prepare|am making|'m making|want to make)\b"
     r"|\b(?:it is|it's|they are|they're|that is|that's) for (?:the |a |an |some |my |our )?\w+"
     r"(?= (?:tonight|later|today|tomorrow|this (?:evening|morning|afternoon|weekend)))"
 )

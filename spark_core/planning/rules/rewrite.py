@@ -1971,7 +1971,8 @@ def imperatives(instruction: str) -> list[str]:
         if i < len(said) - 1:
             s = re.sub(
                 r"^((?:the|a|an) [\w ]+?) (?:is|are) (?:sitting|resting|standing|lying|located|kept|parked|perched|"
-                r"waiting) ((?:on|in|inside|on top of|at|by|near|next to|beside|between|under|underneath|beneath) "
+                r"waiting|stacked|sat|placed) ((?:on|in|inside|on top of|at|by|near|next to|beside|between|under|"
+                r"underneath|beneath) "
                 r"[\w ]+?)"
                 r"(?: (?:at the moment|right now|right|currently|for now|now))?$",
                 r"there is \1 \2",
