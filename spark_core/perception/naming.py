@@ -122,16 +122,13 @@ def mismatch(prompt: str, name: str, description: str, part_is_whole: bool = Tru
         own = {w for w in nw[:-1] if w not in attributes and w not in pw}
         if said and own:
             return f"{pw[-1]}: {' '.join(sorted(said))} vs {' '.join(sorted(own))}"
-    if word_forms(said_head) & PACKAGING:
-        # "the mustard bottle": a package said by the food or drink it holds holds that, not another one (the bbq
-        # sauce's bottle is no mustard bottle)
-        held = [
-            w
-            for w in said_kinds[:-1]
-            if word_forms(w) & CONSUMABLES and not (word_forms(w) | (word_kind(w) or frozenset())) & doc
-        ]
-        if held:
-            return f"contents: {' '.join(held)} {said_head}"
+    product = said_kinds[:-1]
+    if word_forms(said_head) & PACKAGING and any(word_forms(w) & CONSUMABLES for w in product):
+        # "the mustard bottle", "a tin of tomato sauce": a package said by the food or drink it holds is that
+        # product's (the bbq sauce's bottle is no mustard bottle, nor a tomato sauce tin)
+        why = mismatch(" ".join(product), name, description, part_is_whole)
+        if why:
+            return f"contents: {why}"
     # checked after the distinguishing word above, whose reason is the more specific one ("sauce: bbq vs tomato")
     return _other_food(pw, nw, doc, attributes) or _other_package(said_head, nw, doc_words)
 

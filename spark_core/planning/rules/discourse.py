@@ -464,7 +464,9 @@ def _present_goal(text: str) -> str:
     """ "the bowl from the top of the cabinet sits on the plate", said alone: a goal said in the present is the goal
     (said before a request, "the bowl sits on the plate. put it in the basket", it says where the bowl is)."""
     return re.sub(
-        r"^((?:the|a|an) (?:(?!\b(?:that|which|who)\b)[a-z' ])+?) (?:sits|rests|sit|rest|lies|stands) "
+        # (a modal before the verb says the goal already: "the block should sit in the bowl")
+        r"^((?:the|a|an) (?:(?!\b(?:that|which|who|should|must|ought|to|will|would|can|could|may|might|shall|needs?|"
+        r"has|have|is|are|does|do)\b)[a-z' ])+?) (?:sits|rests|sit|rest|lies|stands) "
         r"((?:on|in|inside|on top of|onto|into) (?:the|a|an) [a-z']+(?: [a-z']+){0,2})\s*[.!]*$",
         r"\1 should sit \2",
         text,
@@ -824,6 +826,16 @@ def _article_restored(text: str) -> str:
     )
 
 
+def _located_first(text: str) -> str:
+    """ "locate the white bowl and ensure the red block is placed inside it", "find the bowl next to the ramekin and
+    set it on the plate": a thing looked for first is named for what follows ("it"), not picked up."""
+    return re.sub(
+        r"^(?:please )?(?:locate|find|spot|identify|look for) ((?:the|a|an) [a-z' ]+?),? and (?:then )?(?=\S)",
+        r"there is \1. ",
+        text,
+    )
+
+
 def _pointed_then_described(text: str) -> str:
     """ "see the red mug? it has beads in it. pour them into the bowl": a thing pointed out, then what it holds said
     of "it", is that thing holding them ("the red mug has beads in it")."""
@@ -869,6 +881,15 @@ def _state_now(text: str) -> str:
         described,
         text,
     )
+    # "right now green is on red, i want it the other way round, red on green": how it stands and that it should be
+    # reversed, before the goal itself
+    text = re.sub(
+        rf"^(?:{_NOW}|as it stands|at the moment),? (?:the )?[a-z]+(?: cube| block)? (?:is|sits|'s) (?:on|on top of) "
+        r"(?:the )?[a-z]+(?: cube| block| one)?\s*[,;.:-]+\s*(?:(?:and )?(?:i|we) (?:want|need|would like|'d like) "
+        r"(?:it|them|that|this) (?:the other way (?:round|around)|reversed|swapped|flipped)\s*[,;.:-]+\s*)?(?=\S)",
+        "",
+        text,
+    )
     return re.sub(
         rf",?\s*\b{_NOW},? (?:it|they) (?:is|are|'s|'re|sits?|rests?) (?:in|inside|on|on top of) (?:the|a|an) [a-z ]+?"
         r"(?=\s*(?:$|[.!]))",
@@ -881,7 +902,12 @@ def _being_apposition(text: str) -> str:
     """ "..., the latter being the one closer to the robot", "...; the bowl in question being the one on top of the
     cabinet": which one a thing is, said after the request, is said right after that thing ("the green cube, the one
     closer to the robot"); a description under another noun ("the stove being the flat appliance on the right") only
-    restates the thing and is dropped."""
+    restates the thing and is dropped. Said in parentheses alike ("(the plate's the one on the box)")."""
+    text = re.sub(
+        r"\s*\(\s*(the [a-z ]+?|it)(?:'s| is) ((?:the|a|an) (?:one|item|thing|object) [a-z' ]+?)\s*\)\s*([.!]?)\s*$",
+        r", \1 being \2\3",
+        text,
+    )
     m = re.search(
         r"\s*(?:[,;:-]+\s*(?:with )?(the former|the latter|it|the [a-z ]+?)(?: in question)? being |"
         r"[;.]\s*(the [a-z ]+?|it|that|this) (?:is|'s) (?=the (?:one|item|thing|object)\b))"
@@ -919,6 +945,50 @@ def _being_apposition(text: str) -> str:
         return f"{head}{m.group(4)}"  # "the stove being the flat appliance ...": said again, nothing picked out
     tail = head[at.end() :]
     return f"{head[: at.end()]}, {what}{',' + tail if tail.strip() else ''}{m.group(4)}"
+
+
+def _ordinal_restated(text: str) -> str:
+    """ "the second black bowl, the farther one from the robot, put it on the plate": "the second" said first, then
+    which one it is; the one said second says it ("the black bowl farther from the robot")."""
+    return re.sub(
+        r"^the (?:second|other|2nd) ((?:[a-z]+ )?[a-z]+),\s*the ([a-z]+) one((?: (?:from|to) (?:the robot|you|me))?)"
+        r"\s*,\s*",
+        # (a colour before its noun: "the red mug")
+        lambda m: (
+            f"the {m.group(2)} {m.group(1)}, "
+            if m.group(2) in BASE_COLOURS
+            else f"the {m.group(1)} {m.group(2)}{m.group(3)}, "
+        ),
+        text,
+    )
+
+
+def _located_between_commas(text: str) -> str:
+    """ "the higher bowl, up on the cabinet, put it on the plate": where a thing named first is, said between commas
+    before the request that acts on it, says which one it is ("the higher bowl on the cabinet")."""
+    return re.sub(
+        r"((?:the|a|an) [a-z ]+?),\s*(?:up |down |over |right |sitting |standing |which is |that is |that's )?"
+        r"((?:on|in|inside|on top of|next to|near|beside|by) (?:the|a|an) [a-z ]+?),\s*"
+        r"(?=(?:take|put|place|move|grab|pick|lift|set|bring|get) (?:it|them)\b)",
+        r"\1 \2, ",
+        text,
+    )
+
+
+def _thing_header(text: str) -> str:
+    """ "beads: from the mug to the bowl, pour em": a thing said as a header, then where it goes from and to, then the
+    verb acting on it ("pour the beads from the mug to the bowl")."""
+    return re.sub(
+        r"^(?:the )?([a-z ]+?)\s*:\s*(from (?:the )?[a-z ]+? (?:to|into|onto) (?:the )?[a-z ]+?)\s*[,;-]+\s*"
+        r"(?:just |please |then )?(pour|move|put|take|carry|tip|transfer|shift|bring) (?:em|'em|them|it)\s*([.!]?)$",
+        # (poured "to" a container is poured into it)
+        lambda m: (
+            f"{m.group(3)} the {m.group(1)} "
+            + (re.sub(r" to ", " into ", m.group(2)) if m.group(3) in ("pour", "tip") else m.group(2))
+            + m.group(4)
+        ),
+        text,
+    )
 
 
 def _said_in_passing(text: str) -> str:
@@ -1057,7 +1127,11 @@ def _wished(text: str) -> str:
         text,
     )
     return re.sub(
-        r"\bright (?=(?:up to|up against|next to|beside|by|into|onto|in front of|behind|over to)\b)", "", text
+        # (not a side: "the bowl on the robot's right onto the plate")
+        r"(?<!'s )(?<!the )(?<!your )(?<!my )(?<!its )(?<!far )\bright "
+        r"(?=(?:up to|up against|next to|beside|by|into|onto|in front of|behind|over to)\b)",
+        "",
+        text,
     )
 
 
@@ -1650,9 +1724,13 @@ def restructured(instruction: str) -> str:
     # what is said in passing, appositions, a thing said first, and corrections, in this order
     for said in (
         _article_restored,
+        _located_first,
         _pointed_then_described,
         _state_now,
         _being_apposition,
+        _located_between_commas,
+        _ordinal_restated,
+        _thing_header,
         _said_in_passing,
         _wished,
         _ordinal_side_carried,

@@ -89,9 +89,8 @@ def formal_words(text: str) -> str:
     # "on top of the drawers": the chest they make, the cabinet
     text = re.sub(r"\btop of the drawers\b", "top of the cabinet", text)
     # "take the bottom cube out and put it on ...": out of where it is, a pick
-    text = re.sub(r"\b(take|pull|get|lift) ((?:the|a|an) [a-z ]+?) out\b(?! of)", r"\1 \2", text)
-    # "the cabinet-top bowl": the bowl on top of the cabinet; "the plate's neighbour bowl": the bowl next to it
-    text = re.sub(r"\b(?:the )?([a-z]+)-top ([a-z]+)\b", r"the \2 on top of the \1", text)
+    text = re.sub(r"\b(take|get|lift) ((?:the|a|an) [a-z ]+?) out\b(?! of)", r"\1 \2", text)
+    # "the plate's neighbour bowl": the bowl next to the plate
     text = re.sub(r"\bthe ([a-z]+)'s (?:neighbou?r|neighbou?ring|adjacent) ([a-z]+)\b", r"the \2 next to the \1", text)
     text = re.sub(r"\b(i|we) (?:want|would like|'d like|wish|need|hope) to see\b", r"\1 want", text)
     # "the rightmost of the grocery items, namely the cream cheese,": the thing said precisely is the thing
@@ -101,12 +100,10 @@ def formal_words(text: str) -> str:
         r"\1",
         text,
     )
-    # "... rather than the one on the cabinet", "the bowl other than the one on the cabinet": a thing ruled out
-    text = re.sub(r",? (?:rather than|other than) (?=(?:the|that|this) (?:one|[a-z]+)\b)", ", not ", text)
+    # "... rather than the one on the cabinet", "... rather than inside any of its drawers": a thing or place ruled out
     text = re.sub(
-        r",? (?:rather than|instead of|and not|not) (?:in|inside|into|on|onto) (?:any (?:of (?:its|the) )?|one of "
-        r"(?:its|the) )[a-z]+(?=\s*(?:$|[.!;]))",
-        "",
+        r",? rather than (?=(?:the|that|this) (?:one|[a-z]+)\b|(?:in|inside|into|on|onto) (?:any|one|a|an|the)\b)",
+        ", not ",
         text,
     )
     # "so its on target": a purpose said with its apostrophe dropped ("so its lid ..." keeps its possessive)
@@ -124,6 +121,26 @@ def formal_words(text: str) -> str:
     text = re.sub(r"\batop\b", "on top of", text)
     # "the beads resting inside the mug": where they are, not where they go ("inside" is no destination here)
     text = re.sub(r"\b(resting|sitting|lying|kept|held|located) inside\b", r"\1 in", text)
+    # "whichever black bowl lies farthest to the right": the rightmost black bowl
+    text = re.sub(
+        r"\bwhichever ((?:[a-z]+ )?[a-z]+) (?:lies|sits|stands|rests) (?:the )?(farthest|furthest|nearest|closest|"
+        r"leftmost|rightmost|highest|lowest)(?: (?:to|on) the (left|right)\b)?",
+        lambda m: f"the {m.group(3)}most {m.group(1)}" if m.group(3) else f"the {m.group(2)} {m.group(1)}",
+        text,
+    )
+    # "the beads resting in the red mug": the contents of the mug
+    text = re.sub(
+        r"\b(beads|contents|marbles|balls) (?:resting|sitting|lying|kept|held|located) (?=(?:in|inside)\b)",
+        r"\1 ",
+        text,
+    )
+    # "the basket located on the left-hand side", "the mug, located on the right, into ...": where it is, a side
+    text = re.sub(
+        r",?\s*\b(?:located|positioned|placed|sitting|standing|lying|set) ((?:on|to|at) (?:the|your) (?:far )?"
+        r"(?:left|right)(?:-hand| hand)?(?: side)?)\s*,?(?=\s|$|[.!])",
+        r" \1",
+        text,
+    )
     text = re.sub(r"\bupon\b", "on", text)
     text = re.sub(r"\b(?:employ|utili[sz]e|make use of)(?= (?:the|a|an)\b)", "use", text)
     text = re.sub(r"\bwithin\b(?! (?:reach|range|the robot's reach|arm's reach))", "in", text)
@@ -133,7 +150,7 @@ def formal_words(text: str) -> str:
     text = re.sub(
         r"^((?:please )?(?:put|place|set|move|transfer|deposit|bring|carry|relocate)) "
         r"(on|onto|in|into|to|inside|on top "
-        r"of) ((?:the|a|an) [a-z ]+?),? ((?:the|a|an) [^,.!]+?)([,.!].*)?$",
+        r"of) ((?:the|a|an) [a-z ]+?),? ((?:the|a|an|whichever|which ever) [^,.!]+?)([,.!].*)?$",
         lambda m: f"{m.group(1)} {m.group(4)} {m.group(2)} {m.group(3)}{m.group(5) or ''}",
         text,
     )

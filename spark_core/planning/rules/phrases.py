@@ -7,7 +7,7 @@ from __future__ import annotations
 import re
 
 from ...perception.qualifiers import split_relation
-from ...perception.variants import PACKAGING, PARTS
+from ...perception.variants import KIND_OF, PACKAGING, PARTS
 from .lexicon import CONTENTS, DETERMINERS, PRONOUNS, SELF_PARTS, TABLE
 
 # "the closer of the two mugs" -> "closest mug"; "the bowl nearer to the robot" -> "nearest bowl"
@@ -216,8 +216,17 @@ def _noun_phrase(words: str) -> str:
     m = _CONTAINER_OF.search(text)
     if m and m.start() == 0:
         return f"{m.group(2)} {m.group(1)}"  # "bottle of ketchup" -> "ketchup bottle"
-    m = re.fullmatch(r"(.+?) (?:of|on|from) (.+)", text)
-    if m and (m.group(2).split()[-1] not in ("stove", "table") or "drawer" in m.group(1)):
+    m = re.fullmatch(r"(.+?) (of|on|from) (.+)", text)
+    # ("the handle on the drawer" is the drawer's handle; "the plate on the cookie box" a plate where it rests)
+    head = m.group(1).split()[-1] if m else ""
+    located = (
+        m is not None
+        and m.group(2) != "of"
+        and head in KIND_OF
+        and head not in PARTS | set(SELF_PARTS)
+        and m.group(3) not in TABLE  # ("the dirt on the counter": the counter's dirt, what is scrubbed)
+    )
+    if m and not located and (m.group(3).split()[-1] not in ("stove", "table") or "drawer" in m.group(1)):
         part = m.group(1)
-        return m.group(2) if part in SELF_PARTS else f"{m.group(2)} {part}"
+        return m.group(3) if part in SELF_PARTS else f"{m.group(3)} {part}"
     return text

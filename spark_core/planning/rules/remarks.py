@@ -25,6 +25,8 @@ _OCCASIONS = frozenset(
     + ["episode", "session", "shift", "day", "night", "morning", "evening", "week", "weekend", "tonight", "later"]
     + ["run", "attempt", "batch", "rollout"]
 )
+# The surface everything stands on ("so it's off the worktop"): no thing of the scene.
+_SURFACES = frozenset(["table", "tabletop", "worktop", "countertop", "counter", "benchtop", "bench", "surface"])
 # Words that name no thing of the scene, whatever the lexicon says.
 _SELVES = frozenset(
     ["myself", "yourself", "itself", "ourselves", "themselves", "himself", "herself", "other", "others"]
@@ -35,6 +37,7 @@ _SELVES = frozenset(
     + ["groceries", "grocery", "items", "objects", "belongings", "scene", "setup", "workspace", "everyone"]
     # the robot itself and who watches it ("so everyone can see the gripper working", "fingers crossed")
     + ["robot", "gripper", "camera", "fingers", "finger", "audience", "viewers", "photo", "picture", "video"]
+    + list(_SURFACES)
     + list(_OCCASIONS)
 )
 
@@ -127,8 +130,14 @@ def trailing_remarks(instruction: str, found: list[str]) -> list[tuple[str, str]
         # how it stands ("it should sit flat on it"): a state, not a thing
         # ... and "the next <noun>", "before dinner" say an occasion ("for the next trial"), not the next step
         after = [*words[1:], ""]
+        # ... nor the surface everything stands on ("off the worktop"), nor "on target" (where it should be)
         words = [
-            w for (before, w), then in zip(pairs, after) if before not in _POSTURES and not _occasion(before, w, then)
+            w
+            for (before, w), then in zip(pairs, after)
+            if before not in _POSTURES
+            and not _occasion(before, w, then)
+            and w not in _SURFACES
+            and (before, w) != ("on", "target")
         ]
         if any(w in _ASKS or w in known or singular(w) in known for w in words):
             break  # a longer tail holds this one: it names the scene or asks too
