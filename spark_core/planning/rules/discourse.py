@@ -886,7 +886,9 @@ def _state_now(text: str) -> str:
     text = re.sub(
         rf"^(?:{_NOW}|as it stands|at the moment),? (?:the )?[a-z]+(?: cube| block)? (?:is|sits|'s) (?:on|on top of) "
         r"(?:the )?[a-z]+(?: cube| block| one)?\s*[,;.:-]+\s*(?:(?:and )?(?:i|we) (?:want|need|would like|'d like) "
-        r"(?:it|them|that|this) (?:the other way (?:round|around)|reversed|swapped|flipped)\s*[,;.:-]+\s*)?(?=\S)",
+        # (only with the wish that it be reversed: "now the red block is on the plate. put the blue one on it" names
+        # what "it" is)
+        r"(?:it|them|that|this) (?:the other way (?:round|around)|reversed|swapped|flipped)\s*[,;.:-]+\s*)(?=\S)",
         "",
         text,
     )
