@@ -151,6 +151,11 @@ def test_formal_and_roundabout_words_are_said_plainly(text, said):
             "right now blue is on red, i want it the other way round, red cube sitting on the blue cube",
             ["put obj=red cube relation=on target=blue cube"],
         ),
+        # ... but without that wish the state names what "it" is
+        (
+            "now the jug is on the tray. put the mug on it",
+            ["mention obj=jug on tray", "put obj=mug relation=on target=jug on tray"],
+        ),
         # "the second X, the farther one ...": the one said second says which
         (
             "the second jug, the farther one from the robot, put it in the sink",
