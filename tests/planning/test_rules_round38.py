@@ -218,3 +218,49 @@ def test_a_package_said_by_a_product_is_that_products():
     # "mustard" is also a colour: the bottle it names is not every bottled product
     assert package_members("mustard bottle", ["bottle of bbq sauce"], kind_too=True) is None
     assert package_members("bottle", ["bottle of bbq sauce"], kind_too=True) == {0}
+
+
+@pytest.mark.parametrize(
+    ("text", "clauses"),
+    [
+        # a thing looked for first is named for "it", not picked
+        (
+            "locate the blue mug and ensure that the jug is placed inside it",
+            ["mention obj=blue mug", "put obj=jug relation=in target=blue mug"],
+        ),
+        # a destination said before "whichever ..."; a side said with a participle
+        ("place in the sink whichever mug lies farthest to the left", ["put obj=leftmost mug relation=in target=sink"]),
+        ("put the jug into the tray located on the left-hand side", ["put obj=jug relation=in target=leftmost tray"]),
+        # the contents where they rest are what is poured
+        (
+            "the beads resting inside the jug are to be poured into the mug",
+            ["pour obj=beads in jug target=mug source=jug"],
+        ),
+        # a part's state said again, how, and the chest of drawers
+        ("the kettle should be switched on, such that its element is hot", ["turn on obj=kettle"]),
+        ("open the cupboard by means of its brass handle", ["open obj=cupboard"]),
+        ("put the jug on top of the drawers", ["put obj=jug relation=on target=cabinet"]),
+        (
+            "take the lower mug out and put it in the sink",
+            ["pick obj=lower mug", "put obj=lower mug relation=in target=sink"],
+        ),
+        # "at the end i want to see ...": the wish, two goals
+        (
+            "at the end i want to see the jug in the sink and the mug on the tray",
+            ["put obj=jug relation=in target=sink", "put obj=mug relation=on target=tray"],
+        ),
+    ],
+)
+def test_more_wordings_of_round_38_read_as_meant(text, clauses):
+    assert read(text) == clauses
+
+
+def test_perception_words_of_round_38():
+    """ "receptacle" is a container; a "stand" is a rack; "target" before a zone's noun says it again."""
+    from spark_core.perception.naming import class_members
+    from spark_core.perception.variants import KIND_OF
+    from spark_core.planning.rules.kinds import other_variety
+
+    assert class_members("receptacle", ["basket", "red block"]) == {0}
+    assert "rack" in KIND_OF["stand"]
+    assert other_variety("green target patch", ("green area", "red block")) is None
