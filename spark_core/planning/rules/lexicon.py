@@ -293,6 +293,7 @@ CONTAINERS = ("bowl", "basket", "tray", "drawer", "box", "bin", "mug", "cup", "p
 # the stove on the plate"), only a place or what is worked (a drawer opened, a knob turned).
 FIXED: tuple[str, ...] = ("cabinet", "stove", "table", "counter", "shelf", "sink", "fridge", "oven", "microwave")
 FIXED += ("cupboard", "drawer", "dishwasher", "wall", "floor", "rack", "hob", "burner", "cooktop", "cooker")
+FIXED += ("peg", "post")  # a nut assembly's pegs stand fixed in the table
 # Kinds that are solid through: nothing goes inside one ("put the basket inside the green block").
 SOLIDS = ("block", "cube", "brick", "ball", "butter", "hammer")
 # Flat regions an object is pushed into rather than carried to.

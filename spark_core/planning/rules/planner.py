@@ -320,6 +320,7 @@ class RulesPlanner:
         put_last: str | None = None  # what the previous step set down somewhere
         opened: set[str] = set()  # drawers a step opened
         together: list[str] = []  # handles of a two-armed lift, gripped at once
+        rests_on: dict[str, str] = {}  # what a step of this plan set down on or in what
         for _i, c in enumerate(clauses):
             obj = last_object if is_pronoun(c.obj) else c.obj
             target = (last_container or last_object) if is_pronoun(c.target) else c.target
@@ -366,6 +367,11 @@ class RulesPlanner:
                     )
                 if c.relation == "near":
                     raise CannotPlan(f"{c.text!r}: I can put things on or in something, not next to it")
+                if rests_on.get(t) == o:  # "the blue block on the green one and the green one on the blue one"
+                    raise Impossible(
+                        f"{c.text!r}: an earlier step set {t!r} on {o!r}: {o!r} cannot go on {t!r} while {t!r} rests "
+                        f"on it (understood: {understood}; found in the scene: {seen})"
+                    )
                 if c.relation == "in":
                     _check_fits(c.text, o, t, scene, f"(understood: {understood}; found in the scene: {seen})")
                 pick = [] if held == o else [_prim("pick", keypoint_label=o)]  # "pick X and place it": X is in hand
@@ -474,6 +480,10 @@ class RulesPlanner:
                         _prim("release"),
                     ]
             put_last = obj if c.action in ("put", "stack") and target else None
+            if obj and c.action in ("put", "stack", "sort", "pick", "push"):
+                rests_on.pop(obj, None)  # moved again: no longer where an earlier step set it
+                if put_last and target:
+                    rests_on[obj] = target
             held = obj if c.action == "pick" else held if c.action == "mention" or approach else None
             last_object = obj or last_object
         if together:
