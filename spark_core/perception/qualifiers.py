@@ -64,7 +64,7 @@ def ruled_out_parts(said: str) -> list[str]:
 # side a sided relation names ("the bowl left of the plate").
 RELATIONS = (
     *("between", "next to", "beside", "near", "by", "on top of", "on", "in", "inside", "at", "from", "under"),
-    *("left of", "right of"),
+    *("left of", "right of", "behind", "in front of"),
 )
 _RELATION = re.compile(
     r"^(.+?)\s+(" + "|".join(re.escape(r) for r in sorted(RELATIONS, key=len, reverse=True)) + r")\s+(.+)$"
@@ -90,8 +90,14 @@ SUPPORT_RELATIONS = ("on top of", "on", "in", "inside", "at", "from")  # the hea
 NEAR_RELATIONS = ("next to", "beside", "near", "by")
 SUPPORT_MARGIN_M = 0.03  # a bowl's centre may overhang its support's seen footprint by this much
 NEAR_M = 0.2  # "next to": centres at most the anchor's radius plus this apart (table plane)
-# "left of X", "right of X" (the robot's left and right): (world axis, sign) of the side the head is on
-SIDED_RELATIONS: dict[str, tuple[int, float]] = {"left of": (1, 1.0), "right of": (1, -1.0)}
+# "left of X", "right of X" (the robot's left and right), "behind X" (farther from the robot), "in front of X"
+# (nearer it): (world axis, sign) of the side the head is on
+SIDED_RELATIONS: dict[str, tuple[int, float]] = {
+    "left of": (1, 1.0),
+    "right of": (1, -1.0),
+    "behind": (0, 1.0),
+    "in front of": (0, -1.0),
+}
 
 
 def on_side(relation: str, head_xy_m: np.ndarray, anchor_xy_m: np.ndarray) -> bool:

@@ -15,6 +15,8 @@ import re
 
 from lemminflect import getAllLemmas
 
+from ...perception.colors import BASE_COLOURS
+from ...perception.colors import SYNONYMS as COLOUR_SYNONYMS
 from ...perception.lexicon.nouns import nouns
 from ..protocol import PlanRequest
 from ..rules.framing import verb_words
@@ -96,6 +98,11 @@ def misread(phrase: str, known: set[str]) -> bool:
             return True
         return is_verb(w) and (described or (bool(i) and words[i - 1] in _VERB_BEFORE))
 
+    # "toss the yellow block in there" among a green block: a colour no found phrase has, said of a thing, is
+    # another thing of that kind, absent
+    colours = [w for w in words if (w in BASE_COLOURS or w in COLOUR_SYNONYMS) and w not in known]
+    if colours and any(_may_be_thing(w) and w not in BASE_COLOURS and w not in COLOUR_SYNONYMS for w in words):
+        return False
     return all(placed(i) for i in range(len(words)))
 
 

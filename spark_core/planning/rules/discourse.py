@@ -756,6 +756,14 @@ def _manner_dropped(text: str) -> str:
         lambda m: m.group(0) if not _stage_direction(m.group(1) or m.group(2)) else "",
         text,
     )
+    # how it should lie where it goes ("..., leave it lying flat on the bottom"): the carry already puts it there
+    text = re.sub(
+        r"(?:,\s*|\s+and\s+)(?:then )?leave (?:it|them) (?:lying |sitting |standing |resting )?"
+        r"(?:(?:flat|upright|level|the right way up)(?: (?:on|at) the bottom(?: of (?:it|them))?)?"
+        r"|(?:on|at) the bottom(?: of (?:it|them))?)\s*(?=[.!?]*$)",
+        "",
+        text,
+    )
     # a comparison says how, never what ("..., as one would handle a ming vase", "..., as if it were made of glass")
     text = re.sub(
         r",\s*(?:just )?(?:as (?:one|you|i|we|a \w+) (?:would|might|does|do)|as if|as though|like (?:one|you) would)\b"
@@ -947,6 +955,20 @@ def _being_apposition(text: str) -> str:
         return f"{head}{m.group(4)}"  # "the stove being the flat appliance ...": said again, nothing picked out
     tail = head[at.end() :]
     return f"{head[: at.end()]}, {what}{',' + tail if tail.strip() else ''}{m.group(4)}"
+
+
+def _one_by_the_destination(text: str) -> str:
+    """ "put the black bowl on the plate - the one that isn't between the ramekin and the plate": "the one ..." said
+    after the destination names the destination itself, so it describes the thing carried (nothing is located by
+    itself): said right after that thing."""
+    m = re.fullmatch(
+        r"(.*?\bthe ((?:[a-z]+ ){0,2}[a-z]+)) ((?:on|onto|in|into|inside|on top of|to) the (?:[a-z]+ ){0,2}([a-z]+))"
+        r"\s*(?:,|\s-+)\s*(the one\b[^,;.!?]*?)\s*([.!]?)",
+        text,
+    )
+    if not m or m.group(4) == m.group(2).split()[-1] or not re.search(rf"\bthe (?:[a-z]+ )?{m.group(4)}\b", m.group(5)):
+        return text
+    return f"{m.group(1)}, {m.group(5)}, {m.group(3)}{m.group(6)}"
 
 
 def _ordinal_restated(text: str) -> str:
@@ -1719,10 +1741,22 @@ def restructured(instruction: str) -> str:
         lambda m: re.sub(r"\bone\b", m.group(2), m.group(3)) + f" -> {m.group(1)}{m.group(4)}",
         out,
     )
+    # "want red on top, green underneath": a wish said without its "i"
+    out = re.sub(r"^(?:want|wanna|wanting)\s+(?!to\b)", "i want ", out)
+    # "the one off to the left": on that side
+    out = re.sub(r"\b(?:off|over|out) to the (left|right)\b(?! of\b)", r"on the \1", out)
+    # "the cabinet has a drawer. open it ...": one of its parts, pointed out
+    out = re.sub(
+        r"(^|[.;!?] )the ([a-z ]+?) has (?:a|an|one) ((?:[a-z]+ )?(?:drawer|handle|knob|dial|door|lid|switch))"
+        r"(?=\s*[.;,!])",
+        r"\1there's a \3 on the \2",
+        out,
+    )
     # "top drawer open + cream cheese inside it": goals listed with "+"
     out = re.sub(r"\s+\+\s+(?=[a-z])", ", ", out)
     # "would you mind sorting these? red block into ...": what "these" are, said next
-    out = re.sub(r"\b(these|those|the following)\s*\?\s+(?=\S)", r"\1: ", out)
+    # (also "sort these for me? ...", "sort these out - red block to ...")
+    out = re.sub(r"\b(these|those|the following)(?: for me| for us| out| please)*\s*(?:\?|\s-+)\s+(?=\S)", r"\1: ", out)
     # what is said in passing, appositions, a thing said first, and corrections, in this order
     for said in (
         _article_restored,
@@ -1740,6 +1774,7 @@ def restructured(instruction: str) -> str:
         _pointed_and_urged,
         _manner_dropped,
         _dashed_apposition,
+        _one_by_the_destination,
         _class_apposition,
         _bare_topic,
         _pointed_out_first,

@@ -43,6 +43,7 @@ PLACE_WORDS = frozenset(
     + ["time", "goal", "task", "job", "plan", "idea", "aim", "one", "ones", "other", "others", "thing", "things"]
     + ["lot", "bit", "second", "minute", "kitchen", "scene", "workspace", "world", "room", "camera", "view"]
     + ["inside", "outside", "interior", "contents", "content", "upright", "same", "rest", "whole", "two", "three"]
+    + ["underneath", "beneath", "below", "above", "atop"]
     + ["insides", "belly", "hollow", "innards"]
     # arrangements the things make, not things ("so they form a tower")
     + ["tower", "stack", "pile", "heap", "group", "pair", "set", "column", "order"]

@@ -216,7 +216,7 @@ def parse_instruction(instruction: str) -> list[Clause]:
             # without an article only with a preposition that can only say where it goes ("red block onto the plate")
             or re.match(r"[a-z][\w ]* (?:into|onto|on to) (?:the|a|an) \w", part)
             # "red block to the green tray": a noun phrase (not a verb: "fly to the moon") and a destination last
-            or re.fullmatch(r"(?:the |a |an )?[a-z][\w ]*(?<!next)(?<!close) to (?:the|a|an) \w+(?: \w+)?", part)
+            or re.fullmatch(r"(?:the |a |an )?[a-z][\w' ]*(?<!next)(?<!close) to (?:the|a|an) \w+(?: \w+)?", part)
             and not is_verb(part.split()[0])
             # after a thing named on its own: "blue block, then red block on it"
             or previous == "mention"
@@ -570,10 +570,16 @@ def _resolve(c: Clause, before: list[Clause]) -> Clause:
         kind = split_relation(prev.obj)[0].split()
         if kind and names_a_thing(kind[-1]):
             obj = updates["obj"] = f"{kind[-1]} {obj}"
-    elif obj in _BARE_QUALIFIERS and "mention" in (prev.action, c.action) and prev.obj and not is_pronoun(prev.obj):
+    elif (
+        obj in _BARE_QUALIFIERS
+        and ("mention" in (prev.action, c.action) or {prev.action, c.action} <= {"put", "stack"})
+        and prev.obj
+        and not is_pronoun(prev.obj)
+    ):
         # "leave the black bowl in the back alone, put the front one on the plate": "one" is of the kind just named
         # (only after a thing named or for one named, not a step after a step: "open one of the drawers - ..., the
         # bottom one" says which)
+        # (and in a stack said step by step: "stack the closest block on the blue one, then the rightmost one on top")
         kind = [w for w in split_relation(prev.obj)[0].split() if w not in _BARE_QUALIFIERS]
         if kind and names_a_thing(kind[-1]):
             obj = updates["obj"] = f"{obj} {' '.join(kind)}"
@@ -603,7 +609,9 @@ def _resolve(c: Clause, before: list[Clause]) -> Clause:
     if is_pronoun(c.target) or c.target in ("that", "this"):  # "... then the red block on top of that"
         # (the clause before only picked the thing up: a clause before it named the place, "grab the green block and
         # put it on the blue one, then take the red one and put it on top of that")
-        cands = [p for b in reversed(before) for p in (b.obj, b.target, _anchor(b.obj))]
+        # (the thing's own anchor is said last: "..., the blue one beside the yellow tray goes in that")
+        own = [] if is_pronoun(c.obj) else [_anchor(c.obj)]
+        cands = own + [p for b in reversed(before) for p in (b.obj, b.target, _anchor(b.obj))]
         for cand in cands:
             if cand and cand != obj and not is_pronoun(cand):
                 updates["target"] = cand

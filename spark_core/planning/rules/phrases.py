@@ -8,7 +8,7 @@ import re
 
 from ...perception.qualifiers import split_relation
 from ...perception.variants import KIND_OF, PACKAGING, PARTS
-from .lexicon import CONTENTS, DETERMINERS, PRONOUNS, SELF_PARTS, TABLE
+from .lexicon import CONTAINERS, CONTENTS, DETERMINERS, PRONOUNS, SELF_PARTS, TABLE
 
 # "the closer of the two mugs" -> "closest mug"; "the bowl nearer to the robot" -> "nearest bowl"
 COMPARATIVES = {
@@ -90,7 +90,8 @@ def possessive(text: str) -> str:
     if part in SELF_PARTS or part in CONTENTS:
         return owner
     if part.split()[-1] not in PARTS | PACKAGING and owner.split()[-1] not in DETERMINERS:
-        return f"{part} on {owner}"  # "the stove's bowl": not a part of the stove, the bowl on it
+        # "the stove's bowl": not a part of the stove, the bowl on it ("the basket's can": in it)
+        return f"{part} {'in' if owner.split()[-1] in CONTAINERS else 'on'} {owner}"
     return f"{owner} {part}"
 
 
@@ -173,19 +174,21 @@ def object_phrase(words: str) -> str:
     if words.strip() in (*PRONOUNS, "that", "this"):
         return "that one" if words.strip() in ("that", "this") else words.strip()
     text = locator(comparative(strip_determiners(words)))
-    text = re.sub(r"'s\b", "", possessive(text) if re.search(r"\w's \w+$", text) else text)
+    text = re.sub(r"'s\b", "", possessive(text) if re.search(r"\w's (?:\w+ )?\w+$", text) else text)
     text = re.sub(r"^(?:other|one) |(?<=\w) ones?$", "", text).strip()
     text = _predicative(text)
     # "block (that) is not blue", "block other than the blue one": perception keeps the blocks not blue
     text = re.sub(r"^(.+?) (?:(?:which )?(?:is|are) not|other than) (\w+)(?: ones?)?$", r"\1 not \2", text)
     if re.search(
-        r"\b(between|next to|beside|near|by|on top of|on|in|inside|at|from|under|not|left of|right of)\b", text
+        r"\b(between|next to|beside|near|by|on top of|on|in|inside|at|from|under|not|left of|right of|behind)\b", text
     ):
         # the object it is located by reads as a noun phrase too ("next to the box of cookies" -> "cookies box",
         # "in the top tier of the shelf" -> "in shelf top tier")
         head, relation, anchors = split_relation(text)
         if relation and len(anchors) == 1 and (" of " in anchors[0] or relation.endswith(("left of", "right of"))):
             return f"{head} {relation} {noun_phrase(anchors[0])}"
+        if relation and re.search(r"\w of \w", head):  # "drawer of the cabinet behind the block": the cabinet's
+            return f"{noun_phrase(head)} {relation} {' and '.join(anchors)}"
         return re.sub(r"\b(\w+) of (\w+)$", _reorder_container, text)
     return noun_phrase(text)
 

@@ -15,6 +15,7 @@ from ...perception.variants import CONSUMABLES, KIND_OF, PACKAGING
 from ..protocol import PlanRequest, PlanResult
 from .afford import Reading, unplaced_variety
 from .afford import best as afforded
+from .contradiction import contradicted, only_what_is_there
 from .discourse import restructured
 from .kinds import modifier_for_thing, other_contents, other_variety
 from .lexicon import CLEANERS, CONTAINERS, CONTENTS, FIXED, REGIONS, SOLIDS, VERBS
@@ -23,7 +24,7 @@ from .parse import Clause, ParseError, head_noun, is_pronoun, parse_instruction
 from .phrases import singular
 from .qualify import bare_rank
 from .reader import describe, readings, unused_mentions
-from .remarks import names_absent, remarks, trailing_remarks
+from .remarks import context_sentences, names_absent, remarks, trailing_remarks
 from .spelling import corrected
 from .stepwise import steps
 
@@ -73,6 +74,8 @@ class RulesPlanner:
         request = replace(request, instruction=corrected(request.instruction, request.scene.inventory))
         # steps said out of order, context and contrast, headers, back-references: said plainly (rules/discourse.py)
         request = replace(request, instruction=restructured(request.instruction))
+        if only_what_is_there(request.instruction):  # "there's a handle on the cabinet drawer.": nothing to do
+            return self._refusal(CannotPlan(f"{task!r} only says what is there: say what to do with it"), [], t0)
         read = self._read(request, t0, stepwise=True)
         if isinstance(read, PlanResult):
             read = self._without_remarks(request, t0) or read
@@ -89,6 +92,17 @@ class RulesPlanner:
                 CannotPlan(
                     f"could not find {other!r} in the scene: perception found nothing that matches it (found in "
                     f"the scene: {_seen(request)})"
+                ),
+                understood,
+                t0,
+            )
+        # a state said of a planned thing that the plan undoes (rules/contradiction.py): nonsense, whoever read it
+        against = contradicted(request.instruction, _leaves(children))
+        if against is not None:
+            return self._refusal(
+                Impossible(
+                    f"the instruction also asks for the opposite of what it asks: {against!r} cannot hold once the "
+                    f"plan is done (understood: {'; '.join(understood)})"
                 ),
                 understood,
                 t0,
@@ -110,6 +124,10 @@ class RulesPlanner:
         found = [*request.scene.keypoints, *request.scene.inventory]
         tries = [] if not said or any(names_absent(s, found) for s in said) else [(kept, said)]
         tries += [(k, [tail]) for k, tail in trailing_remarks(request.instruction, found)]
+        from ..learned_reader.fallback import says_a_goal  # (the reader's test of a request, shared)
+
+        kept, said = context_sentences(request.instruction, found, says_a_goal)
+        tries += [(kept, said)] if said else []
         for kept, said in tries:
             read = self._read(replace(request, instruction=kept), t0, stepwise=True)
             if not isinstance(read, PlanResult):
@@ -354,6 +372,12 @@ class RulesPlanner:
                 pass  # "bring it over the bowl and tip it into the bowl": the carry is the pour's approach
             elif c.action == "put" and c.relation == "in" and _opened_later(target, clauses[_i + 1 :], last_object):
                 pass  # "the cheese goes in the top drawer, so open it and put it inside": the goal, then its steps
+            elif c.action == "put" and c.relation == "near" and "front of" in c.text:
+                # "move the cheese to the front of the stove": a place on the table before a thing, reached by a push
+                o = need(obj, "object", c)
+                need(target, "destination", c)
+                direction, distance = self._push_geometry(c, o, target, scene)
+                out.append(_prim("push_object", keypoint_label=o, direction=direction, distance=distance))
             elif c.action in ("put", "sort", "stack"):
                 o, t = need(obj, "object", c), need(target, "destination", c)
                 if c.relation == "in" and "drawer" in t.split() and not _among(t, opened, scene):
@@ -367,10 +391,10 @@ class RulesPlanner:
                     )
                 if c.relation == "near":
                     raise CannotPlan(f"{c.text!r}: I can put things on or in something, not next to it")
-                if rests_on.get(t) == o:  # "the blue block on the green one and the green one on the blue one"
+                if _stands_on(t, o, rests_on, scene):  # "the blue block on the green one, the green on the blue"
                     raise Impossible(
-                        f"{c.text!r}: an earlier step set {t!r} on {o!r}: {o!r} cannot go on {t!r} while {t!r} rests "
-                        f"on it (understood: {understood}; found in the scene: {seen})"
+                        f"{c.text!r}: after the steps before it, {t!r} rests on {o!r}, so {o!r} cannot go on {t!r} "
+                        f"(understood: {understood}; found in the scene: {seen})"
                     )
                 if c.relation == "in":
                     _check_fits(c.text, o, t, scene, f"(understood: {understood}; found in the scene: {seen})")
@@ -481,7 +505,8 @@ class RulesPlanner:
                     ]
             put_last = obj if c.action in ("put", "stack") and target else None
             if obj and c.action in ("put", "stack", "sort", "pick", "push"):
-                rests_on.pop(obj, None)  # moved again: no longer where an earlier step set it
+                # moved again: no longer where an earlier step set it
+                rests_on = {k: v for k, v in rests_on.items() if not (k == obj or _same_label(k, obj, scene))}
                 if put_last and target:
                     rests_on[obj] = target
             held = obj if c.action == "pick" else held if c.action == "mention" or approach else None
@@ -538,6 +563,33 @@ def composer(
         return children
 
     return compose, lambda children: _effect(children, request.scene.keypoints)
+
+
+def _stands_on(top: str, base: str, rests_on: dict[str, str], scene) -> bool:
+    """`top` rests on `base`, directly or through the things between, as the plan's steps so far set them down (a
+    thing said two ways, "the green" and "the green block", is one thing when perception found them as one)."""
+
+    def same(a: str, b: str) -> bool:
+        return a == b or _same_label(a, b, scene)
+
+    for _ in range(len(rests_on)):
+        below = next((t for k, t in rests_on.items() if same(k, top)), None)
+        if below is None:
+            return False
+        if same(below, base):
+            return True
+        top = below
+    return False
+
+
+def _same_label(a: str, b: str, scene) -> bool:
+    """Two labels perception found as one thing."""
+    return a in scene and b in scene and _same_detection(scene[a], scene[b])
+
+
+def _leaves(steps: list[dict]) -> list[dict]:
+    """The steps' primitives in order, nested branches too."""
+    return [leaf for step in steps for leaf in (_leaves(step["children"]) if "children" in step else [step])]
 
 
 def _labels(steps: list[dict]) -> list[str]:

@@ -8,6 +8,7 @@ on its own, and a remark may name no kind of thing the scene lacks, so an absent
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 
 from lemminflect import getAllLemmas
 
@@ -189,3 +190,23 @@ def _plain(sentence: str) -> str:
     """Lower case, and a courtesy before the verb gone ("please turn on the stove": a request said with a verb)."""
     text = sentence.lower().replace("\u2019", "'").strip()
     return re.sub(r"^(?:(?:please|kindly|ok|okay|now|so|and|then|robot),?\s+)+", "", text)
+
+
+def context_sentences(instruction: str, found: list[str], says_a_goal: Callable[[str], bool]) -> tuple[str, list[str]]:
+    """The instruction without the sentences that only set the scene for it ("okay so this one's pretty simple, i
+    think.", "we're checking the grasp again today."): none starts with a verb, says a goal (`says_a_goal`), names
+    a thing perception found or the scene holds, names a thing it lacks, or points at one ("it");
+    the instruction and no sentences when none is such or nothing else is left."""
+    said = [t.strip() for t in re.split(r"(?<=[.!?;])\s+", instruction.strip()) if t.strip()]
+    known = {w for p in found for w in re.findall(r"[a-z]+", p.lower())}
+    aside = [
+        t
+        for t in said
+        if not starts_with_verb(_plain(t))
+        and not says_a_goal(t)
+        and not set(re.findall(r"[a-z]+", _plain(t))) & (known | {"it", "them"})
+        and names_absent(t, found) is None
+    ]
+    if not aside or len(aside) == len(said):
+        return instruction, []
+    return " ".join(t for t in said if t not in aside), aside

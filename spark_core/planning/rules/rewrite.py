@@ -183,9 +183,12 @@ def sentences(instruction: str) -> list[str]:
     # "the blue block is first (the base)": in a stack, the first one is the bottom, the base only says so again
     text = re.sub(r"\bfirst,? \(?(?:as |at )?the (?:base|bottom|foundation)\)?", "at the bottom", text)
     text = re.sub(r"\s*[()]\s*", " ", text).strip()  # "(carefully)", "(thanks)": an aside's words, read as said
+    # a ramekin by its cook's name ("the little souffle dish"): a compound whose head names another kind (a cup)
+    text = re.sub(r"\bsouffl[eé] (?:cup|dish|pot|mould|mold)(s?)\b", r"ramekin\1", text)
     # speech: "um", "uh", and a phrase said twice around one ("in the, uh, in the basket")
     text = re.sub(r",?\s*\b(?:um+|uh+|erm|er|hmm+)\b,?", "", text).strip(" ,")
-    text = re.sub(r"\b((?:\w+ ){1,2}\w+),? \1\b", r"\1", text)
+    # (not a chain of places: "the red block on the green block, the green block on the blue block")
+    text = re.sub(r"\b((?:\w+ ){1,2}\w+),? \1\b(?!,? (?:on|onto|in|into|inside|on top of) )", r"\1", text)
     # a correction said aloud, then the request said again in a sentence of its own ("put the ketchup in the b-- no
     # wait, not the ketchup, the milk. milk in the basket"): what came before the correction is taken back
     text = re.sub(
@@ -671,11 +674,24 @@ def sentences(instruction: str) -> list[str]:
         r"\1 from the table",
         text,
     )
+    # "cream cheese -> front of the stove": to a place beside a thing, not onto the thing
+    text = re.sub(
+        r"^(.*?)\s*(?:->|=>|\u2192|-->)\s*(?:to |in )?(?:the )?front of (?:the )?",
+        lambda m: f"{'' if starts_with_verb(m.group(1)) else 'put '}{m.group(1)} to the front of the ",
+        text,
+    )
     # an arrow between a thing and a place: "green block -> basket" carries it there (a preposition after the
     # arrow says which way itself: "-> onto the plate")
     text = re.sub(
         r"\s*(?:->|=>|\u2192|-->)\s*(?:(into|onto|in|on|inside|on top of|to) )?(?:the |a |an )?([\w ]+)",
         lambda m: f" {_arrow_prep(m.group(1), m.group(2))} the {m.group(2)}",
+        text,
+    )
+    # "then finish with the red block on top of that": the last step itself
+    text = re.sub(
+        r"\b(?:finish|end|top (?:it|things|the stack) off|cap (?:it|the stack) off)(?: off| up)? (?:with|by putting|by "
+        r"placing) (?=(?:the|a|an) [\w ]+? (?:on top of|on|onto|in|into|inside)\b)",
+        "put ",
         text,
     )
     # "start by putting green on blue": the step itself
@@ -807,8 +823,25 @@ def sentences(instruction: str) -> list[str]:
         lambda m: m.group(0) if starts_with_verb(m.group(1)) else f"put {m.group(1)} ",
         text,
     )
+    # "grab it and pull until the drawer is open", "push it until the drawer is shut": the drawer's end state
+    text = re.sub(
+        r"\b(?:(?:grab|grip|take hold of|hold|seize|catch) (?:it|the [\w ]+?) and )?(pull|push|slide)(?: it| on it)?"
+        r"(?: out| in| back)? (?:until|till|til) ((?:the|its) [\w ]+?) (?:is|comes|slides) "
+        r"(?:fully |all the way |right )?(open|out|closed|shut|in)\b",
+        lambda m: f"{'open' if m.group(3) in ('open', 'out') else 'close'} {m.group(2)}",
+        text,
+    )
     # "(would you) mind opening the drawer": the gerund after "mind" is the request
-    text = re.sub(r"^(?:would you |do you )?mind (\w+ing)\b", lambda m: _lemma_verb(m.group(1)), text)
+    minded = re.sub(r"^(?:would you |do you )?mind (\w+ing)\b", lambda m: _lemma_verb(m.group(1)), text)
+    if minded != text:  # "... and putting the red block inside": the steps after it said as gerunds too
+        minded = re.sub(
+            r"\b(and|then|and then) (\w+ing)\b",
+            lambda m: (
+                f"{m.group(1)} {_lemma_verb(m.group(2))}" if _lemma_verb(m.group(2)) in _VERB_FORMS else m.group(0)
+            ),
+            minded,
+        )
+    text = minded
     # "(would it be possible to) have the cup resting on the saucer": a causative states the wish ("get the bowl
     # sitting on the stove" is a pick of the bowl there: not "get"; and the participle is of the same clause)
     text = re.sub(
@@ -1504,6 +1537,20 @@ def _arrow_prep(said: str | None, place: str) -> str:
     return "into" if place.split()[-1:] in ([c] for c in CONTAINERS) else "onto"
 
 
+def _gripped_by_part(text: str) -> str:
+    """ "take hold of the square nut's handle and drop the nut over the peg": where to grip a thing carried after it
+    (said again or as "it"), not a thing of its own: "pick up the square nut and drop the nut over the peg"."""
+    m = re.match(
+        r"(?:take hold of|grab|grip|hold|pick up|lift|seize|get hold of) the ([\w ]+?)'s (?:handle|grip|rim|edge)"
+        r" and (?:then )?(put|place|set|drop|seat|move|lower|slide|carry|bring|fit|slip) (the (\w+ ){0,2}?(\w+)|it)"
+        r"(?= (?:on|onto|over|in|into|inside|on top of|down|around)\b)",
+        text,
+    )
+    if not m or m.group(3) != "it" and m.group(5) != m.group(1).split()[-1]:
+        return text
+    return f"pick up the {m.group(1)} and {m.group(2)} it{text[m.end() :]}"
+
+
 def _lemma_verb(word: str) -> str:
     """ "opening" -> "open" (the lexicon's verb lemma), else the word as it is."""
     from lemminflect import getLemma
@@ -1753,6 +1800,10 @@ def _tower_by_ordinals(items: list[str]) -> list[str] | None:
     return [f"stack {a} on {b}" for b, a in zip(order, order[1:])]
 
 
+# Parts a thing is built with: "the cabinet has a drawer" says what it is, not where a thing goes.
+_PARTS = ("drawer", "handle", "knob", "dial", "door", "lid", "shelf", "tier", "rim", "switch", "button")
+
+
 def _holds(text: str) -> str | None:
     """ "the basket should contain the block", "the plate needs the block on it": a carry into the holder."""
     modals = "|".join(re.escape(m) for m in sorted(MODALS, key=len, reverse=True))
@@ -1768,6 +1819,8 @@ def _holds(text: str) -> str | None:
     holder, thing, prep = m.group(1), m.group(2), m.group(3)
     if not _is_noun_phrase(holder):
         return None
+    if prep is None and re.fullmatch(rf"(?:a|an) (?:\w+ )?(?:{'|'.join(_PARTS)})", thing):
+        return None  # "the cabinet has a drawer": one of its parts, said to be there
     if prep is None:
         prep = "in" if _head(holder) in CONTAINERS else "on"
     return f"put {thing} {'in' if prep in ('in', 'inside', 'into') else 'on'} {holder}"
@@ -2047,7 +2100,7 @@ def imperatives(instruction: str) -> list[str]:
         # "open the drawer, all the way out": how far, after the action
         if starts_with_verb(s):
             s = re.sub(r",\s*(?:all the way )?(?:out|open|shut|closed)\b(?:\s+if (?:you can|possible))?\s*$", "", s)
-        s = _GRIP.sub("", _NOT_THERE.sub("", _request_after_reason(s)))
+        s = _GRIP.sub("", _NOT_THERE.sub("", _request_after_reason(_gripped_by_part(s))))
         for _ in range(3):  # remarks said one after another (", when you've got a sec, no rush"): the last goes first
             s, cut = _TRAILING.subn("", s)
             if not cut:
@@ -2061,7 +2114,17 @@ def imperatives(instruction: str) -> list[str]:
         if lifted and _is_noun_phrase(lifted.group(1)) and not re.search(_SAYS_GOAL, lifted.group(1)):
             out.append(f"pick up {lifted.group(1)}")
             continue
-        tower = _tower(re.split(r"\s*,\s*|\s+and\s+", s))
+        # (said as a wish: "i want red on top, green underneath")
+        tower = _tower(
+            re.split(
+                r"\s*,\s*|\s+and\s+",
+                re.sub(
+                    r"^(?:i|we) (?:want|need|would like|'d like) (?!(?:a|an|the|one) (?:\w+ )?(?:stack|tower|pile)\b)",
+                    "",
+                    s,
+                ),
+            )
+        )
         if tower:  # "red cube on top, green cube underneath": a stack said by where each one is
             out += tower
             continue

@@ -1,0 +1,146 @@
+"""A plan whose instruction also asks for the opposite of what the plan does: refused, whichever reading planned it.
+
+"put the orange juice in the basket and also keep it out of the basket", "turn the stove off and leave it on", "lift
+the red cube and leave it resting on the table", "put the red cube on the green cube while the green cube stays on top
+of the red cube", "push the plate to the front of the stove and behind it at the same time": each reading of the
+planner (the rules, the order-free reader, the scene's affordances, the learned reader) reads the request and passes
+over the clause that undoes it. The plan's own steps say what it does; this module looks in the words for a state
+said of the same thing that cannot hold with it.
+"""
+
+from __future__ import annotations
+
+import re
+
+# Said to hold at once: two opposite relations or states joined by one of these cannot both be met.
+_AT_ONCE = re.compile(r"\b(?:at the same time|simultaneously|at once|both at once)\b")
+_OPPOSED = (
+    (r"\bin front of\b|\bto the front\b|\bfront of\b", r"\bbehind\b|\bback of\b"),
+    (r"\bopen(?:ed)?\b", r"\bclosed?\b|\bshut\b"),
+    (r"\bon top of\b|\babove\b|\batop\b", r"\bunder(?:neath)?\b|\bbelow\b|\bbeneath\b"),
+)
+# Keeping a thing in a state: the verbs that say it, before the thing ("keep it ...") or after it ("it stays ...").
+_KEEP = r"(?:keep|keeping|keeps|leave|leaving|leaves)"
+_STAY = r"(?:stays?|staying|remains?|remaining|is kept|is left)"
+_AWAY = r"(?:out of|outside(?: of)?|away from|off)"
+_SWITCHED = r"(?:stove|burner|hob|cooker|cooktop|oven|range|heat|knob|dial|lamp|light)"
+_NOUN = r"(?:the|top|a|an|its|it)\b"  # "leave it on the plate": a place, not a state
+_NOT_TO_DO = re.compile(r"\b(?:don't|dont|do not|not|never|rather than|instead of|no)\s+(?:\w+\s+)?$")
+_PUT_BACK = r"(?:where (?:it|they) (?:is|was|are|were)|in place|untouched|as it is)"
+
+
+def _thing(label: str, other: str | None = None) -> str:
+    """A pattern for a plan label as said: "it", or the label's head noun after "the" and up to two words; when the
+    other label shares the head ("red cube", "green cube") the word before the head must be said too."""
+    words = label.split()
+    head = re.escape(words[-1])
+    if other is not None and other.split()[-1] == words[-1] and len(words) > 1:
+        head = rf"{re.escape(words[-2])} {head}"
+    return rf"(?:it|the (?:\w+ ){{0,2}}{head})"
+
+
+def _moves(steps: list[dict]) -> tuple[list[tuple[str, str]], list[str], list[float], list[float]]:
+    """(thing, where it is set down) for each move, the things picked and not set down, each knob turn's angle, each
+    drawer's end state (+1 open, -1 closed)."""
+    moves: list[tuple[str, str]] = []
+    lifted: list[str] = []
+    turns: list[float] = []
+    drawers: list[float] = []
+    held: str | None = None
+    for step in steps:
+        p, params = step.get("primitive"), step.get("params", {})
+        if p in ("pick", "grasp_se3"):
+            held = params.get("keypoint_label")
+        elif p == "stack":
+            moves.append((params["keypoint_label"], params["target_label"]))
+            held = None
+        elif p in ("place", "place_in") and held:
+            moves.append((held, params.get("target_label") or params.get("container_label") or ""))
+            held = None
+        elif p == "turn_knob":
+            turns.append(float(params.get("angle", 0.0)))
+        elif p in ("open_drawer", "close_drawer"):  # (a drawer's end state as a turn's: + open, - closed)
+            drawers.append(1.0 if p == "open_drawer" else -1.0)
+    if held:
+        lifted.append(held)
+    return moves, lifted, turns, drawers
+
+
+def contradicted(instruction: str, steps: list[dict]) -> str | None:
+    """The words of `instruction` that ask for the opposite of what `steps` (a plan's leaves, in order) do, or None."""
+    text = " ".join(re.sub(r"[^a-z0-9' ]", " ", instruction.lower()).split())
+    if _AT_ONCE.search(text):
+        if m := re.search(r"\b(?:on and off|off and on|open and (?:closed?|shut)|(?:closed?|shut) and open)\b", text):
+            return f"{m.group(0)} at once"
+        for a, b in _OPPOSED:
+            if (m := re.search(a, text)) and (n := re.search(b, text)):
+                return f"{m.group(0)} ... {n.group(0)} at once"
+    moves, lifted, turns, drawers = _moves(steps)
+    for thing, dest in moves:
+        x, t = _thing(thing, dest), _thing(dest, thing)
+        # the destination moved onto the thing by a step of the plan itself: the planner's own check sees that order
+        reversed_too = any(_names(m, dest, thing) and _names(d, thing, dest) for m, d in moves)
+        for pattern in (
+            rf"\b{_KEEP} {x} {_AWAY} {t}",  # "... and also keep it out of the basket"
+            rf"\b{x} {_STAY} {_AWAY} {t}",
+            rf"\b{_KEEP} {x} {_PUT_BACK}",  # "... but leave it where it is"
+            rf"\b{x} {_STAY} {_PUT_BACK}",
+            *([] if reversed_too else [_reverse(t, x)]),
+        ):
+            if m := _said(pattern, text):
+                return m.group(0)
+    for thing in lifted:
+        x = _thing(thing)
+        for pattern in (
+            rf"\b{_KEEP} {x} (?:\w+ )?on the (?:table|counter|worktop|floor)\b",  # "lift it and leave it on the table"
+            rf"\b{x} {_STAY} (?:\w+ )?on the (?:table|counter|worktop|floor)\b",
+            rf"\bwithout (?:lifting|raising|picking) {x}",
+        ):
+            if m := _said(pattern, text):
+                return m.group(0)
+    for angle in turns:
+        state = "off" if angle > 0 else "on"  # the opposite of the turn's own end state
+        if m := _said(rf"\b(?:{_KEEP} (?:it|the (?:\w+ ){{0,2}}{_SWITCHED})|{_STAY}) {state}\b(?! {_NOUN})", text):
+            return m.group(0)
+    for sense in drawers:
+        state = r"(?:closed|shut)" if sense > 0 else r"open"
+        if m := _said(rf"\b(?:{_KEEP} (?:it|the (?:\w+ ){{0,2}}drawer)|{_STAY}) (?:\w+ )?{state}\b", text):
+            return m.group(0)
+    return None
+
+
+def _names(label: str, meant: str, other: str) -> bool:
+    """`label` names the thing `meant`: its head noun, or the whole label when `other` has the same head ("red cube"
+    and "green cube")."""
+    if meant.split()[-1:] == other.split()[-1:]:
+        return label == meant
+    return label.split()[-1:] == meant.split()[-1:]
+
+
+def _reverse(t: str, x: str) -> str:
+    """The destination said to rest on or in the thing carried ("... while the green cube stays on top of it")."""
+    return rf"\b{t} (?:{_STAY} |is |rests |resting |sits |sitting )?(?:on top of|atop|on|in|inside) {x}\b"
+
+
+def _said(pattern: str, text: str) -> re.Match | None:
+    """The first match of `pattern` in `text` not said as what not to do ("don't leave the stove on; turn it off",
+    "rather than leaving it on the table")."""
+    for m in re.finditer(pattern, text):
+        if not _NOT_TO_DO.search(text[: m.start()]):
+            return m
+    return None
+
+
+# A sentence that only says a thing is there (and where): "there's a handle on the cabinet drawer."
+_THERE = re.compile(
+    r"(?:there(?:'s| is| are)|here(?:'s| is| are)) (?:a|an|the|one|two|three|some) (?:[a-z]+ ){0,3}?[a-z]+"
+    r"(?: (?:on|in|inside|at|by|next to|beside|near|under|behind|in front of|on top of) (?:the|a|an) (?:[a-z]+ ){0,3}?"
+    r"[a-z]+)?\s*[.!]?"
+)
+_SAYS_MORE = re.compile(r"\b(?:that|which|who|goes|go|should|needs?|wants?|must|belongs?|has to|have to)\b")
+
+
+def only_what_is_there(instruction: str) -> bool:
+    """Every sentence of `instruction` only says that a thing is there: a statement with nothing asked of it."""
+    said = [t for t in re.split(r"(?<=[.;!?])\s+", instruction.strip().lower()) if t]
+    return bool(said) and all(_THERE.fullmatch(t) and not _SAYS_MORE.search(t) for t in said)
