@@ -317,7 +317,10 @@ def class_members(prompt: str, names: list[str]) -> set[int] | None:
     if not words:
         return None
     lexicon = nouns()
-    for noun in _noun_of(words):
+    said = _noun_of(words)
+    if len(words) > 1 and words[-1] in ANYTHING:  # "the dairy thing", "the dairy item": a dairy product
+        said = [f"{' '.join(words[:-1])} product", " ".join(words[:-1])]
+    for noun in said:
         # "the receptacle": what receives things put in it, as "the container" (WordNet files baskets and bowls
         # under container, not under its narrower receptacle)
         noun = {"receptacle": "container", "receptacles": "containers"}.get(noun, noun)

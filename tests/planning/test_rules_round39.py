@@ -187,3 +187,39 @@ def test_a_place_before_a_thing_is_reached_by_a_push():
 )
 def test_wordings_of_round_39_read_as_meant(text, clauses):
     assert read(text) == clauses
+
+
+@pytest.mark.parametrize(
+    ("text", "clauses"),
+    [
+        # a closing remark about the request itself
+        ("the jug in the sink - that's the whole job today", ["put obj=jug relation=in target=sink"]),
+        ("i'd like the mug on the tray - nothing else needs to move", ["put obj=mug relation=on target=tray"]),
+        ("mug into the sink - just that one", ["put obj=mug relation=in target=sink"]),
+        ("the tray on the shelf, that's the goal here", ["put obj=tray relation=on target=shelf"]),
+    ],
+)
+def test_a_closing_remark_is_no_step(text, clauses):
+    assert read(text) == clauses
+
+
+def test_a_sentence_that_only_sets_the_scene_is_set_aside():
+    """ "Just a placement test this time, nothing fancy. ...": no verb, no goal, nothing of the scene named."""
+    scene = _kitchen()
+    result = plan("Quick sanity run this morning, nothing fancy. The jug onto the tray.", scene)
+    assert result.ok, result.error
+    assert leaves(result) == [("pick", "jug"), ("place", "tray")]
+    # a sentence that names a thing the scene lacks (perception looked for it and found none) is no scene-setting
+    lacking = view(
+        inventory=scene.inventory, unresolved={"banana": "none found"}, jug=(0.4, 0.1, 0.05), tray=(0.6, 0.2, 0.01)
+    )
+    assert not plan("Quick sanity run with the banana. The jug onto the tray.", lacking).ok
+
+
+def test_the_learned_reader_never_reads_past_a_thing_of_a_colour_no_found_phrase_has():
+    """ "... toss the yellow block in there as well" with only a green block: the yellow one is absent."""
+    from spark_core.planning.learned_reader.fallback import misread
+
+    known = {"green", "block", "basket"}
+    assert not misread("yellow block", known)
+    assert misread("green block", known)

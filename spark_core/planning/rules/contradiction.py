@@ -25,6 +25,8 @@ _STAY = r"(?:stays?|staying|remains?|remaining|is kept|is left)"
 _AWAY = r"(?:out of|outside(?: of)?|away from|off)"
 _SWITCHED = r"(?:stove|burner|hob|cooker|cooktop|oven|range|heat|knob|dial|lamp|light)"
 _NOUN = r"(?:the|top|a|an|its|it)\b"  # "leave it on the plate": a place, not a state
+# Up to two words before a thing's noun, none a word that joins or places ("the middle and red" is no red thing).
+_WORDS = r"(?:(?!(?:and|or|but|then|in|on|of|at|to|with|is|are)\b)\w+ ){0,2}"
 _NOT_TO_DO = re.compile(r"\b(?:don't|dont|do not|not|never|rather than|instead of|no)\s+(?:\w+\s+)?$")
 _PUT_BACK = r"(?:where (?:it|they) (?:is|was|are|were)|in place|untouched|as it is)"
 
@@ -36,7 +38,7 @@ def _thing(label: str, other: str | None = None) -> str:
     head = re.escape(words[-1])
     if other is not None and other.split()[-1] == words[-1] and len(words) > 1:
         head = rf"{re.escape(words[-2])} {head}"
-    return rf"(?:it|the (?:\w+ ){{0,2}}{head})"
+    return rf"(?:it|the {_WORDS}{head})"
 
 
 def _moves(steps: list[dict]) -> tuple[list[tuple[str, str]], list[str], list[float], list[float]]:
@@ -100,11 +102,11 @@ def contradicted(instruction: str, steps: list[dict]) -> str | None:
                 return m.group(0)
     for angle in turns:
         state = "off" if angle > 0 else "on"  # the opposite of the turn's own end state
-        if m := _said(rf"\b(?:{_KEEP} (?:it|the (?:\w+ ){{0,2}}{_SWITCHED})|{_STAY}) {state}\b(?! {_NOUN})", text):
+        if m := _said(rf"\b(?:{_KEEP} (?:it|the {_WORDS}{_SWITCHED})|{_STAY}) {state}\b(?! {_NOUN})", text):
             return m.group(0)
     for sense in drawers:
         state = r"(?:closed|shut)" if sense > 0 else r"open"
-        if m := _said(rf"\b(?:{_KEEP} (?:it|the (?:\w+ ){{0,2}}drawer)|{_STAY}) (?:\w+ )?{state}\b", text):
+        if m := _said(rf"\b(?:{_KEEP} (?:it|the {_WORDS}drawer)|{_STAY}) (?:\w+ )?{state}\b", text):
             return m.group(0)
     return None
 

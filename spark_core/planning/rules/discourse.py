@@ -1744,7 +1744,7 @@ def restructured(instruction: str) -> str:
     # "want red on top, green underneath": a wish said without its "i"
     out = re.sub(r"^(?:want|wanna|wanting)\s+(?!to\b)", "i want ", out)
     # "the one off to the left": on that side
-    out = re.sub(r"\b(?:off|over|out) to the (left|right)\b(?! of\b)", r"on the \1", out)
+    out = re.sub(r"(?<=\bone )(?:off|over|out) to the (left|right)\b(?! of\b)", r"on the \1", out)
     # "the cabinet has a drawer. open it ...": one of its parts, pointed out
     out = re.sub(
         r"(^|[.;!?] )the ([a-z ]+?) has (?:a|an|one) ((?:[a-z]+ )?(?:drawer|handle|knob|dial|door|lid|switch))"

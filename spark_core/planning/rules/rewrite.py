@@ -962,6 +962,13 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(r"\s+[-\u2013\u2014]+\s+", ", ", text)  # a dash between two parts is a comma
     # "basket it", "plate the bowl": a container or a surface said as the verb puts the thing in or on it
     text = re.sub(rf"(^|[,;:] |\band |\bthen )({'|'.join(CONTAINERS)}) (it|them)\b", r"\1put \3 in the \2", text)
+    # ... "could you basket the ketchup?": said of a thing, only the containers one packs things into
+    text = re.sub(
+        r"(^(?:(?:could|can|would|will) you |please )?|[,;:] |\band |\bthen )(basket|bin|box|crate|hamper|drawer|jar) "
+        r"((?:the|a|an|that|this) [^,;:.?!]+?)(?=\s*(?:$|[,;:.!?]|\band\b|\bthen\b|\bplease\b))",
+        r"\1put \3 in the \2",
+        text,
+    )
     text = re.sub(
         rf"(^|[,;:] |\band |\bthen )({'|'.join(_SURFACES)}) (it|them|(?:the|a|an|that|this) [^,;:.]+?)"
         r"(?=\s*(?:$|[,;:.!?]|\band\b|\bthen\b))",
@@ -1136,6 +1143,15 @@ _SPOKEN_PLAINLY: tuple[tuple[str, str], ...] = (
         "",
     ),
     (r"(?:,\s*|\s+)(?:and )?(?:then )?you can stop(?: there| after that| then| now| here)?\s*[.!]*$", ""),
+    # "... - that's the whole job this time", "... - nothing else needs to move", "... - just that bottle"
+    (
+        r"[,.;!:-]\s*(?:(?:and|but|so|ok|okay)\s+)?(?:(?:that is|thats|that|this is|that will be) (?:the whole "
+        r"(?:job|task|thing|point)|the (?:finish line|goal|plan|idea|job|task|wish|aim|end of it)|all (?:i am|we are) "
+        r"after|what i (?:want|need|am after))|nothing else (?:needs to|has to|should|will|is to)? ?(?:move|change|be "
+        r"touched|be moved|needs touching|matters)|(?:just|only) (?:that|this)(?: one| bottle| thing| item| box)?)"
+        r"(?: this time| today| here| for now| this round)?\s*[.!]*$",
+        "",
+    ),
     # "take it out and stack it on ...": out from where it is, which the pick says already (a drawer pulled out is
     # opened, so only takes)
     (r"\b(take|get|lift) (it|them) out\b(?! of)", r"\1 \2"),
@@ -1535,6 +1551,10 @@ def _arrow_prep(said: str | None, place: str) -> str:
     if said:
         return {"in": "into", "on": "onto", "inside": "into", "to": "onto"}.get(said, said)
     return "into" if place.split()[-1:] in ([c] for c in CONTAINERS) else "onto"
+
+
+# A stack said as a thing ("a three-block tower with blue at the bottom, ..."): its levels follow, read as such.
+_A_STACK = r"(?:a|an|the|one) (?:[\w-]+ )?(?:stack|tower|pile)\b"
 
 
 def _gripped_by_part(text: str) -> str:
@@ -2115,16 +2135,8 @@ def imperatives(instruction: str) -> list[str]:
             out.append(f"pick up {lifted.group(1)}")
             continue
         # (said as a wish: "i want red on top, green underneath")
-        tower = _tower(
-            re.split(
-                r"\s*,\s*|\s+and\s+",
-                re.sub(
-                    r"^(?:i|we) (?:want|need|would like|'d like) (?!(?:a|an|the|one) (?:\w+ )?(?:stack|tower|pile)\b)",
-                    "",
-                    s,
-                ),
-            )
-        )
+        wish = re.sub(rf"^(?:i|we) (?:want|need|would like|'d like) (?!{_A_STACK})", "", s)
+        tower = _tower(re.split(r"\s*,\s*|\s+and\s+", wish))
         if tower:  # "red cube on top, green cube underneath": a stack said by where each one is
             out += tower
             continue
