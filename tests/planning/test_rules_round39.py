@@ -100,6 +100,8 @@ def test_what_the_words_ask_against_the_steps(text, steps):
         "put the mug on the tray and leave the jug where it is",
         "lift the jug off the table",
         "open the cupboard drawer and keep it open",
+        # "it" is the thing carried; a place it is located by is no destination resting on it
+        "the mug sitting next to the tray, get it on top of the tray instead",
     ],
 )
 def test_a_state_that_agrees_with_the_plan_is_no_contradiction(text):

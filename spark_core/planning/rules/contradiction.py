@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import re
 
+from ...perception.qualifiers import split_relation
+
 # Said to hold at once: two opposite relations or states joined by one of these cannot both be met.
 _AT_ONCE = re.compile(r"\b(?:at the same time|simultaneously|at once|both at once)\b")
 _OPPOSED = (
@@ -31,14 +33,20 @@ _NOT_TO_DO = re.compile(r"\b(?:don't|dont|do not|not|never|rather than|instead o
 _PUT_BACK = r"(?:where (?:it|they) (?:is|was|are|were)|in place|untouched|as it is)"
 
 
-def _thing(label: str, other: str | None = None) -> str:
-    """A pattern for a plan label as said: "it", or the label's head noun after "the" and up to two words; when the
-    other label shares the head ("red cube", "green cube") the word before the head must be said too."""
-    words = label.split()
+def _thing(label: str, other: str | None = None, pronoun: bool = True) -> str:
+    """A pattern for a plan label as said: "it" (unless not `pronoun`), or the label's head noun (of the thing, not of
+    what it is located by: "red cube under green") after "the" and up to two words; when the other label shares the
+    head ("red cube", "green cube") the word before the head must be said too."""
+    words, others = _own(label).split(), _own(other).split() if other else []
     head = re.escape(words[-1])
-    if other is not None and other.split()[-1] == words[-1] and len(words) > 1:
+    if others[-1:] == words[-1:] and len(words) > 1:
         head = rf"{re.escape(words[-2])} {head}"
-    return rf"(?:it|the {_WORDS}{head})"
+    return rf"(?:it|the {_WORDS}{head})" if pronoun else rf"(?:the {_WORDS}{head})"
+
+
+def _own(label: str) -> str:
+    """The words of a label that name the thing itself: "red cube under green" -> "red cube"."""
+    return split_relation(label)[0] or label
 
 
 def _moves(steps: list[dict]) -> tuple[list[tuple[str, str]], list[str], list[float], list[float]]:
@@ -87,7 +95,7 @@ def contradicted(instruction: str, steps: list[dict]) -> str | None:
             rf"\b{x} {_STAY} {_AWAY} {t}",
             rf"\b{_KEEP} {x} {_PUT_BACK}",  # "... but leave it where it is"
             rf"\b{x} {_STAY} {_PUT_BACK}",
-            *([] if reversed_too else [_reverse(t, x)]),
+            *([] if reversed_too else [_reverse(_thing(dest, thing, pronoun=False), x)]),
         ):
             if m := _said(pattern, text):
                 return m.group(0)
