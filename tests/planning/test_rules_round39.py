@@ -106,6 +106,12 @@ def test_a_state_that_agrees_with_the_plan_is_no_contradiction(text):
     assert plan(text, _kitchen()).ok, plan(text, _kitchen()).error
 
 
+def test_a_thing_ruled_out_by_colour_is_named_by_its_noun():
+    """ "stack the non-blue block on the blue one": the block carried is "block not blue", no blue thing."""
+    steps = [_step("pick", keypoint_label="block not blue"), _step("place", target_label="blue block")]
+    assert contradicted("stack the non-blue block on the blue one", steps) is None
+
+
 def test_the_thing_carried_said_as_it_is_no_destination_resting_on_it():
     """ "the red cube sitting under the green one, get it on top of the green one instead": "it" is the red cube."""
     steps = [_step("pick", keypoint_label="red cube under green"), _step("place", target_label="green cube")]

@@ -45,8 +45,9 @@ def _thing(label: str, other: str | None = None, pronoun: bool = True) -> str:
 
 
 def _own(label: str) -> str:
-    """The words of a label that name the thing itself: "red cube under green" -> "red cube"."""
-    return split_relation(label)[0] or label
+    """The words of a label that name the thing itself: "red cube under green" -> "red cube", "block not blue" ->
+    "block"."""
+    return re.split(r"\s+not\s+", split_relation(label)[0])[0] or label
 
 
 def _moves(steps: list[dict]) -> tuple[list[tuple[str, str]], list[str], list[float], list[float]]:
@@ -129,7 +130,7 @@ def _names(label: str, meant: str, other: str) -> bool:
 
 def _reverse(t: str, x: str) -> str:
     """The destination said to rest on or in the thing carried ("... while the green cube stays on top of it")."""
-    return rf"\b{t} (?:{_STAY} |is |rests |resting |sits |sitting )?(?:on top of|atop|on|in|inside) {x}\b"
+    return rf"\b{t} (?:{_STAY}|is|rests|resting|sits|sitting) (?:on top of|atop|on|in|inside) {x}\b"
 
 
 def _said(pattern: str, text: str) -> re.Match | None:
