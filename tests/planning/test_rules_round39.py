@@ -237,3 +237,10 @@ def test_the_learned_reader_never_reads_past_a_thing_of_a_colour_no_found_phrase
     known = {"green", "block", "basket"}
     assert not misread("yellow block", known)
     assert misread("green block", known)
+
+
+def test_a_switch_or_drawer_is_not_worked_by_a_move():
+    """ "turn on the stove by pouring it into the wine bottle" (probe56's nonsense); a knob turned is a means."""
+    refused = plan("switch the oven on by stacking it on the tray", _kitchen())
+    assert not refused.ok and "not done by stacking" in refused.error
+    assert plan("switch the oven on by turning its knob", _kitchen()).ok

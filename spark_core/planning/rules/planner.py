@@ -322,6 +322,17 @@ class RulesPlanner:
                     f"could not find {phrase!r} in the scene: perception found one {kind!r} only "
                     f"(understood: {understood}; found in the scene: {seen})"
                 )
+        for c in clauses:  # "turn on the stove by pouring it into the bottle": a means no switch or drawer works by
+            means = (
+                re.search(r"\bby (\w+ing)\b", c.obj or "")
+                if c.action in ("turn_on", "turn_off", "open", "close")
+                else None
+            )
+            if means and _lemma(means.group(1)) in _MOVE_VERBS:
+                raise Impossible(
+                    f"{c.text!r}: {c.action.replace('_', ' ')} is not done by {means.group(1)} (understood: "
+                    f"{understood}; found in the scene: {seen})"
+                )
         for c in clauses:  # "put the stove on the plate": what is fixed in place is no thing to carry
             moved = c.obj if c.action in ("pick", "put", "stack", "push", "sort") else None
             if moved and not is_pronoun(moved) and _kind(moved) in FIXED and not c.together and not c.to_arm:
@@ -921,6 +932,16 @@ FITS_MARGIN = 1.2
 
 # The first words of the lexicon's verbs of carrying, pushing and stacking ("pick" of "pick up", "shove", "place").
 _CARRY_VERBS = frozenset(f.split()[0] for a in ("pick", "put", "stack", "push", "sort") for f in VERBS[a])
+# Verbs that move or pour a thing or scrub with it: no means of switching or opening ("by pouring it into ...").
+_MOVE_VERBS = frozenset(f.split()[0] for a in ("put", "stack", "sort", "pour", "scrub") for f in VERBS[a]) - {"turn"}
+
+
+def _lemma(gerund: str) -> str:
+    """ "pouring" -> "pour" (the lexicon's verb lemma)."""
+    from lemminflect import getLemma
+
+    lemmas = getLemma(gerund, upos="VERB")
+    return lemmas[0] if lemmas else gerund
 
 
 def _carried_as_said(kind: str, instruction: str) -> bool:
