@@ -24,24 +24,33 @@ _OPPOSED = (
 # Keeping a thing in a state: the verbs that say it, before the thing ("keep it ...") or after it ("it stays ...").
 _KEEP = r"(?:keep|keeping|keeps|leave|leaving|leaves)"
 _STAY = r"(?:stays?|staying|remains?|remaining|is kept|is left)"
+_MAY = r"(?:can |should |will |must |has to |needs to )?"
 _AWAY = r"(?:out of|outside(?: of)?|away from|off)"
 _SWITCHED = r"(?:stove|burner|hob|cooker|cooktop|oven|range|heat|knob|dial|lamp|light)"
 _NOUN = r"(?:the|top|a|an|its|it)\b"  # "leave it on the plate": a place, not a state
-# Up to two words before a thing's noun, none a word that joins or places ("the middle and red" is no red thing).
-_WORDS = r"(?:(?!(?:and|or|but|then|in|on|of|at|to|with|is|are)\b)\w+ ){0,2}"
 _NOT_TO_DO = re.compile(r"\b(?:don't|dont|do not|not|never|rather than|instead of|no)\s+(?:\w+\s+)?$")
-_PUT_BACK = r"(?:where (?:it|they) (?:is|was|are|were)|in place|untouched|as it is)"
 
 
 def _thing(label: str, other: str | None = None, pronoun: bool = True) -> str:
-    """A pattern for a plan label as said: "it" (unless not `pronoun`), or the label's head noun (of the thing, not of
-    what it is located by: "red cube under green") after "the" and up to two words; when the other label shares the
-    head ("red cube", "green cube") the word before the head must be said too."""
+    """A pattern for a plan label as said: "it" (unless not `pronoun`), or "the" and the label's head noun (of the
+    thing, not of what it is located by: "red cube under green") with only words of the label before it (so "the
+    other black bowl" is never the black bowl planned); when the other label shares the head ("red cube", "green
+    cube") the word before the head must be said too."""
     words, others = _own(label).split(), _own(other).split() if other else []
     head = re.escape(words[-1])
     if others[-1:] == words[-1:] and len(words) > 1:
         head = rf"{re.escape(words[-2])} {head}"
-    return rf"(?:it|the {_WORDS}{head})" if pronoun else rf"(?:the {_WORDS}{head})"
+    said = "|".join(re.escape(w) for w in words[:-1] if w not in ("and", "or", "the"))
+    before = rf"(?:(?:{said}) ){{0,2}}" if said else ""
+    return rf"(?:it|the {before}{head})" if pronoun else rf"(?:the {before}{head})"
+
+
+def _worked(label: str, parts: tuple[str, ...], kinds: str) -> str:
+    """A pattern for the thing a knob or handle label works, as said: "it", or "the" and the label's words without
+    the part ("top drawer handle" -> "the top drawer"), else the kind alone with no word before it ("the stove")."""
+    words = [w for w in _own(label).split() if w not in parts]
+    named = rf"the (?:(?:{'|'.join(map(re.escape, words[:-1]))}) ){{0,2}}{re.escape(words[-1])}" if words else ""
+    return rf"(?:it|{named}|the {kinds})" if named else rf"(?:it|the {kinds})"
 
 
 def _own(label: str) -> str:
@@ -50,13 +59,15 @@ def _own(label: str) -> str:
     return re.split(r"\s+not\s+", split_relation(label)[0])[0] or label
 
 
-def _moves(steps: list[dict]) -> tuple[list[tuple[str, str]], list[str], list[float], list[float]]:
-    """(thing, where it is set down) for each move, the things picked and not set down, each knob turn's angle, each
-    drawer's end state (+1 open, -1 closed)."""
+def _moves(
+    steps: list[dict],
+) -> tuple[list[tuple[str, str]], list[str], list[tuple[str, float]], list[tuple[str, float]]]:
+    """(thing, where it is set down) for each move, the things picked and not set down, (knob, angle) of each turn,
+    (handle, end state: +1 open, -1 closed) of each drawer worked."""
     moves: list[tuple[str, str]] = []
     lifted: list[str] = []
-    turns: list[float] = []
-    drawers: list[float] = []
+    turns: list[tuple[str, float]] = []
+    drawers: list[tuple[str, float]] = []
     held: str | None = None
     for step in steps:
         p, params = step.get("primitive"), step.get("params", {})
@@ -69,9 +80,9 @@ def _moves(steps: list[dict]) -> tuple[list[tuple[str, str]], list[str], list[fl
             moves.append((held, params.get("target_label") or params.get("container_label") or ""))
             held = None
         elif p == "turn_knob":
-            turns.append(float(params.get("angle", 0.0)))
-        elif p in ("open_drawer", "close_drawer"):  # (a drawer's end state as a turn's: + open, - closed)
-            drawers.append(1.0 if p == "open_drawer" else -1.0)
+            turns.append((params.get("keypoint_label", ""), float(params.get("angle", 0.0))))
+        elif p in ("open_drawer", "close_drawer"):
+            drawers.append((params.get("keypoint_label", ""), 1.0 if p == "open_drawer" else -1.0))
     if held:
         lifted.append(held)
     return moves, lifted, turns, drawers
@@ -94,8 +105,6 @@ def contradicted(instruction: str, steps: list[dict]) -> str | None:
         for pattern in (
             rf"\b{_KEEP} {x} {_AWAY} {t}",  # "... and also keep it out of the basket"
             rf"\b{x} {_STAY} {_AWAY} {t}",
-            rf"\b{_KEEP} {x} {_PUT_BACK}",  # "... but leave it where it is"
-            rf"\b{x} {_STAY} {_PUT_BACK}",
             *([] if reversed_too else [_reverse(_thing(dest, thing, pronoun=False), x)]),
         ):
             if m := _said(pattern, text):
@@ -109,13 +118,15 @@ def contradicted(instruction: str, steps: list[dict]) -> str | None:
         ):
             if m := _said(pattern, text):
                 return m.group(0)
-    for angle in turns:
+    for knob, angle in turns:
         state = "off" if angle > 0 else "on"  # the opposite of the turn's own end state
-        if m := _said(rf"\b(?:{_KEEP} (?:it|the {_WORDS}{_SWITCHED})|{_STAY}) {state}\b(?! {_NOUN})", text):
+        it = _worked(knob, ("knob", "dial", "switch"), _SWITCHED)
+        if m := _said(rf"\b(?:{_KEEP} {it}|{it} {_MAY}{_STAY}) {state}\b(?! {_NOUN})", text):
             return m.group(0)
-    for sense in drawers:
+    for handle, sense in drawers:
         state = r"(?:closed|shut)" if sense > 0 else r"open"
-        if m := _said(rf"\b(?:{_KEEP} (?:it|the {_WORDS}drawer)|{_STAY}) (?:\w+ )?{state}\b", text):
+        it = _worked(handle, ("handle",), "drawer")
+        if m := _said(rf"\b(?:{_KEEP} {it}|{it} {_MAY}{_STAY}) (?:\w+ )?{state}\b", text):
             return m.group(0)
     return None
 
