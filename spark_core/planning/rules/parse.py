@@ -216,7 +216,13 @@ def parse_instruction(instruction: str) -> list[Clause]:
             # without an article only with a preposition that can only say where it goes ("red block onto the plate")
             or re.match(r"[a-z][\w ]* (?:into|onto|on to) (?:the|a|an) \w", part)
             # "red block to the green tray": a noun phrase (not a verb: "fly to the moon") and a destination last
-            or re.fullmatch(r"(?:the |a |an )?[a-z][\w' ]*(?<!next)(?<!close) to (?:the|a|an) \w+(?: \w+)?", part)
+            # (a possessive in it: "the wooden cabinet's black bowl over to the plate")
+            or re.fullmatch(
+                r"(?:the |a |an )(?!(?:it|that|there|what|here)'s\b)[a-z][\w ]*(?:'s [\w ]+)?(?<!next)(?<!close) to "
+                r"(?:the|a|an) \w+(?: \w+)?",
+                part,
+            )
+            or re.fullmatch(r"[a-z][\w ]*(?<!next)(?<!close) to (?:the|a|an) \w+(?: \w+)?", part)
             and not is_verb(part.split()[0])
             # after a thing named on its own: "blue block, then red block on it"
             or previous == "mention"
