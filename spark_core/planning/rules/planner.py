@@ -15,7 +15,7 @@ from ...perception.variants import CONSUMABLES, KIND_OF, PACKAGING
 from ..protocol import PlanRequest, PlanResult
 from .afford import Reading, unplaced_variety
 from .afford import best as afforded
-from .contradiction import contradicted, only_what_is_there
+from .contradiction import contradicted
 from .discourse import restructured
 from .kinds import modifier_for_thing, other_contents, other_variety
 from .lexicon import CLEANERS, CONTAINERS, CONTENTS, FIXED, REGIONS, SOLIDS, VERBS
@@ -24,7 +24,7 @@ from .parse import Clause, ParseError, head_noun, is_pronoun, parse_instruction
 from .phrases import singular
 from .qualify import bare_rank
 from .reader import describe, readings, unused_mentions
-from .remarks import context_sentences, names_absent, remarks, trailing_remarks
+from .remarks import context_sentences, names_absent, only_what_is_there, remarks, trailing_remarks
 from .spelling import corrected
 from .stepwise import steps
 

@@ -210,3 +210,18 @@ def context_sentences(instruction: str, found: list[str], says_a_goal: Callable[
     if not aside or len(aside) == len(said):
         return instruction, []
     return " ".join(t for t in said if t not in aside), aside
+
+
+# A sentence that only says a thing is there (and where): "there's a handle on the cabinet drawer."
+_THERE = re.compile(
+    r"(?:there(?:'s| is| are)|here(?:'s| is| are)) (?:a|an|the|one|two|three|some) (?:[a-z]+ ){0,3}?[a-z]+"
+    r"(?: (?:on|in|inside|at|by|next to|beside|near|under|behind|in front of|on top of) (?:the|a|an) (?:[a-z]+ ){0,3}?"
+    r"[a-z]+)?\s*[.!]?"
+)
+_SAYS_MORE = re.compile(r"\b(?:that|which|who|goes|go|should|needs?|wants?|must|belongs?|has to|have to)\b")
+
+
+def only_what_is_there(instruction: str) -> bool:
+    """Every sentence of `instruction` only says that a thing is there: a statement with nothing asked of it."""
+    said = [t for t in re.split(r"(?<=[.;!?])\s+", instruction.strip().lower()) if t]
+    return bool(said) and all(_THERE.fullmatch(t) and not _SAYS_MORE.search(t) for t in said)
