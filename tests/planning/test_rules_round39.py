@@ -258,3 +258,27 @@ def test_a_switch_or_drawer_is_not_worked_by_a_move():
     refused = plan("switch the oven on by stacking it on the tray", _kitchen())
     assert not refused.ok and "not done by stacking" in refused.error
     assert plan("switch the oven on by turning its knob", _kitchen()).ok
+
+
+@pytest.mark.parametrize(
+    ("text", "clauses"),
+    [
+        # a container said as the verb, of a thing named
+        ("could you bin the jug?", ["put obj=jug relation=in target=bin"]),
+        # a chain of places is no phrase said twice
+        (
+            "put the mug on the jug, the jug on the tray",
+            ["put obj=mug relation=on target=jug", "put obj=jug relation=on target=tray"],
+        ),
+    ],
+)
+def test_more_wordings_of_round_39_read_as_meant(text, clauses):
+    assert read(text) == clauses
+
+
+def test_a_part_of_a_thing_located_by_another_keeps_its_owner_first():
+    """ "the drawer of the cabinet behind the red block": the cabinet's drawer, by the block (the rules say "behind"
+    as "near" to perception)."""
+    from spark_core.planning.rules.phrases import object_phrase
+
+    assert object_phrase("the drawer of the cabinet behind the red block") == "cabinet drawer near red block"
