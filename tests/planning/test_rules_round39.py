@@ -282,3 +282,9 @@ def test_a_part_of_a_thing_located_by_another_keeps_its_owner_first():
     from spark_core.planning.rules.phrases import object_phrase
 
     assert object_phrase("the drawer of the cabinet behind the red block") == "cabinet drawer near red block"
+
+
+def test_at_once_is_immediately():
+    """ "the drawer is closed, open it at once": "at once" says when, not that two states hold together."""
+    opened = [_step("open_drawer", keypoint_label="drawer handle", distance=0.18)]
+    assert contradicted("the drawer is closed, open it at once", opened) is None

@@ -15,7 +15,7 @@ import re
 from ...perception.qualifiers import split_relation
 
 # Said to hold at once: two opposite relations or states joined by one of these cannot both be met.
-_AT_ONCE = re.compile(r"\b(?:at the same time|simultaneously|at once|both at once)\b")
+_AT_ONCE = re.compile(r"\b(?:at the same time|simultaneously|both at once)\b")  # (not "at once": "immediately")
 _OPPOSED = (
     (r"\bin front of\b|\bto the front\b|\bfront of\b", r"\bbehind\b|\bback of\b"),
     (r"\bopen(?:ed)?\b", r"\bclosed?\b|\bshut\b"),
