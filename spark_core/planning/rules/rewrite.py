@@ -9,6 +9,7 @@ from collections.abc import Callable
 
 from lemminflect import getAllLemmas, getLemma
 
+from ...perception.variants import PARTS
 from .lexicon import (
     CONTAINERS,
     CONTENTS,
@@ -1820,10 +1821,6 @@ def _tower_by_ordinals(items: list[str]) -> list[str] | None:
     return [f"stack {a} on {b}" for b, a in zip(order, order[1:])]
 
 
-# Parts a thing is built with: "the cabinet has a drawer" says what it is, not where a thing goes.
-_PARTS = ("drawer", "handle", "knob", "dial", "door", "lid", "shelf", "tier", "rim", "switch", "button")
-
-
 def _holds(text: str) -> str | None:
     """ "the basket should contain the block", "the plate needs the block on it": a carry into the holder."""
     modals = "|".join(re.escape(m) for m in sorted(MODALS, key=len, reverse=True))
@@ -1839,8 +1836,8 @@ def _holds(text: str) -> str | None:
     holder, thing, prep = m.group(1), m.group(2), m.group(3)
     if not _is_noun_phrase(holder):
         return None
-    if prep is None and re.fullmatch(rf"(?:a|an) (?:\w+ )?(?:{'|'.join(_PARTS)})", thing):
-        return None  # "the cabinet has a drawer": one of its parts, said to be there
+    if prep is None and re.fullmatch(rf"(?:a|an) (?:\w+ )?(?:{'|'.join(sorted(PARTS))})", thing):
+        return None  # "the cabinet has a drawer": one of its parts (perception's parts table), said to be there
     if prep is None:
         prep = "in" if _head(holder) in CONTAINERS else "on"
     return f"put {thing} {'in' if prep in ('in', 'inside', 'into') else 'on'} {holder}"
