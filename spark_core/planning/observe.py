@@ -14,6 +14,7 @@ from ..perception.resolver_protocol import Resolver
 from ..perception.summary import summarise
 from .protocol import SceneView
 from .rules.chunks import noun_chunks
+from .rules.descriptions import descriptions
 from .rules.discourse import restructured
 from .rules.lexicon import CLEANERS, CONTAINERS, CONTENTS
 from .rules.mentions import clause_mentions, read_past, stray_nouns
@@ -39,7 +40,7 @@ def phrases_for(instruction: str, remarks: bool = True) -> list[str]:
         clauses = parse_instruction(instruction)
     except ParseError:
         # no reading gives anything to look for: the sentence's noun phrases, for the learned reader to rank goals over
-        return after or noun_chunks(instruction)
+        return _with_described(instruction, after or noun_chunks(instruction), remarks)
     out: dict[str, None] = {}
     for c in clauses:
         for p in (c.obj, c.target, c.tool, c.source):
@@ -73,7 +74,15 @@ def phrases_for(instruction: str, remarks: bool = True) -> list[str]:
     for kept, _ in trailing_remarks(instruction, [])[:2] if remarks else []:
         for p in phrases_for(kept, remarks=False):
             out.setdefault(p, None)
-    return list(out)
+    return _with_described(instruction, list(out), remarks)
+
+
+def _with_described(instruction: str, found: list[str], remarks: bool) -> list[str]:
+    """`found`, and with `remarks` the phrases of the request read without the sentences that only describe
+    (rules/descriptions.py: the planner reads it so when the whole refuses)."""
+    kept, described = descriptions(instruction, None) if remarks else (instruction, [])
+    extra = phrases_for(restructured(kept)) if described else []
+    return list(dict.fromkeys([*found, *extra]))
 
 
 def _gripped(clauses: list[Clause]) -> list[str]:

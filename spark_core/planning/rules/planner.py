@@ -16,6 +16,7 @@ from ..protocol import PlanRequest, PlanResult
 from .afford import Reading, unplaced_variety
 from .afford import best as afforded
 from .contradiction import contradicted
+from .descriptions import descriptions
 from .discourse import restructured
 from .kinds import modifier_for_thing, other_contents, other_variety
 from .lexicon import CLEANERS, CONTAINERS, CONTENTS, FIXED, REGIONS, SOLIDS, VERBS
@@ -133,6 +134,15 @@ class RulesPlanner:
             if not isinstance(read, PlanResult):
                 children, understood = read
                 return children, [*understood, *(f"set aside as a remark: {s!r}" for s in said)]
+        # the sentences that only describe set aside (rules/descriptions.py): the rest read as a whole request,
+        # remarks and all (it has no description left, so this recursion ends)
+        kept, said = descriptions(request.instruction, found)
+        if said:
+            rest = replace(request, instruction=restructured(kept))  # said alone, its own lead-in is plain
+            read = self._read(rest, t0, stepwise=True)
+            got = self._without_remarks(rest, t0) if isinstance(read, PlanResult) else read
+            if got is not None:
+                return got[0], [*got[1], *(f"set aside as a description: {s!r}" for s in said)]
         return None
 
     def _learned(self, refusal: PlanResult, request: PlanRequest) -> tuple[list[dict], list[str]] | PlanResult:
