@@ -8,7 +8,7 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
-from .colors import normalise_colours
+from .colors import colours_in, normalise_colours
 from .detection import Detection
 from .frame import CameraFrame
 from .learned.categories import libero_description
@@ -129,7 +129,16 @@ class SimSegmenter:
             elif mismatched:
                 c -= MISMATCH_PENALTY
             out[label] = c
-        return out
+        return self._colour_said(text, out)
+
+    def _colour_said(self, text: str, scores: dict[str, float]) -> dict[str, float]:
+        """ "the black dish" with a black bowl and a plate whose name says no colour: a colour the prompt names
+        picks the object whose name says it over one whose name says none, when both would match otherwise."""
+        want = colours_in(text)
+        said = {label: colours_in(f"{self._names[label]} {self.catalog[label]}") for label in self._labels}
+        if not want or not any(said[label] & want and scores[label] >= self.threshold for label in self._labels):
+            return scores
+        return {label: c - (MISMATCH_PENALTY if not said[label] else 0.0) for label, c in scores.items()}
 
     def names_in(self, frame: CameraFrame) -> list[str]:
         """The names of the catalogued objects this frame shows, once per instance (two black bowls: the name twice;

@@ -4,8 +4,11 @@ other things and wording than where it was found."""
 import pytest
 
 from spark_core.planning.observe import phrases_for
+from spark_core.planning.rules.contradiction import contradicted
 from spark_core.planning.rules.descriptions import descriptions
+from spark_core.planning.rules.transcript import unpunctuated
 from tests.planning.scene_views import leaves, plan, view
+from tests.planning.test_rules_round28 import read
 
 
 def _cups():
@@ -79,3 +82,112 @@ def test_perception_looks_for_what_the_request_alone_names():
     text = "there's a tin on the left and the wicker basket is closer in. end result: the cup in the basket."
     got = phrases_for(text)
     assert {"cup", "basket"} <= set(got)
+
+
+@pytest.mark.parametrize(
+    ("said", "written"),
+    [
+        # a discourse word, then a request's verb: a new sentence
+        ("see the tin yeah grab it and set it on the saucer", "see the tin. grab it and set it on the saucer"),
+        ("take the cup okay now put it on the saucer", "take the cup. put it on the saucer"),
+        # a request's verb right after a thing's name: a new sentence, or a clause about the thing said first
+        (
+            "open the cupboard door take the tin and put it inside",
+            "open the cupboard door. take the tin and put it inside",
+        ),
+        (
+            "the cup that isn't on the tray put that on the saucer",
+            "the cup that isn't on the tray, put that on the saucer",
+        ),
+        ("the cup by the tin i'd like it on the saucer", "the cup by the tin, i'd like it on the saucer"),
+        ("the tin yeah that one lift it up", "the tin, lift it up"),
+        # a word broken off and taken back: what follows replaces it from where its first words were said
+        ("put the cup on the sau- no on the tray", "put the cup on the tray"),
+        ("put the blue- no wait the green cup in the bas- sorry the box", "put the green cup in the box"),
+        # the next level of a stack, said without a comma
+        ("a stack with red on the bottom blue in the middle", "a stack with red on the bottom, blue in the middle"),
+    ],
+)
+def test_breaks_said_aloud_are_written_in(said, written):
+    assert unpunctuated(said) == written
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "put the cup on the saucer now",  # a discourse word with no request after it
+        "turn the stove on and set the pot on it",  # a verb after "and", not after a thing
+        "put the block in the bowl and um then close the drawer",
+        "put the cup on the left-hand saucer",  # a hyphen inside a word is no broken-off word
+        "grab the cup then put it on the saucer",
+    ],
+)
+def test_speech_without_such_breaks_is_left_as_said(text):
+    assert unpunctuated(text) == text
+
+
+def test_a_transcript_plans_as_the_sentences_it_stands_for():
+    scene = _cups()
+    got = plan("see the tin yeah grab it and uh set it down on the saucer", scene)
+    assert got.ok, got.error
+    assert leaves(got)[:2] == [("pick", "tin"), ("place", "saucer")]
+    got = plan("put the tin on the sau- no wait on the cup", scene)
+    assert got.ok, got.error
+    assert leaves(got)[:2] == [("pick", "tin"), ("place", "cup")]
+
+
+def _moved(thing: str, dest: str) -> list[dict]:
+    return [
+        {"primitive": "pick", "params": {"keypoint_label": thing}},
+        {"primitive": "place", "params": {"target_label": dest}},
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "steps"),
+    [
+        # said, then said not to be done, word for word
+        ("close the cupboard drawer but don't close the cupboard drawer", []),
+        ("put the cup on the saucer and then do not put the cup on the saucer", _moved("cup", "saucer")),
+        # a thing made into another
+        ("turn the saucer into a teapot", _moved("saucer", "tin")),
+        ("please convert the cup into a jug", []),
+        # a move, and beside it the thing left where it is
+        ("put the tin on the saucer but leave it just where it is", _moved("tin", "saucer")),
+        # a knob turned on, and kept switched off all along
+        (
+            "switch the oven on while you keep it turned off the whole time",
+            [{"primitive": "turn_knob", "params": {"keypoint_label": "oven knob", "angle": 1.2}}],
+        ),
+    ],
+)
+def test_a_request_that_takes_itself_back_is_contradicted(text, steps):
+    assert contradicted(text, steps) is not None
+
+
+@pytest.mark.parametrize(
+    ("text", "steps"),
+    [
+        ("close the drawer but don't close the cupboard", []),  # another thing not to do
+        ("put the tin on the saucer, then leave it where it is", _moved("tin", "saucer")),  # after the move
+        ("turn the cup upside down into the bowl", _moved("cup", "bowl")),  # no thing made another
+        (
+            "switch the oven on and keep it on the whole time",
+            [{"primitive": "turn_knob", "params": {"keypoint_label": "oven knob", "angle": 1.2}}],
+        ),
+        (
+            "switch the oven on and keep it off the tray",
+            [  # "off the tray": a place
+                {"primitive": "turn_knob", "params": {"keypoint_label": "oven knob", "angle": 1.2}}
+            ],
+        ),
+    ],
+)
+def test_requests_that_only_sound_alike_are_not_contradicted(text, steps):
+    assert contradicted(text, steps) is None
+
+
+def test_an_ordinal_counted_from_the_top_before_a_particle():
+    """ "pull out the second drawer from the top" is read "pull the second drawer from the top out": the count
+    still ends at the particle."""
+    assert read("pull out the second drawer from the top") == ["open obj=second top drawer"]

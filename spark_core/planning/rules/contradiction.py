@@ -28,6 +28,7 @@ _MAY = r"(?:can |should |will |must |has to |needs to )?"
 _AWAY = r"(?:out of|outside(?: of)?|away from|off)"
 _SWITCHED = r"(?:stove|burner|hob|cooker|cooktop|oven|range|heat|knob|dial|lamp|light)"
 _NOUN = r"(?:the|top|a|an|its|it)\b"  # "leave it on the plate": a place, not a state
+_WHILE = r" the(?= (?:whole|entire) time\b)"  # "keep it off the whole time": how long, not where
 _NOT_TO_DO = re.compile(r"\b(?:don't|dont|do not|not|never|rather than|instead of|no)\s+(?:\w+\s+)?$")
 
 
@@ -97,6 +98,12 @@ def contradicted(instruction: str, steps: list[dict]) -> str | None:
         for a, b in _OPPOSED:
             if (m := re.search(a, text)) and (n := re.search(b, text)):
                 return f"{m.group(0)} ... {n.group(0)} at once"
+    if m := _taken_back(text):
+        return m
+    if m := re.search(
+        r"\b(?:turn|turns|turning|change|convert|transform|morph)\b(?: \w+){1,4}? into (?:a|an|some) \w+", text
+    ):
+        return m.group(0)  # "turn the stove into a wine bottle": a thing made another, which no step does
     moves, lifted, turns, drawers = _moves(steps)
     for thing, dest in moves:
         x, t = _thing(thing, dest), _thing(dest, thing)
@@ -106,6 +113,8 @@ def contradicted(instruction: str, steps: list[dict]) -> str | None:
             rf"\b{_KEEP} {x} {_AWAY} {t}",  # "... and also keep it out of the basket"
             rf"\b{x} {_STAY} {_AWAY} {t}",
             *([] if reversed_too else [_reverse(_thing(dest, thing, pronoun=False), x)]),
+            # "... and also leave it exactly where it is": said beside the move, not after it ("then leave it there")
+            rf"\b(?:also|but|yet|while) (?:\w+ )?{_KEEP} {x} (?:exactly |just |right )?where it (?:is|was|sits)\b",
         ):
             if m := _said(pattern, text):
                 return m.group(0)
@@ -121,7 +130,10 @@ def contradicted(instruction: str, steps: list[dict]) -> str | None:
     for knob, angle in turns:
         state = "off" if angle > 0 else "on"  # the opposite of the turn's own end state
         it = _worked(knob, ("knob", "dial", "switch"), _SWITCHED)
-        if m := _said(rf"\b(?:{_KEEP} {it}|{it} {_MAY}{_STAY}) {state}\b(?! {_NOUN})", text):
+        # ("keep it switched off the whole time"; "leave it on the plate" names a place)
+        if m := _said(
+            rf"\b(?:{_KEEP} {it}|{it} {_MAY}{_STAY}) (?:switched |turned )?{state}\b(?! {_NOUN}(?<!{_WHILE}))", text
+        ):
             return m.group(0)
     for handle, sense in drawers:
         state = r"(?:closed|shut)" if sense > 0 else r"open"
@@ -129,6 +141,20 @@ def contradicted(instruction: str, steps: list[dict]) -> str | None:
         if m := _said(rf"\b(?:{_KEEP} {it}|{it} {_MAY}{_STAY}) (?:\w+ )?{state}\b", text):
             return m.group(0)
     return None
+
+
+def _taken_back(text: str) -> str | None:
+    """A request said and then said not to be done, word for word ("open the drawer but don't open the drawer")."""
+    said = [c.strip() for c in re.split(r"\b(?:but|and|yet|then|while)\b", text) if c.strip()]
+    for i, clause in enumerate(said):
+        m = re.fullmatch(r"(?:also |please |just )?(?:don't|dont|do not|never) (.+)", clause)
+        if m and any(_plain(m.group(1)) == _plain(c) for c in said[:i]):
+            return f"{said[i - 1]} but {clause}"
+    return None
+
+
+def _plain(clause: str) -> str:
+    return re.sub(r"^(?:please |also |just |first |then )+", "", clause).strip()
 
 
 def _names(label: str, meant: str, other: str) -> bool:

@@ -33,6 +33,7 @@ from .specs import spelled_out
 from .spoken import spoken
 from .steps import sequenced
 from .things import adverb_only, is_thing, is_verb
+from .transcript import unpunctuated
 
 # A short noun phrase after its determiner: up to four words, none of them a preposition, conjunction or verb of
 # state (what a back-reference can stand for).
@@ -1673,8 +1674,9 @@ def restructured(instruction: str) -> str:
     """The instruction said plainly and in the order its steps happen (see the module's docstring); the instruction
     itself when none of these applies."""
     text = re.sub(r"[ \t]+", " ", instruction.strip().lower().replace("\u2019", "'"))
-    # a spec of keyed fields, said as a sentence; an end state said as a specification, said plainly
-    out = spoken(end_state_framed(re.sub(r"\s+", " ", spelled_out(text))))
+    # a spec of keyed fields, said as a sentence; an end state said as a specification, said plainly; breaks said
+    # aloud, written in (rules/transcript.py)
+    out = spoken(end_state_framed(re.sub(r"\s+", " ", spelled_out(unpunctuated(text)))))
     text = re.sub(r"\s+", " ", text)
     # "the bowl next to the box (the right one)": a parenthesis saying which one, after a thing said by where it is,
     # is said of that thing, before its noun

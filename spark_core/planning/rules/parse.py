@@ -112,7 +112,7 @@ def _match_verb(clause: str) -> tuple[str, str] | None:
         return "open", m.group(1)
     m = re.fullmatch(r"(?:push|slide|pull|swing|ease) (.+) (?:closed|shut)|(?:push|slide) in (.*drawer.*)", clause)
     # "slide it back in" said of a drawer named before: closing it
-    m = m or re.fullmatch(r"(?:push|slide) ()(it|that one|this one) back in", clause)
+    m = m or re.fullmatch(r"(?:push|slide) ()(it|that one|this one)(?: back)? in", clause)
     m = m or re.fullmatch(r"(?:push|slide) ()(.*drawer.*?)(?: back)? in", clause)
     if m:  # "push the drawer in": a drawer pushed in is a drawer closed
         return "close", m.group(1) or m.group(2)

@@ -80,7 +80,7 @@ _SIDE_END = r"\b(?!(?: side| hand side| end| edge)? of\b)"
 _NP_END = (
     r"(?=$|[,.;:!?]|\s+(?:on|onto|in|into|to|and|then|with|from|at|over|inside|next|near|beside|by|goes|go|should|"
     r"must|has|have|needs|belongs|is|are|please|for|so|until|forwards?|backwards?|towards?|away|ahead|sitting|resting|"
-    r"standing|lying|placed)\b)"
+    r"standing|lying|placed|out|open|closed|shut|up|off)\b)"
 )
 _ME = r"(?:the robot|you|me|us|the arm|the gripper)"
 # what is left once one is left alone: "the other one", "the remaining one" (of two)
