@@ -191,3 +191,82 @@ def test_an_ordinal_counted_from_the_top_before_a_particle():
     """ "pull out the second drawer from the top" is read "pull the second drawer from the top out": the count
     still ends at the particle."""
     assert read("pull out the second drawer from the top") == ["open obj=second top drawer"]
+
+
+@pytest.mark.parametrize(
+    ("text", "said"),
+    [
+        ("object: cup. place: on the saucer.", "put the cup on the saucer"),
+        ("target object: tin; target location: saucer", "put the tin to the saucer"),
+        ("surface: saucer; tool: sponge; outcome: scrubbed", "scrub the saucer with the sponge"),
+        ("task card -- object: cup; destination: saucer", "put the cup to the saucer"),
+        ("desired state of the oven: on.", "turn on the oven"),
+        ("final state of the cupboard drawer: closed", "close the cupboard drawer"),
+        ("tray contents: the tin.", "put the tin in the tray"),
+    ],
+)
+def test_a_task_card_is_said_as_its_request(text, said):
+    from spark_core.planning.rules.specs import spelled_out
+
+    assert spelled_out(text) == said
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "tray contents: nothing.",  # an empty container: no thing to put in
+        "tray contents: the tin and the cup",  # two things: not one field's value
+        "outcome: scrubbed",  # one field alone
+        "desired state of the oven: warm",  # no action leaves a thing "warm"
+    ],
+)
+def test_a_card_that_says_no_request_is_left_as_said(text):
+    from spark_core.planning.rules.specs import spelled_out
+
+    assert spelled_out(text) == text
+
+
+def test_a_thing_is_never_poured_into_itself():
+    scene = view(inventory=("mug", "bowl"), mug=(0.5, -0.2, 0.05), bowl=(0.5, 0.2, 0.03))
+    refused = plan("pour the mug into the mug", scene)
+    assert not refused.ok and "nothing pours into itself" in refused.error
+    assert plan("pour the mug into the bowl", scene).ok
+
+
+def test_pellets_are_what_a_cup_holds_to_pour():
+    scene = view(inventory=("mug", "bowl"), mug=(0.5, -0.2, 0.05), bowl=(0.5, 0.2, 0.03))
+    got = plan("tip the little pellets from the mug into the bowl", scene)
+    assert got.ok, got.error
+
+
+@pytest.mark.parametrize(
+    ("text", "steps"),
+    [
+        ("set the cup on the saucer while making sure it never touches the saucer", _moved("cup", "saucer")),
+        ("put the cup on the saucer without it touching the saucer", _moved("cup", "saucer")),
+        (
+            "close the cupboard drawer while keeping it wide open",
+            [{"primitive": "close_drawer", "params": {"keypoint_label": "cupboard drawer handle"}}],
+        ),
+    ],
+)
+def test_a_move_said_never_to_reach_its_place_is_contradicted(text, steps):
+    assert contradicted(text, steps) is not None
+
+
+def test_touching_another_thing_is_no_contradiction():
+    assert contradicted("put the cup on the saucer without touching the tin", _moved("cup", "saucer")) is None
+
+
+@pytest.mark.parametrize(
+    ("text", "understood"),
+    [
+        (
+            "look for the tin by the cup; once you have it, set it on the saucer.",
+            ["mention obj=tin by cup", "put obj=tin by cup relation=on target=saucer"],
+        ),
+        ("when you get a moment, could the tin go onto the saucer, please?", ["put obj=tin relation=on target=saucer"]),
+    ],
+)
+def test_what_is_said_around_the_request_leaves_it_as_meant(text, understood):
+    assert read(text) == understood

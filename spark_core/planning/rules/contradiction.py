@@ -15,7 +15,8 @@ import re
 from ...perception.qualifiers import split_relation
 
 # Said to hold at once: two opposite relations or states joined by one of these cannot both be met.
-_AT_ONCE = re.compile(r"\b(?:at the same time|simultaneously|both at once)\b")  # (not "at once": "immediately")
+# (not "at once": "immediately"; "while keeping it": said of the same thing)
+_AT_ONCE = re.compile(r"\b(?:at the same time|simultaneously|both at once|while (?:keeping|leaving|having) it)\b")
 _OPPOSED = (
     (r"\bin front of\b|\bto the front\b|\bfront of\b", r"\bbehind\b|\bback of\b"),
     (r"\bopen(?:ed)?\b", r"\bclosed?\b|\bshut\b"),
@@ -115,6 +116,9 @@ def contradicted(instruction: str, steps: list[dict]) -> str | None:
             *([] if reversed_too else [_reverse(_thing(dest, thing, pronoun=False), x)]),
             # "... and also leave it exactly where it is": said beside the move, not after it ("then leave it there")
             rf"\b(?:also|but|yet|while) (?:\w+ )?{_KEEP} {x} (?:exactly |just |right )?where it (?:is|was|sits)\b",
+            # "... while making sure it never touches the plate": set down on it, never touching it
+            rf"\b{x} (?:never|doesn't|does not|won't|will not|must not|mustn't|should not|shouldn't) touch(?:es)? {t}",
+            rf"\bwithout (?:it |ever )?touching {t}",
         ):
             if m := _said(pattern, text):
                 return m.group(0)

@@ -837,9 +837,12 @@ def _article_restored(text: str) -> str:
 
 def _located_first(text: str) -> str:
     """ "locate the white bowl and ensure the red block is placed inside it", "find the bowl next to the ramekin and
-    set it on the plate": a thing looked for first is named for what follows ("it"), not picked up."""
+    set it on the plate", "look for the bowl by the box; once you have it, set it on the plate": a thing looked for
+    first is named for what follows ("it"), not picked up."""
     return re.sub(
-        r"^(?:please )?(?:locate|find|spot|identify|look for) ((?:the|a|an) [a-z' ]+?),? and (?:then )?(?=\S)",
+        r"^(?:please )?(?:locate|find|spot|identify|look for|search for) ((?:the|a|an) [a-z' ]+?)"
+        r"(?:,? and (?:then )?|\s*[;.]\s*(?:(?:once|when|after) you(?:'ve| have)? (?:got|have|found|find|grabbed|grab|"
+        r"spotted|spot|located|locate) (?:it|them),?\s*)?)(?=\S)",
         r"there is \1. ",
         text,
     )

@@ -35,7 +35,7 @@ _ANY_CONTENTS = frozenset(
     ["contents", "content", "stuff", "everything", "things", "it", "them", "all", "bits", "liquid"]
 )
 # Things a scene may show inside a container: what is poured.
-_SHOWN_CONTENTS = frozenset(["bead", "beads", "marble", "marbles", "ball", "balls"])
+_SHOWN_CONTENTS = frozenset(["bead", "beads", "marble", "marbles", "ball", "balls", "pellet", "pellets"])
 
 
 # Flavours and bases that make a food or drink another product ("chocolate milk", "almond milk", "tomato soup"):

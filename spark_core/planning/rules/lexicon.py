@@ -306,7 +306,7 @@ SELF_PARTS = (
     *("insides", "belly", "hollow", "innards"),
 )
 # What a container holds: "the mug's beads", "the mug's contents" pour from the mug.
-CONTENTS = ("contents", "content", "beads", "balls", "liquid", "water")
+CONTENTS = ("contents", "content", "beads", "balls", "pellets", "liquid", "water")
 # What may come before the contents' noun: a quantifier and up to three words of their own ("all those little yellow
 # beads"), never a preposition (not "the cube in the water").
 CONTENTS_SAID = (

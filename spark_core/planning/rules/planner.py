@@ -495,6 +495,11 @@ class RulesPlanner:
                         f"{c.text!r}: {src!r} {'is flat and ' if _kind(src) in _FLAT else ''}holds nothing to pour "
                         f"(a {_kind(src)}; understood: {understood}; found in the scene: {seen})"
                     )
+                if src == dst or _same_detection(scene[src], scene[dst]):  # "pour the mug into the mug"
+                    raise Impossible(
+                        f"{c.text!r}: {src!r} and {dst!r} are the same thing to perception: nothing pours into itself "
+                        f"(understood: {understood}; found in the scene: {seen})"
+                    )
                 if held == src and out and out[-1]["primitive"] == "pick":
                     out.pop()  # "pick up the mug and pour it": pouring grasps it from the side itself
                 out += [

@@ -355,6 +355,13 @@ def sentences(instruction: str) -> list[str]:
         "",
         text,
     )
+    # "when you get a moment, could ...": when it is wanted, said first
+    text = re.sub(
+        r"^(?:when|whenever|once) you (?:get|have got|have|find) (?:a |the )?(?:chance|moment|minute|sec|second|"
+        r"time)\b,?\s*(?=\w)",
+        "",
+        text,
+    )
     # "(hmm) ok, so the beads should ...": a turn-taking "ok, so" before the request
     text = re.sub(r"^(?:ok|okay|alright|right)(?:,)? so\b,?\s*", "", text)
     for said, plainly in _SPOKEN_PLAINLY + _HOW_PLAINLY:

@@ -13,11 +13,24 @@ import re
 # The keys of a spec's fields, by what they say: the thing moved, where it goes, where it comes from, the action.
 KEYS: dict[str, str] = {
     **dict.fromkeys(["obj", "object", "item", "thing", "target object", "what", "pick"], "thing"),
+    **dict.fromkeys(["object to move", "item to move", "moved object", "surface", "subject"], "thing"),
     **dict.fromkeys(
         ["dst", "dest", "destination", "to", "goal", "place", "where", "target", "tgt", "loc", "into"], "to"
     ),
+    **dict.fromkeys(["target location", "location", "target place", "destination location", "goes to"], "to"),
     **dict.fromkeys(["src", "source", "from"], "from"),
+    **dict.fromkeys(["tool", "using", "with", "implement"], "with"),
     **dict.fromkeys(["action", "act", "verb", "op", "do", "task", "skill"], "action"),
+    **dict.fromkeys(["outcome", "result", "state", "end state", "desired state", "final state"], "outcome"),
+}
+# An outcome said as the state a thing ends in ("outcome: scrubbed"): the action that leaves it so.
+_OUTCOMES = {
+    **dict.fromkeys(["scrubbed", "clean", "cleaned", "wiped", "scoured"], "scrub"),
+    **dict.fromkeys(["open", "opened"], "open"),
+    **dict.fromkeys(["closed", "shut"], "close"),
+    "on": "turn on",
+    "off": "turn off",
+    **dict.fromkeys(["lifted", "raised", "picked up", "up", "held"], "pick up"),
 }
 # Where a destination's value already says how the thing goes there ("inside akita black bowl").
 _PREP = r"(?:in|into|inside|on|onto|on top of|next to|in front of|to|under|beside|behind)"
@@ -27,7 +40,22 @@ def spelled_out(text: str) -> str:
     """The spec in `text` said as a sentence; `text` itself when it is no spec. A lone goal after "tgt:" is said
     after "target:" ("tgt: bbq sauce in basket")."""
     text = re.sub(r"^tgt\s*:", "target:", text)
-    parts = [p.strip() for p in re.split(r"\s*[;|\n]\s*", text.strip().rstrip(".")) if p.strip()]
+    # a header before the fields ("task card -- surface: plate; ..."): what the line is, no field of it
+    text = re.sub(r"^(?:task card|card|spec|note|todo|eval|task)\s*(?:-+|:)\s*(?=[a-z ]+\s*[:=])", "", text)
+    # "desired state of the flat stove: on": the state a thing ends in, said as its action
+    m = re.fullmatch(
+        r"(?:the )?(?:desired|target|final|end|goal|wanted) state of ((?:the )?[a-z ]+?)\s*[:=]\s*(\w+)\.?", text
+    )
+    if m and m.group(2) in _OUTCOMES:
+        return f"{_OUTCOMES[m.group(2)]} the {_bare(m.group(1))}"
+    # "basket contents: alphabet soup": what ends up in the container
+    m = re.fullmatch(r"(?:the )?([a-z]+(?: [a-z]+)?) contents?\s*[:=]\s*([a-z ]+?)\.?", text)
+    if m and not re.search(r"\b(?:and|or|nothing|empty)\b", m.group(2)):
+        return f"put the {_bare(m.group(2))} in the {m.group(1)}"
+    # fields one to a sentence ("object: cube. place: on top of the other cube.")
+    parts = [
+        p.strip() for p in re.split(r"\s*[;|\n]\s*|\.\s+(?=[a-z ]+\s*[:=])", text.strip().rstrip(".")) if p.strip()
+    ]
     if len(parts) == 1 and text.count(":") + text.count("=") > 1:  # "obj: milk, dest: basket": fields between commas
         parts = [p.strip() for p in re.split(r"\s*,\s*", text.strip().rstrip(".")) if p.strip()]
     fields: dict[str, str] = {}
@@ -41,6 +69,9 @@ def spelled_out(text: str) -> str:
     thing, to, source = fields.get("thing"), fields.get("to"), fields.get("from")
     if thing is None and source is not None:
         thing, source = source, None  # "src: cream cheese; dst: bowl": the thing taken from where it is
+    outcome = _OUTCOMES.get(fields.pop("outcome", "").rstrip("."))
+    if outcome is not None and "action" not in fields:
+        fields["action"] = outcome  # "surface: plate; tool: sponge; outcome: scrubbed"
     if thing is None or (to is None and "action" not in fields):
         return text
     # where a thing is, said in parentheses, says which one: "cream cheese (near left corner)"
@@ -51,6 +82,8 @@ def spelled_out(text: str) -> str:
     if to is not None:
         prep = re.match(rf"{_PREP}\b", to)
         said += f" {to}" if prep else f" to the {_bare(to)}"
+    if "with" in fields:
+        said += f" with the {_bare(fields['with'])}"
     return said
 
 
