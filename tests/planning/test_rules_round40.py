@@ -120,6 +120,7 @@ def test_breaks_said_aloud_are_written_in(said, written):
         "put the block in the bowl and um then close the drawer",
         "put the cup on the left-hand saucer",  # a hyphen inside a word is no broken-off word
         "grab the cup then put it on the saucer",
+        "don't move the tin. just put the other one on top of it",  # "don't": no thing's name before the verb
     ],
 )
 def test_speech_without_such_breaks_is_left_as_said(text):
@@ -270,3 +271,19 @@ def test_touching_another_thing_is_no_contradiction():
 )
 def test_what_is_said_around_the_request_leaves_it_as_meant(text, understood):
     assert read(text) == understood
+
+
+def test_a_part_said_on_a_thing_located_by_another_stays_the_things_part():
+    """ "the drawer on the cabinet (standing) beyond the block": the cabinet's drawer, where the cabinet is."""
+    assert read("close the drawer on the cupboard standing beyond the red block") == [
+        "close obj=cupboard drawer behind red block"
+    ]
+    assert read("close the drawer of the cupboard behind the red block") == [
+        "close obj=cupboard drawer behind red block"
+    ]
+
+
+def test_a_side_of_the_table_before_a_relation_is_an_extreme():
+    assert read("take the plate at the back of the table, behind the tin, and put it on the saucer")[0] == (
+        "pick obj=farthest plate near tin"
+    )

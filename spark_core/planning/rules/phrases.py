@@ -193,6 +193,10 @@ def object_phrase(words: str) -> str:
     return noun_phrase(text)
 
 
+# Where a thing stands, said after it: a relation to another thing.
+_WHERE = r"(?:behind|beyond|next to|beside|near|by|in front of|left of|right of|to the (?:left|right) of|between)"
+
+
 def _predicative(text: str) -> str:
     """A relative clause with an adjective is that adjective before the noun: "peg (that) is square" ->
     "square peg" (the relative pronoun went with the determiners)."""
@@ -231,5 +235,11 @@ def _noun_phrase(words: str) -> str:
     )
     if m and not located and (m.group(3).split()[-1] not in ("stove", "table") or "drawer" in m.group(1)):
         part = m.group(1)
-        return m.group(3) if part in SELF_PARTS else f"{m.group(3)} {part}"
+        if part in SELF_PARTS:
+            return m.group(3)
+        # "drawer on the cabinet (standing) behind the block": the cabinet's drawer, where the cabinet is
+        whole, where = re.match(
+            rf"(.+?)(?: (?:standing|sitting|resting|placed|located))?((?: {_WHERE} .+)?)$", m.group(3)
+        ).groups()
+        return f"{whole} {part}{where}"
     return text

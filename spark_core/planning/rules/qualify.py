@@ -18,7 +18,7 @@ from ...perception.colors import BASE_COLOURS
 # A noun phrase of one to three words after its determiner (no preposition, relative pronoun or negation in it).
 _STOP = (
     r"(?:on|in|at|to|from|onto|into|inside|beside|with|for|that|which|who|not|of|and|or|but|the|a|an|is|are|it|them|"
-    r"one|ones|then|near|by|alone|where|sitting|"
+    r"one|ones|then|near|by|alone|where|sitting|behind|between|beyond|"
     r"standing|lying|resting|placed|goes|go|belongs|belong|needs|should|must|will|gets|sits|ends)"
 )
 _WORD = rf"(?!{_STOP}\b)[\w-]+"
@@ -80,7 +80,7 @@ _SIDE_END = r"\b(?!(?: side| hand side| end| edge)? of\b)"
 _NP_END = (
     r"(?=$|[,.;:!?]|\s+(?:on|onto|in|into|to|and|then|with|from|at|over|inside|next|near|beside|by|goes|go|should|"
     r"must|has|have|needs|belongs|is|are|please|for|so|until|forwards?|backwards?|towards?|away|ahead|sitting|resting|"
-    r"standing|lying|placed|out|open|closed|shut|up|off)\b)"
+    r"standing|lying|placed|out|open|closed|shut|up|off|behind|between|beyond)\b)"
 )
 _ME = r"(?:the robot|you|me|us|the arm|the gripper)"
 # what is left once one is left alone: "the other one", "the remaining one" (of two)

@@ -1019,6 +1019,8 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(
         r"\b(?:right|just|directly|immediately) (?=(?:next to|beside|by|near|behind|in front of|under)\b)", "", text
     )
+    # "the cabinet beyond the red block", "in back of the bowl": behind it
+    text = re.sub(r"\b(?:beyond|in back of)(?= (?:the|a|an|that|this) )", "behind", text)
     # "in the gap between the plate and the ramekin": between them
     text = re.sub(r"\b(?:in|at|on) the (?:gap|space|spot|area|middle) between\b", "between", text)
     # a cleft: "it is the upper bowl i want on the plate" is the wish "i want the upper bowl on the plate"

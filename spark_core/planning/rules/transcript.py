@@ -53,7 +53,7 @@ def unpunctuated(text: str) -> str:
     # name starts one; after a thing said first ("the bowl that isn't on the cookies put that on the plate"), a
     # clause that acts on it
     out = re.sub(
-        rf"\b([a-z]+) (?=(?:(?:{_REQUEST_VERBS}) (?:(?:up|out|down|in) )?{_ACTED_ON}|{_WISH}))",
+        rf"(?<![\w'-])([a-z]+) (?=(?:(?:{_REQUEST_VERBS}) (?:(?:up|out|down|in) )?{_ACTED_ON}|{_WISH}))",
         lambda m: f"{m.group(1)}{_break(m)} " if _names_a_thing(m.group(1)) else m.group(0),
         out,
     )
