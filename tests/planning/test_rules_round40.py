@@ -287,3 +287,14 @@ def test_a_side_of_the_table_before_a_relation_is_an_extreme():
     assert read("take the plate at the back of the table, behind the tin, and put it on the saucer")[0] == (
         "pick obj=farthest plate near tin"
     )
+
+
+def test_it_points_at_the_thing_talked_about_and_that_at_the_thing_said_last():
+    """ "tray by the oven: put the mug nearer the box on it": "it" is the tray talked about, not the box the mug is
+    located by (round 39 had made every destination pronoun the thing's own anchor first); "in that" still is."""
+    assert read("tray by the oven: put the mug nearer the box on it")[-1] == (
+        "put obj=mug near box relation=on target=tray by oven"
+    )
+    assert read("the jug by the tray goes on it, the mug next to the box goes in that")[-1] == (
+        "put obj=mug next to box relation=in target=box"
+    )

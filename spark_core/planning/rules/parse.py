@@ -615,9 +615,12 @@ def _resolve(c: Clause, before: list[Clause]) -> Clause:
     if is_pronoun(c.target) or c.target in ("that", "this"):  # "... then the red block on top of that"
         # (the clause before only picked the thing up: a clause before it named the place, "grab the green block and
         # put it on the blue one, then take the red one and put it on top of that")
-        # (the thing's own anchor is said last: "..., the blue one beside the yellow tray goes in that")
+        # ("that" points at the thing said last, the thing's own anchor: "..., the blue one beside the yellow tray
+        # goes in that"; "it" at the thing talked about: "plate on the stove: put the bowl nearer the cabinet on it")
         own = [] if is_pronoun(c.obj) else [_anchor(c.obj)]
-        cands = own + [p for b in reversed(before) for p in (b.obj, b.target, _anchor(b.obj))]
+        said = [p for b in reversed(before) for p in (b.obj, b.target, _anchor(b.obj))]
+        pointed = c.target in ("that", "this") or re.search(r"\b(?:that|this)(?: one)?\W*$", c.text or "")
+        cands = own + said if pointed else said + own
         for cand in cands:
             if cand and cand != obj and not is_pronoun(cand):
                 updates["target"] = cand
