@@ -298,3 +298,51 @@ def test_it_points_at_the_thing_talked_about_and_that_at_the_thing_said_last():
     assert read("the jug by the tray goes on it, the mug next to the box goes in that")[-1] == (
         "put obj=mug next to box relation=in target=box"
     )
+
+
+@pytest.mark.parametrize(
+    ("text", "understood"),
+    [
+        (
+            "would you mind getting the drawer open and tucking the tin away inside?",
+            ["open obj=drawer", "put obj=tin relation=in target=drawer"],
+        ),
+        ("slide the drawer back into the cupboard until it's flush", ["close obj=drawer"]),
+        ("twist the oven's knob to get it going", ["turn on obj=oven"]),
+        ("the cup resting on the tin - saucer, please.", ["put obj=cup on tin relation=on target=saucer"]),
+        (
+            "would you mind sorting the cups? red one in the green tray, blue one in the yellow tray.",
+            ["put obj=red relation=in target=green tray", "put obj=blue relation=in target=yellow tray"],
+        ),
+    ],
+)
+def test_wordings_of_round_40_read_as_meant(text, understood):
+    assert read(text) == understood
+
+
+@pytest.mark.parametrize(
+    ("text", "steps"),
+    [
+        ("put the cup on the saucer and underneath the saucer at the same time", _moved("cup", "saucer")),
+        ("lift the tin without touching it", [{"primitive": "pick", "params": {"keypoint_label": "tin"}}]),
+        ("put the cup on the saucer while the saucer stays stacked on top of the cup", _moved("cup", "saucer")),
+        ("shove the tin into the tray so it ends up both inside and outside of it", []),
+    ],
+)
+def test_two_places_or_states_of_one_thing_at_once_are_contradicted(text, steps):
+    assert contradicted(text, steps) is not None
+
+
+def test_a_thing_on_one_and_another_under_it_is_no_contradiction():
+    assert contradicted("put the cup on the saucer and the tin under the saucer", _moved("cup", "saucer")) is None
+    assert (
+        contradicted(
+            "lift the tin without touching the cup", [{"primitive": "pick", "params": {"keypoint_label": "tin"}}]
+        )
+        is None
+    )
+
+
+def test_the_very_same_thing_is_the_thing():
+    scene = view(inventory=("mug", "bowl"), mug=(0.5, -0.2, 0.05), bowl=(0.5, 0.2, 0.03))
+    assert not plan("pour the beads from the mug into the very same mug", scene).ok

@@ -99,6 +99,11 @@ def contradicted(instruction: str, steps: list[dict]) -> str | None:
         for a, b in _OPPOSED:
             if (m := re.search(a, text)) and (n := re.search(b, text)):
                 return f"{m.group(0)} ... {n.group(0)} at once"
+    # "on the plate and underneath the plate", "both inside and outside of it": two opposite places of one thing
+    if m := re.search(r"\b(?:on|on top of|above) (the (?:\w+ )?\w+) and (?:under|underneath|below|beneath) \1\b", text):
+        return m.group(0)
+    if m := re.search(r"\bboth (?:inside|in) and (?:outside|out)\b|\bboth (?:open|opened) and (?:closed|shut)\b", text):
+        return m.group(0)
     if m := _taken_back(text):
         return m
     if m := re.search(
@@ -119,6 +124,7 @@ def contradicted(instruction: str, steps: list[dict]) -> str | None:
             # "... while making sure it never touches the plate": set down on it, never touching it
             rf"\b{x} (?:never|doesn't|does not|won't|will not|must not|mustn't|should not|shouldn't) touch(?:es)? {t}",
             rf"\bwithout (?:it |ever )?touching {t}",
+            rf"\bwithout (?:ever |even )?touching {x}",
         ):
             if m := _said(pattern, text):
                 return m.group(0)
@@ -128,6 +134,7 @@ def contradicted(instruction: str, steps: list[dict]) -> str | None:
             rf"\b{_KEEP} {x} (?:\w+ )?on the (?:table|counter|worktop|floor)\b",  # "lift it and leave it on the table"
             rf"\b{x} {_STAY} (?:\w+ )?on the (?:table|counter|worktop|floor)\b",
             rf"\bwithout (?:lifting|raising|picking) {x}",
+            rf"\bwithout (?:ever |even )?touching {x}",  # "lift the red cube without touching it"
         ):
             if m := _said(pattern, text):
                 return m.group(0)
@@ -171,7 +178,10 @@ def _names(label: str, meant: str, other: str) -> bool:
 
 def _reverse(t: str, x: str) -> str:
     """The destination said to rest on or in the thing carried ("... while the green cube stays on top of it")."""
-    return rf"\b{t} (?:{_STAY}|is|rests|resting|sits|sitting) (?:on top of|atop|on|in|inside) {x}\b"
+    return (
+        rf"\b{t} (?:{_STAY}|is|rests|resting|sits|sitting)(?: stacked| sitting| resting| lying| placed)? "
+        rf"(?:on top of|atop|on|in|inside) {x}\b"
+    )
 
 
 def _said(pattern: str, text: str) -> re.Match | None:

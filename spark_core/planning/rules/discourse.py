@@ -1762,6 +1762,20 @@ def restructured(instruction: str) -> str:
     # "would you mind sorting these? red block into ...": what "these" are, said next
     # (also "sort these for me? ...", "sort these out - red block to ...")
     out = re.sub(r"\b(these|those|the following)(?: for me| for us| out| please)*\s*(?:\?|\s-+)\s+(?=\S)", r"\1: ", out)
+    # ("would you mind sorting the blocks? red one into ...": the kind sorted, then each one's place)
+    out = re.sub(
+        r"\b(sort(?:ing)?|arrang(?:e|ing)|organi[sz](?:e|ing)) (?:the|these|those|both) \w+"
+        r"(?: for me| for us| out| please)*\s*(?:\?|\s-+)\s+(?=\S)",
+        lambda m: f"{m.group(1)} these: ",
+        out,
+    )
+    # "the bowl resting on the ramekin - plate, please": a thing, then where it goes
+    out = re.sub(
+        r"^((?:the|a|an) [a-z' ]+?)\s+-+\s+(?:the |onto the |into the |on the |in the )?([a-z]+(?: [a-z]+)?)"
+        r"(?:,? please)?\s*[.!]?$",
+        lambda m: f"{m.group(1)} -> {m.group(2)}" if is_thing(m.group(2).split()[-1]) else m.group(0),
+        out,
+    )
     # what is said in passing, appositions, a thing said first, and corrections, in this order
     for said in (
         _article_restored,

@@ -1019,6 +1019,31 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(
         r"\b(?:right|just|directly|immediately) (?=(?:next to|beside|by|near|behind|in front of|under)\b)", "", text
     )
+    # "into the very same mug": the mug ("pour the beads from the mug into the very same mug" stays nonsense)
+    text = re.sub(r"\bthe (?:very )?same (?=\w)", "the ", text)
+    # "get the drawer open", "get it shut": open or close it
+    text = re.sub(
+        r"\bget(?:ting)? ((?:the|that|this) [\w ]*?drawer|it) (open|opened|shut|closed)\b",
+        lambda m: f"{'open' if m.group(2).startswith('open') else 'close'} {m.group(1)}",
+        text,
+    )
+    # "slide the drawer back into the cabinet": closed
+    text = re.sub(
+        r"\b(?:slide|push|shove|ease) ((?:the|that) [\w ]*?drawer) back (?:into|in to|inside) (?:the|its) "
+        r"[\w ]*?(?:cabinet|cupboard|dresser|chest|unit)\b",
+        r"close \1",
+        text,
+    )
+    # "twist the stove's knob to get it going": the stove turned on
+    text = re.sub(
+        r"\b(?:twist|turn|rotate|crank) (?:the )?([\w ]+?)(?:'s)? (?:knob|dial) (?:to |so as to |in order to )?"
+        r"(?:get (?:it|them) (?:going|started|running|on|lit|heating)|start (?:it|them)(?: up)?|fire (?:it|them) up|"
+        r"light (?:it|them)|switch (?:it|them) on|turn (?:it|them) on)\b",
+        r"turn on the \1",
+        text,
+    )
+    # "tuck the red block away inside", "... stash it in there": inside the thing named before
+    text = re.sub(r"\b(away )?inside(?=\s*[.!?]?$)", "inside it", text)
     # "the cabinet beyond the red block", "in back of the bowl": behind it
     text = re.sub(r"\b(?:beyond|in back of)(?= (?:the|a|an|that|this) )", "behind", text)
     # "in the gap between the plate and the ramekin": between them
