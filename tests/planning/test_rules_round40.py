@@ -121,6 +121,7 @@ def test_breaks_said_aloud_are_written_in(said, written):
         "put the cup on the left-hand saucer",  # a hyphen inside a word is no broken-off word
         "grab the cup then put it on the saucer",
         "don't move the tin. just put the other one on top of it",  # "don't": no thing's name before the verb
+        "okay first pull the drawer open and then uh take the tin",  # words of order and of speech name nothing
     ],
 )
 def test_speech_without_such_breaks_is_left_as_said(text):

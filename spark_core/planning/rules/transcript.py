@@ -31,6 +31,9 @@ _NO_NAME = frozenset(
     [*DETERMINERS, "it", "them", "me", "you", "us", "him", "her", "we", "i", "they", "up", "out", "down", "in", "on"]
     + ["off", "over", "back", "away", "now", "then", "there", "here", "too", "also", "please", "and", "or", "but"]
     + ["so", "just", "again", "to", "can", "could", "would", "will", "should", "must", "let", "lets", "help", "try"]
+    # words of order and of speech ("okay first pull ...", "and then uh take ...")
+    + ["first", "next", "last", "finally", "afterwards", "okay", "ok", "yeah", "yep", "yes", "alright", "well"]
+    + ["um", "umm", "uh", "uhh", "er", "erm", "hmm", "like", "actually", "maybe", "basically"]
 )
 # Where a level of a stack is said: the next level follows without a comma ("blue on the bottom green in the middle").
 _LEVEL = r"(?:on|at) the (?:bottom|top|base)|in the middle|on top|at the top|underneath|below"
