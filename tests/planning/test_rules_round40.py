@@ -347,3 +347,11 @@ def test_a_thing_on_one_and_another_under_it_is_no_contradiction():
 def test_the_very_same_thing_is_the_thing():
     scene = view(inventory=("mug", "bowl"), mug=(0.5, -0.2, 0.05), bowl=(0.5, 0.2, 0.03))
     assert not plan("pour the beads from the mug into the very same mug", scene).ok
+
+
+def test_a_cupboards_sliding_compartment_is_its_drawer():
+    assert read("pull out the cupboard's sliding compartment and put the tin in there") == [
+        "open obj=cupboard drawer",
+        "put obj=tin relation=in target=cupboard drawer",
+    ]
+    assert read("put the tin in the compartment of the box") == ["put obj=tin relation=in target=box compartment"]

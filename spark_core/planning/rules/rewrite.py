@@ -1019,6 +1019,9 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(
         r"\b(?:right|just|directly|immediately) (?=(?:next to|beside|by|near|behind|in front of|under)\b)", "", text
     )
+    # "the cupboard's sliding compartment": a cabinet's compartment that slides out is its drawer
+    if re.search(r"\b(?:cabinet|cupboard|dresser|chest)\b", text):
+        text = re.sub(r"\b(?:sliding |pull-out |pullout )?compartment(s?)\b", r"drawer\1", text)
     # "into the very same mug": the mug ("pour the beads from the mug into the very same mug" stays nonsense)
     text = re.sub(r"\bthe (?:very )?same (?=\w)", "the ", text)
     # "get the drawer open", "get it shut": open or close it
