@@ -355,3 +355,19 @@ def test_a_cupboards_sliding_compartment_is_its_drawer():
         "put obj=tin relation=in target=cupboard drawer",
     ]
     assert read("put the tin in the compartment of the box") == ["put obj=tin relation=in target=box compartment"]
+
+
+@pytest.mark.parametrize(
+    ("text", "understood"),
+    [
+        ("placement: tin => saucer.", ["put obj=tin relation=on target=saucer"]),
+        ("cup on the saucer (nothing else moved).", ["put obj=cup relation=on target=saucer"]),
+        (
+            "1. tin onto saucer. 2. cup onto tin. result: three-item stack.",
+            ["put obj=tin relation=on target=saucer", "put obj=cup relation=on target=tin"],
+        ),
+        ("saucer should carry the cup that's currently by the tin.", ["put obj=cup by tin relation=on target=saucer"]),
+    ],
+)
+def test_notes_around_a_goal_read_as_the_goal(text, understood):
+    assert read(text) == understood

@@ -452,7 +452,7 @@ def _header(text: str) -> str:
     parts |= {"config", "cfg", "conf"}
     # the run it is for, or what the line is ("eval: ...", "episode 3: ...", "cmd: ...")
     parts |= {"eval", "evaluation", "episode", "ep", "trial", "run", "demo", "test", "cmd", "command", "instruction"}
-    parts |= {"request", "todo", "note", "next", "new", "ok", "okay"}
+    parts |= {"request", "todo", "note", "next", "new", "ok", "okay", "placement", "card", "spec", "wanted", "wish"}
     parts |= {"i", "am", "m", "we", "are", "re", "after", "want", "what", "looking", "for", "desired", "wanted"}
     if words[:1] in (["final"], ["end"], ["target"], ["desired"]):
         parts |= {"table", "scene", "picture", "look", "tabletop"}  # "final table: ...": how the scene should look

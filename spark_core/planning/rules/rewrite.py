@@ -1022,6 +1022,28 @@ def sentences(instruction: str) -> list[str]:
     # "the cupboard's sliding compartment": a cabinet's compartment that slides out is its drawer
     if re.search(r"\b(?:cabinet|cupboard|dresser|chest)\b", text):
         text = re.sub(r"\b(?:sliding |pull-out |pullout )?compartment(s?)\b", r"drawer\1", text)
+    # "(nothing else moved)", "- nothing else changes": what stays as it is, no step
+    text = re.sub(
+        r"[,;-]?\s*\(?\s*(?:and )?nothing else (?:moved|moves|changes|changed|touched|is touched|is moved)\s*\)?"
+        r"(?=\s*[.!]?$)",
+        "",
+        text,
+    )
+    # "... result: three-block tower": what the steps before make, said again
+    text = re.sub(
+        r"[.;,]\s*(?:result|outcome|end result)\s*:\s*(?:a |one )?(?:[\w-]+ )?(?:tower|stack|pile)\s*\.?$", ".", text
+    )
+    # "lift it clear", "raise it clear of the table": lifted
+    text = re.sub(
+        r"\b(lift|raise) (it|them|the [\w ]+?) clear\b(?: of (?:the )?(?:table|counter|surface))?", r"\1 \2", text
+    )
+    # "the plate should carry the black bowl ...": the bowl goes on the plate
+    text = re.sub(
+        r"^(?:the )?(\w+(?: \w+)?) (?:should|must|needs to|has to) (?:carry|hold|support|have) ((?:the|a|an) [^.!?]+?)"
+        r"\s*[.!?]?$",
+        r"put \2 to the \1",
+        text,
+    )
     # "into the very same mug": the mug ("pour the beads from the mug into the very same mug" stays nonsense)
     text = re.sub(r"\bthe (?:very )?same (?=\w)", "the ", text)
     # "get the drawer open", "get it shut": open or close it
