@@ -1045,7 +1045,7 @@ def sentences(instruction: str) -> list[str]:
         text,
     )
     # "into the very same mug": the mug ("pour the beads from the mug into the very same mug" stays nonsense)
-    text = re.sub(r"\bthe (?:very )?same (?=\w)", "the ", text)
+    text = re.sub(r"\b(into|onto|in|on|to|inside) the (?:very )?same (?=\w)", r"\1 the ", text)
     # "get the drawer open", "get it shut": open or close it
     text = re.sub(
         r"\bget(?:ting)? ((?:the|that|this) [\w ]*?drawer|it) (open|opened|shut|closed)\b",
@@ -1068,7 +1068,7 @@ def sentences(instruction: str) -> list[str]:
         text,
     )
     # "tuck the red block away inside", "... stash it in there": inside the thing named before
-    text = re.sub(r"\b(away )?inside(?=\s*[.!?]?$)", "inside it", text)
+    text = re.sub(r"\baway inside(?=\s*[.!?]?$)", "inside it", text)
     # "the cabinet beyond the red block", "in back of the bowl": behind it
     text = re.sub(r"\b(?:beyond|in back of)(?= (?:the|a|an|that|this) )", "behind", text)
     # "in the gap between the plate and the ramekin": between them
