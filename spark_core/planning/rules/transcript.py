@@ -34,6 +34,9 @@ _NO_NAME = frozenset(
     # words of order and of speech ("okay first pull ...", "and then uh take ...")
     + ["first", "next", "last", "finally", "afterwards", "okay", "ok", "yeah", "yep", "yes", "alright", "well"]
     + ["um", "umm", "uh", "uhh", "er", "erm", "hmm", "like", "actually", "maybe", "basically"]
+    # relatives and the verbs a clause is built with ("after which set it ...", "shall be put ...")
+    + ["which", "who", "whom", "what", "whichever", "whatever", "be", "been", "being", "is", "are", "was", "were"]
+    + ["am", "get", "got", "have", "has", "had", "do", "does", "did", "shall", "may", "might", "gonna", "wanna"]
 )
 # Where a level of a stack is said: the next level follows without a comma ("blue on the bottom green in the middle").
 _LEVEL = r"(?:on|at) the (?:bottom|top|base)|in the middle|on top|at the top|underneath|below"
@@ -57,7 +60,7 @@ def unpunctuated(text: str) -> str:
     # clause that acts on it
     out = re.sub(
         rf"(?<![\w'-])([a-z]+) (?=(?:(?:{_REQUEST_VERBS}) (?:(?:up|out|down|in) )?{_ACTED_ON}|{_WISH}))",
-        lambda m: f"{m.group(1)}{_break(m)} " if _names_a_thing(m.group(1)) else m.group(0),
+        lambda m: f"{m.group(1)}{_break(m)} " if _names_a_thing(m.group(1)) and not _fronted(m) else m.group(0),
         out,
     )
     # "a tower with blue on the bottom green in the middle and red on top": one level per clause
@@ -69,6 +72,12 @@ def _break(m: re.Match) -> str:
     """A comma after a thing said first, with no verb before it in its sentence; else a full stop."""
     sentence = re.split(r"[.;!?]\s+", m.string[: m.start()])[-1]
     return "," if re.match(r"(?:the|a|an|this|that|those|these|my|your|our)\b", sentence) else "."
+
+
+def _fronted(m: re.Match) -> bool:
+    """The thing is said in a phrase put first ("from the two mugs take the one ..."): the request follows it."""
+    sentence = re.split(r"[.;!?]\s+", m.string[: m.start()])[-1]
+    return bool(re.match(r"(?:from|of|among|out of|between|in|on|inside|next to|by)\b", sentence))
 
 
 def _names_a_thing(word: str) -> bool:
