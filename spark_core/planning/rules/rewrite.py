@@ -1039,7 +1039,7 @@ def sentences(instruction: str) -> list[str]:
     )
     # "the plate should carry the black bowl ...": the bowl goes on the plate
     text = re.sub(
-        r"^(?:the )?(\w+(?: \w+)?) (?:should|must|needs to|has to) (?:carry|hold|support) ((?:the|a|an) [^.!?]+?)"
+        r"^(?:the )?(\w+(?: \w+)?) (?:should|must|needs to|has to) (?:carry|hold|support) ((?:the|a|an) [^.!?,]+?)"
         r"\s*[.!?]?$",
         r"put \2 to the \1",
         text,
