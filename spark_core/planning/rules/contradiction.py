@@ -104,8 +104,8 @@ def contradicted(instruction: str, steps: list[dict]) -> str | None:
         return m.group(0)
     if m := re.search(r"\bboth (?:inside|in) and (?:outside|out)\b|\bboth (?:open|opened) and (?:closed|shut)\b", text):
         return m.group(0)
-    if m := _taken_back(text):
-        return m
+    if said := _taken_back(text):
+        return said
     if m := re.search(
         r"\b(?:turn|turns|turning|change|convert|transform|morph)\b(?: \w+){1,4}? into (?:a|an|some) \w+", text
     ):

@@ -238,8 +238,7 @@ def _noun_phrase(words: str) -> str:
         if part in SELF_PARTS:
             return m.group(3)
         # "drawer on the cabinet (standing) behind the block": the cabinet's drawer, where the cabinet is
-        whole, where = re.match(
-            rf"(.+?)(?: (?:standing|sitting|resting|placed|located))?((?: {_WHERE} .+)?)$", m.group(3)
-        ).groups()
+        placed = re.fullmatch(rf"(.+?)(?: (?:standing|sitting|resting|placed|located))?((?: {_WHERE} .+)?)", m.group(3))
+        whole, where = placed.groups() if placed else (m.group(3), "")
         return f"{whole} {part}{where}"
     return text
