@@ -284,7 +284,9 @@ def _wording(args: argparse.Namespace, command: str) -> str:
     rows = wording.plan_entries(
         entries,
         args.seed,
-        lambda r: print(f"[{next(done)}/{len(entries)}] planned" if blind else _wording_line(r), flush=True),
+        lambda r: print(
+            f"[{next(done)}/{len(entries)}] planned" if blind or r["half"] == "test" else _wording_line(r), flush=True
+        ),
         segmenter=segmenter,
     )
     seeds = args.trials or wording.EXEC_SEEDS
@@ -296,7 +298,7 @@ def _wording(args: argparse.Namespace, command: str) -> str:
             seeds,
             lambda r: print(
                 "trial done"
-                if blind
+                if blind or r["half"] == "test"
                 else f"{'ok  ' if r['success'] else 'FAIL'} {r['half']} {r['task'][:40]} {r['wording']}",
                 flush=True,
             ),
@@ -304,7 +306,7 @@ def _wording(args: argparse.Namespace, command: str) -> str:
         )
     )
     if args.json:
-        write_rows(args.json, {"planning": rows, "execution": exec_rows})
+        write_rows(args.json, wording.json_rows(rows, exec_rows, blind=blind))
     return wording.section(rows, exec_rows, command, seeds, list_failures=not blind, segmenter=segmenter)
 
 

@@ -335,6 +335,27 @@ def summary(rows: list[dict[str, Any]]) -> dict[str, Any]:
     }
 
 
+def json_rows(rows: list[dict[str, Any]], exec_rows: list[dict[str, Any]], blind: bool) -> dict[str, Any]:
+    """What `--json` writes: per-entry rows of the dev half and probes; the test half (frozen, never read entry by
+    entry) and every row of a `--blind` run only as the summary figures, so no file holds an unseen entry."""
+
+    def hidden(r: dict[str, Any]) -> bool:
+        return blind or r.get("half") == "test"
+
+    hid_plan = [r for r in rows if hidden(r)]
+    hid_exec = [r for r in exec_rows if hidden(r)]
+    return {
+        "planning": [r for r in rows if not hidden(r)],
+        "execution": [r for r in exec_rows if not hidden(r)],
+        "withheld": {
+            "planning_entries": len(hid_plan),
+            "planning": summary(hid_plan) if hid_plan else {},
+            "execution_trials": len(hid_exec),
+            "execution": {h: exec_summary(exec_rows, h) for h in HALVES if any(r["half"] == h for r in hid_exec)},
+        },
+    }
+
+
 def exec_summary(rows: list[dict[str, Any]], half: str) -> dict[str, float]:
     """Success of `half`'s reworded trials against the official wording of the same tasks."""
     new = [r for r in rows if r["half"] == half]

@@ -266,3 +266,47 @@ def test_every_probe_file_loads_and_a_refusal_says_why(tmp_path):
     bad.write_text(yaml.safe_dump([dict(row, instruction="put the banana on the plate")]))
     with pytest.raises(ValueError, match="probe.yaml a: expect 'refuse' is neither 'goal' nor one of refuse:absent"):
         wording.load_file(bad)
+
+
+def test_json_never_holds_a_test_half_entry_nor_any_entry_of_a_blind_run(monkeypatch, capsys, tmp_path):
+    """The frozen test half is looked at only in aggregate: `--json` (the full table's run writes one) keeps its rows
+    out of the file and writes their summary; a `--blind` run writes no entry at all."""
+    import argparse
+    import json
+
+    from spark_cli import bench as cli
+
+    def entry(i: str, half: str) -> dict:
+        return {
+            "id": f"{half}.{i}",
+            "style": "synonym",
+            "suite": "builtin",
+            "task": "block_on_plate",
+            "expect": "goal",
+            "half": half,
+            "instruction": f"secret words {half} {i}",
+        }
+
+    monkeypatch.setattr(wording, "load", lambda half: [entry("1", half), entry("2", half)])
+
+    def plan_entries(entries, seed, progress, **k):
+        rows = [dict(e, planned=e["id"].endswith("1"), correct=e["id"].endswith("1"), error="") for e in entries]
+        for r in rows:
+            progress(dict(r, understood=[]))
+        return [dict(r, understood=[]) for r in rows]
+
+    monkeypatch.setattr(wording, "plan_entries", plan_entries)
+    out = tmp_path / "rows.json"
+    args = argparse.Namespace(half=None, seed=0, trials=None, json=str(out), plan_only=True)
+    cli._wording(args, "spark bench wording --plan-only")
+    progress = capsys.readouterr().out
+    assert "dev.2" in progress and "test." not in progress  # test-half progress lines are counts alone
+    data = json.loads(out.read_text())
+    assert [r["id"] for r in data["planning"]] == ["dev.1", "dev.2"]
+    assert "secret words test" not in out.read_text()
+    assert data["withheld"]["planning_entries"] == 2
+    assert data["withheld"]["planning"]["planning_success"] == 0.5
+    cli._wording(argparse.Namespace(**vars(args), blind=True), "spark bench wording --blind --plan-only")
+    data = json.loads(out.read_text())
+    assert data["planning"] == [] and "secret" not in out.read_text()
+    assert data["withheld"]["planning_entries"] == 4
