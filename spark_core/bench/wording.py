@@ -374,6 +374,37 @@ def _why(row: dict[str, Any]) -> str:
     return "refused" if not row["planned"] else "planned, not the official plan's effect"
 
 
+# How a goal-stating entry failed, by the planner message's opening words (aggregate counts only: the message quotes
+# the instruction, so it is never printed).
+FAILURE_KINDS = (
+    ("refused: a phrase perception did not find", ("could not find",)),
+    ("refused: which one (several fit, or a role left open)", ("which ", "could not single")),
+    ("refused: no action read", ("no action", "only says what is there", "the instruction is empty")),
+    ("refused: read as contradicting itself", ("the instruction also asks for the opposite",)),
+)
+
+
+def failure_kind(row: dict[str, Any]) -> str:
+    """The failure table's row for a goal-stating entry that failed."""
+    if row["planned"]:
+        return "planned, not the official plan's effect"
+    words = row.get("error", "")
+    words = words.split(": ", 1)[1] if words.startswith("'") and ": " in words else words  # "'<clause>': which ..."
+    return next((kind for kind, heads in FAILURE_KINDS if words.startswith(heads)), "refused: other reason")
+
+
+def _failure_table(rows: list[dict[str, Any]], present: dict[str, bool]) -> list[str]:
+    failed = [r for r in rows if r["expect"] == "goal" and r["correct"] is False]
+    kinds = [k for k, _ in FAILURE_KINDS] + ["refused: other reason", "planned, not the official plan's effect"]
+    lines = ["", "| goal-stating entries that failed, by kind | dev | test |", "|---|---|---|"]
+    for kind in kinds:
+        cells = [
+            str(sum(failure_kind(r) == kind for r in failed if r["half"] == h)) if present[h] else "-" for h in HALVES
+        ]
+        lines.append(f"| {kind} | " + " | ".join(cells) + " |")
+    return lines
+
+
 def perception_note(segmenter: str) -> str:
     """The protocol's words for the segmenter: its name and whether it is privileged (catalog)."""
     from ..catalog import SEGMENTERS
@@ -431,6 +462,7 @@ def section(
         lines.append(
             f"| execution: reworded / official | {pct(execs['dev']['ratio'])} | {pct(execs['test']['ratio'])} |"
         )
+    lines += _failure_table(rows, present)
     wrong = [r for r in rows if r["half"] == "dev" and r["correct"] is False]
     if wrong and list_failures:
         lines.append("")

@@ -310,3 +310,25 @@ def test_json_never_holds_a_test_half_entry_nor_any_entry_of_a_blind_run(monkeyp
     data = json.loads(out.read_text())
     assert data["planning"] == [] and "secret" not in out.read_text()
     assert data["withheld"]["planning_entries"] == 4
+
+
+def test_failures_are_counted_by_kind_from_the_messages_opening_words_never_quoted():
+    goal = {"expect": "goal", "correct": False, "style": "synonym", "half": "dev", "planned": False}
+    rows = [
+        dict(goal, error="could not find 'zebra mug' in the scene: ..."),
+        dict(goal, error="'take the bowl': which bowl? (understood: ...)"),
+        dict(goal, error="no action I know in 'zebra'; I understand verbs such as ..."),
+        dict(goal, error="the instruction also asks for the opposite of what it asks: 'x' ..."),
+        dict(goal, error="lifting 'zebra' with both arms needs a second handle"),
+        dict(goal, planned=True, error=""),
+        dict(goal, correct=True, planned=True, error=""),
+    ]
+    kinds = [wording.failure_kind(r) for r in rows[:6]]
+    assert kinds == [k for k, _ in wording.FAILURE_KINDS] + [
+        "refused: other reason",
+        "planned, not the official plan's effect",
+    ]
+    text = wording.section([dict(r, id=f"e{i}") for i, r in enumerate(rows)], [], "cmd", 1)
+    assert "| refused: a phrase perception did not find | 1 | - |" in text
+    assert "| planned, not the official plan's effect | 1 | - |" in text
+    assert "zebra" not in text
