@@ -27,6 +27,14 @@ _DESCRIBES = re.compile(
     r" rests| lies| stands| looks| seems)\b)"
 )
 
+# A sentence that says what does not matter ("i don't really care how you get there", "doesn't matter which way
+# up"): it leaves the way open and asks nothing.
+_INDIFFERENT = re.compile(
+    r"^(?:(?:i|we) (?:do not|don't|dont) (?:really |much |particularly |honestly )?(?:care|mind)|"
+    r"(?:it |that )?(?:does not|doesn't|doesnt) (?:really |much )?matter|(?:either|any|whatever) (?:way|order) "
+    r"(?:is|'s) (?:fine|ok|okay))\b"
+)
+
 
 def descriptions(instruction: str, found: list[str] | None) -> tuple[str, list[str]]:
     """The instruction without the sentences that only describe, and those sentences; the instruction and no
@@ -34,7 +42,11 @@ def descriptions(instruction: str, found: list[str] | None) -> tuple[str, list[s
     phrases and the scene's inventory; None before perception looked, to know what to look for)."""
     said = [t.strip() for t in re.split(r"(?<=[.!?;])\s+", instruction.strip()) if t.strip()]
     aside = [t for t in said if _describes(t)]
-    if not aside or len(aside) == len(said) or (found is not None and any(names_absent(t, found) for t in aside)):
+    if (
+        not aside
+        or len(aside) == len(said)
+        or (found is not None and any(names_absent(_mine(t), found) for t in aside))
+    ):
         return instruction, []
     return " ".join(t for t in said if t not in aside), aside
 
@@ -45,4 +57,12 @@ def _describes(sentence: str) -> bool:
     text = re.sub(r"^(?:(?:ok|okay|so|right|alright|well|now|and|oh|um|uh),?\s+)+", "", text)
     if text.endswith("?") or starts_with_verb(text):
         return False
+    if _INDIFFERENT.match(text):
+        return True
     return bool(_DESCRIBES.match(text)) and not _ASKS.search(text)
+
+
+def _mine(sentence: str) -> str:
+    """The description without what the speaker says is theirs ("it keeps catching my sleeve", "our notes say
+    ..."): the speaker's own things are not on the table, so they are no thing the scene lacks."""
+    return re.sub(r"\b(?:my|our) (?:own )?[a-z]+(?:'s)?\b", "", sentence, flags=re.IGNORECASE)

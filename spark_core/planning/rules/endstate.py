@@ -144,7 +144,22 @@ def formal_words(text: str) -> str:
     text = re.sub(r"\bupon\b", "on", text)
     text = re.sub(r"\b(?:employ|utili[sz]e|make use of)(?= (?:the|a|an)\b)", "use", text)
     text = re.sub(r"\bwithin\b(?! (?:reach|range|the robot's reach|arm's reach))", "in", text)
-    text = re.sub(r"\b(?:presently|currently|now)? ?held (?=(?:in|inside|by)\b)", "", text)
+    text = re.sub(r"\b(?:(?:presently|currently|now) )?held (?=(?:in|inside|by)\b)", "", text)
+    # "up in the gripper, clear of the table": the second phrase says again that the thing is lifted
+    text = re.sub(
+        r"\b((?:up )?in the (?:gripper|air|hand)|lifted|raised|held up),? (?:and )?(?:well )?(?:clear of|off|above|"
+        r"away from) the (?:table|surface|tabletop|ground)\b",
+        r"\1",
+        text,
+    )
+    # "the red block in the gripper": a thing said to be in the robot's hand, with no verb, is lifted
+    text = re.sub(r"^((?:the|a|an) [a-z ]+?) (?:up )?in the (?:robot's )?(?:gripper|hand)(?=[.!,]|$)", r"lift \1", text)
+    # "the red block clear of the table": a thing said to be off what it stood on, with no verb, is lifted
+    text = re.sub(
+        r"^((?:the|a|an) [a-z ]+?) (?:up )?(?:well )?(?:clear of|off) the (?:table|surface|tabletop)(?=[.!]?$)",
+        r"lift \1",
+        text,
+    )
     text = re.sub(r"\b(?:is|are) to be found\b|\bshould be found\b", "should be", text)
     # "place on the plate the black bowl in the top drawer, not the one ...": the destination said before the thing
     text = re.sub(
@@ -229,7 +244,8 @@ def _wished_lifted(text: str) -> str:
     """ "i'd like the red cube up off the table": a thing wished up, off what it stands on, is lifted."""
     return re.sub(
         r"^(?:i want|i'd like|i would like|id like|i need|want) ((?:the|a|an) [a-z ]+?) (?:up )?(?:off the table|"
-        r"off the ground|in the air|up in the air|up off the table|lifted|raised|held up)\b",
+        r"off the ground|in the air|up in the air|up off the table|clear of the (?:table|surface)|lifted|raised|"
+        r"held up)\b",
         r"lift \1",
         text,
     )

@@ -33,6 +33,7 @@ _SELVES = frozenset(
     ["myself", "yourself", "itself", "ourselves", "themselves", "himself", "herself", "other", "others"]
     + ["nothing", "something", "anything", "everything", "stuff", "none", "each", "either", "neither", "lot", "lots"]
     + ["its", "his", "her", "their", "our", "your", "my", "mine"]
+    + ["which", "whichever", "what", "whatever", "how", "where", "who"]  # question words (the lexicon says noun)
     + ["thanks", "thank", "thx", "ty", "cheers", "please", "pls", "mate", "buddy"]  # a courtesy
     # the scene's things all together ("we're packing the groceries away"), never one thing perception looks for
     + ["groceries", "grocery", "items", "objects", "belongings", "scene", "setup", "workspace", "everyone"]

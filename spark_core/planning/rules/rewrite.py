@@ -866,7 +866,12 @@ def sentences(instruction: str) -> list[str]:
         text,
     )
     # "what i want is the cup on the saucer" (a cleft), "i want to see the cup on the saucer": the wish itself
-    text = re.sub(r"\bwhat (?:i|we) (?:want|need|would like|am after|are after) (?:is|are)\b", "i want", text)
+    text = re.sub(
+        r"\bwhat (?:i|we)(?:'m|'re| am| are|'d| would)? (?:want|need|like|am after|are after|after|hoping|hope|expect"
+        r"|expecting|looking for)(?: to see| to have| to get)? (?:is|are)\b",
+        "i want",
+        text,
+    )
     # a wish hedged ("i only want the ketchup in the basket", "we just need ..."): the wish itself
     text = re.sub(r"\b(i|we) (?:only|just|really|simply|actually|mainly) (want|need)\b", r"\1 \2", text)
     text = re.sub(
@@ -995,7 +1000,9 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(
         r"^(?:the )?(?:end state|final state|end result|desired state|end goal|final goal|goal state|target state|"
         r"goal|target|objective|aim|result|outcome|"
-        r"(?:target|goal|final|end) (?:pose|configuration|position))\s*[:,]\s*",
+        r"(?:target|goal|final|end) (?:pose|configuration|position))"
+        # ("final state i'd like: ...", "end result we want: ...": the label and whose wish it is)
+        r"(?: (?:i|we)(?:'d| would)? (?:like|want|need|am after|are after|'m after|'re after))?\s*[:,]\s*",
         "",
         text,
     )
@@ -2001,7 +2008,9 @@ def goal_to_action(text: str) -> str | None:
 def _predicate(subject: str, predicate: str) -> str | None:
     # "the jug winds up in the crate": a phrasal verb the goal words lack, between the thing and its place
     verb = re.fullmatch(r"(.+?) (\w+) (?:up|down|out)", subject)
-    if verb and is_verb(verb.group(2)) and _is_noun_phrase(verb.group(1)):
+    # ("the red block up in the gripper": "up" there says it is lifted, and "block" is the thing's noun)
+    lifted = subject.endswith(" up") and re.match(r"(?:up )?in the (?:gripper|air|hand)\b", predicate)
+    if verb and not lifted and is_verb(verb.group(2)) and _is_noun_phrase(verb.group(1)):
         subject = verb.group(1)
     if not (_is_noun_phrase(subject) or subject in ("it", "they", "that one", "this one")):
         return None  # a goal is said of a noun phrase ("the apple belongs ..."), not of a word salad
@@ -2013,7 +2022,10 @@ def _predicate(subject: str, predicate: str) -> str | None:
     # ("up" before a place is where it ends up: "should finish up inside the green area")
     place = r"(?:in|inside|into|on|onto|at|in front of|next to|by|near|beside|under)\b"
     predicate = re.sub(rf"^up (?={place})", "", predicate)
-    if predicate in HELD or re.match(r"(?:up\b|in the air|in the gripper|held|lifted|raised|picked up)", predicate):
+    if predicate in HELD or re.match(
+        r"(?:up\b|in the air|in the gripper|held|lifted|raised|picked up|(?:off|clear of) the (?:table|surface)\b)",
+        predicate,
+    ):
         return f"pick up {subject}"
     action = "put"
     for participle in sorted(PARTICIPLES, key=len, reverse=True):
