@@ -79,3 +79,51 @@ def test_a_remark_about_the_speakers_own_things_or_what_does_not_matter_is_set_a
 )
 def test_a_thing_the_scene_lacks_in_such_a_remark_is_still_refused(text):
     assert not plan(text, _mugs()).ok
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # how far a state goes says the state again
+        ("what i want is that drawer shut, all the way in.", ["close obj=drawer"]),
+        ("open the drawer fully", ["open obj=drawer"]),
+        # a note that one thing of its kind is there
+        ("scrub the tray with the sponge, there's only the one sponge out.", ["scrub target=tray tool=sponge"]),
+        # a colour said after the thing as an apposition, at the end of a clause
+        ("the tray scrubbed with the sponge - the yellow one.", ["scrub target=tray tool=yellow sponge"]),
+        ("put the mug, the red one, on the tray", ["put obj=red mug relation=on target=tray"]),
+        # how it sits and a hedged wish of where on it
+        ("mug on the tray, standing upright, ideally near the middle.", ["put obj=mug relation=on target=tray"]),
+        (
+            "put the mug on the tray, ideally near the back, then the cube on the mug",
+            ["put obj=mug relation=on target=tray", "put obj=cube relation=on target=mug"],
+        ),
+        # a courtesy between two steps (had dropped the second)
+        (
+            "put the mug on the tray, if you can, then the cube on the mug",
+            ["put obj=mug relation=on target=tray", "put obj=cube relation=on target=mug"],
+        ),
+    ],
+)
+def test_words_that_repeat_or_hedge_the_goal_add_no_step(text, expected):
+    assert read(text) == expected
+
+
+@pytest.mark.parametrize(
+    "label",
+    [
+        "Just a stacking test this time, nothing fancy.",
+        "Little warm-up task before the real stuff.",
+        "Bit of a strange one today.",
+        "Last one before lunch, I promise.",
+    ],
+)
+def test_a_label_for_the_session_is_set_aside(label):
+    kept, said = descriptions(f"{label} Put the mug on the tray.", ["mug", "tray"])
+    assert said == [label] and kept == "Put the mug on the tray."
+
+
+def test_an_ellipsis_that_picks_a_thing_is_no_session_label_and_a_lacking_thing_still_refuses():
+    text = "Put the mug on the tray. The red one."
+    assert descriptions(text, ["mug", "tray"]) == (text, [])
+    assert not plan("The banana test. Put the mug on the tray.", _mugs()).ok

@@ -35,6 +35,14 @@ _INDIFFERENT = re.compile(
     r"(?:is|'s) (?:fine|ok|okay))\b"
 )
 
+# A sentence that names the session's task with no verb ("just a placement test this time, nothing fancy.", "little
+# warm-up task before the real stuff.", "bit of a strange one today."): a label for the run, not a request.
+_SESSION = re.compile(
+    r"^(?:(?:just|only|another|a|an|the|this|our|my|bit of a|one more|quick|little|simple|easy)\s+)*"
+    r"(?:[a-z-]+\s+){0,2}?(?:(?:test|task|run|check|job|trial|exercise|warm-up|warmup|round|demo|session)s?|"
+    r"(?:easy|simple|quick|strange|odd|tricky|last|first|next|final) one)\b[^.!?:]*[.!]?$"
+)
+
 
 def descriptions(instruction: str, found: list[str] | None) -> tuple[str, list[str]]:
     """The instruction without the sentences that only describe, and those sentences; the instruction and no
@@ -57,7 +65,7 @@ def _describes(sentence: str) -> bool:
     text = re.sub(r"^(?:(?:ok|okay|so|right|alright|well|now|and|oh|um|uh),?\s+)+", "", text)
     if text.endswith("?") or starts_with_verb(text):
         return False
-    if _INDIFFERENT.match(text):
+    if _INDIFFERENT.match(text) or (_SESSION.match(text) and not _ASKS.search(text)):
         return True
     return bool(_DESCRIBES.match(text)) and not _ASKS.search(text)
 

@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import re
 
+from ...perception.colors import BASE_COLOURS
+
 # "the final configuration should have ...", "the desired end state is one in which ...", "the end state: ..."
 _FRAME = re.compile(
     r"^(?:the |a |an |our |my |your )?(?:(?:final|end|desired|target|goal|resulting|intended|expected|ideal|required)"
@@ -61,6 +63,9 @@ def _passive(text: str) -> str:
         text,
     )
     return f"{_PASSIVE[m.group(2)]} {m.group(1)}{m.group(3)}" if m else text
+
+
+_LOOKS = "|".join(sorted(BASE_COLOURS) + ["big", "small", "little", "large", "tall", "short", "wooden", "metal"])
 
 
 def formal_words(text: str) -> str:
@@ -145,6 +150,36 @@ def formal_words(text: str) -> str:
     text = re.sub(r"\b(?:employ|utili[sz]e|make use of)(?= (?:the|a|an)\b)", "use", text)
     text = re.sub(r"\bwithin\b(?! (?:reach|range|the robot's reach|arm's reach))", "in", text)
     text = re.sub(r"\b(?:(?:presently|currently|now) )?held (?=(?:in|inside|by)\b)", "", text)
+    # "that drawer shut, all the way in": how far it goes says the same state again
+    text = re.sub(
+        r"\b(shut|closed|close|open|opened)((?: (?:the|that|this|its|it)\b[a-z ]*?)?),? "
+        r"(?:all the way|fully|completely)(?: (?:in|out|home|back|closed|shut|open))?(?=\s*(?:[.,;!]|$))",
+        r"\1\2",
+        text,
+    )
+    # "..., there's only the one sponge out": a note that one thing of its kind is there, no step
+    text = re.sub(
+        r"\s*[,;-]\s*(?:there(?:'s| is) (?:only|just) (?:the )?one [a-z]+|(?:it's|it is|that's|that is) the only "
+        r"[a-z]+)(?: out| here| there| around| on the table| in the scene| left)?(?=\s*(?:[.;!]|$))",
+        "",
+        text,
+    )
+    # "the sponge - the yellow one": a colour or size said after the thing, as an apposition, is the thing's own
+    text = re.sub(
+        rf"\bthe ([a-z]+)\s*[,-]+\s*the ({_LOOKS}) one\b(?=\s*(?:[.;!]|$))",
+        r"the \2 \1",
+        text,
+    )
+    # "red block on the plate, sitting flat, ideally somewhere near the middle": how it sits and a hedged wish of
+    # where on it, said after the goal, are no step of their own
+    text = re.sub(
+        r",\s*(?:sitting|lying|standing|resting|set) (?:flat|upright|level|straight|square)(?=\s*(?:[.,;!]|$))",
+        "",
+        text,
+    )
+    # "..., if you can, then ...": a courtesy between two steps, no step of its own
+    text = re.sub(r",\s*(?:if (?:you can|you could|possible|you don't mind)|please)\s*(?=,)", "", text)
+    text = re.sub(r",\s*(?:ideally|preferably)\b[^.;!?,]*(?=[.;!?]|$|,\s*(?:then|and)\b)", "", text)
     # "up in the gripper, clear of the table": the second phrase says again that the thing is lifted
     text = re.sub(
         r"\b((?:up )?in the (?:gripper|air|hand)|lifted|raised|held up),? (?:and )?(?:well )?(?:clear of|off|above|"
