@@ -127,3 +127,29 @@ def test_an_ellipsis_that_picks_a_thing_is_no_session_label_and_a_lacking_thing_
     text = "Put the mug on the tray. The red one."
     assert descriptions(text, ["mug", "tray"]) == (text, [])
     assert not plan("The banana test. Put the mug on the tray.", _mugs()).ok
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "drop the cube into the tray, the flat grey one over on the left",
+        "drop the cube in the plastic tray - the shallow thing on the left",
+    ],
+)
+def test_how_a_thing_looks_said_again_after_its_name_leaves_where_it_is(text):
+    assert read(text)[-1].endswith("target=leftmost tray") or read(text)[-1].endswith("target=leftmost plastic tray")
+    assert len(read(text)) == 1
+
+
+def test_what_i_want_to_see_at_the_end_is_the_goal():
+    assert read("What I want to see at the end is the mug on the tray.") == ["put obj=mug relation=on target=tray"]
+
+
+def test_a_description_in_brackets_is_set_aside_unless_it_names_a_thing_the_scene_lacks():
+    text = "The mug on the tray (the tray's the flat one over on your left)."
+    kept, said = descriptions(text, ["mug", "tray"])
+    assert kept == "The mug on the tray." and said == ["the tray's the flat one over on your left"]
+    assert plan(text, _mugs()).ok
+    lacking = "The mug on the tray (the banana is next to it)."
+    assert descriptions(lacking, ["mug", "tray"]) == (lacking, [])
+    assert descriptions("The mug on the tray (the red one).", ["mug", "tray"])[1] == []  # picks, says nothing

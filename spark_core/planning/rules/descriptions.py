@@ -48,15 +48,17 @@ def descriptions(instruction: str, found: list[str] | None) -> tuple[str, list[s
     """The instruction without the sentences that only describe, and those sentences; the instruction and no
     sentences when none describes, every sentence does, or one names a thing the scene lacks (`found`: perception's
     phrases and the scene's inventory; None before perception looked, to know what to look for)."""
-    said = [t.strip() for t in re.split(r"(?<=[.!?;])\s+", instruction.strip()) if t.strip()]
-    aside = [t for t in said if _describes(t)]
-    if (
-        not aside
-        or len(aside) == len(said)
-        or (found is not None and any(names_absent(_mine(t), found) for t in aside))
-    ):
+    # a description in brackets ("... in the white bowl (the bowl's the round one over on your left).")
+    bracketed = [m for m in re.finditer(r"\s*\(([^()]*)\)", instruction) if _describes(m.group(1))]
+    text = instruction
+    for m in reversed(bracketed):
+        text = text[: m.start()] + text[m.end() :]
+    said = [t.strip() for t in re.split(r"(?<=[.!?;])\s+", text.strip()) if t.strip()]
+    aside = [m.group(1).strip() for m in bracketed] + [t for t in said if _describes(t)]
+    kept = [t for t in said if not _describes(t)]
+    if not aside or not kept or (found is not None and any(names_absent(_mine(t), found) for t in aside)):
         return instruction, []
-    return " ".join(t for t in said if t not in aside), aside
+    return " ".join(kept), aside
 
 
 def _describes(sentence: str) -> bool:

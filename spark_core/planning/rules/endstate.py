@@ -180,6 +180,15 @@ def formal_words(text: str) -> str:
     # "..., if you can, then ...": a courtesy between two steps, no step of its own
     text = re.sub(r",\s*(?:if (?:you can|you could|possible|you don't mind)|please)\s*(?=,)", "", text)
     text = re.sub(r",\s*(?:ideally|preferably)\b[^.;!?,]*(?=[.;!?]|$|,\s*(?:then|and)\b)", "", text)
+    # "the hamper, the woven brown one over on the left": after the thing's name, what it looks like is said again;
+    # where it is picks it out ("the hamper, the one on the left")
+    text = re.sub(
+        r"(\bthe (?:[a-z]+ ){0,2}[a-z]+\s*(?:,|\s-+)\s*the) (?:[a-z]+ ){1,3}?(?:one|thing)"
+        r"(?: (?:over|out|way out|just|sitting|set))? "
+        r"(?=(?:on|to|at) the (?:left|right|back|front|far|near)\b)",
+        r"\1 one ",
+        text,
+    )
     # "up in the gripper, clear of the table": the second phrase says again that the thing is lifted
     text = re.sub(
         r"\b((?:up )?in the (?:gripper|air|hand)|lifted|raised|held up),? (?:and )?(?:well )?(?:clear of|off|above|"

@@ -868,7 +868,8 @@ def sentences(instruction: str) -> list[str]:
     # "what i want is the cup on the saucer" (a cleft), "i want to see the cup on the saucer": the wish itself
     text = re.sub(
         r"\bwhat (?:i|we)(?:'m|'re| am| are|'d| would)? (?:want|need|like|am after|are after|after|hoping|hope|expect"
-        r"|expecting|looking for)(?: to see| to have| to get)? (?:is|are)\b",
+        r"|expecting|looking for)(?: to see| to have| to get)?(?: at the end| in the end| by the end| when you're done|"
+        r" afterwards)? (?:is|are)\b",
         "i want",
         text,
     )
