@@ -153,3 +153,27 @@ def test_a_description_in_brackets_is_set_aside_unless_it_names_a_thing_the_scen
     lacking = "The mug on the tray (the banana is next to it)."
     assert descriptions(lacking, ["mug", "tray"]) == (lacking, [])
     assert descriptions("The mug on the tray (the red one).", ["mug", "tray"])[1] == []  # picks, says nothing
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("tray: wiped, sponge as the tool", ["scrub target=tray tool=sponge"]),
+        ("scrub the tray using the sponge as the scrubber", ["scrub target=tray tool=sponge"]),
+        ("twist the knob so the hob comes on", ["turn on obj=knob"]),
+        ("rotate the dial so that it goes off", ["turn off obj=dial"]),
+        ("open the drawer; put the mug in it; done", ["open obj=drawer", "put obj=mug relation=in target=drawer"]),
+    ],
+)
+def test_terse_console_forms_say_the_goal(text, expected):
+    """probe61's lab-console shorthand: the tool said as what it serves as, the state after a label, the sense of a
+    turn said as its effect, a closing "done"."""
+    assert read(text) == expected
+
+
+def test_a_thing_tucked_somewhere_is_located_there_when_a_request_follows():
+    assert read("the mug tucked in the drawer, take that one to the tray") == [
+        "mention obj=mug in drawer",
+        "put obj=mug in drawer relation=in target=tray",
+    ]
+    assert read("the mug tucked away inside the drawer") == ["put obj=mug relation=in target=drawer"]  # a goal

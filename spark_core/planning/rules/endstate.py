@@ -189,6 +189,25 @@ def formal_words(text: str) -> str:
         r"\1 one ",
         text,
     )
+    # "plate: scrubbed, sponge as the tool": the tool said as what it serves as, the state after the thing's label
+    text = re.sub(
+        r"\b(?:using |with )?((?:the |a )?[a-z]+) as (?:the |a |my )?(?:tool|scrubber|implement)\b", r"with \1", text
+    )
+    text = re.sub(
+        r"^(?:the )?([a-z]+(?: [a-z]+)?)\s*:\s*(?:scrubbed|wiped|cleaned|scoured)\b,?\s*", r"scrub the \1 ", text
+    )
+    # "turn the stove knob so the burner comes on": the sense of the turn, said as what it makes happen
+    text = re.sub(
+        r"^(turn|twist|rotate|switch) ((?:the )?[a-z ]+?),? so (?:that )?(?:the [a-z ]+?|it) (?:comes|goes|turns|is|"
+        r"gets|switches)(?: back)? (on|off)\b",
+        r"turn \3 \2",
+        text,
+    )
+    # "the black bowl tucked in the top drawer": where it sits
+    text = re.sub(r"\btucked (?=(?:away )?(?:in|inside|into|under|behind)\b)", "sitting ", text)
+    text = re.sub(r"\bsitting away (?=in)", "sitting ", text)
+    # "...; done": the end of the list, no step
+    text = re.sub(r"\s*[;,.]\s*(?:done|that's it|that's all|end|finished)\s*[.!]?$", "", text)
     # "up in the gripper, clear of the table": the second phrase says again that the thing is lifted
     text = re.sub(
         r"\b((?:up )?in the (?:gripper|air|hand)|lifted|raised|held up),? (?:and )?(?:well )?(?:clear of|off|above|"
