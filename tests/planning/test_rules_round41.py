@@ -177,3 +177,8 @@ def test_a_thing_tucked_somewhere_is_located_there_when_a_request_follows():
         "put obj=mug in drawer relation=in target=tray",
     ]
     assert read("the mug tucked away inside the drawer") == ["put obj=mug relation=in target=drawer"]  # a goal
+
+
+def test_a_destination_said_after_a_comma_without_its_article():
+    assert read("mug by the tray, onto plate") == ["put obj=mug by tray relation=on target=plate"]
+    assert read("the cube, into box.") == ["put obj=cube relation=in target=box"]

@@ -206,6 +206,13 @@ def formal_words(text: str) -> str:
     # "the black bowl tucked in the top drawer": where it sits
     text = re.sub(r"\btucked (?=(?:away )?(?:in|inside|into|under|behind)\b)", "sitting ", text)
     text = re.sub(r"\bsitting away (?=in)", "sitting ", text)
+    # "black bowl by ramekin, onto plate": a destination said after a comma without its article
+    text = re.sub(
+        r"([,:]\s*(?:onto|into|on top of)) (?!(?:the|a|an|it|them|there|here|this|that|these|those|its|their|my|your|"
+        r"one|each|both|either)\b)(?=[a-z]+\s*(?:[.,;!]|$))",
+        r"\1 the ",
+        text,
+    )
     # "...; done": the end of the list, no step
     text = re.sub(r"\s*[;,.]\s*(?:done|that's it|that's all|end|finished)\s*[.!]?$", "", text)
     # "up in the gripper, clear of the table": the second phrase says again that the thing is lifted
