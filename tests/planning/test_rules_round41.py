@@ -182,3 +182,16 @@ def test_a_thing_tucked_somewhere_is_located_there_when_a_request_follows():
 def test_a_destination_said_after_a_comma_without_its_article():
     assert read("mug by the tray, onto plate") == ["put obj=mug by tray relation=on target=plate"]
     assert read("the cube, into box.") == ["put obj=cube relation=in target=box"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["Shut the drawer but leave it fully open.", "Open the cupboard while keeping it completely closed."],
+)
+def test_how_far_said_in_a_second_clause_is_kept_for_the_contradiction_check(text):
+    """Found on the refusal entries of dev and the probes: the how-far rule had eaten "fully open" after "but leave
+    it", and the contradiction went unseen."""
+    from spark_core.planning.rules.discourse import restructured
+
+    kept = restructured(text).lower()
+    assert "fully open" in kept or "completely closed" in kept

@@ -152,7 +152,9 @@ def formal_words(text: str) -> str:
     text = re.sub(r"\b(?:(?:presently|currently|now) )?held (?=(?:in|inside|by)\b)", "", text)
     # "that drawer shut, all the way in": how far it goes says the same state again
     text = re.sub(
-        r"\b(shut|closed|close|open|opened)((?: (?:the|that|this|its|it)\b[a-z ]*?)?),? "
+        # (the thing at most three words, no second clause: "close the drawer but leave it fully open" is kept)
+        r"\b(shut|closed|close|open|opened)((?: (?:the|that|this|its|it)\b(?: (?!(?:but|and|while|then|leave|keep|"
+        r"keeping|yet|though)\b)[a-z]+){0,2})?),? "
         r"(?:all the way|fully|completely)(?: (?:in|out|home|back|closed|shut|open))?(?=\s*(?:[.,;!]|$))",
         r"\1\2",
         text,
