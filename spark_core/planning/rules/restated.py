@@ -10,6 +10,7 @@ import re
 
 from ...perception.colors import BASE_COLOURS
 
+_PLACES = "left|right|middle|centre|center|front|back|rear|side|end|top|bottom|table|corner|edge|far|near"
 _LOOKS = "|".join(sorted(BASE_COLOURS) + ["big", "small", "little", "large", "tall", "short", "wooden", "metal"])
 
 
@@ -33,7 +34,8 @@ def restated(text: str) -> str:
     )
     # "the sponge - the yellow one": a colour or size said after the thing, as an apposition, is the thing's own
     text = re.sub(
-        rf"\bthe ([a-z]+)\s*[,-]+\s*the ({_LOOKS}) one\b(?=\s*(?:[.;!]|$))",
+        # (a thing's name, not a place: "the pear on the left - the yellow one" is read elsewhere)
+        rf"\bthe (?!(?:{_PLACES})\b)([a-z]+)\s*[,-]+\s*the ({_LOOKS}) one\b(?=\s*(?:[.;!]|$))",
         r"the \2 \1",
         text,
     )
