@@ -144,8 +144,22 @@ def test_workspace_steps_breakpoints_then_scrubs_tree_camera_and_3d_together(ser
     page.reload()  # a reopened page shows the state and the breakpoints already set
     page.wait_for_selector(".node.breakpoint[data-path='tree.children[3]']")
     page.wait_for_selector("#status[data-status=paused]")
+    # The answer to this resume is held back until the trial has already paused at the breakpoint (as a loaded
+    # server can deliver it): its stale "running" must not hide the newer pause and leave Resume disabled.
+    held: list = []
+
+    def hold(route):
+        held.append((route, route.fetch()))
+
+    page.route("**/control", hold)
     page.click("#resume")  # runs until the breakpoint
     page.wait_for_selector(".node.paused[data-path='tree.children[3]']", timeout=120_000)
+    assert len(held) == 1 and held[0][1].json()["state"] == "running"
+    held[0][0].fulfill(response=held[0][1])
+    page.unroute("**/control", hold)
+    page.wait_for_function("() => document.querySelector('#resume').disabled === false", timeout=10_000)
+    page.wait_for_timeout(300)  # the late answer has been handled by now: it must not have switched to running
+    assert page.locator("#status").inner_text() == "paused" and page.is_enabled("#resume")
     page.click("#resume")
     page.wait_for_selector("#verdict[data-verdict=success]", timeout=120_000)
     # finished: every control that can no longer act is disabled

@@ -159,9 +159,13 @@ export function TrialPage({ id }: { id: string }) {
     status: n.status, title: `${n.path} ${n.kind} ${(n.duration_s ?? 0).toFixed(3)} s`,
   }));
   const act = async (action: string, extra: Record<string, unknown> = {}) => {
+    const epoch = controlEpoch.current;
     try {
       const r = await post<{ state: string }>(`/api/trials/${encodeURIComponent(id)}/control`, { action, ...extra });
-      controlEpoch.current++; setControl(r.state); setError("");
+      // an event that came while the answer was on its way is newer than it (a resume's "running" arriving after
+      // the pause at the next breakpoint must not hide that pause)
+      if (controlEpoch.current === epoch) { controlEpoch.current++; setControl(r.state); }
+      setError("");
     } catch (e) { setError((e as Error).message); }
   };
   const toggleBreakpoint = live ? (path: string) => {
