@@ -16,11 +16,17 @@ from ...perception.qualifiers import split_relation
 
 # Said to hold at once: two opposite relations or states joined by one of these cannot both be met.
 # (not "at once": "immediately"; "while keeping it": said of the same thing)
-_AT_ONCE = re.compile(r"\b(?:at the same time|simultaneously|both at once|while (?:keeping|leaving|having) it)\b")
+_AT_ONCE = re.compile(
+    r"\b(?:at (?:the )?same (?:time|moment)|in (?:the )?same (?:moment|time|instant)|simultaneously|both at once|"
+    r"while (?:keeping|leaving|having) it)\b"
+)
 _OPPOSED = (
     (r"\bin front of\b|\bto the front\b|\bfront of\b", r"\bbehind\b|\bback of\b"),
     (r"\bopen(?:ed)?\b", r"\bclosed?\b|\bshut\b"),
     (r"\bon top of\b|\babove\b|\batop\b", r"\bunder(?:neath)?\b|\bbelow\b|\bbeneath\b"),
+    # "turn the stove off and at the same time turn it on" (the same thing: "it" said of it)
+    (r"\b(?:turn|switch)\w* (?:\w+ ){0,3}?off\b", r"\b(?:turn|switch)\w* (?:it on|on it)\b"),
+    (r"\b(?:turn|switch)\w* (?:\w+ ){0,3}?on\b", r"\b(?:turn|switch)\w* (?:it off|off it)\b"),
 )
 # Keeping a thing in a state: the verbs that say it, before the thing ("keep it ...") or after it ("it stays ...").
 _KEEP = r"(?:keep|keeping|keeps|leave|leaving|leaves)"
@@ -103,6 +109,21 @@ def contradicted(instruction: str, steps: list[dict]) -> str | None:
     if m := re.search(r"\b(?:on|on top of|above) (the (?:\w+ )?\w+) and (?:under|underneath|below|beneath) \1\b", text):
         return m.group(0)
     if m := re.search(r"\bboth (?:inside|in) and (?:outside|out)\b|\bboth (?:open|opened) and (?:closed|shut)\b", text):
+        return m.group(0)
+    # "in the basket and at the same time not in the basket": a place and its negation
+    m = re.search(
+        r"\b(in|into|inside|on|onto|on top of) (the (?:\w+ )?\w+)\b.*?\bnot (?:in|into|inside|on|onto|on top of) \2\b",
+        text,
+    )
+    if m and (m.group(1) in ("in", "into", "inside")) == bool(re.search(r"not (?:in|into|inside) ", m.group(0))):
+        return m.group(0)
+    # "put the cream cheese in the basket that is inside the cream cheese": a place inside the thing put there
+    if m := re.search(
+        r"\b(?:put|place|drop|set|move|stand|stick)\w* (?:the )?((?:\w+ )?\w+) (?:in|into|inside|on|onto|on top of) "
+        r"(?:the )?(?:\w+ )?\w+ (?:that is |that s |which is |sitting |standing |lying )?"
+        r"(?:in|inside|on|on top of|under) (?:the )?\1\b",
+        text,
+    ):
         return m.group(0)
     if said := _taken_back(text):
         return said

@@ -1681,6 +1681,13 @@ def restructured(instruction: str) -> str:
     # aloud, written in (rules/transcript.py)
     out = spoken(end_state_framed(re.sub(r"\s+", " ", spelled_out(unpunctuated(text)))))
     text = re.sub(r"\s+", " ", text)
+    # "once it's out far enough for your hand, grab ...": the state the step before made, said as a condition
+    out = re.sub(
+        r"(^|[.;!]\s+)once (?:it|the drawer|that)(?:'s| is| has come| comes| has been pulled) (?:out|open|opened)"
+        r"(?: (?:far )?enough)?(?: for (?:your|the) (?:hand|gripper|arm))?\s*,\s*",
+        r"\1",
+        out,
+    )
     # "the bowl next to the box (the right one)": a parenthesis saying which one, after a thing said by where it is,
     # is said of that thing, before its noun
     out = re.sub(

@@ -169,6 +169,10 @@ FILLERS = (
     "next",
     "can you",
     "could you",
+    # a learner's "would you mind to open", "may you open" (the request asked as leave)
+    "would you mind to",
+    "do you mind to",
+    "may you",
     "would you mind",
     "would you be so kind as to",
     "would you be kind enough to",

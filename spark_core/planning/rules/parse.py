@@ -729,10 +729,19 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
         action = "pour"  # "beads -> bowl": what a container holds goes in by pouring it out of the container
     if action == "mention":
         # "there's a drawer sticking out": how it stands is no part of its name
-        rest = re.sub(r" (?:sticking|poking|hanging|standing|sitting|lying) (?:out|open|up|there|here)$", "", rest)
+        rest = re.sub(
+            r" (?:is |are )?(?:sticking|poking|hanging|standing|sitting|lying) (?:out|open|up|there|here)$", "", rest
+        )
         return Clause(action, obj=object_phrase(rest) or None, text=text)
     if action == "scrub":
+        # "scrubbed good / well": how well is no part of what is scrubbed
+        rest = re.sub(r"\s+(?:good|well|properly|thoroughly|nicely|really well|really good)\b", "", rest)
         split = _split_on(rest, WITH)
+        if not split:  # "scrubbed by the sponge": the passive's agent is the tool
+            agent = re.fullmatch(
+                r"(.+?) by ((?:the|a|an|that|this) (?:\w+ )?(?:sponge|brush|cloth|rag|towel|scrubber|pad))", rest
+            )
+            split = (agent.group(1), agent.group(2)) if agent else None
         obj, tool = split if split else (rest, None)
         rubbed = (
             None
@@ -749,13 +758,16 @@ def _clause(action: str, rest: str, text: str, antecedent: str | None = None, la
         return Clause(action, target=noun_phrase(obj), tool=object_phrase(tool) if tool else None, text=text)
     if action == "pour":
         into = _split_on(rest, IN) or _split_on(rest, ON)
+        if not into:  # "from the mug to the bowl", "the beads of the cup to the bowl": "to" says where they go
+            to = re.fullmatch(r"(.+?) (?:over |across |back )?to (?!(?:the |your )?(?:left|right|side)\b)(.+)", rest)
+            into = (to.group(1), to.group(2)) if to else None
         later = [m for m in re.finditer(r"(?:^|\s)in(?:to|side)?(?=\s)", rest)][1:]
         if into and not re.search(r"\binto\b", rest) and later:
             # "the beads in the mug in the bowl": where they are said first, where they go last
             into = (rest[: later[-1].start()].strip(), rest[later[-1].end() :].strip())
         what, target = into if into else (rest, None)
         what = re.sub(r"(?<=\w) (?:out|over|away)$", "", what)  # "tip them out into the bowl": the verb's particle
-        src = _split_on(what, FROM)
+        src = _split_on(what, FROM) or _contents_of(what)
         obj, source = src if src else (what, None)
         source = noun_phrase(source) if source else _holder(obj) or noun_phrase(obj)
         if target and source:  # "from the mug on your right into the one on your left": of the source's kind
@@ -864,3 +876,9 @@ def _elided_noun(target: str, obj: str) -> str:
 
 def is_pronoun(phrase: str | None) -> bool:
     return phrase is not None and phrase in PRONOUNS
+
+
+def _contents_of(phrase: str) -> tuple[str, str] | None:
+    """ "tiny yellow beads of the red cup": the beads, and the cup they are poured from."""
+    m = re.fullmatch(r"(.*\b(?:beads|marbles|balls|contents|water|rice|grains))\s+(?:of|in|inside) (.+)", phrase)
+    return (m.group(1), m.group(2)) if m else None

@@ -8,7 +8,7 @@ import re
 
 from ...perception.qualifiers import split_relation
 from ...perception.variants import KIND_OF, PACKAGING, PARTS
-from .lexicon import CONTAINERS, CONTENTS, DETERMINERS, PRONOUNS, SELF_PARTS, TABLE
+from .lexicon import CONTAINERS, CONTENTS, DETERMINERS, PRONOUNS, SELF_PARTS, SUBSTANCES, TABLE
 
 # "the closer of the two mugs" -> "closest mug"; "the bowl nearer to the robot" -> "nearest bowl"
 COMPARATIVES = {
@@ -53,6 +53,13 @@ _TABLE_TAIL = re.compile(
     r"\s+(?:on|off|off of|from|at|across|along)\s+(?:the\s+)?(?:"
     + "|".join(TABLE)
     + r")\b(?!\s+(?:center|centre|middle))(?!\s+(?!and\b|then\b)[a-z])"  # "from the counter shelf": a shelf
+)
+# "the mug with beads", "the cup holding the marbles": the container, named by what it holds (a substance said
+# stays said: the scene must show it)
+_HOLDING = re.compile(
+    r" (?:with|holding|containing|full of|filled with) (?:the |some |its |all the )?"
+    r"(?:(?:little|tiny|small|loose|few|coloured|colored|glass|plastic|yellow|red|blue|green) )*"
+    rf"(?:{'|'.join(c for c in CONTENTS if c not in SUBSTANCES)})(?: in (?:it|them))?$"
 )
 _CONTAINER_OF = re.compile(r"\b(carton|jar|bottle|box|can|tin|stick|pack|packet|tub|bag|cup|piece)s? of (.+)$")
 
@@ -174,6 +181,7 @@ def object_phrase(words: str) -> str:
     if words.strip() in (*PRONOUNS, "that", "this"):
         return "that one" if words.strip() in ("that", "this") else words.strip()
     text = locator(comparative(strip_determiners(words)))
+    text = _HOLDING.sub("", text)
     text = re.sub(r"'s\b", "", possessive(text) if re.search(r"\w's (?:\w+ )?\w+$", text) else text)
     text = re.sub(r"^(?:other|one) |(?<=\w) ones?$", "", text).strip()
     text = _predicative(text)

@@ -33,7 +33,8 @@ _SELVES = frozenset(
     ["myself", "yourself", "itself", "ourselves", "themselves", "himself", "herself", "other", "others"]
     + ["nothing", "something", "anything", "everything", "stuff", "none", "each", "either", "neither", "lot", "lots"]
     + ["its", "his", "her", "their", "our", "your", "my", "mine"]
-    + ["which", "whichever", "what", "whatever", "how", "where", "who"]  # question words (the lexicon says noun)
+    # question words (the lexicon says noun)
+    + ["which", "whichever", "what", "whatever", "how", "where", "who", "whether"]
     + ["thanks", "thank", "thx", "ty", "cheers", "please", "pls", "mate", "buddy"]  # a courtesy
     # the scene's things all together ("we're packing the groceries away"), never one thing perception looks for
     + ["groceries", "grocery", "items", "objects", "belongings", "scene", "setup", "workspace", "everyone"]
@@ -48,6 +49,11 @@ _SELVES = frozenset(
 _REMARK = re.compile(
     r"\b(?:not|never|don't|dont|doesn't|won't)\b|n't\b|^(?:i|we|my|our|just|fyi|btw|nothing else)\b|"
     r"^no \w+ing\b|"  # how not to do it ("no lifting, just push")
+    r"^(?:there is )?no need\b|"  # what not to do ("just lift it; no need to put it anywhere")
+    r"^(?:that is|that's|this is) (?:the|my) (?:order|sequence)\b|"  # the steps' order said again
+    # the session, not the task: another day or another task ("same picture as yesterday", "the next scene is the
+    # long one")
+    r"\b(?:yesterday|last time|last week|the (?:next|last|previous|other) (?:scene|task|trial|run|episode|round))\b|"
     r"\b(?:can|should|may|will) (?:stay|remain|be left)\b|\b(?:stays?|remains?) (?:where|as|put)\b|\bfyi\b|\bbtw\b"
 )
 # A remark never says the request itself in other words ("i want the red cube on the green one").
@@ -55,11 +61,12 @@ _WISH = re.compile(r"\b(?:want|need|would like|'d like|wish|prefer) (?:the|it|th
 
 
 def remarks(instruction: str) -> tuple[str, list[str]]:
-    """The instruction without the remark sentences after its first imperative one, and those remarks; the
-    instruction itself and no remarks when it has none (or no sentence is a request said with a verb)."""
+    """The instruction without the remark sentences after its first imperative one (its first, when none is), and
+    those remarks; the instruction itself and no remarks when it has none."""
     said = [s.strip() for s in re.split(r"(?<=[.!?;])\s+", instruction.strip()) if s.strip()]
-    main = next((i for i, s in enumerate(said) if starts_with_verb(_plain(s))), None)
-    if main is None or len(said) < 2:
+    # (none said with a verb: the first says the goal, "red block -> bowl. short one, ...")
+    main = next((i for i, s in enumerate(said) if starts_with_verb(_plain(s))), 0)
+    if len(said) < 2:
         return instruction, []
     aside = [i for i, s in enumerate(said) if i > main and _REMARK.search(_plain(s)) and not _WISH.search(_plain(s))]
     if not aside:
@@ -190,7 +197,12 @@ def names_absent(sentence: str, found: list[str]) -> str | None:
 def _plain(sentence: str) -> str:
     """Lower case, and a courtesy before the verb gone ("please turn on the stove": a request said with a verb)."""
     text = sentence.lower().replace("\u2019", "'").strip()
-    return re.sub(r"^(?:(?:please|kindly|ok|okay|now|so|and|then|robot),?\s+)+", "", text)
+    text = re.sub(r"^(?:(?:please|kindly|ok|okay|now|so|and|then|robot),?\s+)+", "", text)
+    # asked as a question ("could you put ...", "would you mind putting ..."): the request's own verb
+    text = re.sub(r"^(?:could|can|would|will) you (?:please |kindly )?(?=\w)(?!mind\b)", "", text)
+    minded = re.match(r"(?:would|do) you mind (\w+ing)\b", text)
+    lemma = getAllLemmas(minded.group(1)).get("VERB") if minded else None
+    return lemma[0] + text[minded.end() :] if minded and lemma else text
 
 
 def context_sentences(instruction: str, found: list[str], says_a_goal: Callable[[str], bool]) -> tuple[str, list[str]]:

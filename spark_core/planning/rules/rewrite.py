@@ -80,7 +80,7 @@ ACTION_WORDS = {
 _VERB_FORMS = sorted({f for forms in VERBS.values() for f in forms} | {"turn", "switch", "use", "there is"}, key=len)
 _FIRST_WORDS = {f.split()[0] for f in _VERB_FORMS}
 _TRAILING = re.compile(
-    r"(?:\s*,\s*|\s+-+\s+|\s+)(?:and\s+)?(?:then\s+)?(?:just\s+|simply\s+)?"
+    r"(?:\s*[,:]\s*|\s+-+\s+|\s+)(?:and\s+)?(?:then\s+)?(?:just\s+|simply\s+)?"
     r"(?:keep|keeping (?:it|them)|hold(?= (?:it|them|still|steady|on|up|there)\b)|make sure|"
     r"let go|release|stop|ensure|check|wait|let (?:it|them)\b|"
     # how to hold it, said after the action ("..., holding it by its two handles")
@@ -133,14 +133,19 @@ _TRAILING = re.compile(
     r"(?:just |simply |only )(?:push|slide|shove|nudge|move) (?:it|them)\b|"
     r"(?:carefully|gently|slowly)\b(?= so\b|\s*$)|"
     # the goal's own name after it ("..., that is the end state i am after", "not the other way round")
-    r"that is the (?:end state|final state|result|outcome|state|arrangement|one|target|aim|idea|goal)\b|"
-    r"(?:and )?not the other way\b|that is what (?:i|we) (?:am|are) after\b|"
+    # ("..., that is my wish", "...: that is the target state", "..., that is what i am wanting")
+    r"(?:that|this) (?:is|will be|would be) (?:the|my|our) (?:(?:target|goal|end|final|desired) )?(?:end state|"
+    r"final state|result|outcome|state|arrangement|one|target|aim|idea|goal|wish|hope|plan|request|picture|"
+    r"deliverable|point|ask|task|job|assembly|setup|configuration|layout)\b|"
+    r"(?:this|that) (?:is what )?(?:i|we) (?:want|need|would like|am after|are after|mean)\b|"
+    r"(?:and )?not the other way\b|that is what (?:i|we) (?:am |are )?(?:after|wanting|needing|hoping for)\b|"
     r"that is what (?:i|we) (?:want|need|mean|would like|am asking for|are asking for)\b|"
     # a courtesy or a remark about how things came to be ("..., if you would", "..., ta", "..., someone left it
     # open"), which side faces up ("..., flat side down"), or moving the arm away ("..., then move back")
     r"if you (?:would|could|can|do not mind|please)\b|ta$|cheers$|"
     # how a lifted thing ends up, after the goal ("red cube up in the air, held (in the gripper)")
     r"(?<=, )held(?: (?:in|by) (?:the|your) (?:gripper|hand|fingers))?$|"
+    r"(?<=, )(?:held |lifted |raised |up )?(?:clear of|clear off|up off|above) the (?:table|surface|tabletop|counter)$|"
     # an adjustment of where it already is ("..., and get it centred", "... nice and level")
     r"(?:get|have) (?:it|them) (?:(?:properly|really|nice and|nicely|good and) )?(?:centred|centered|straight|level|"
     r"aligned|lined up|square|clean|spotless|shiny|tidy|sparkling)\b|"
@@ -149,6 +154,17 @@ _TRAILING = re.compile(
     r"right|just|nicely) )?(?:near|in|at|towards?|to|by|in the direction of) the "
     r"(?:middle|centre|center|edge|side|front|back)\b|"
     r"(?:someone|somebody|i|we|they|you) (?:left|put|moved|knocked|dropped) (?:it|them)\b|"
+    # how far down it goes ("..., all the way down so that it sits flat"), one to a place ("..., one block per tray")
+    r"(?:all the way|fully|right) (?:down|home|on)\b|"
+    r"one (?:\w+ )?(?:per|in each|to each|for each|in every) (?:tray|bowl|bin|plate|basket|peg|box)\b|"
+    # how far, if it can ("open it, all the way if it will go"), how many strokes ("..., a few passes")
+    r"(?:all the way |fully |as far as )?if it (?:will|can|would|does) go\b|"
+    r"(?:a few|several|some|two|three|a couple of|a couple) (?:passes|strokes|swipes|rubs|wipes|times)\b|"
+    # why, said of the task ("..., because the push is what we are testing")
+    r"(?:since|because) the (?:push|pull|grasp|lift|pour|scrub|wipe|test|point|idea|goal|trial|run|place|grip)\b|"
+    # how it came to be so ("... is sticking out from the last test")
+    r"(?:from|since|after) (?:the |our |my )?(?:last|previous|earlier|other|yesterday's) (?:test|run|trial|time|"
+    r"session|episode|attempt|task|one|round)\b|"
     r"(?:\w+ )?side (?:up|down)$|move (?:back|away)$|"
     # which way up it stands: no object, no place ("..., right side up", "... upside down")
     r"(?:(?:the )?(?:right|correct) (?:side|way) up|upside down|upright)(?=\s*$)|that (?:is|will be|should be) "
@@ -184,8 +200,79 @@ def sentences(instruction: str) -> list[str]:
     # "the blue block is first (the base)": in a stack, the first one is the bottom, the base only says so again
     text = re.sub(r"\bfirst,? \(?(?:as |at )?the (?:base|bottom|foundation)\)?", "at the bottom", text)
     text = re.sub(r"\s*[()]\s*", " ", text).strip()  # "(carefully)", "(thanks)": an aside's words, read as said
+    # a learner's "up in air", "in your gripper": the air, the gripper
+    text = re.sub(r"\b(up |high )?in air\b", r"\1in the air", text)
+    text = re.sub(r"\bin (?:your|its|the robot's|robot) (gripper|hand|fingers)\b", r"in the \1", text)
+    # "the drawer has to come open": has to be open
+    text = re.sub(r"\b(has to|must|should|needs to|need to) come (open|out|off)\b", r"\1 be \2", text)
+    # "the block's new home is inside that drawer": where it goes
+    text = re.sub(
+        r"\b(?:the )?([a-z]+(?: [a-z]+)?)'s new (?:home|place|spot|location) (?:is|will be|should be) "
+        r"(?=(?:in|inside|on|onto|on top of|into)\b)",
+        r"the \1 goes ",
+        text,
+    )
+    # "sorting check: ...", "drawer test: ...": what the run checks, then the goal
+    text = re.sub(
+        r"^(?:sorting|stacking|placement|grasp|drawer|stove|pour|scrub|push|lift) (?:check|test)\s*:\s*", "", text
+    )
+    # "..., all the way down so that it sits flat": how far down a placed thing goes, no step
+    text = re.sub(r",?\s*\b(?:all the way|fully|right) (?:down|home)(?= so\b|\s*[,.;!]|\s*$)", "", text)
+    # "the cabinet's drawer in the middle", "the drawer at the top": the middle drawer, the top drawer
+    text = re.sub(r"\b(drawer|shelf|tier|rack)(s?) (?:in|at) the (middle|top|bottom)\b(?! of\b)", r"\3 \1\2", text)
+    # "the black bowl - after you open the top drawer, it goes inside there": the thing said first, then its step
+    text = re.sub(
+        r"^((?:the|a|an) [a-z][\w ]*?)\s*(?:—|-+|:)\s*(?:after|once) you ([^,]+),\s*(?:it|they) (?:goes|go|belongs|"
+        r"should go|needs to go|is going|has to go) (in|inside|into|on|onto|on top of) (?:there|it)\b",
+        r"\2, then put \1 \3 it",
+        text,
+    )
+    # "lift it straight up": up
+    text = re.sub(r"\bstraight (up|upward|upwards)\b", r"\1", text)
+    # "a single drawer", "just the one drawer": one drawer
+    text = re.sub(r"\b(?:a|one|the) (?:single|sole|lone) (?=[a-z])", "a ", text)
+    # "lying just before the square": in front of it (a learner's "before" of a place)
+    text = re.sub(
+        r"\b(lying|sitting|standing|resting|placed|located|positioned|parked|set|sat) (?:just |right |directly )?"
+        r"before (?=the\b)",
+        r"\1 in front of ",
+        text,
+    )
+    # "on the right half of the table", "over on the left side of the table": on the right, on the left
+    text = re.sub(
+        r"\b(?:over )?on the (left|right|far left|far right)(?:-hand| hand)? (?:half|side|part|end) of the "
+        r"(?:table|counter|workspace|tabletop|bench)\b",
+        r"on the \1",
+        text,
+    )
+    # "the drawer pulled out, open": the same state said twice
+    text = re.sub(r"\b(?:pulled|slid|drawn) (?:out|open),? (?:and )?(open|opened)\b", r"\1", text)
+    # "red block in the green square, pushed there rather than carried": a push to the place
+    text = re.sub(
+        r"^((?:the |a )?[a-z][\w ]*? (?:in|into|inside|onto|on|to) (?:the )?[\w ]+?),? (?:pushed|slid|shoved|nudged) "
+        r"(?:there|in|in there|into it)\b(?: (?:rather than|instead of|and not|not) (?:carried|lifted|picked up))?",
+        r"push \1",
+        text,
+    )
+    # "up in the air, in the gripper": where a lifted thing is, said twice
+    text = re.sub(
+        r"\b((?:up )?in the air|(?:up )?in the gripper|up off the table)\s*,\s*(?:held )?(?:up )?in the "
+        r"(?:gripper|hand|fingers|air)\b",
+        r"\1",
+        text,
+    )
+    # "with it, scrub the plate": the tool said first, as after the verb
+    text = re.sub(
+        r"(^|[.;!]\s+)(with|using) (it|them|that|this|(?:the|that|this) [a-z]+(?: [a-z]+)?),\s*"
+        r"((?:scrub|wipe|clean|rub|polish|push|shove|nudge|poke|sweep)\b[^.;!]*)",
+        r"\1\4 \2 \3",
+        text,
+    )
     # a ramekin by its cook's name ("the little souffle dish"): a compound whose head names another kind (a cup)
     text = re.sub(r"\bsouffl[eé] (?:cup|dish|pot|mould|mold)(s?)\b", r"ramekin\1", text)
+    # a bowl by what is served in it ("the white soup dish", "the cereal bowl"): a bowl, whatever it held
+    _served = r"\b(?:soup|cereal|salad|pasta|noodle|rice|fruit|mixing|serving) "
+    text = re.sub(_served + r"(?:dishes|bowls)\b", "bowls", re.sub(_served + r"(?:dish|bowl)\b", "bowl", text))
     # speech: "um", "uh", and a phrase said twice around one ("in the, uh, in the basket")
     text = re.sub(r",?\s*\b(?:um+|uh+|erm|er|hmm+)\b,?", "", text).strip(" ,")
     # (not a chain of places: "the red block on the green block, the green block on the blue block")
@@ -753,7 +840,12 @@ def sentences(instruction: str) -> list[str]:
         r"^(?:so,? )?(?:my|our|the) (?:hope|wish|aim|goal|plan|idea) (?:is|here is) (?:that |for )?", "i want ", text
     )
     # the goal said by what is wanted at the end ("what i want at the end: ...")
-    text = re.sub(r"^(?:what|all) (?:i|we) (?:want|need)(?: at the end| in the end| to see)?\s*[:,]\s*", "", text)
+    text = re.sub(
+        r"^(?:what|all) (?:i|we)(?:'d| would)? (?:want|need|like|hope|expect)(?: to see| to have| to find)?"
+        r"(?: at the end| in the end| by the end| when you're done| when you are done| afterwards)?\s*[:,]\s*",
+        "",
+        text,
+    )
     # "the cabinet top is where the plate goes", "the bowl closer to you is the one for the plate": a place named
     # first, then what goes there
     text = re.sub(
@@ -1001,7 +1093,12 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(
         r"^(?:the )?(?:end state|final state|end result|desired state|end goal|final goal|goal state|target state|"
         r"goal|target|objective|aim|result|outcome|"
-        r"(?:target|goal|final|end) (?:pose|configuration|position))"
+        r"(?:target|goal|final|end) (?:pose|configuration|position)|"
+        # ("two drops: ...", "sorting check: ...": how many steps, or what the run checks)
+        r"(?:two|three|four|2|3|4) (?:drops|moves|steps|jobs|tasks|parts|placements|transfers)|"
+        r"(?:sorting|stacking|placement|grasp|drawer|stove|pour|scrub|push|lift) (?:check|test|task|job))"
+        # ("end state for this one: ...", "goal this time: ...": which task it is the goal of)
+        r"(?: for (?:this|the next|this next) (?:one|task|scene|trial|run|episode|round)| this time| here)?"
         # ("final state i'd like: ...", "end result we want: ...": the label and whose wish it is)
         r"(?: (?:i|we)(?:'d| would)? (?:like|want|need|am after|are after|'m after|'re after))?\s*[:,]\s*",
         "",
@@ -1032,8 +1129,9 @@ def sentences(instruction: str) -> list[str]:
         text = re.sub(r"\b(?:sliding |pull-out |pullout )?compartment(s?)\b", r"drawer\1", text)
     # "(nothing else moved)", "- nothing else changes": what stays as it is, no step
     text = re.sub(
-        r"[,;-]?\s*\(?\s*(?:and )?nothing else (?:moved|moves|changes|changed|touched|is touched|is moved)\s*\)?"
-        r"(?=\s*[.!]?$)",
+        # (a sentence of its own takes the stop before it: "the drawer open. nothing else changes.")
+        r"(?:[,;-]|(?<=\w)[.!])?\s*\(?\s*(?:and )?nothing else (?:moved|moves|changes|changed|touched|is touched|"
+        r"is moved|should change|should move)\s*\)?(?=\s*[.!]?$)",
         "",
         text,
     )
@@ -1665,6 +1763,20 @@ def _gerund(text: str) -> str:
     return text
 
 
+def _without_trailing(s: str) -> tuple[str, bool]:
+    """`s` without its trailing remark (`_TRAILING`), and whether it had one; a step said after the remark stays
+    ("..., and then, since you'll have a free hand, stand the box next to it": the box is still asked for)."""
+    m = _TRAILING.search(s)
+    if m is None:
+        return s, False
+    cut = s[m.start() :]
+    for c in re.finditer(r",\s*(?:and |then |and then )?", cut[1:]):
+        rest = cut[1 + c.end() :]
+        if starts_with_verb(rest):
+            return f"{s[: m.start()]}, then {rest}", True
+    return s[: m.start()], True
+
+
 def strip_article(phrase: str) -> str:
     return re.sub(r"^(?:the|a|an|this|that|my|your) ", "", phrase)
 
@@ -2120,6 +2232,14 @@ def imperatives(instruction: str) -> list[str]:
                 r"there is \1 \2",
                 s,
             )
+            # "the cabinet at the back has a single drawer. open it": the part named by its whole, then acted on
+            if re.search(r"\b(?:it|them|there)\b", said[i + 1]) and starts_with_verb(said[i + 1]):
+                s = re.sub(
+                    r"^((?:the|that|this) [\w ]+?) (?:has|has got) (?:a|an|one|a single|just one|only one) "
+                    r"(drawer|handle|door|lid|knob)(?:,? and (?:it|that) is (?:shut|closed|open|out|in))?$",
+                    r"there is the \2 of \1",
+                    s,
+                )
             # "the drawer is open; close it": the state it is in now, before the request that changes it
             if starts_with_verb(said[i + 1]):
                 s = re.sub(
@@ -2191,7 +2311,7 @@ def imperatives(instruction: str) -> list[str]:
             s = re.sub(r",\s*(?:all the way )?(?:out|open|shut|closed)\b(?:\s+if (?:you can|possible))?\s*$", "", s)
         s = _GRIP.sub("", _NOT_THERE.sub("", _request_after_reason(_gripped_by_part(s))))
         for _ in range(3):  # remarks said one after another (", when you've got a sec, no rush"): the last goes first
-            s, cut = _TRAILING.subn("", s)
+            s, cut = _without_trailing(s)
             if not cut:
                 break
         # "red block up, in the gripper", "red cube up and still held": a thing lifted and held

@@ -36,6 +36,9 @@ _UNMARKED = {
 # Chat spellings and shorthand of colours that no keystroke slip reaches ("da bowl", "grn on blu").
 _CHAT = {"da": "the", "tha": "the", "grn": "green", "blu": "blue", "ylw": "yellow", "yllw": "yellow", "wht": "white"}
 _CHAT |= {"blk": "black", "brn": "brown", "gry": "grey", "prpl": "purple", "orng": "orange", "rd": "red"}
+_CHAT |= {"thn": "then", "nxt": "next", "frst": "first"}
+# "pleas" is a word (pleas of a plea), but a request's last word or its first is the courtesy with a slip
+_PLEAS = re.compile(r"(?:^|(?<=[,;]\s))pleas\b(?=\s+[a-z])|\bpleas(?=\s*[.!?]*\s*$)|(?<=,\s)pleas(?=\s*[,.!?])", re.I)
 
 
 def _one_slip(a: str, b: str) -> bool:
@@ -143,6 +146,7 @@ def corrected(instruction: str, inventory: tuple[str, ...] = ()) -> str:
     instruction = re.sub(
         rf"\b({'|'.join(_CHAT)})\b", lambda m: _CHAT[m.group(1).lower()], instruction, flags=re.IGNORECASE
     )
+    instruction = _PLEAS.sub("please", instruction)
     scene = _scene_words(inventory)
     known = _planner_words() | scene
 
