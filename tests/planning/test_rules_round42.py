@@ -230,3 +230,57 @@ def test_two_things_or_two_places_are_no_contradiction(text):
 )
 def test_learners_and_operators_wording_of_a_known_goal(text, want):
     assert read(text)[-1] == want
+
+
+@pytest.mark.parametrize(
+    ("text", "thing"),
+    [
+        ("pick up the mug sitting there", "mug"),
+        ("put the tray standing upright in the bowl", "tray"),
+        ("There's a mug sitting out on the table; put it in the bowl.", "bottom mug"),
+        ("the mug lying on its side goes in the bowl", "mug"),
+    ],
+)
+def test_a_posture_said_after_the_name_with_no_other_thing_leaves_the_name(text, thing):
+    assert f"obj={thing} " in read(text)[-1] + " " or read(text)[-1].endswith(f"obj={thing}")
+
+
+def test_a_posture_before_a_place_still_says_where_it_is():
+    assert read("put the mug sitting on the tray in the bowl") == ["put obj=mug on tray relation=in target=bowl"]
+    # ... and a comparative after it still says which ("sitting further away": the farther one)
+    assert (
+        "further" in read("pick up the mug sitting further away")[0]
+        or "farth" in read("pick up the mug sitting further away")[0]
+    )
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "put the mug on the tray without moving the mug",
+        "carry the green block to the bowl without touching it",
+    ],
+)
+def test_carrying_a_thing_that_may_not_move_is_nonsense(text):
+    assert contradicted(text, []) is not None
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["put the mug on the tray without moving the bowl", "push the tray to the left without lifting it"],
+)
+def test_leaving_another_thing_alone_or_pushing_without_lifting_is_no_contradiction(text):
+    assert contradicted(text, []) is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Mug on the tray; that's this run's target.",
+        "put the mug on the tray, and set it down gently so that it doesn't tip",
+        "mug into the wicker carrier",
+        "Mug up on the tray.",
+    ],
+)
+def test_more_ways_to_close_or_pad_a_put(text):
+    assert read(text)[-1] in ("put obj=mug relation=on target=tray", "put obj=mug relation=in target=wicker basket")

@@ -117,6 +117,14 @@ def contradicted(instruction: str, steps: list[dict]) -> str | None:
     )
     if m and (m.group(1) in ("in", "into", "inside")) == bool(re.search(r"not (?:in|into|inside) ", m.group(0))):
         return m.group(0)
+    # "put the butter in the basket without moving the butter": a thing carried that may not move
+    if m := re.search(
+        r"\b(?:put|place|move|lift|pick|take|carry|bring|set|drop|push|slide|raise)\w* (?:up )?(?:the |a |an )?"
+        r"((?!(?:the|a|an)\b)(?:\w+ )?\w+)\b.*\bwithout (?:moving|touching|displacing|shifting) "
+        r"(?:it|them|the \1|\1)\b",
+        text,
+    ):
+        return m.group(0)
     # "put the cream cheese in the basket that is inside the cream cheese": a place inside the thing put there
     if m := re.search(
         r"\b(?:put|place|drop|set|move|stand|stick)\w* (?:the )?((?:\w+ )?\w+) (?:in|into|inside|on|onto|on top of) "

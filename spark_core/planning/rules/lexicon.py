@@ -157,6 +157,8 @@ FILLERS = (
     "please",
     "pls",
     "plz",
+    "obviously",
+    "of course",
     "kindly",
     "carefully",
     "gently",

@@ -37,6 +37,14 @@ _PARTICIPLE = re.compile(
     r"(?=(?:not\s+)?(?:" + "|".join(re.escape(x) for x in LOCATORS) + r"|to (?:the )?(?:left|right) of|in front of|"
     r"behind|(?:left|right) of)\b)"
 )
+# A posture said after a thing's name with nothing after it but words of how or where-ish that name no thing
+# ("sitting out", "standing upright", "lying there", "out on the table"): the words go, the name stays.
+_POSTURE_TAIL = re.compile(
+    r"(?<=\w) (?:(?:sitting|standing|lying|resting|perched|sat|stood|parked|waiting)"
+    r"(?: (?:out|there|here|up|upright|around|about|still|flat|upside down|on its side|over there|out there|"
+    r"back there|by itself|alone|nearby))*|out|out there|over there)"
+    r"(?=(?: (?:on|at) (?:the )?(?:table|tabletop|table top|counter)\b)?$)"
+)
 # "up on the cabinet", "down in the drawer", "over by the box": the particle adds nothing to where it is
 _PARTICLE = re.compile(r"\b(?:up|down|over|back) (?=(?:on|onto|in|inside|on top of|at|by|near|next to|beside)\b)")
 # where one thing stands relative to another, as the relation perception measures ("in front of the box": near it)
@@ -153,6 +161,9 @@ def locator(text: str) -> str:
     )
     text = BESIDE.sub("near", _PARTICLE.sub("", _NOT_PARTICIPLE.sub("not ", text)))
     text = _PARTICIPLE.sub("", text)
+    # "the green block sitting out (on the table)", "the bottle standing upright", "the block sitting there": how it
+    # stands, said after its name, names no other thing (perception looks for the thing alone)
+    text = _POSTURE_TAIL.sub("", text)
     # on the table is the lowest place a thing can be: "the bowl not on the table" is any bowl but the lowest, "the
     # bowl on the table" (another is up on something) the lowest; "off"/"from" the table only says where it is
     table = r"(?:the )?(?:table|tabletop|table top|counter)\b(?!\s+(?:center|centre|middle))"

@@ -54,6 +54,9 @@ _REMARK = re.compile(
     # the session, not the task: another day or another task ("same picture as yesterday", "the next scene is the
     # long one")
     r"\b(?:yesterday|last time|last week|the (?:next|last|previous|other) (?:scene|task|trial|run|episode|round))\b|"
+    r"\bearlier (?:in the week|today|this week|on)\b|^in (?:that|this|the same) order\b|^only (?:that|this) one\b|"
+    # the other things kept as they are ("the top and bottom stay shut")
+    r"\b(?:stay|stays|remain|remains) (?:shut|closed|open|off|on|where they are|as they are)\b|"
     r"\b(?:can|should|may|will) (?:stay|remain|be left)\b|\b(?:stays?|remains?) (?:where|as|put)\b|\bfyi\b|\bbtw\b"
 )
 # A remark never says the request itself in other words ("i want the red cube on the green one").

@@ -134,7 +134,8 @@ _TRAILING = re.compile(
     r"(?:carefully|gently|slowly)\b(?= so\b|\s*$)|"
     # the goal's own name after it ("..., that is the end state i am after", "not the other way round")
     # ("..., that is my wish", "...: that is the target state", "..., that is what i am wanting")
-    r"(?:that|this) (?:is|will be|would be) (?:the|my|our) (?:(?:target|goal|end|final|desired) )?(?:end state|"
+    r"(?:that|this) (?:is|will be|would be) (?:the|my|our|this (?:scene|run|task|trial)'s) "
+    r"(?:(?:target|goal|end|final|desired) )?(?:end state|"
     r"final state|result|outcome|state|arrangement|one|target|aim|idea|goal|wish|hope|plan|request|picture|"
     r"deliverable|point|ask|task|job|assembly|setup|configuration|layout)\b|"
     r"(?:this|that) (?:is what )?(?:i|we) (?:want|need|would like|am after|are after|mean)\b|"
@@ -154,6 +155,9 @@ _TRAILING = re.compile(
     r"right|just|nicely) )?(?:near|in|at|towards?|to|by|in the direction of) the "
     r"(?:middle|centre|center|edge|side|front|back)\b|"
     r"(?:someone|somebody|i|we|they|you) (?:left|put|moved|knocked|dropped) (?:it|them)\b|"
+    # how it is set down ("..., and set it down flat so that it doesn't slide")
+    r"(?:and )?(?:set|put|lay|place) (?:it|them) down(?: (?:flat|gently|carefully|upright|straight|softly))?"
+    r"(?= so\b|\s*$)|"
     # how far down it goes ("..., all the way down so that it sits flat"), one to a place ("..., one block per tray")
     r"(?:all the way|fully|right) (?:down|home|on)\b|"
     r"one (?:\w+ )?(?:per|in each|to each|for each|in every) (?:tray|bowl|bin|plate|basket|peg|box)\b|"
@@ -167,7 +171,8 @@ _TRAILING = re.compile(
     r"session|episode|attempt|task|one|round)\b|"
     r"(?:\w+ )?side (?:up|down)$|move (?:back|away)$|"
     # which way up it stands: no object, no place ("..., right side up", "... upside down")
-    r"(?:(?:the )?(?:right|correct) (?:side|way) up|upside down|upright)(?=\s*$)|that (?:is|will be|should be) "
+    r"(?:(?:the )?(?:right|correct) (?:side|way) up|upside down|upright|standing(?: up| upright)?)(?=\s*$)|"
+    r"that (?:is|will be|should be) "
     r"(?:all|it|everything|the (?:goal|plan|idea|task|job|aim))|that is all|thanks?(?: you)?)\b.*$"
 )
 # Words said of small contents ("some little beads"): what they are is still the contents.
@@ -225,6 +230,58 @@ def sentences(instruction: str) -> list[str]:
         r"^((?:the|a|an) [a-z][\w ]*?)\s*(?:—|-+|:)\s*(?:after|once) you ([^,]+),\s*(?:it|they) (?:goes|go|belongs|"
         r"should go|needs to go|is going|has to go) (in|inside|into|on|onto|on top of) (?:there|it)\b",
         r"\2, then put \1 \3 it",
+        text,
+    )
+    # a learner's order: "on plate you place it" -> "place it on the plate"
+    text = re.sub(
+        r"(^|,\s*(?:and )?|\b(?:and|then) )(on|in|into|onto|inside) (?:the )?([a-z]+(?: [a-z]+)?) you (?:then )?"
+        r"(place|put|set|drop|lay|stand) (it|them)\b",
+        r"\1\4 \5 \2 the \3",
+        text,
+    )
+    # "near the plate you see one black bowl": there is one there
+    text = re.sub(
+        r"(^|[.;!]\s*)(near|by|next to|beside|behind|in front of|on) the ([a-z]+(?: [a-z]+)?) you (?:can |will |'ll )?"
+        r"(?:see|find|notice|have) (?:one|a|an|the) ([a-z]+(?: [a-z]+)?)(?=\s*[.;,!])",
+        r"\1there is a \4 \2 the \3",
+        text,
+    )
+    # "take it ..., bring it over, then set it on the plate": carrying it there is no step of its own
+    text = re.sub(
+        r",\s*(?:and )?(?:bring|carry|take) (?:it|them) (?:over|across)(?: here| there)?\s*,\s*(?:and )?(?:then )?",
+        ", then ",
+        text,
+    )
+    # "the cabinet roof": its top
+    text = re.sub(r"\bthe ([a-z]+)(?:'s)? roof\b", r"the top of the \1", text)
+    # "..., for this one", "... for the next run": which run it is for, no part of the goal
+    text = re.sub(
+        r",?\s*\bfor (?:this|the next|the|this next|today's) (?:one|run|trial|task|episode|round|scene|test)\b",
+        "",
+        text,
+    )
+    # "the middle drawer is the one i need open", "the lowest drawer is the one to open": the request
+    text = re.sub(
+        r"^((?:the )?[a-z' ]+?) is the one (?:(?:i|we) (?:need|want|would like|'d like)(?: to be)? |to (?:be )?)"
+        r"(open|opened|closed|shut|close)\b",
+        lambda m: f"{'open' if m.group(2).startswith('open') else 'close'} {m.group(1)}",
+        text,
+    )
+    # "wine bottle up on top of the cabinet", "red block up on the plate": a goal said without a verb (the noun
+    # and the particle are no phrasal verb, "bottle up")
+    text = re.sub(
+        r"(^|[.;!]\s+)((?:the |a )?[a-z]+(?: [a-z]+)?) (?:up|down|over) "
+        r"(?=(?:on|onto|into|inside|on top of)\b|in\b(?! the (?:air|gripper|hand|fingers)\b))",
+        lambda m: m.group(0) if starts_with_verb(m.group(2)) else f"{m.group(1)}{m.group(2)} ",
+        text,
+    )
+    # "the wicker tub", "the wicker carrier": a basket (what is woven of wicker here)
+    text = re.sub(r"\bwicker (?:tub|carrier|box|bin|container|holder|hamper|thing|one)\b", "wicker basket", text)
+    # "...; that's this run's target": the goal's own name, said as a sentence after it
+    text = re.sub(
+        r"(?<=[.;!])\s*(?:that|this)(?:'s| is) (?:the |my |our |this (?:scene|run|task|trial)'s )"
+        r"(?:target|goal|point|aim|idea|plan|deliverable|end state|target state|final state)\b[^.;!]*[.!]?\s*$",
+        "",
         text,
     )
     # "lift it straight up": up
