@@ -109,7 +109,7 @@ def test_a_tool_said_first_or_as_the_passives_agent_is_the_tool(text):
     [
         "the green block up in air",
         "green block up in air, in your gripper",
-        "green block up in the air, in the robot's hand",
+        "green block up in the air, in the gripper",
         "green block up in the gripper, clear of the table",
         "Lift the green block straight up.",
     ],

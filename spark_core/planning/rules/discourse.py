@@ -1682,10 +1682,11 @@ def restructured(instruction: str) -> str:
     out = spoken(end_state_framed(re.sub(r"\s+", " ", spelled_out(unpunctuated(text)))))
     text = re.sub(r"\s+", " ", text)
     # "once it's out far enough for your hand, grab ...": the state the step before made, said as a condition
+    # (only after a sentence that opens it: "once the drawer is open, put ..." alone still asks to open it)
     out = re.sub(
-        r"(^|[.;!]\s+)once (?:it|the drawer|that)(?:'s| is| has come| comes| has been pulled) (?:out|open|opened)"
+        r"(?<=[.;!])(\s+)once (?:it|the drawer|that)(?:'s| is| has come| comes| has been pulled) (?:out|open|opened)"
         r"(?: (?:far )?enough)?(?: for (?:your|the) (?:hand|gripper|arm))?\s*,\s*",
-        r"\1",
+        lambda m: m.group(1) if re.search(r"\bopen|\bpull", out[: m.start()]) else m.group(0),
         out,
     )
     # "the bowl next to the box (the right one)": a parenthesis saying which one, after a thing said by where it is,

@@ -880,5 +880,5 @@ def is_pronoun(phrase: str | None) -> bool:
 
 def _contents_of(phrase: str) -> tuple[str, str] | None:
     """ "tiny yellow beads of the red cup": the beads, and the cup they are poured from."""
-    m = re.fullmatch(r"(.*\b(?:beads|marbles|balls|contents|water|rice|grains))\s+(?:of|in|inside) (.+)", phrase)
+    m = re.fullmatch(r"(.*\b(?:beads|marbles|balls|contents|water|rice|grains))\s+of (.+)", phrase)
     return (m.group(1), m.group(2)) if m else None

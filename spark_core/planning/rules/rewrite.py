@@ -207,7 +207,7 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(r"\s*[()]\s*", " ", text).strip()  # "(carefully)", "(thanks)": an aside's words, read as said
     # a learner's "up in air", "in your gripper": the air, the gripper
     text = re.sub(r"\b(up |high )?in air\b", r"\1in the air", text)
-    text = re.sub(r"\bin (?:your|its|the robot's|robot) (gripper|hand|fingers)\b", r"in the \1", text)
+    text = re.sub(r"\bin (?:your|its|the robot's|robot) gripper\b", "in the gripper", text)
     # "the drawer has to come open": has to be open
     text = re.sub(r"\b(has to|must|should|needs to|need to) come (open|out|off)\b", r"\1 be \2", text)
     # "the block's new home is inside that drawer": where it goes
@@ -327,8 +327,9 @@ def sentences(instruction: str) -> list[str]:
     )
     # a ramekin by its cook's name ("the little souffle dish"): a compound whose head names another kind (a cup)
     text = re.sub(r"\bsouffl[eé] (?:cup|dish|pot|mould|mold)(s?)\b", r"ramekin\1", text)
-    # a bowl by what is served in it ("the white soup dish", "the cereal bowl"): a bowl, whatever it held
-    _served = r"\b(?:soup|cereal|salad|pasta|noodle|rice|fruit|mixing|serving) "
+    # a bowl by what is eaten from it ("the white soup dish", "the cereal bowl"): a bowl (a "fruit bowl" or a "salad
+    # bowl" may be a kind of its own, which a scene without one lacks)
+    _served = r"\b(?:soup|cereal|pasta|noodle) "
     text = re.sub(_served + r"(?:dishes|bowls)\b", "bowls", re.sub(_served + r"(?:dish|bowl)\b", "bowl", text))
     # speech: "um", "uh", and a phrase said twice around one ("in the, uh, in the basket")
     text = re.sub(r",?\s*\b(?:um+|uh+|erm|er|hmm+)\b,?", "", text).strip(" ,")
