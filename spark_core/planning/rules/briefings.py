@@ -1,10 +1,12 @@
 """Learners' and operators' wording said plainly, before the rule parser reads a sentence (round 42, from probe62's
-non-native speakers and probe63's operator briefings): "up in air", "may you ..."-style word order ("on plate you
-place it"), a goal's label for the run ("sorting check: ..."), what a briefing adds that is no step ("..., for the
-next run", "..., bring it over, then ..."), and a tool said before the verb ("with it, scrub the plate").
+non-native speakers and probe63's operator briefings): "up in air", a learner's word order ("on plate you place
+it"), a goal's label for the run ("sorting check: ..."), what a briefing adds that is no step ("..., for the next
+run", "..., bring it over, then ..."), and a tool said before the verb ("with it, scrub the plate"). (A learner's
+polite frames, "may you", "would you mind to", are fillers in rules/lexicon.py.)
 
-Each rewrite keeps every thing the instruction names (an absent thing is still looked for and refused); only words
-that name no thing, or a word order, change."""
+Each rewrite keeps every thing the instruction names (an absent thing is still looked for and refused): only words
+that name no thing change, or the word order, or a name said another way ("the wicker tub" is the basket, "the
+cabinet roof" its top)."""
 
 from __future__ import annotations
 
