@@ -27,6 +27,7 @@ from .lexicon import (
     SUBSTANCES,
     VERBS,
 )
+from .names import compound_names
 from .phrases import singular
 from .qualify import qualify
 from .things import adverb_only, is_thing, is_verb
@@ -213,6 +214,7 @@ def sentences(instruction: str) -> list[str]:
     # bowl" may be a kind of its own, which a scene without one lacks)
     _served = r"\b(?:soup|cereal|pasta|noodle) "
     text = re.sub(_served + r"(?:dishes|bowls)\b", "bowls", re.sub(_served + r"(?:dish|bowl)\b", "bowl", text))
+    text = compound_names(text)  # "the hot plate": the stove (rules/names.py)
     # speech: "um", "uh", and a phrase said twice around one ("in the, uh, in the basket")
     text = re.sub(r",?\s*\b(?:um+|uh+|erm|er|hmm+)\b,?", "", text).strip(" ,")
     # (not a chain of places: "the red block on the green block, the green block on the blue block")
