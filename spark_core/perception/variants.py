@@ -83,6 +83,12 @@ KINDS: tuple[frozenset[str], ...] = tuple(
         "bolt",
         "screw",
         "hammer mallet",
+        # other hand tools: each its own kind (a "wrench" is no hammer, however near an encoder puts them)
+        "wrench spanner",
+        "screwdriver",
+        "pliers",
+        "chisel",
+        "wool",  # steel wool (rules/names.py says "steel wool pad" so): no sponge
         "bead marble ball",
         "area zone region target patch spot",
         "rack holder stand",  # "the wine holder", "the bottle stand": a rack (a holder of nothing in particular)
@@ -124,7 +130,7 @@ KINDS: tuple[frozenset[str], ...] = tuple(
         "pencil",
         "cylinder",
         "pyramid",
-        "dirt mess stain spill grime smudge dust",
+        "dirt mess stain spill grime smudge dust muck gunk crud filth",
         "yogurt yoghurt",
         "jam jelly",
         "marmalade",

@@ -242,6 +242,25 @@ def _unused(clauses: tuple[Clause, ...], found: list[str], instruction: str) -> 
     ]
 
 
+_INTO = r"(?:into|onto|inside|in|on|on top of|atop)"
+
+
+def _swapped(clauses: tuple[Clause, ...], instruction: str) -> tuple[str, str] | None:
+    """(object, destination) of a carry the sentence says the other way round: its destination's noun said before a
+    place word that its object's noun follows ("squeeze the whole basket into the green block" for "put the green
+    block in the basket"); None when no carry is said so."""
+    text = " ".join(re.findall(r"[a-z]+", instruction.lower()))
+    for c in clauses:
+        if c.action not in _CARRY or not c.obj or not c.target:
+            continue
+        obj, dst = c.obj.split()[-1], c.target.split()[-1]
+        if obj == dst or re.search(rf"\b{obj}\b.*\b{_INTO}\b.*\b{dst}\b", text):
+            continue
+        if re.search(rf"\b{dst}\b(?: \w+){{0,3}} {_INTO} (?:the |a |an )?(?:\w+ )?{obj}\b", text):
+            return c.obj, c.target
+    return None
+
+
 def read(request: PlanRequest, planner: RulesPlanner) -> tuple[list[dict], list[str]] | str | None:
     """(steps, what was understood) for the confident top goal; else why the reader declined; None when no reader
     weights are installed."""
@@ -270,6 +289,9 @@ def read(request: PlanRequest, planner: RulesPlanner) -> tuple[list[dict], list[
     counted = [p for c in goals[k][0].clauses for p in (c.obj, c.target, c.source) if p and _COUNTED.match(p)]
     if counted:  # "swap the two cubes around ...": a step on one thing cannot act on a count of them
         return f"its best guess, {text!r}, acts on {counted[0]!r} as if it were one thing"
+    swapped = _swapped(goals[k][0].clauses, request.instruction)
+    if swapped:  # "squeeze the whole basket into the green block": the sentence says the other way round
+        return f"its best guess, {text!r}, puts {swapped[0]!r} into what the sentence puts into {swapped[1]!r}"
     left = _unused(goals[k][0].clauses, list(request.scene.keypoints), request.instruction)
     if left:  # a part of the request no step would carry out: never a partial plan
         return f"its best guess, {text!r}, leaves out {', '.join(map(repr, left))}"

@@ -221,6 +221,11 @@ def mentions(instruction: str) -> tuple[list[Mention], list[str], bool] | None:
     if states & {"open", "close", "turn_on", "turn_off"} and set(tokens) & {"get", "gets", "getting", "have"}:
         actions.discard("pick")  # "get the drawer opened": a state brought about, nothing taken
     actions |= states
+    # "turn the red block on like it's a burner": a switch verb first and its state after the thing switches
+    if tokens[:1] in (["turn"], ["switch"], ["flick"], ["flip"]):
+        state = next((t for t in tokens[2:6] if t in ("on", "off")), None)
+        if state:
+            actions.add(f"turn_{state}")
     if len(found) > MAX_MENTIONS:
         return None
     return found, sorted(actions), goal
@@ -359,7 +364,8 @@ def candidates(instruction: str, scene, unresolved: dict[str, str]) -> tuple[lis
                 if rest:
                     continue
                 out.append(Reading(Clause(a, obj=m.phrase, text=instruction), 3.0, f"{a} {m.phrase}"))
-    if moves or goal or dests:
+    # a sentence that asks to switch or open something asks no carry ("turn the red block on like it's a burner")
+    if (moves or goal or dests) and not fixture_actions:
         for o in distinct:
             for t in distinct:
                 if o is t:

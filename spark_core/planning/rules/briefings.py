@@ -116,10 +116,13 @@ def plain_briefing(text: str) -> str:
     )
     # "the drawer pulled out, open": the same state said twice
     text = re.sub(r"\b(?:pulled|slid|drawn) (?:out|open),? (?:and )?(open|opened)\b", r"\1", text)
-    # "red block in the green square, pushed there rather than carried": a push to the place
+    # "red block in the green square, pushed there rather than carried", "... (pushed forward, not carried)": a
+    # push
     text = re.sub(
-        r"^((?:the |a )?[a-z][\w ]*? (?:in|into|inside|onto|on|to) (?:the )?[\w ]+?),? (?:pushed|slid|shoved|nudged) "
-        r"(?:there|in|in there|into it)\b(?: (?:rather than|instead of|and not|not) (?:carried|lifted|picked up))?",
+        r"^((?:the |a )?[a-z][\w ]*? (?:in|into|inside|onto|on|to|->) (?!be\b)(?:the )?[\w ]+?),? "
+        r"(?:pushed|slid|shoved|nudged) "
+        r"(?:there|in|in there|into it|forward|forwards|along|across|over)\b"
+        r"(?:,? (?:rather than|instead of|and not|not|never|but not) (?:carried|lifted|picked up))?",
         r"push \1",
         text,
     )

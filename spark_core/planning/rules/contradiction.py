@@ -34,6 +34,8 @@ _STAY = r"(?:stays?|staying|remains?|remaining|is kept|is left)"
 _MAY = r"(?:can |should |will |must |has to |needs to )?"
 _AWAY = r"(?:out of|outside(?: of)?|away from|off)"
 _SWITCHED = r"(?:stove|burner|hob|cooker|cooktop|oven|range|heat|knob|dial|lamp|light)"
+# where a thing already is: "exactly where it is", "in place", "put"
+_IN_PLACE = r"(?:exactly |just |right )?(?:where it (?:is|was|sits|stands)|in (?:its )?place|put|unmoved)\b"
 _NOUN = r"(?:the|top|a|an|its|it)\b"  # "leave it on the plate": a place, not a state
 _WHILE = r" the(?= (?:whole|entire) time\b)"  # "keep it off the whole time": how long, not where
 _NOT_TO_DO = re.compile(r"\b(?:don't|dont|do not|not|never|rather than|instead of|no)\s+(?:\w+\s+)?$")
@@ -87,6 +89,8 @@ def _moves(
         elif p in ("place", "place_in") and held:
             moves.append((held, params.get("target_label") or params.get("container_label") or ""))
             held = None
+        elif p == "push_object":  # pushed somewhere: moved, though nothing is set down
+            moves.append((params.get("keypoint_label", ""), ""))
         elif p == "turn_knob":
             turns.append((params.get("keypoint_label", ""), float(params.get("angle", 0.0))))
         elif p in ("open_drawer", "close_drawer"):
@@ -133,6 +137,13 @@ def contradicted(instruction: str, steps: list[dict]) -> str | None:
         text,
     ):
         return m.group(0)
+    # "hand the hammer from the left arm to the left arm": a hand-over to the arm that holds it
+    if m := re.search(
+        r"\b(?:from|with|in) (?:the |your |its )?(left|right) (?:arm|hand|gripper)\b.*?\b(?:to|into|over to|across to) "
+        r"(?:the |your )?\1 (?:arm|hand|gripper)\b",
+        text,
+    ):
+        return m.group(0)
     if said := _taken_back(text):
         return said
     if m := re.search(
@@ -141,6 +152,10 @@ def contradicted(instruction: str, steps: list[dict]) -> str | None:
         return m.group(0)  # "turn the stove into a wine bottle": a thing made another, which no step does
     moves, lifted, turns, drawers = _moves(steps)
     for thing, dest in moves:
+        if not dest:  # a push: no place set down on, but moved all the same
+            if m := _said(rf"\b(?:also|but|yet|while) (?:\w+ )?{_KEEP} {_thing(thing)} {_IN_PLACE}", text):
+                return m.group(0)
+            continue
         x, t = _thing(thing, dest), _thing(dest, thing)
         # the destination moved onto the thing by a step of the plan itself: the planner's own check sees that order
         reversed_too = any(_names(m, dest, thing) and _names(d, thing, dest) for m, d in moves)
@@ -149,7 +164,7 @@ def contradicted(instruction: str, steps: list[dict]) -> str | None:
             rf"\b{x} {_STAY} {_AWAY} {t}",
             *([] if reversed_too else [_reverse(_thing(dest, thing, pronoun=False), x)]),
             # "... and also leave it exactly where it is": said beside the move, not after it ("then leave it there")
-            rf"\b(?:also|but|yet|while) (?:\w+ )?{_KEEP} {x} (?:exactly |just |right )?where it (?:is|was|sits)\b",
+            rf"\b(?:also|but|yet|while) (?:\w+ )?{_KEEP} {x} {_IN_PLACE}",
             # "... while making sure it never touches the plate": set down on it, never touching it
             rf"\b{x} (?:never|doesn't|does not|won't|will not|must not|mustn't|should not|shouldn't) touch(?:es)? {t}",
             rf"\bwithout (?:it |ever )?touching {t}",

@@ -24,6 +24,7 @@ from lemminflect import getAllLemmas, getLemma
 
 from ...perception.colors import BASE_COLOURS
 from ...perception.lexicon.nouns import nouns
+from .colloquial import plain_colloquial
 from .endstate import end_state_framed
 from .lexicon import VERBS
 from .mentions import ATTRIBUTES
@@ -838,14 +839,17 @@ def _article_restored(text: str) -> str:
 def _located_first(text: str) -> str:
     """ "locate the white bowl and ensure the red block is placed inside it", "find the bowl next to the ramekin and
     set it on the plate", "look for the bowl by the box; once you have it, set it on the plate": a thing looked for
-    first is named for what follows ("it"), not picked up."""
-    return re.sub(
-        r"^(?:please )?(?:locate|find|spot|identify|look for|search for) ((?:the|a|an) [a-z' ]+?)"
-        r"(?:,? and (?:then )?|\s*[;.]\s*(?:(?:once|when|after) you(?:'ve| have)? (?:got|have|found|find|grabbed|grab|"
-        r"spotted|spot|located|locate) (?:it|them),?\s*)?)(?=\S)",
-        r"there is \1. ",
-        text,
-    )
+    first is named for what follows ("it"), not picked up. ("between the plate and the ramekin" is one place: its
+    "and" joins no step.)"""
+    text = re.sub(r"\b(between (?:the|a|an) [a-z]+(?: [a-z]+)?) and (?=(?:the|a|an) )", r"\1 &between ", text)
+    return _LOOKED_FOR.sub(r"there is \1. ", text).replace(" &between ", " and ")
+
+
+_LOOKED_FOR = re.compile(
+    r"^(?:please )?(?:locate|find|spot|identify|look for|search for) ((?:the|a|an) [a-z'& ]+?)"
+    r"(?:,? and (?:then )?|\s*[;.]\s*(?:(?:once|when|after) you(?:'ve| have)? (?:got|have|found|find|grabbed|grab|"
+    r"spotted|spot|located|locate) (?:it|them),?\s*)?)(?=\S)"
+)
 
 
 def _pointed_then_described(text: str) -> str:
@@ -1679,7 +1683,8 @@ def restructured(instruction: str) -> str:
     text = re.sub(r"[ \t]+", " ", instruction.strip().lower().replace("\u2019", "'"))
     # a spec of keyed fields, said as a sentence; an end state said as a specification, said plainly; breaks said
     # aloud, written in (rules/transcript.py)
-    out = spoken(end_state_framed(re.sub(r"\s+", " ", spelled_out(unpunctuated(text)))))
+    # ... and colloquial phrases said plainly ("give it a proper scrub": rules/colloquial.py)
+    out = spoken(end_state_framed(re.sub(r"\s+", " ", spelled_out(unpunctuated(plain_colloquial(text))))))
     text = re.sub(r"\s+", " ", text)
     # "once it's out far enough for your hand, grab ...": the state the step before made, said as a condition
     # (only after a sentence that opens it: "once the drawer is open, put ..." alone still asks to open it)
@@ -1775,6 +1780,21 @@ def restructured(instruction: str) -> str:
         r"\b(sort(?:ing)?|arrang(?:e|ing)|organi[sz](?:e|ing)) (?:the|these|those|both) \w+"
         r"(?: for me| for us| out| please)*\s*(?:\?|\s-+)\s+(?=\S)",
         lambda m: f"{m.group(1)} these: ",
+        out,
+    )
+    # "the bowl resting on the stove, plate please", "not the bowl on the box, the other one. plate.": a thing said
+    # without a verb, then only the name of where it goes (after a comma with "please", or as a sentence of its own)
+    out = re.sub(
+        r"^((?:not )?(?:(?:the|a|an) )?[a-z][a-z' ,]+?)(?:,(?=\s+(?:the )?[a-z]+"
+        r"(?: [a-z]+)?,? (?:please|pls|thanks|ta)\b)|\.(?=\s+(?:the )?[a-z]+\s*[.!]?$)"
+        # (after a colon only a bare name: "blue tray: the red block, please" is the place said first)
+        r"|:(?=\s+[a-z]+(?: [a-z]+)?,? (?:please|pls|thanks|ta)\b))\s+"
+        r"(?:the )?([a-z]+(?: (?!please|pls|thanks|ta)[a-z]+)?)(?:,? (?:please|pls|thanks|ta))?\s*[.!]?$",
+        lambda m: (
+            f"{m.group(1)} -> {m.group(2)}"
+            if is_thing(m.group(2).split()[-1]) and not starts_with_verb(m.group(1))
+            else m.group(0)
+        ),
         out,
     )
     # "the bowl resting on the ramekin - plate, please": a thing, then where it goes

@@ -111,6 +111,9 @@ VERBS: dict[str, tuple[str, ...]] = {
 }
 # Things that scrub: the one the scene holds is the tool of a scrub said without one ("plate clean").
 CLEANERS = ("sponge", "cloth", "rag", "towel", "brush", "scrubber", "scourer", "pad")
+# What a cleaning goal removes, said in any of its words ("no grime left", "get the muck off the table"): a regex
+# alternative
+DIRT = r"(?:dirt|dust|mess|crumbs|stains?|spills?|smudges?|marks?|grime|muck|gunk|crud|filth)"
 # Verb forms whose object comes after a particle ("pick the block up", "turn the stove on").
 PARTICLE_VERBS = {"pick": "up", "turn_on": "on", "turn_off": "off", "lift": "up"}
 ON = ("on top of", "onto", "on to", "atop", "on", "over")
@@ -414,6 +417,12 @@ COPULAS: tuple[str, ...] = (
     "go",
     "ends up",
     "end up",
+    # other verbs of ending up ("the juice finishes up in the basket", "winds up in")
+    "finishes up",
+    "finish up",
+    "finishes",
+    "winds up",
+    "wind up",
     "is to be",
     "is to go",
     "to end up",

@@ -227,6 +227,9 @@ _ASIDE = re.compile(
     r"(?:get|reach|see|look|check)\b|(?:carefully|gently|slowly) so\b|"
     r"so (?:that )?(?:it|they|the [a-z]+) (?:does|do|will|would|is|are|can|could) not\b|"
     rf"{SPEAKERS_PLANS}|"
+    # how thoroughly a cleaning goal is met ("..., every last speck", "..., not a crumb left"): the dirt, no thing
+    r"(?:every|each|evry) (?:last |single )?(?:speck|bit|crumb|trace|spot|smudge)s?\b|"
+    r"not (?:a|one|a single) (?:speck|bit|crumb|trace|spot|smudge)\b|"
     # how not to do it, after the request ("..., don't leave any stains behind"); not a thing left alone
     r"(?:(?<=[,-]) *(?:and |but )?|\s+and\s+)"
     r"(?:(?:do not|don't|dont|never|try not to|careful not to|be careful not to) "

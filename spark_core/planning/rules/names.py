@@ -2,7 +2,8 @@
 kinds table knows (perception/variants.KINDS), so grounding and the absent-object checks read them as that thing.
 
 "the hot plate" is a stove (a plate is not); "the chest of drawers" a cabinet; "pasta sauce" and "marinara" are
-tomato sauce; "canned soup" a soup. A scene without the thing refuses the name as absent, as it would the word."""
+tomato sauce; "canned soup" a soup; a "steel wool pad" steel wool (no sponge). A scene without the thing refuses
+the name as absent, as it would the word."""
 
 from __future__ import annotations
 
@@ -15,6 +16,8 @@ _COMPOUNDS: tuple[tuple[str, str], ...] = (
     (r"\b(?:pasta|spaghetti) sauce\b|\bmarinara(?: sauce)?\b", "tomato sauce"),
     (r"\bcanned (soup|tomato sauce)\b", r"\1"),
     (r"\bchoc\b\.?", "chocolate"),
+    # a scouring pad of steel wool is no sponge: its head noun is the wool
+    (r"\b(?:steel|wire) wool(?: pads?| scrubbers?| scourers?| sponges?)?\b|\bbrillo(?: pads?)?\b", "steel wool"),
 )
 
 

@@ -23,6 +23,7 @@ _STOP = (
 )
 _WORD = rf"(?!{_STOP}\b)[\w-]+"
 NP = rf"(?:{_WORD} ){{0,2}}{_WORD}"
+_LAZY_NP = rf"(?:{_WORD} ){{0,2}}?{_WORD}"  # the fewest words before what follows ("cream cheese" of "... goes")
 DET = r"(?:the|a|an|any|every|each|whichever)"
 # A side, as the qualifier perception knows for it.
 SIDES = {"left": "leftmost", "right": "rightmost", "front": "nearest", "back": "farthest", "rear": "farthest"}
@@ -416,6 +417,14 @@ def negations(text: str) -> str:
     text = re.sub(rf"\b(?:any|whichever) ({NP}),? but (?:the|that) (?:ones?|{NP}) ([^,;:]+),?", r"the \1 not \2", text)
     # "the sauce that is not (the) barbecue sauce": ruled out by the words of its own kind
     text = re.sub(rf"\b{DET} ({NP}) (?:(?:that|which) )?{_NEG} (?:the |a |an )?({NP})\b", _not_own_kind, text)
+    # "the box that is not the cream cheese goes ...", "the bottle that isn't the bbq sauce or the salad dressing,":
+    # ruled out by things of other kinds named in full (the reading below would drop them as "the <one> <where>")
+    text = re.sub(
+        rf"\b{DET} ({NP}) (?:(?:that|which) )?{_NEG} the (?!ones?\b)({_LAZY_NP})(?: (?:or|nor) (?:the )?({_LAZY_NP}))?"
+        rf"(?=\s+(?:goes|go|into|in|onto|on|to|should|please)\b|\s*[,;:.!]|\s*$)",
+        _not_other_kinds,
+        text,
+    )
     # "whichever block is not the blue one", "the block that is not the blue one"
     text = re.sub(rf"\b{DET} ({NP}) (?:(?:that|which) )?{_NEG} the ({_WORD}) ones?\b", r"the \1 not \2", text)
     text = re.sub(rf"\b{DET} ({NP}) (?:(?:that|which) )?{_NEG} the (?:ones?|{NP}) ", r"the \1 not ", text)
@@ -541,6 +550,16 @@ def is_adjective(word: str) -> bool:
 
     pos = getAllLemmas(word)
     return "ADJ" in pos or word in BASE_COLOURS
+
+
+def _not_other_kinds(m: re.Match) -> str:
+    """ "the box not cream cheese (nor chocolate pudding)" when each thing ruled out is of another kind than the
+    head."""
+    head = m.group(1).split()[-1]
+    ruled_out = [g for g in (m.group(2), m.group(3)) if g]
+    if any(g.split()[-1] == head for g in ruled_out):
+        return m.group(0)
+    return f"the {m.group(1)} not {' nor '.join(ruled_out)}"
 
 
 def _not_own_kind(m: re.Match) -> str:

@@ -16,6 +16,7 @@ from .lexicon import (
     CONTENTS,
     CONTENTS_SAID,
     COPULAS,
+    DIRT,
     FILLERS,
     HELD,
     HOLDS,
@@ -110,8 +111,18 @@ _TRAILING = re.compile(
     r"instead of|as (?:gently|carefully|slowly) as)|"
     # the request closed ("..., blue block to the yellow tray, done")
     r"(?<=,)\s*(?:and )?(?:done|finished|over|end|fin)\s*$|"
+    # how thoroughly a cleaning goal is met ("table free of dirt, every last speck", "..., not a crumb left")
+    r"(?:every|each|evry) (?:last |single )?(?:speck|bit|crumb|trace|spot|smudge)(?: of (?:it|the \w+|\w+))?"
+    r"(?: gone| removed| off| cleaned| wiped)?\s*[.!]?$|"
+    # a setting that does not matter, after the switch ("crank the hob on, low is fine")
+    r"(?:low|high|medium|max|min|any|whatever)(?: heat| setting| power| level)? (?:is|'s) (?:fine|ok|okay|good)"
+    r"\s*[.!]?$|"
+    # how it lies once set down ("butter into the basket, lay it flat")
+    r"(?:lay|lie|set|keep|leave|place|put) (?:it|them) (?:down )?(?:flat|level|upright|on its side|on their side)"
+    r"\s*[.!]?$|"
+    r"not (?:a|one|a single) (?:speck|bit|crumb|trace|spot|smudge)(?: left| remaining)?\s*[.!]?$|"
     # the cleaning goal said again ("table clean, no dirt left")
-    r"no (?:dirt|mess|stains?|spills?|crumbs|grime|smudges?|marks?) (?:left|remaining|anywhere|on it|on the \w+)\b|"
+    rf"no {DIRT} (?:left|remaining|anywhere|on it|on the \w+)\b|"
     # the means, after the step it serves ("switch the stove on by twisting the knob")
     r"by (?:twisting|turning|rotating|flicking|flipping|pressing|pushing|pulling|tugging|using|working|spinning|"
     r"cranking|sliding|lifting|gripping|grabbing|holding|tipping|tilting)\b|"
@@ -215,6 +226,8 @@ def sentences(instruction: str) -> list[str]:
     _served = r"\b(?:soup|cereal|pasta|noodle) "
     text = re.sub(_served + r"(?:dishes|bowls)\b", "bowls", re.sub(_served + r"(?:dish|bowl)\b", "bowl", text))
     text = compound_names(text)  # "the hot plate": the stove (rules/names.py)
+    # "whichever block is neither green nor blue": the block that is neither (a relative clause, said without "that")
+    text = re.sub(r"\bwhichever ((?:[a-z]+ ){0,2}?[a-z]+) (is|are) (?=neither\b|not\b)", r"the \1 that \2 ", text)
     # speech: "um", "uh", and a phrase said twice around one ("in the, uh, in the basket")
     text = re.sub(r",?\s*\b(?:um+|uh+|erm|er|hmm+)\b,?", "", text).strip(" ,")
     # (not a chain of places: "the red block on the green block, the green block on the blue block")
@@ -348,7 +361,7 @@ def sentences(instruction: str) -> list[str]:
     # a clean surface wished for without a verb ("a clean table, no dirt left on it"): the wish, said
     text = re.sub(r"^(?:a|an) (?=(?:clean|spotless|tidy|dirt-free|dust-free) \w)", "i want a ", text)
     # ... and no dirt left on it: the wish on its own, or said again after it
-    dirt = r"no (?:dirt|dust|mess|crumbs|stains?|smudges?|grime)(?: at all)? (?:left )?on"
+    dirt = rf"no {DIRT}(?: at all)? (?:left )?on"
     text = re.sub(rf"^{dirt} (the \w+)(?=\s*[.!]?$)", r"wipe \1", text)
     text = re.sub(rf",\s*{dirt} (?:it|the \w+)\s*(?=[.!]?$)", "", text)
     # when, said of this request only ("don't touch the soup this time, ..."): no thing's word and no step
@@ -414,8 +427,9 @@ def sentences(instruction: str) -> list[str]:
     text = re.sub(r"\b(?:grasped|gripped|grabbed|held|taken) and (lifted|raised|held up|picked up)\b", r"\1", text)
     # a switch worked by a verb of its own and the state after the thing ("flick the hob on", "shut the gas off")
     text = re.sub(
-        r"(^|, |\band |\bthen )(?:flick|flip|click|shut|knock|whack|put|set) ((?:the|a|an) [\w ]+?) (on|off)"
-        r"(?=\s*(?:$|[,.;!?]|\band\b|\bthen\b))",
+        r"(^|, |\band |\bthen |[-—:] )(?:flick|flip|click|shut|knock|whack|put|set|crank) "
+        r"((?:the|a|an) [\w ]+?|it|them) (on|off)"
+        r"(?=\s*(?:$|[,.;!?]|\band\b|\bthen\b|\bfor (?:me|us)\b|\bplease\b))",
         r"\1turn \3 \2",
         text,
     )
@@ -1040,7 +1054,8 @@ def sentences(instruction: str) -> list[str]:
         r"(?:two|three|four|2|3|4) (?:drops|moves|steps|jobs|tasks|parts|placements|transfers)|"
         r"(?:sorting|stacking|placement|grasp|drawer|stove|pour|scrub|push|lift) (?:check|test|task|job))"
         # ("end state for this one: ...", "goal this time: ...": which task it is the goal of)
-        r"(?: for (?:this|the next|this next) (?:one|task|scene|trial|run|episode|round)| this time| here)?"
+        r"(?: for (?:this|the next|this next) (?:one|task|scene|trial|run|episode|ep|round|demo|take|attempt|test|"
+        r"rollout|eval|go)| this time| here)?"
         # ("final state i'd like: ...", "end result we want: ...": the label and whose wish it is)
         r"(?: (?:i|we)(?:'d| would)? (?:like|want|need|am after|are after|'m after|'re after))?\s*[:,]\s*",
         "",
@@ -1307,7 +1322,7 @@ _SPOKEN_PLAINLY: tuple[tuple[str, str], ...] = (
     # "the table should end up clean, with none of the brown dirt left on it": the cleaning goal said again
     (
         r",\s*with (?:no|none of (?:the|those|these|that|any)) (?:[a-z]+ ){0,2}"
-        r"(?:dirt|mess|stains?|spills?|crumbs|grime|smudges?|marks?) (?:left|remaining)"
+        rf"{DIRT} (?:left|remaining)"
         r"(?: on it| on the [a-z]+)?\s*[.!]?$",
         "",
     ),
@@ -1503,7 +1518,7 @@ _SAID_PLAINLY: tuple[tuple[str, str], ...] = (
         r"\1there is the \3 \4 \2",
     ),
     (
-        r"\b(?:a|the) (table|counter|surface) with no (?:dirt|mess|crumbs|stains?|grime)(?: left)?(?: on it)?\b",
+        rf"\b(?:a|the) (table|counter|surface) with no {DIRT}(?: left)?(?: on it)?\b",
         r"the \1 clean",
     ),
     # "i'd rather have the bottle on the cabinet than on the rack": the goal, and the place it is not
@@ -1520,20 +1535,20 @@ _SAID_PLAINLY: tuple[tuple[str, str], ...] = (
     # "..., all that brown dirt wiped away": the cleaning goal said again after it
     (
         r",\s*(?:and |with )?(?:all |any )?(?:of )?(?:that |the |this )?(?:\w+ )?"
-        r"(?:dirt|mess|crumbs|stains?|grime|dust) "
+        rf"{DIRT} "
         r"(?:wiped|gone|cleaned|removed|cleared|scrubbed)(?: away| off| up| out)?(?=\s*(?:[.;!?]|$))",
         "",
     ),
     # "the table top free of all that dirt": clean
     (
-        r"\b(?:a|the) (table|counter|surface)(?: ?top)? (?:free|clear) of (?:all |any )?(?:the |that |this )?"
-        r"(?:dirt|mess|crumbs|stains?|grime|dust)\b",
+        r"(?:\b(?:a|the) |^)(table|counter|surface)(?: ?top)? (?:free|clear|clean|rid) of (?:all |any )?"
+        rf"(?:the |that |this )?{DIRT}\b",
         r"the \1 clean",
     ),
     (
-        r"\b(?:get|take|remove|clear) (?:the |all the |any )?(?:dirt|mess|crumbs|stains?|grime|dust) "
+        rf"\b(?:get|take|remove|clear) (?:the |all the |any )?({DIRT}) "
         r"(?:off|from) (?:of )?((?:the|a|an) \w+(?: \w+)?)(?:'s (?:surface|top)| (?:surface|top))?\b",
-        r"wipe \1",
+        r"wipe the \1 off \2",
     ),
     (
         r",?\s+(?:would|will|'d) be (?:great|nice|lovely|good|perfect|ideal|appreciated|awesome|fantastic|brilliant)\b",
@@ -2109,7 +2124,9 @@ _TWO_HANDLES = re.compile(r"\b(?:both|two|each) (?:arms?|hands?|handles?)\b|\bha
 _LIFT = re.compile(r"\b(?:lift|lifts|lifted|raise|raised|hoist|heave|hold up|pick up|pick it up|pick them up|up)\b")
 _GIVE = re.compile(
     r"\b(?:hand|hands|pass|passes|give|gives|transfer|transfers|move|switch|swap|shift)\b[^.]*?"
-    r"\b(?:to|into|over to|across to|across into) (?:the |your )?(other|left|right|second) (?:one|arm|hand|gripper)\b|"
+    r"\b(?:to|into|over to|across to|across into) (?:the |your )?(other|left|right|second)"
+    # ("hand it off to the other": the arm left unsaid at the end)
+    r"(?: (?:one|arm|hand|gripper)\b|(?=\s*(?:[.!,;]|$)))|"
     r"\bso (?:that )?the (other|left|right|second) (?:arm|hand|gripper) (?:ends up holding|holds|has|takes|gets)\b"
 )
 # Any other step: a two-arm reading is only for an instruction that says nothing else to do.
@@ -2126,6 +2143,9 @@ def _two_arms(said: list[str]) -> list[str] | None:
     if not _ARMS.search(text) and not _TWO_HANDLES.search(text) or _OTHER_STEP.search(text):
         return None
     thing = _carried_thing(text)
+    header = re.match(r"([a-z]+(?: [a-z]+)?)\s*:\s", text)  # "hammer: pick it up with one arm, then ..."
+    if thing is None and header and header.group(1).split()[-1] not in _NOT_CARRIED:
+        thing = header.group(1)
     if thing is None:
         return None
     give = _GIVE.search(text)
@@ -2140,16 +2160,25 @@ def _two_arms(said: list[str]) -> list[str] | None:
     return None
 
 
+_NOT_A_THING_FIRST = frozenset(
+    ["other", "one", "left", "right", "second", "two", "is", "are", "was", "were", "has", "will", "would", "should"]
+    + ["can", "could", "it", "way"]
+)
+
+
 def _carried_thing(text: str) -> str | None:
     """The first thing named that is no arm, hand or handle ("the hammer's handle" names the hammer)."""
     for m in re.finditer(
-        r"\b(?:the|a|an|its) ([\w ]+?)(?:'s\b|(?= (?:by|with|and|to|on|in|from|of|so|then|for|"
+        r"\b(?:the|a|an|its|that|this) ([\w ]+?)(?:'s\b|(?= (?:by|with|and|to|on|in|from|of|so|then|for|"
         r"across|over|using|has|is|lifted|raised|held|picked|up|off)\b)|\s*$|\s*[,.;:])",
         text,
     ):
         words = m.group(1).split()
-        if words[-1] not in _NOT_CARRIED and words[0] not in ("other", "one", "left", "right", "second", "two"):
-            return m.group(1)
+        if words[-1] in ("handle", "handles") and len(words) > 1:  # "the pot handles": the pot's
+            words = words[:-1]
+        # ("see that pot?": a thing pointed at; "that is ...": no thing)
+        if words[-1] not in _NOT_CARRIED and words[0] not in _NOT_A_THING_FIRST:
+            return " ".join(words)
     return None
 
 

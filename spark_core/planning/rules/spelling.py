@@ -37,6 +37,11 @@ _UNMARKED = {
 _CHAT = {"da": "the", "tha": "the", "grn": "green", "blu": "blue", "ylw": "yellow", "yllw": "yellow", "wht": "white"}
 _CHAT |= {"blk": "black", "brn": "brown", "gry": "grey", "prpl": "purple", "orng": "orange", "rd": "red"}
 _CHAT |= {"thn": "then", "nxt": "next", "frst": "first"}
+_CHAT |= {"rn": "right now", "gotta": "got to", "evry": "every"}
+# arrows typed as one character: the ASCII arrow the rules read ("stove ➜ plate"); one pointing back says the
+# same carry the other way round ("plate ← the black bowl": the black bowl goes to the plate)
+_ARROWS = re.compile(r"\s*(?:➜|➔|→|⇒|⟶|=>|➡)\s*")
+_BACK_ARROW = re.compile(r"^([^.;!?←]+?)\s*(?:←|⟵|<-+|⇐)\s*([^.;!?←]+?)(\s*[.;!?]*)$")
 # "pleas" is a word (pleas of a plea), but a request's last word or its first is the courtesy with a slip
 _PLEAS = re.compile(r"(?:^|(?<=[,;]\s))pleas\b(?=\s+[a-z])|\bpleas(?=\s*[.!?]*\s*$)|(?<=,\s)pleas(?=\s*[,.!?])", re.I)
 
@@ -147,6 +152,10 @@ def corrected(instruction: str, inventory: tuple[str, ...] = ()) -> str:
         rf"\b({'|'.join(_CHAT)})\b", lambda m: _CHAT[m.group(1).lower()], instruction, flags=re.IGNORECASE
     )
     instruction = _PLEAS.sub("please", instruction)
+    instruction = _ARROWS.sub(" -> ", instruction)
+    instruction = " ".join(
+        _BACK_ARROW.sub(r"\2 -> \1\3", part) for part in re.split(r"(?<=[.;!?])\s+", instruction.strip())
+    )
     scene = _scene_words(inventory)
     known = _planner_words() | scene
 
