@@ -112,6 +112,12 @@ def test_a_chest_of_drawers_reads_as_the_cabinet():
             ["pick obj=mug on tray", "put obj=mug on tray relation=in target=sink"],
         ),
         ("lamp's beads into the cup", ["pour obj=beads target=cup source=lamp"]),
+        # a place word said before the destination keeps its relation; "once it's open" is no state of a thing
+        ("black cup beside the lamp, on the tray please", ["put obj=black cup beside lamp relation=on target=tray"]),
+        (
+            "open the cabinet drawer. once it's open, put the cup in there",
+            ["open obj=cabinet drawer", "put obj=cup relation=in target=cabinet drawer"],
+        ),
         # "find X between A and B and ...": the "and" of "between" joins no step (a dev entry had regressed)
         (
             "find the cup between the lamp and the kettle and set it on the tray",

@@ -43,7 +43,8 @@ def plain_colloquial(text: str) -> str:
     )
     # "drawer's closed rn.": the state it is in now ("'s" is "is" before a state word, not a possessive)
     text = re.sub(
-        r"(^|[.;!?]\s+)((?:the )?[a-z]+(?: [a-z]+)?)'s (closed|open|shut|off|on|empty|full|loose|out)"
+        r"(^|[.;!?]\s+)((?:the )?(?!(?:once|when|after|if|it|that|this|there|here|what)\b)[a-z]+(?: [a-z]+)?)'s "
+        r"(closed|open|shut|off|on|empty|full|loose|out)"
         r"(?: (?:right now|at the moment|currently|now))?(?=\s*[.;!?,])",
         lambda m: f"{m.group(1)}{'' if m.group(2).startswith('the ') else 'the '}{m.group(2)} is {m.group(3)}",
         text,

@@ -836,6 +836,9 @@ def _article_restored(text: str) -> str:
     )
 
 
+_INTO = {"on": "onto", "onto": "onto", "in": "into", "into": "into"}  # a place said without a verb: where it goes
+
+
 def _located_first(text: str) -> str:
     """ "locate the white bowl and ensure the red block is placed inside it", "find the bowl next to the ramekin and
     set it on the plate", "look for the bowl by the box; once you have it, set it on the plate": a thing looked for
@@ -1785,14 +1788,16 @@ def restructured(instruction: str) -> str:
     # "the bowl resting on the stove, plate please", "not the bowl on the box, the other one. plate.": a thing said
     # without a verb, then only the name of where it goes (after a comma with "please", or as a sentence of its own)
     out = re.sub(
-        r"^((?:not )?(?:(?:the|a|an) )?[a-z][a-z' ,]+?)(?:,(?=\s+(?:the )?[a-z]+"
+        r"^((?:not )?(?:(?:the|a|an) )?[a-z][a-z' ,]+?)(?:,(?=\s+(?:(?:on|onto|in|into) )?(?:the )?[a-z]+"
         r"(?: [a-z]+)?,? (?:please|pls|thanks|ta)\b)|\.(?=\s+(?:the )?[a-z]+\s*[.!]?$)"
         # (after a colon only a bare name: "blue tray: the red block, please" is the place said first)
         r"|:(?=\s+[a-z]+(?: [a-z]+)?,? (?:please|pls|thanks|ta)\b))\s+"
-        r"(?:the )?([a-z]+(?: (?!please|pls|thanks|ta)[a-z]+)?)(?:,? (?:please|pls|thanks|ta))?\s*[.!]?$",
+        r"(?:(on|onto|in|into) )?(?:the )?([a-z]+(?: (?!please|pls|thanks|ta)[a-z]+)?)"
+        r"(?:,? (?:please|pls|thanks|ta))?\s*[.!]?$",
+        # (a place word said keeps its relation: "..., on the plate please")
         lambda m: (
-            f"{m.group(1)} -> {m.group(2)}"
-            if is_thing(m.group(2).split()[-1]) and not starts_with_verb(m.group(1))
+            f"{m.group(1)} {_INTO.get(m.group(2) or '', '->')} {'the ' if m.group(2) else ''}{m.group(3)}"
+            if is_thing(m.group(3).split()[-1]) and not starts_with_verb(m.group(1))
             else m.group(0)
         ),
         out,
